@@ -1,0 +1,325 @@
+// ncc: the command line. Exit status: 0 success, 1 the program has errors, 2 usage
+// or I/O errors (a file that cannot be read or written, a bad option or profile, a
+// bytecode file that is not sound).
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "frontend/frontend.h"
+#include "pipeline.h"
+
+namespace ncc {
+namespace {
+
+constexpr int kOk = 0, kProgramErrors = 1, kUsage = 2;
+
+struct Command {
+  std::string_view name;
+  std::string_view summary;
+  std::string_view usage;
+  std::string_view options;  // the command's own options, for --help
+};
+
+constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost (default gost)
+  --machine FILE            machine profile (TOML, docs/profile.md); default: built in
+  --diagnostics-format F    text | json | sarif (default text)
+  --error-limit N           stop after N errors (default 100, 0 = no limit)
+  --color WHEN              auto | always | never (default auto)
+  -h, --help                show this help
+)";
+
+constexpr Command kCommands[] = {
+    {"check", "check a program and report every problem", "ncc check [options] FILE",
+     R"(  --block-skip              run the dry run with the block-skip switch on
+  --optional-stop           run the dry run with the optional-stop switch on
+  --max-steps N             stop the dry run after N blocks
+)"},
+    {"compile", "compile a program to a bytecode file", "ncc compile [options] FILE -o OUT.ncb",
+     R"(  -o FILE                   the bytecode file to write
+)"},
+    {"run", "run a program (source or .ncb) and write its trace", "ncc run [options] FILE",
+     R"(  --trace FILE              write the trace to FILE ('-' = stdout, the default; 'none' = no trace)
+  --trace-format F          text | jsonl | canon (default text; docs/trace.md)
+  --max-steps N             stop after N executed blocks (default: the program's blocks + 100000000)
+  --block-skip              the block-skip switch is on: '/' parts are skipped
+  --optional-stop           the optional-stop switch is on: M01 stops
+  --start-block N           start at main block ':N' (GOST 20999 §2.6)
+)"},
+    {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
+    {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
+};
+
+void print_main_help() {
+  std::printf("ncc - compiler, checker and VM for CNC part programs\n\nusage: ncc COMMAND [options] FILE\n\ncommands:\n");
+  for (const Command& c : kCommands) std::printf("  %-9s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
+  std::printf("\n'ncc COMMAND --help' describes a command and its options.\n");
+  std::printf("exit status: 0 success, 1 the program has errors, 2 usage or I/O errors\n");
+}
+
+void print_command_help(const Command& c) {
+  std::printf("usage: %s\n\n%s.\n\noptions:\n%s%s", std::string(c.usage).c_str(), std::string(c.summary).c_str(),
+              std::string(c.options).c_str(), std::string(kCommonOptions).c_str());
+}
+
+struct Options {
+  std::string command;
+  std::string input;
+  std::string output;
+  std::string dialect = "gost";
+  std::string machine;
+  std::string trace = "-";
+  TraceFormat trace_format = TraceFormat::Text;
+  DiagFormat diag_format = DiagFormat::Text;
+  uint32_t error_limit = 100;
+  std::string color = "auto";
+  RunSettings run;
+};
+
+bool parse_number(const std::string& text, uint64_t& out) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 19) return false;
+  out = std::stoull(text);
+  return true;
+}
+
+// Returns an error message, or "" when the arguments are good.
+std::string parse_args(const std::vector<std::string>& args, const Command& command, Options& o) {
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= args.size()) return false;
+      out = args[++i];
+      return true;
+    };
+    auto number = [&](uint64_t& out) {
+      std::string text;
+      return value(text) && parse_number(text, out);
+    };
+    auto allowed = [&](std::string_view option) { return command.options.find(option) != std::string_view::npos; };
+    std::string text;
+    uint64_t n = 0;
+    if (a == "--dialect") {
+      if (!value(o.dialect)) return "--dialect needs a name";
+    } else if (a == "--machine") {
+      if (!value(o.machine)) return "--machine needs a file";
+    } else if (a == "--diagnostics-format") {
+      if (!value(text)) return "--diagnostics-format needs text, json or sarif";
+      if (text == "text") o.diag_format = DiagFormat::Text;
+      else if (text == "json") o.diag_format = DiagFormat::Json;
+      else if (text == "sarif") o.diag_format = DiagFormat::Sarif;
+      else return "--diagnostics-format must be text, json or sarif";
+    } else if (a == "--error-limit") {
+      if (!number(n) || n > UINT32_MAX) return "--error-limit needs a number";
+      o.error_limit = static_cast<uint32_t>(n);
+    } else if (a == "--color") {
+      if (!value(o.color) || (o.color != "auto" && o.color != "always" && o.color != "never"))
+        return "--color must be auto, always or never";
+    } else if (a == "-o" && allowed("-o FILE")) {
+      if (!value(o.output)) return "-o needs a file";
+    } else if (a == "--trace" && allowed("--trace FILE")) {
+      if (!value(o.trace)) return "--trace needs a file";
+    } else if (a == "--trace-format" && allowed("--trace-format")) {
+      if (!value(text)) return "--trace-format needs text, jsonl or canon";
+      if (text == "text") o.trace_format = TraceFormat::Text;
+      else if (text == "jsonl") o.trace_format = TraceFormat::Jsonl;
+      else if (text == "canon") o.trace_format = TraceFormat::Canon;
+      else return "--trace-format must be text, jsonl or canon";
+    } else if (a == "--max-steps" && allowed("--max-steps")) {
+      if (!number(n)) return "--max-steps needs a number";
+      o.run.max_steps = n;
+    } else if (a == "--block-skip" && allowed("--block-skip")) {
+      o.run.block_skip = true;
+    } else if (a == "--optional-stop" && allowed("--optional-stop")) {
+      o.run.optional_stop = true;
+    } else if (a == "--start-block" && allowed("--start-block")) {
+      if (!number(n) || n > UINT32_MAX) return "--start-block needs a block number";
+      o.run.start_block = static_cast<uint32_t>(n);
+    } else if (a.size() > 1 && a[0] == '-' && a != "-") {
+      return fmt::format("unknown option '{}' for 'ncc {}'", a, command.name);
+    } else if (o.input.empty()) {
+      o.input = a;
+    } else {
+      return fmt::format("unexpected argument '{}': one input file is read", a);
+    }
+  }
+  if (o.input.empty()) return "no input file";
+  if (o.command == "compile" && o.output.empty()) return "compile needs -o FILE";
+  return {};
+}
+
+class Cli {
+ public:
+  explicit Cli(Options o) : o_(std::move(o)), s_(o_.error_limit) {
+    color_ = o_.color == "always" || (o_.color == "auto" && isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"));
+  }
+
+  int run() {
+    if (!load_profile(s_, o_.machine)) return finish(kUsage, stderr);
+    auto input = read_input(s_, o_.input);
+    if (!input) return finish(kUsage, stderr);
+    auto [kind, file] = *input;
+    if (o_.command == "check") return check(kind, file);
+    if (o_.command == "compile") return compile(kind, file);
+    if (o_.command == "run") return run(kind, file);
+    if (o_.command == "disasm") return disasm(kind, file);
+    return ir(kind, file);
+  }
+
+ private:
+  // Prints the diagnostics and picks the exit status.
+  int finish(int status, std::FILE* out) {
+    std::string text = format_all(s_.diags.all(), s_.sources, o_.diag_format, color_ && out == stderr);
+    std::fwrite(text.data(), 1, text.size(), out);
+    if (status == kOk && s_.diags.has_errors()) status = kProgramErrors;
+    return status;
+  }
+
+  int source_only(FileKind kind) {
+    if (kind == FileKind::Source) return kOk;
+    s_.diags.report(DiagId::DialectUnknown, {}, fmt::format("'{}' is a bytecode file; 'ncc {}' reads source", o_.input, o_.command));
+    return kUsage;
+  }
+
+  // A module from either kind of input: bytecode is loaded and verified, source is
+  // compiled (and must have no errors).
+  std::optional<vm::Module> module(FileKind kind, uint32_t file, int& status) {
+    if (kind == FileKind::Bytecode) {
+      auto m = load_module(s_, file);
+      if (!m) status = kUsage;
+      return m;
+    }
+    auto program = analyse(s_, file, o_.dialect);
+    if (!program || s_.diags.has_errors()) {
+      status = program ? kProgramErrors : kUsage;
+      return std::nullopt;
+    }
+    return lower_program(s_, *program);
+  }
+
+  int check(FileKind kind, uint32_t file) {
+    if (int st = source_only(kind)) return finish(st, stdout);
+    auto program = analyse(s_, file, o_.dialect);
+    if (!program) return finish(kUsage, stdout);
+    if (!s_.diags.limit_reached()) dry_run(s_, lower_program(s_, *program), o_.run);
+    int status = finish(kOk, stdout);
+    if (o_.diag_format == DiagFormat::Text)
+      std::printf("%s: %u error%s, %u warning%s\n", o_.input.c_str(), s_.diags.error_count(),
+                  s_.diags.error_count() == 1 ? "" : "s", s_.diags.warning_count(),
+                  s_.diags.warning_count() == 1 ? "" : "s");
+    return status;
+  }
+
+  int compile(FileKind kind, uint32_t file) {
+    if (int st = source_only(kind)) return finish(st, stderr);
+    auto program = analyse(s_, file, o_.dialect);
+    if (!program) return finish(kUsage, stderr);
+    vm::Module m = lower_program(s_, *program);
+    if (!s_.diags.limit_reached()) dry_run(s_, m, o_.run);
+    if (s_.diags.has_errors()) return finish(kProgramErrors, stderr);
+    std::string bytes = vm::write_module(m);
+    // Write the whole file or nothing: a temporary file renamed into place.
+    std::string temp = o_.output + ".tmp";
+    std::FILE* f = std::fopen(temp.c_str(), "wb");
+    bool ok = f && std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    ok = f && std::fclose(f) == 0 && ok;
+    ok = ok && std::rename(temp.c_str(), o_.output.c_str()) == 0;
+    if (!ok) {
+      s_.diags.report(DiagId::FileUnwritable, {}, o_.output, std::strerror(errno));
+      std::remove(temp.c_str());
+      return finish(kUsage, stderr);
+    }
+    return finish(kOk, stderr);
+  }
+
+  int run(FileKind kind, uint32_t file) {
+    int status = kOk;
+    auto m = module(kind, file, status);
+    if (!m) return finish(status, stderr);
+    std::FILE* out = stdout;
+    bool close = false;
+    if (o_.trace != "-" && o_.trace != "none") {
+      out = std::fopen(o_.trace.c_str(), "wb");
+      if (!out) {
+        s_.diags.report(DiagId::FileUnwritable, {}, o_.trace, std::strerror(errno));
+        return finish(kUsage, stderr);
+      }
+      close = true;
+    }
+    NullSink none;
+    auto writer = o_.trace == "none" ? nullptr
+                                     : make_trace_writer(o_.trace_format, out, m->source_map, m->semantics.conventions.axes);
+    RunResult result = run_module(s_, *m, o_.run, writer ? *writer : static_cast<TraceSink&>(none));
+    writer.reset();
+    if (close && std::fclose(out) != 0) s_.diags.report(DiagId::FileUnwritable, {}, o_.trace, std::strerror(errno));
+    return finish(result.ok ? kOk : kProgramErrors, stderr);
+  }
+
+  int disasm(FileKind kind, uint32_t file) {
+    int status = kOk;
+    auto m = module(kind, file, status);
+    if (!m) return finish(status, stderr);
+    std::string text = vm::disassemble(*m);
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return finish(kOk, stderr);
+  }
+
+  int ir(FileKind kind, uint32_t file) {
+    if (int st = source_only(kind)) return finish(st, stderr);
+    auto program = analyse(s_, file, o_.dialect);
+    if (!program) return finish(kUsage, stderr);
+    std::string text = ir::print(*program, s_.sources);
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return finish(kOk, stderr);
+  }
+
+  Options o_;
+  Session s_;
+  bool color_ = false;
+};
+
+}  // namespace
+}  // namespace ncc
+
+int main(int argc, char** argv) {
+  using namespace ncc;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
+    print_main_help();
+    return args.empty() ? kUsage : kOk;
+  }
+  if (args[0] == "--version") {
+    std::printf("ncc 0.1.0 (bytecode format %u)\n", vm::kFormatVersion);
+    return kOk;
+  }
+  const Command* command = nullptr;
+  for (const Command& c : kCommands)
+    if (c.name == args[0]) command = &c;
+  if (!command) {
+    std::fprintf(stderr, "ncc: error: unknown command '%s' (try 'ncc --help')\n", args[0].c_str());
+    return kUsage;
+  }
+  std::vector<std::string> rest(args.begin() + 1, args.end());
+  for (const std::string& a : rest)
+    if (a == "-h" || a == "--help") {
+      print_command_help(*command);
+      return kOk;
+    }
+  Options options;
+  options.command = std::string(command->name);
+  if (std::string error = parse_args(rest, *command, options); !error.empty()) {
+    std::fprintf(stderr, "ncc %s: error: %s\nusage: %s\n", options.command.c_str(), error.c_str(),
+                 std::string(command->usage).c_str());
+    return kUsage;
+  }
+  try {
+    return Cli(std::move(options)).run();
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "ncc: error: out of memory\n");
+    return kUsage;
+  }
+}

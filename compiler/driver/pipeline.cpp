@@ -1,0 +1,176 @@
+#include "pipeline.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "check/check.h"
+#include "frontend/frontend.h"
+#include "lower/lower.h"
+#include "runtime/machine.h"
+
+namespace ncc {
+
+namespace {
+
+constexpr uint64_t kDefaultExtraSteps = 100'000'000;
+
+// Turns runtime issues into diagnostics at the block, or the word, they concern.
+// A loop meets the same problem again and again: each is reported once.
+class IssueReporter final : public RuntimeIssues {
+ public:
+  IssueReporter(Session& s, const vm::Module& m, std::vector<uint32_t> file_ids, bool dry)
+      : s_(s), m_(m), file_ids_(std::move(file_ids)), dry_(dry) {}
+
+  void issue(const RuntimeIssue& i) override {
+    if (!seen_.insert({static_cast<int>(i.id), i.source, i.word}).second) return;
+    // In a dry run a block the compiler already rejected would only repeat its errors.
+    if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
+    SourceRange range;
+    if (i.source < m_.source_map.blocks.size()) {
+      const SourceBlock& b = m_.source_map.blocks[i.source];
+      uint32_t file = b.file < file_ids_.size() ? file_ids_[b.file] : 0;
+      range = {file, b.line, b.col, b.end_line, b.end_col};
+      if (i.word) {
+        for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
+          const WordPosition& p = m_.source_map.words[w];
+          if (p.slot == i.word - 'A') {
+            range = {file, p.line, p.col, p.line, p.end_col};
+            break;
+          }
+        }
+      }
+    }
+    s_.diags.add({i.id, diag_info(i.id).severity, range, i.message, {}});
+  }
+
+ private:
+  Session& s_;
+  const vm::Module& m_;
+  std::vector<uint32_t> file_ids_;
+  bool dry_;
+  std::set<std::tuple<int, uint32_t, char>> seen_;
+};
+
+std::optional<std::string> read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) return std::nullopt;
+  return buffer.str();
+}
+
+// The module's source files as SourceManager indices (registered on first use).
+std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
+  std::vector<uint32_t> ids;
+  for (const std::string& path : m.source_map.files) {
+    uint32_t found = UINT32_MAX;
+    for (uint32_t i = 0; i < s.sources.size(); ++i)
+      if (s.sources.file(i).path() == path) found = i;
+    if (found == UINT32_MAX) found = s.sources.add(path, read_file(path).value_or(""));
+    ids.push_back(found);
+  }
+  return ids;
+}
+
+// The profile a module runs with: --machine if given, else the one it was compiled with.
+const stdlib::Profile* run_profile(Session& s, const vm::Module& m) {
+  if (!s.profile) {
+    auto p = stdlib::Profile::parse(s.sources, m.profile_name, m.profile_text, s.diags);
+    if (!p) return nullptr;
+    s.profile = std::move(*p);
+  }
+  return &*s.profile;
+}
+
+RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry) {
+  RunResult result;
+  const stdlib::Profile* profile = run_profile(s, m);
+  if (!profile) return {false, 0};
+  MachineConfig config = stdlib::load_machine_config(*profile, s.diags);
+  if (settings.block_skip) config.block_skip = true;
+  if (settings.optional_stop) config.optional_stop = true;
+  IssueReporter reporter(s, m, source_files(s, m), dry);
+  Machine machine(m.semantics, config, trace, reporter);
+  machine.set_stop_on_error(!dry);
+  vm::VmOptions options;
+  options.block_skip = config.block_skip;
+  options.max_steps = settings.max_steps.value_or(m.source_map.blocks.size() + kDefaultExtraSteps);
+  vm::Vm vm(m, machine, reporter, options);
+  machine.power_on();
+
+  // Programs run in the order of the medium, each after the previous one ended
+  // (M02); M30 ends the information.
+  size_t first = 0;
+  if (settings.start_block) {
+    std::string name = fmt::format(":{}", *settings.start_block);
+    first = m.entries.size();
+    for (size_t i = 0; i < m.entries.size(); ++i)
+      if (m.entries[i].name == name) first = i;
+    if (first == m.entries.size()) {
+      s.diags.report(DiagId::StartBlockNotFound, {}, *settings.start_block);
+      return {false, 0};
+    }
+  }
+  for (size_t i = first; i < m.entries.size(); ++i) {
+    if (i != first && m.entries[i].kind != vm::EntryKind::Program) continue;
+    vm::RunStatus status = vm.run(static_cast<uint32_t>(i));
+    if (status == vm::RunStatus::UnitEnded) machine.end_of_unit(m.source_of(static_cast<uint32_t>(m.code.size() - 1)));
+    if (status == vm::RunStatus::Error) {
+      result.ok = false;
+      break;
+    }
+    if (status == vm::RunStatus::EndOfInformation) break;
+  }
+  trace.flush();
+  result.steps = vm.steps();
+  if (s.diags.has_errors()) result.ok = false;
+  return result;
+}
+
+}  // namespace
+
+bool load_profile(Session& s, const std::string& path) {
+  auto p = stdlib::Profile::load(s.sources, path, s.diags);
+  if (!p) return false;
+  s.profile = std::move(*p);
+  return true;
+}
+
+std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::string& path) {
+  auto text = read_file(path);
+  if (!text) {
+    s.diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno ? errno : EIO));
+    return std::nullopt;
+  }
+  FileKind kind = text->compare(0, 4, "NCCB") == 0 ? FileKind::Bytecode : FileKind::Source;
+  return std::pair{kind, s.sources.add(path, std::move(*text))};
+}
+
+std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect) {
+  if (!s.profile && !load_profile(s, "")) return std::nullopt;
+  auto frontend = make_frontend(dialect, *s.profile, s.diags);
+  if (!frontend) return std::nullopt;
+  s.profile->report_unused(s.diags);
+  ir::Program program = frontend->read(s.sources, file, s.diags);
+  if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags);
+  return program;
+}
+
+vm::Module lower_program(Session& s, const ir::Program& program) { return lower(program, s.sources, *s.profile); }
+
+void dry_run(Session& s, const vm::Module& module, const RunSettings& settings) {
+  NullSink none;
+  execute(s, module, settings, none, true);
+}
+
+std::optional<vm::Module> load_module(Session& s, uint32_t file) {
+  return vm::read_module(s.sources.file(file).text(), s.sources.file(file).path(), s.diags);
+}
+
+RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace) {
+  return execute(s, module, settings, trace, false);
+}
+
+}  // namespace ncc

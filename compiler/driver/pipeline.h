@@ -1,0 +1,54 @@
+// The stages end to end, as the CLI and the tests use them:
+//   source --front end--> IR --checks--> IR --lowering--> module --VM + runtime--> trace
+// `ncc check` adds a dry run: the program runs on the runtime with no trace and
+// every run-time problem it meets becomes a diagnostic (recovering, not stopping).
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include "ir/ir.h"
+#include "runtime/trace.h"
+#include "stdlib/profile.h"
+#include "vm/module.h"
+#include "vm/vm.h"
+
+namespace ncc {
+
+struct Session {
+  SourceManager sources;
+  Diagnostics diags;
+  std::optional<stdlib::Profile> profile;
+
+  explicit Session(uint32_t error_limit = 100) : diags(error_limit) {}
+};
+
+// Loads the machine profile; path "" = the built-in default.
+bool load_profile(Session& s, const std::string& path);
+
+struct RunSettings {
+  std::optional<uint64_t> max_steps;  // default: the program's blocks + 100,000,000
+  bool block_skip = false;
+  bool optional_stop = false;
+  std::optional<uint32_t> start_block;  // a main block ':N' to start at
+};
+
+enum class FileKind { Source, Bytecode };
+// Reads a file into the session; nullopt (reported) if it cannot be read.
+std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::string& path);
+
+// Front end and checks. The program is returned even with errors (for `ncc ir`).
+std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect);
+vm::Module lower_program(Session& s, const ir::Program& program);
+// Runs the module with a null trace, reporting what the runtime finds.
+void dry_run(Session& s, const vm::Module& module, const RunSettings& settings);
+// Loads a bytecode file (and registers its source files for diagnostics).
+std::optional<vm::Module> load_module(Session& s, uint32_t file);
+
+struct RunResult {
+  bool ok = true;
+  uint64_t steps = 0;
+};
+RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace);
+
+}  // namespace ncc

@@ -1,0 +1,634 @@
+// GOST 20999-83 front end: the tape reader of §1 (leader, '%', programs ended by
+// M02, the medium by M30) feeding the ANTLR block grammar one line at a time, and a
+// visitor that turns each block into IR, decoding numbers by the §9 format.
+#include "gost_frontend.h"
+
+#include <antlr4-runtime.h>
+
+#include "GostLexer.h"
+#include "GostParser.h"
+#include "GostParserBaseVisitor.h"
+#include "settings.h"
+
+namespace ncc::gost {
+
+namespace {
+
+using ncc_gost::GostLexer;
+using ncc_gost::GostParser;
+
+bool is_ignored(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\0' || c == '\x7F'; }
+
+// "'*'", "lower-case 'x'", "'Д' (U+0414)", "byte 0xFF".
+std::string describe_char(std::string_view text, size_t at, size_t& length) {
+  length = 1;
+  unsigned char c = static_cast<unsigned char>(text[at]);
+  if (c >= 'a' && c <= 'z') return fmt::format("lower-case '{}'", static_cast<char>(c));
+  if (c >= 0x20 && c < 0x7F) return fmt::format("'{}'", static_cast<char>(c));
+  if (c < 0x80) return fmt::format("control character 0x{:02X}", c);
+  // A whole UTF-8 sequence, if it is one.
+  size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
+  if (n && at + n <= text.size()) {
+    uint32_t cp = c & (0x7F >> n);
+    bool valid = true;
+    for (size_t i = 1; i < n; ++i) {
+      unsigned char cc = static_cast<unsigned char>(text[at + i]);
+      valid = valid && (cc & 0xC0) == 0x80;
+      cp = (cp << 6) | (cc & 0x3F);
+    }
+    if (valid) {
+      length = n;
+      return fmt::format("'{}' (U+{:04X})", text.substr(at, n), cp);
+    }
+  }
+  return fmt::format("byte 0x{:02X}", c);
+}
+
+// Maps ANTLR syntax errors to diagnostics at the right column.
+class ErrorListener final : public antlr4::BaseErrorListener {
+ public:
+  void reset(std::string_view original, uint32_t file, uint32_t line, uint32_t base) {
+    original_ = original;
+    file_ = file;
+    line_ = line;
+    base_ = base;
+  }
+  void bind(Diagnostics* diags, bool* errors) {
+    diags_ = diags;
+    errors_ = errors;
+  }
+
+  void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t, size_t position, const std::string&,
+                   std::exception_ptr) override {
+    *errors_ = true;
+    size_t at = token ? token->getStartIndex() : position;
+    if (token && token->getType() == antlr4::Token::EOF) at = original_.size();
+    uint32_t col = base_ + static_cast<uint32_t>(at) + 1;
+    if (token && token->getType() == GostLexer::INVALID && at < original_.size()) {
+      size_t length = 1;
+      std::string what = describe_char(original_, at, length);
+      diags_->report(DiagId::CharInvalid, {file_, line_, col, line_, col + static_cast<uint32_t>(length)}, what);
+      return;
+    }
+    std::string what = !token || token->getType() == antlr4::Token::EOF ? std::string("end of the line")
+                                                                        : fmt::format("'{}'", token->getText());
+    uint32_t len = token && token->getType() != antlr4::Token::EOF
+                       ? static_cast<uint32_t>(token->getStopIndex() - token->getStartIndex() + 1)
+                       : 1;
+    diags_->report(DiagId::SyntaxError, {file_, line_, col, line_, col + len}, what);
+  }
+
+ private:
+  std::string_view original_;
+  uint32_t file_ = 0, line_ = 0, base_ = 0;
+  Diagnostics* diags_ = nullptr;
+  bool* errors_ = nullptr;
+};
+
+// Reads one file. The ANTLR objects are made once and reset for every line.
+class Reader final : public ncc_gost::GostParserBaseVisitor {
+ public:
+  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
+         Diagnostics& diags)
+      : s_(settings), program_(program), source_(source), file_(file), diags_(diags) {
+    lexer_.removeErrorListeners();
+    parser_.removeErrorListeners();
+    parser_.addErrorListener(&listener_);
+    parser_.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+    listener_.bind(&diags_, &line_has_errors_);
+  }
+
+  void run();
+
+ private:
+  enum class State { Leader, Program, Trailer };
+
+  // Tape level (§1).
+  bool binary_file();
+  void start_program(std::string_view line, uint32_t line_no, uint32_t col);
+  void end_program(SourceRange at, bool terminated);
+  void read_block(std::string_view line, uint32_t line_no);
+
+  // Block level.
+  void parse(std::string_view text, uint32_t line_no, uint32_t base);
+  antlrcpp::Any visitSkip(GostParser::SkipContext* ctx) override;
+  antlrcpp::Any visitBlockNumber(GostParser::BlockNumberContext* ctx) override;
+  antlrcpp::Any visitWord(GostParser::WordContext* ctx) override;
+  antlrcpp::Any visitComment(GostParser::CommentContext* ctx) override;
+  antlrcpp::Any visitElement(GostParser::ElementContext* ctx) override;
+  void finish_block();
+
+  SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
+  SourceRange range(antlr4::ParserRuleContext* ctx) const { return range(ctx->getStart(), ctx->getStop()); }
+  WrittenNumber written_number(GostParser::SignContext* sign, GostParser::NumberContext* number, char letter);
+  void check_comment_text(antlr4::Token* token);
+  int32_t code_index(char letter, int number);
+  void report_mode(DiagId id, SourceRange r, Severity strict_severity, const std::string& arg);
+
+  const Settings& s_;
+  ir::Program& program_;
+  const SourceFile& source_;
+  uint32_t file_;
+  Diagnostics& diags_;
+
+  antlr4::ANTLRInputStream input_;
+  GostLexer lexer_{&input_};
+  antlr4::CommonTokenStream tokens_{&lexer_};
+  GostParser parser_{&tokens_};
+  ErrorListener listener_;
+  std::string sanitized_;
+  std::string_view line_text_;
+  uint32_t line_no_ = 0;
+  uint32_t base_ = 0;
+  bool line_has_errors_ = false;
+
+  State state_ = State::Leader;
+  ir::Unit unit_;
+  bool first_block_ = true;
+  bool any_program_ = false;
+  ir::Block block_;
+  bool seen_element_ = false;   // something other than a leading '/' was read
+  bool optional_rest_ = false;  // a '/' inside the block made the rest optional
+  std::map<int, int32_t> code_map_;
+};
+
+SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
+  uint32_t begin = base_ + static_cast<uint32_t>(first->getStartIndex()) + 1;
+  uint32_t end = base_ + static_cast<uint32_t>(last->getStopIndex()) + 2;
+  if (last->getType() == antlr4::Token::EOF || end < begin) end = begin + 1;
+  return {file_, line_no_, begin, line_no_, end};
+}
+
+void Reader::report_mode(DiagId id, SourceRange r, Severity strict_severity, const std::string& arg) {
+  Diagnostic d{id, diag_info(id).severity, r, diag_message(id, arg), {}};
+  if (s_.decode.mode == Mode::Strict) d.severity = strict_severity;
+  diags_.add(std::move(d));
+}
+
+void Reader::parse(std::string_view text, uint32_t line_no, uint32_t base) {
+  // Outside 7-bit ASCII nothing is a valid character; U+0001 stands in so that the
+  // lexer reports it and every column stays a byte offset.
+  sanitized_.assign(text);
+  for (char& c : sanitized_)
+    if (static_cast<unsigned char>(c) >= 0x80) c = '\x01';
+  line_text_ = text;
+  line_no_ = line_no;
+  base_ = base;
+  line_has_errors_ = false;
+  input_.load(sanitized_);
+  lexer_.setInputStream(&input_);
+  tokens_.setTokenSource(&lexer_);
+  parser_.setTokenStream(&tokens_);
+  listener_.reset(text, file_, line_no, base);
+}
+
+bool Reader::binary_file() {
+  // NUL runs are legal tape leader (§1.9); other control bytes and broken UTF-8 are not text.
+  std::string_view text = source_.text().substr(0, 4096);
+  size_t bad = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(text[i]);
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\0') || c == 0x7F) {
+      ++bad;
+    } else if (c >= 0x80) {
+      size_t len = 0;
+      describe_char(text, i, len);
+      if (len == 1) ++bad;
+      else i += len - 1;
+    }
+  }
+  if (bad * 10 > text.size() && bad > 2) {
+    diags_.report(DiagId::BinaryFile, SourceRange::point(file_, 1, 1), bad, text.size());
+    return true;
+  }
+  return false;
+}
+
+void Reader::run() {
+  if (binary_file()) return;
+  if (!s_.format.program_start) state_ = State::Leader;
+  for (uint32_t line_no = 1; line_no <= source_.line_count() && !diags_.limit_reached(); ++line_no) {
+    std::string_view line = source_.line(line_no);
+    if (line_no == source_.line_count() && line.empty()) break;
+    size_t first = 0;
+    while (first < line.size() && is_ignored(line[first])) ++first;
+    bool blank = first == line.size();
+    switch (state_) {
+      case State::Trailer:
+        // §1.9: after the end of information nothing is perceived.
+        if (!blank) {
+          diags_.report(DiagId::TrailerIgnored, SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)));
+          return;
+        }
+        break;
+      case State::Leader:
+        if (!s_.format.program_start) {
+          if (blank) break;
+          start_program({}, line_no, 1);
+          read_block(line, line_no);
+        } else if (size_t pct = line.find('%'); pct != std::string_view::npos) {
+          start_program(line.substr(pct), line_no, static_cast<uint32_t>(pct));
+        }
+        break;
+      case State::Program:
+        if (blank) break;
+        if (line[first] == '%' && s_.format.program_start) {
+          // §1.9: the next program starts before this one ended.
+          end_program(SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)), false);
+          start_program(line.substr(first), line_no, static_cast<uint32_t>(first));
+          break;
+        }
+        read_block(line, line_no);
+        break;
+    }
+  }
+  if (state_ == State::Program) {
+    uint32_t last = source_.line_count();
+    end_program(SourceRange::point(file_, last, static_cast<uint32_t>(source_.line(last).size() + 1)), false);
+  }
+  if (!any_program_ && s_.format.program_start) diags_.report(DiagId::NoProgramStart, SourceRange::point(file_, 1, 1));
+}
+
+void Reader::start_program(std::string_view line, uint32_t line_no, uint32_t col) {
+  unit_ = ir::Unit{};
+  unit_.range = SourceRange::point(file_, line_no, col + 1);
+  unit_.name = "%";
+  first_block_ = true;
+  state_ = State::Program;
+  bool first_program = !any_program_;
+  any_program_ = true;
+  if (line.empty()) return;  // a format without '%': the program starts at its first block
+  parse(line, line_no, col);
+  GostParser::ProgramStartContext* ctx = parser_.programStart();
+  unit_.range = range(ctx);
+  if (line_has_errors_) return;
+  auto percents = ctx->PERCENT();
+  if (percents.size() == 2 && !first_program)
+    diags_.report(DiagId::TapeStartMarker, range(percents[1]->getSymbol(), percents[1]->getSymbol()));
+  std::string number;
+  for (auto* d : ctx->DIGITS()) number += d->getText();
+  if (!number.empty()) {
+    unit_.name += number;
+    if (number.size() > 8) {
+      auto digits = ctx->DIGITS();
+      diags_.report(DiagId::ProgramNumberLength, range(digits.front()->getSymbol(), digits.back()->getSymbol()),
+                    number.size(), 8);
+    }
+  }
+  if (auto* c = ctx->comment()) {
+    check_comment_text(c->getStart());
+    std::string text = c->getText();
+    if (c->COMMENT()) unit_.title = std::string(line_text_.substr(c->getStart()->getStartIndex() + 1, text.size() - 2));
+  }
+}
+
+void Reader::end_program(SourceRange at, bool terminated) {
+  if (!terminated)
+    diags_.report(DiagId::ProgramNotTerminated, at,
+                  at.line > source_.line_count() || at.col > source_.line(at.line).size()
+                      ? std::string("the end of the file")
+                      : std::string("the next program start '%'"));
+  if (unit_.blocks.empty()) diags_.report(DiagId::EmptyProgram, unit_.range, unit_.name);
+  program_.units.push_back(std::move(unit_));
+  unit_ = ir::Unit{};
+  state_ = State::Leader;
+}
+
+void Reader::read_block(std::string_view line, uint32_t line_no) {
+  parse(line, line_no, 0);
+  block_ = ir::Block{};
+  seen_element_ = false;
+  optional_rest_ = false;
+  GostParser::BlockContext* ctx = parser_.block();
+  block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+  for (auto* element : ctx->element()) visit(element);
+  block_.has_errors = line_has_errors_;
+  finish_block();
+}
+
+void Reader::finish_block() {
+  // §1.4: the first block of a program carries its number.
+  if (first_block_ && !block_.number)
+    report_mode(DiagId::FirstBlockNoNumber, SourceRange::point(file_, line_no_, 1), Severity::Error, "");
+  first_block_ = false;
+
+  // The machine action reads the codes and parameter words; comments show first.
+  for (const std::string& text : block_.comments) {
+    ir::Stmt c{ir::StmtKind::Comment, block_.range};
+    c.label = text;
+    block_.stmts.push_back(std::move(c));
+  }
+  bool action = false;
+  for (const ir::Word& w : block_.words)
+    action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
+  if (action) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
+
+  // §2.6: a main block holds everything needed to resume machining.
+  if (block_.main_block) {
+    std::vector<std::string> missing;
+    auto has_group = [&](std::string_view group) {
+      for (const ir::Word& w : block_.words)
+        if (w.kind == ir::WordKind::Code && w.address == "G" && w.code >= 0) {
+          auto it = s_.tables.g_codes.find(static_cast<int>(program_.exprs[w.value].number));
+          if (it != s_.tables.g_codes.end() && it->second.group == group) return true;
+        }
+      return false;
+    };
+    auto has_word = [&](std::string_view address) {
+      for (const ir::Word& w : block_.words)
+        if (w.address == address) return true;
+      return false;
+    };
+    auto has_spindle = [&] {
+      for (const ir::Word& w : block_.words)
+        if (w.kind == ir::WordKind::Code && w.code >= 0)
+          for (const FnCall& call : program_.semantics.codes[w.code].calls)
+            if (fn_group(call.fn) == FnGroup::Spindle) return true;
+      return false;
+    };
+    if (!has_group("a")) missing.push_back("the motion (group a)");
+    if (!has_group("i")) missing.push_back("G90/G91");
+    if (s_.control_type != "positioning" && !has_group("c")) missing.push_back("the plane (G17-G19)");
+    if (!has_word("F")) missing.push_back("F");
+    if (!has_word("S") || !has_spindle()) missing.push_back("S with M03/M04/M05");
+    if (!has_word("T")) missing.push_back("T");
+    if (!missing.empty()) {
+      std::string list;
+      for (size_t i = 0; i < missing.size(); ++i) list += (i ? ", " : "") + missing[i];
+      diags_.report(DiagId::MainBlockIncomplete, block_.range, list);
+    }
+  }
+
+  // §1.9: M02 ends the program, M30 the information. In a part the block-skip switch
+  // may drop, it ends nothing for sure: the reader goes on.
+  bool ends = false, ends_information = false;
+  for (const ir::Word& w : block_.words) {
+    if (w.kind != ir::WordKind::Code || w.code < 0) continue;
+    for (const FnCall& call : program_.semantics.codes[w.code].calls) {
+      if (call.fn != Fn::ProgramEnd && call.fn != Fn::ProgramEndInformation) continue;
+      if (block_.skippable || w.optional) {
+        diags_.report(DiagId::SkippableEnd, w.range, w.address + w.text);
+        continue;
+      }
+      ends = true;
+      ends_information = ends_information || call.fn == Fn::ProgramEndInformation;
+    }
+  }
+  bool empty = block_.words.empty() && block_.comments.empty() && !block_.skippable && !block_.has_errors;
+  if (!empty) unit_.blocks.push_back(std::move(block_));
+  if (ends) {
+    unit_.ends_information = ends_information;
+    end_program({}, true);
+    if (ends_information) state_ = State::Trailer;
+  }
+}
+
+antlrcpp::Any Reader::visitElement(GostParser::ElementContext* ctx) {
+  if (ctx->RPAREN()) {
+    // Table 2: ')' switches processing on; without '(' it changes nothing.
+    diags_.report(DiagId::StrayRightParen, range(ctx));
+    return nullptr;
+  }
+  visitChildren(ctx);
+  return nullptr;
+}
+
+antlrcpp::Any Reader::visitSkip(GostParser::SkipContext* ctx) {
+  if (!s_.format.block_skip) {
+    diags_.report(DiagId::FeatureNotInFormat, range(ctx), "block skip '/'", "/");
+  } else if (ctx->DIGITS()) {
+    diags_.report(DiagId::SkipLevel, range(ctx), ctx->DIGITS()->getText());
+  }
+  // Table 2 and §2.7: before the block number (or as the first thing in a block
+  // without one) '/' acts on the whole block; inside it, on the rest of the block.
+  if (!seen_element_) block_.skippable = true;
+  else optional_rest_ = true;
+  return nullptr;
+}
+
+WrittenNumber Reader::written_number(GostParser::SignContext* sign, GostParser::NumberContext* number, char letter) {
+  WrittenNumber n;
+  std::vector<antlr4::Token*> tokens;
+  if (sign) {
+    n.has_sign = true;
+    n.negative = sign->MINUS() != nullptr;
+    tokens.push_back(sign->getStart());
+  }
+  for (auto* child : number->children) {
+    auto* terminal = dynamic_cast<antlr4::tree::TerminalNode*>(child);
+    if (!terminal) continue;
+    antlr4::Token* t = terminal->getSymbol();
+    tokens.push_back(t);
+    if (t->getType() == GostLexer::POINT) n.has_point = true;
+    else (n.has_point ? n.after : n.before) += t->getText();
+  }
+  // Ignored characters between the digits are dropped (Table 2 note 2) but worth
+  // a warning: `X10 30` is read as X1030.
+  for (size_t i = 1; i < tokens.size(); ++i)
+    if (tokens[i]->getStartIndex() != tokens[i - 1]->getStopIndex() + 1) {
+      std::string as_read(1, letter);
+      if (n.has_sign) as_read += n.negative ? '-' : '+';
+      as_read += n.before + (n.has_point ? "." + n.after : "");
+      diags_.report(DiagId::SpaceInNumber, range(tokens.front(), tokens.back()), std::string(1, letter), as_read);
+      break;
+    }
+  return n;
+}
+
+antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
+  bool main = ctx->COLON() != nullptr;
+  SourceRange r = range(ctx);
+  std::string address = main ? ":" : "N";
+  if (seen_element_ || block_.number) {
+    diags_.report(DiagId::BlockNumberPosition, r, ctx->getText());
+    block_.has_errors = true;
+    return nullptr;
+  }
+  seen_element_ = true;
+  if (main && !s_.format.main_block) {
+    diags_.report(DiagId::FeatureNotInFormat, r, "the main block ':'", ":");
+    block_.has_errors = true;
+    return nullptr;
+  }
+  WrittenNumber n = written_number(ctx->sign(), ctx->number(), 'N');
+  if (main && n.before.empty() && !n.has_point) {
+    diags_.report(DiagId::MainBlockNoDigits, r);
+    block_.has_errors = true;
+    return nullptr;
+  }
+  const WordFormat* format = s_.format.word('N');
+  if (!format) {
+    diags_.report(DiagId::AddressUndefined, r, "N");
+    block_.has_errors = true;
+    return nullptr;
+  }
+  auto value = decode('N', *format, n, s_.decode, r, diags_);
+  if (!value) {
+    block_.has_errors = true;
+    return nullptr;
+  }
+  block_.number = static_cast<uint32_t>(*value);
+  block_.main_block = main;
+  ir::Word w;
+  w.kind = ir::WordKind::BlockNumber;
+  w.slot = static_cast<uint8_t>(ir::slot_of('N'));
+  w.address = address;
+  w.text = ctx->getText().substr(1);
+  w.value = program_.number(*value, r);
+  w.range = r;
+  block_.words.push_back(std::move(w));
+  return nullptr;
+}
+
+int32_t Reader::code_index(char letter, int number) {
+  const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
+  auto it = table.find(number);
+  if (it == table.end()) return -1;
+  int key = (letter == 'G' ? 0 : 1000) + number;
+  if (auto found = code_map_.find(key); found != code_map_.end()) return found->second;
+  program_.semantics.codes.push_back(it->second.desc);
+  int32_t index = static_cast<int32_t>(program_.semantics.codes.size() - 1);
+  code_map_[key] = index;
+  return index;
+}
+
+antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
+  seen_element_ = true;
+  char letter = ctx->LETTER()->getText()[0];
+  SourceRange r = range(ctx);
+  WrittenNumber n = written_number(ctx->sign(), ctx->number(), letter);
+  ir::Word w;
+  w.slot = static_cast<uint8_t>(ir::slot_of(letter));
+  w.address = std::string(1, letter);
+  w.text = ctx->getText().substr(1);
+  w.range = r;
+  w.optional = optional_rest_;
+  // Table 1 note 2: the format of the NC says which addresses exist.
+  const WordFormat* format = s_.format.word(letter);
+  if (!format) {
+    diags_.report(DiagId::AddressUndefined, r, std::string(1, letter));
+    w.kind = ir::WordKind::Ignored;
+    block_.has_errors = true;
+    block_.words.push_back(std::move(w));
+    return nullptr;
+  }
+  auto value = decode(letter, *format, n, s_.decode, r, diags_);
+  if (!value) {
+    w.kind = ir::WordKind::Ignored;
+    block_.has_errors = true;
+    block_.words.push_back(std::move(w));
+    return nullptr;
+  }
+  w.value = program_.number(*value, r);
+  if (letter == 'G' || letter == 'M') {
+    w.kind = ir::WordKind::Code;
+    w.code = code_index(letter, static_cast<int>(*value));
+  }
+  if (letter == 'T' && s_.tool_digits > 0) {
+    // §3.3.5: T may carry the tool number and then the offset number.
+    int scale = 1;
+    for (int i = 0; i < s_.offset_digits; ++i) scale *= 10;
+    int all = static_cast<int>(*value);
+    int tool = all / scale, offset = all % scale;
+    if (tool == 0 && all != 0)
+      diags_.report(DiagId::ToolSplitZero, r, "T" + w.text, tool, offset, s_.tool_digits + s_.offset_digits);
+    program_.exprs[w.value].number = tool;
+    ir::Word d = w;
+    d.slot = static_cast<uint8_t>(ir::slot_of('D'));
+    d.value = program_.number(offset, r);
+    d.address = "D";
+    d.text = std::to_string(offset);
+    block_.words.push_back(std::move(w));
+    block_.words.push_back(std::move(d));
+    return nullptr;
+  }
+  block_.words.push_back(std::move(w));
+  return nullptr;
+}
+
+void Reader::check_comment_text(antlr4::Token* token) {
+  // §1.5: '%' and ':' must not be used inside the parentheses.
+  size_t begin = token->getStartIndex();
+  size_t end = token->getStopIndex();
+  for (size_t i = begin + 1; i <= end && i < line_text_.size(); ++i) {
+    char c = line_text_[i];
+    if (c != '%' && c != ':') continue;
+    uint32_t col = base_ + static_cast<uint32_t>(i) + 1;
+    diags_.report(c == '%' ? DiagId::CommentPercent : DiagId::CommentColon, {file_, line_no_, col, line_no_, col + 1});
+    block_.has_errors = true;
+  }
+}
+
+antlrcpp::Any Reader::visitComment(GostParser::CommentContext* ctx) {
+  antlr4::Token* t = ctx->getStart();
+  check_comment_text(t);
+  size_t begin = t->getStartIndex();
+  size_t length = t->getStopIndex() - begin + 1;
+  if (ctx->OPEN_COMMENT()) {
+    diags_.report(DiagId::CommentUnterminated, range(t, t));
+    block_.has_errors = true;
+    block_.comments.emplace_back(line_text_.substr(begin + 1, length - 1));
+  } else {
+    block_.comments.emplace_back(line_text_.substr(begin + 1, length - 2));
+  }
+  return nullptr;
+}
+
+class GostFrontend final : public Frontend {
+ public:
+  explicit GostFrontend(Settings settings) : settings_(std::move(settings)) {
+    rules_.tables = &settings_.tables;
+    rules_.pedantic = settings_.decode.mode == Mode::Pedantic;
+  }
+
+  ir::Program read(const SourceManager& sources, uint32_t file, Diagnostics& diags) override {
+    ir::Program program;
+    program.dialect = "gost";
+    program.files.push_back(file);
+    program.semantics.dialect = "gost";
+    program.semantics.conventions = settings_.conventions;
+    program.semantics.cycles = settings_.tables.cycles;
+    diags.set_citations(settings_.tables.citations);
+    Reader reader(settings_, program, sources.file(file), file, diags);
+    reader.run();
+    set_power_on(program);
+    return program;
+  }
+
+  const CheckRules& rules() const override { return rules_; }
+
+ private:
+  // §8: the functions set at power-on and after M02/M30 for the control type.
+  void set_power_on(ir::Program& program) const {
+    auto& codes = program.semantics.codes;
+    for (const std::string& token : settings_.tables.power_on.at(settings_.control_type)) {
+      CodeDesc desc;
+      if (token.size() > 1 && token[0] == 'G') {
+        auto it = settings_.tables.g_codes.find(std::stoi(token.substr(1)));
+        if (it == settings_.tables.g_codes.end()) continue;
+        desc = it->second.desc;
+      } else {
+        desc.name = token;
+        std::string error;
+        stdlib::parse_functions(token, settings_.tables.cycles, desc.calls, error);
+      }
+      uint16_t index = 0;
+      while (index < codes.size() && !(codes[index].name == desc.name && codes[index].calls == desc.calls)) ++index;
+      if (index == codes.size()) codes.push_back(desc);
+      program.semantics.power_on.push_back(index);
+    }
+  }
+
+  Settings settings_;
+  CheckRules rules_;
+};
+
+}  // namespace
+
+std::unique_ptr<Frontend> make_gost_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
+  auto settings = load_settings(profile, diags);
+  if (!settings) return nullptr;
+  return std::make_unique<GostFrontend>(std::move(*settings));
+}
+
+}  // namespace ncc::gost

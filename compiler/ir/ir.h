@@ -1,0 +1,131 @@
+// The common intermediate representation of every dialect.
+//
+// A Program is a list of Units (programs on a medium, subprograms, macros). A Unit is
+// a list of source Blocks. A Block keeps its source range and its original words
+// (address, text, value) and lists its semantic statements in execution order: the
+// machine action (its G/M codes and parameter words), assignments, jumps, repeat
+// loops, calls, returns and system operations. Expressions live in one arena per
+// Program. The dialect's code table (Program::semantics) says what each G/M code
+// means to the runtime. `ncc ir` prints all of it as stable text (ir_print.cpp).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/program_semantics.h"
+#include "stdlib/builtins.h"
+#include "support/source.h"
+#include "vm/variables.h"
+
+namespace ncc::ir {
+
+using ExprId = uint32_t;
+constexpr ExprId kNoExpr = UINT32_MAX;
+
+enum class ExprOp : uint8_t {
+  Number,  // number
+  Var,     // space[index a]
+  Neg, Not,
+  Add, Sub, Mul, Div, Mod, Pow,
+  Eq, Ne, Lt, Le, Gt, Ge, And, Or, Xor,
+  Call,  // builtin(a[, b])
+};
+
+struct Expr {
+  ExprOp op = ExprOp::Number;
+  Builtin builtin = Builtin::Sin;  // Call
+  uint16_t space = 0;              // Var: index into Program::spaces
+  double number = 0;               // Number
+  ExprId a = kNoExpr;
+  ExprId b = kNoExpr;
+  SourceRange range;
+};
+
+inline int slot_of(char letter) { return letter >= 'A' && letter <= 'Z' ? letter - 'A' : -1; }
+
+enum class WordKind : uint8_t {
+  Parameter,    // a value the machine action reads: X, F, S...
+  Code,         // a G or M code: `code` indexes Program::semantics.codes
+  BlockNumber,  // N or ':'
+  Ignored,      // kept for printing only (a word the checks rejected)
+};
+
+struct Word {
+  WordKind kind = WordKind::Parameter;
+  uint8_t slot = 0;
+  std::string address;  // as written: "X", "G", ":"
+  std::string text;     // the value as written: "-10.5", "01"
+  ExprId value = kNoExpr;
+  int32_t code = -1;
+  bool optional = false;  // after a mid-block '/': dropped when block skip is on
+  SourceRange range;
+};
+
+enum class StmtKind : uint8_t {
+  Comment,      // operator text shown when the block runs (`label`)
+  Machine,      // run the block's codes and parameter words on the runtime
+  Assign,       // target := value
+  Jump,         // go to `label` (if `cond` is true, when given)
+  RepeatBegin,  // repeat the statements up to the matching RepeatEnd `count` times
+  RepeatEnd,
+  Call,         // call unit/file `label`, `count` times
+  Return,
+};
+
+struct Stmt {
+  Stmt() = default;
+  Stmt(StmtKind k, SourceRange r) : kind(k), range(r) {}
+
+  StmtKind kind = StmtKind::Machine;
+  SourceRange range;
+  ExprId target = kNoExpr;  // Assign: a Var expression
+  ExprId value = kNoExpr;   // Assign value; RepeatBegin/Call count
+  ExprId cond = kNoExpr;    // Jump condition
+  std::string label;        // Jump target label; Call target
+};
+
+struct Block {
+  SourceRange range;
+  std::optional<uint32_t> number;  // N / ':' value
+  bool main_block = false;         // ':' (GOST 20999 §2.6)
+  bool skippable = false;          // '/' before the block: skipped when block skip is on
+  bool has_errors = false;
+  std::string label;
+  std::vector<Word> words;
+  std::vector<std::string> comments;
+  std::vector<Stmt> stmts;
+};
+
+enum class UnitKind : uint8_t { Program, Subprogram, Macro };
+
+struct Unit {
+  UnitKind kind = UnitKind::Program;
+  std::string name;   // "%0001", "%" for a program without number
+  std::string title;  // the comment of the program-start line
+  SourceRange range;
+  std::vector<Block> blocks;
+  bool ends_information = false;  // terminated by end of information (M30)
+};
+
+struct Program {
+  std::string dialect;
+  std::vector<uint32_t> files;  // SourceManager indices of the files read
+  ProgramSemantics semantics;
+  std::vector<VarSpace> spaces;
+  std::vector<Expr> exprs;
+  std::vector<Unit> units;
+
+  ExprId add(Expr e) {
+    exprs.push_back(e);
+    return static_cast<ExprId>(exprs.size() - 1);
+  }
+  ExprId number(double v, SourceRange range) { return add({ExprOp::Number, Builtin::Sin, 0, v, kNoExpr, kNoExpr, range}); }
+  bool is_constant(ExprId id) const { return id != kNoExpr && exprs[id].op == ExprOp::Number; }
+};
+
+std::string print(const Program& program, const SourceManager& sources);
+std::string print_expr(const Program& program, ExprId id);
+
+}  // namespace ncc::ir

@@ -1,0 +1,261 @@
+#include "lower.h"
+
+#include <bit>
+#include <map>
+
+#include "vm/opcodes.h"
+
+namespace ncc {
+
+namespace {
+
+using vm::Op;
+
+class Lowering {
+ public:
+  Lowering(const ir::Program& program, const SourceManager& sources) : p_(program), sources_(sources) {
+    m_.dialect = program.dialect;
+    m_.semantics = program.semantics;
+    m_.spaces = program.spaces;
+    for (uint32_t file : program.files) file_index(file);
+  }
+
+  vm::Module run() {
+    for (const ir::Unit& unit : p_.units) unit_(unit);
+    return std::move(m_);
+  }
+
+ private:
+  uint32_t file_index(uint32_t file) {
+    auto [it, fresh] = files_.emplace(file, static_cast<uint32_t>(m_.source_map.files.size()));
+    if (fresh) m_.source_map.files.push_back(sources_.file(file).path());
+    return it->second;
+  }
+
+  uint32_t pc() const { return static_cast<uint32_t>(m_.code.size()); }
+  void op(Op o) { m_.code.push_back(static_cast<uint8_t>(o)); }
+  void u8(uint32_t v) { m_.code.push_back(static_cast<uint8_t>(v)); }
+  void u16(uint32_t v) {
+    u8(v & 0xFF);
+    u8((v >> 8) & 0xFF);
+  }
+  void u32(uint32_t v) {
+    for (int i = 0; i < 4; ++i) u8((v >> (8 * i)) & 0xFF);
+  }
+  void patch(uint32_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) m_.code[at + i] = static_cast<uint8_t>((v >> (8 * i)) & 0xFF);
+  }
+  // Emits a jump-like instruction and returns where its target goes.
+  uint32_t jump(Op o, uint32_t target = 0) {
+    op(o);
+    uint32_t at = pc();
+    u32(target);
+    return at;
+  }
+
+  uint32_t number(double v) {
+    auto [it, fresh] = numbers_.emplace(std::bit_cast<uint64_t>(v), static_cast<uint32_t>(m_.numbers.size()));
+    if (fresh) m_.numbers.push_back(v);
+    return it->second;
+  }
+  uint32_t string(const std::string& s) {
+    auto [it, fresh] = strings_.emplace(s, static_cast<uint32_t>(m_.strings.size()));
+    if (fresh) m_.strings.push_back(s);
+    return it->second;
+  }
+
+  uint32_t source_block(const ir::Block& b) {
+    SourceBlock s;
+    s.file = file_index(b.range.file);
+    s.line = b.range.line;
+    s.col = b.range.col;
+    s.end_line = b.range.end_line;
+    s.end_col = b.range.end_col;
+    s.has_number = b.number.has_value();
+    s.main_block = b.main_block;
+    s.has_errors = b.has_errors;
+    s.number = b.number.value_or(0);
+    s.first_word = static_cast<uint32_t>(m_.source_map.words.size());
+    for (const ir::Word& w : b.words)
+      if (w.kind == ir::WordKind::Parameter)
+        m_.source_map.words.push_back({w.slot, w.range.line, w.range.col, w.range.end_col});
+    s.word_count = static_cast<uint32_t>(m_.source_map.words.size()) - s.first_word;
+    m_.source_map.blocks.push_back(s);
+    return static_cast<uint32_t>(m_.source_map.blocks.size() - 1);
+  }
+
+  void expr(ir::ExprId id) {
+    const ir::Expr& e = p_.exprs[id];
+    switch (e.op) {
+      case ir::ExprOp::Number:
+        op(Op::Const);
+        u32(number(e.number));
+        return;
+      case ir::ExprOp::Var:
+        if (p_.is_constant(e.a)) {
+          op(Op::Load);
+          u8(e.space);
+          u32(static_cast<uint32_t>(p_.exprs[e.a].number));
+        } else {
+          expr(e.a);
+          op(Op::LoadX);
+          u8(e.space);
+        }
+        return;
+      case ir::ExprOp::Neg:
+      case ir::ExprOp::Not:
+        expr(e.a);
+        op(e.op == ir::ExprOp::Neg ? Op::Neg : Op::Not);
+        return;
+      case ir::ExprOp::Call:
+        expr(e.a);
+        if (e.b != ir::kNoExpr) expr(e.b);
+        op(builtin_info(e.builtin).arity == 2 ? Op::Call2 : Op::Call1);
+        u8(static_cast<uint32_t>(e.builtin));
+        return;
+      default: break;
+    }
+    expr(e.a);
+    expr(e.b);
+    static const std::map<ir::ExprOp, Op> binary = {
+        {ir::ExprOp::Add, Op::Add}, {ir::ExprOp::Sub, Op::Sub}, {ir::ExprOp::Mul, Op::Mul},
+        {ir::ExprOp::Div, Op::Div}, {ir::ExprOp::Mod, Op::Mod}, {ir::ExprOp::Pow, Op::Pow},
+        {ir::ExprOp::Eq, Op::Eq},   {ir::ExprOp::Ne, Op::Ne},   {ir::ExprOp::Lt, Op::Lt},
+        {ir::ExprOp::Le, Op::Le},   {ir::ExprOp::Gt, Op::Gt},   {ir::ExprOp::Ge, Op::Ge},
+        {ir::ExprOp::And, Op::And}, {ir::ExprOp::Or, Op::Or},   {ir::ExprOp::Xor, Op::Xor}};
+    op(binary.at(e.op));
+  }
+
+  void machine(const ir::Block& b) {
+    // A '/' inside the block: the words after it are dropped when block skip is on.
+    uint32_t skip = 0;
+    for (const ir::Word& w : b.words) {
+      if (w.optional && !skip) skip = jump(Op::JumpSkip);
+      if (w.kind == ir::WordKind::Code && w.code >= 0) {
+        op(Op::Code);
+        u16(static_cast<uint32_t>(w.code));
+      } else if (w.kind == ir::WordKind::Parameter) {
+        if (p_.is_constant(w.value)) {
+          op(Op::Word);
+          u8(w.slot);
+          u32(number(p_.exprs[w.value].number));
+        } else {
+          expr(w.value);
+          op(Op::WordPop);
+          u8(w.slot);
+        }
+      }
+    }
+    if (skip) patch(skip, pc());
+    op(Op::Exec);
+  }
+
+  void unit_(const ir::Unit& unit) {
+    labels_.clear();
+    fixups_.clear();
+    std::vector<std::pair<uint32_t, uint32_t>> repeats;  // (Repeat target operand, loop start)
+    bool entry_added = false;
+    for (const ir::Block& b : unit.blocks) {
+      uint32_t source = source_block(b);
+      m_.lines.push_back({pc(), source});
+      if (!entry_added) {
+        m_.entries.push_back({unit.name, vm::EntryKind::Program, pc(), source});
+        entry_added = true;
+      }
+      if (b.main_block && b.number)
+        m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc(), source});
+      if (!b.label.empty()) labels_[b.label] = pc();
+      if (b.number) labels_.emplace(fmt::format("N{}", *b.number), pc());
+      uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
+      op(Op::Step);
+      for (const ir::Stmt& s : b.stmts) {
+        switch (s.kind) {
+          case ir::StmtKind::Comment:
+            op(Op::Comment);
+            u32(string(s.label));
+            break;
+          case ir::StmtKind::Machine: machine(b); break;
+          case ir::StmtKind::Assign: {
+            const ir::Expr& target = p_.exprs[s.target];
+            if (p_.is_constant(target.a)) {
+              expr(s.value);
+              op(Op::Store);
+              u8(target.space);
+              u32(static_cast<uint32_t>(p_.exprs[target.a].number));
+            } else {
+              expr(target.a);
+              expr(s.value);
+              op(Op::StoreX);
+              u8(target.space);
+            }
+            break;
+          }
+          case ir::StmtKind::Jump:
+            if (s.cond != ir::kNoExpr) {
+              expr(s.cond);
+              fixups_.push_back({jump(Op::JumpIf), s.label});
+            } else {
+              fixups_.push_back({jump(Op::Jump), s.label});
+            }
+            break;
+          case ir::StmtKind::RepeatBegin: {
+            expr(s.value);
+            uint32_t operand = jump(Op::Repeat);
+            repeats.push_back({operand, pc()});
+            break;
+          }
+          case ir::StmtKind::RepeatEnd: {
+            auto [operand, start] = repeats.back();
+            repeats.pop_back();
+            jump(Op::EndRepeat, start);
+            patch(operand, pc());
+            break;
+          }
+          case ir::StmtKind::Call:
+            for (size_t i = 0; i < m_.entries.size(); ++i)
+              if (m_.entries[i].name == s.label) {
+                op(Op::CallEntry);
+                u16(static_cast<uint32_t>(i));
+              }
+            break;
+          case ir::StmtKind::Return: op(Op::Return); break;
+        }
+      }
+      if (skip) patch(skip, pc());
+    }
+    if (!entry_added) {
+      // An empty program still gets its entry point, so it can be run (and end).
+      SourceBlock s;
+      s.file = file_index(unit.range.file);
+      s.line = unit.range.line;
+      s.col = unit.range.col;
+      m_.source_map.blocks.push_back(s);
+      uint32_t source = static_cast<uint32_t>(m_.source_map.blocks.size() - 1);
+      m_.lines.push_back({pc(), source});
+      m_.entries.push_back({unit.name, vm::EntryKind::Program, pc(), source});
+    }
+    op(Op::End);
+    for (const auto& [at, label] : fixups_)
+      if (auto it = labels_.find(label); it != labels_.end()) patch(at, it->second);
+  }
+
+  const ir::Program& p_;
+  const SourceManager& sources_;
+  vm::Module m_;
+  std::map<uint32_t, uint32_t> files_;
+  std::map<uint64_t, uint32_t> numbers_;
+  std::map<std::string, uint32_t> strings_;
+  std::map<std::string, uint32_t> labels_;
+  std::vector<std::pair<uint32_t, std::string>> fixups_;
+};
+
+}  // namespace
+
+vm::Module lower(const ir::Program& program, const SourceManager& sources, const stdlib::Profile& profile) {
+  vm::Module m = Lowering(program, sources).run();
+  m.profile_name = profile.text().empty() ? "" : profile.name();
+  m.profile_text = profile.text();
+  return m;
+}
+
+}  // namespace ncc

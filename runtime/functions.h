@@ -1,0 +1,39 @@
+// The canonical functions (functions.def) and the modal groups they set.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace ncc {
+
+enum class FnGroup : uint8_t {
+  None, Motion, Plane, Distance, Units, FeedMode, SpindleMode, CutterComp, ToolLength, WorkOffset, Cycle,
+  Spindle, Mist, Flood, Clamp, Override, SpindleHold,
+  Count
+};
+
+enum class Fn : uint16_t {
+#define FN(id, name, group, doc) id,
+#include "functions.def"
+#undef FN
+  Count
+};
+
+std::string_view fn_name(Fn fn);
+FnGroup fn_group(Fn fn);
+std::optional<Fn> fn_by_name(std::string_view name);
+
+// A function with its argument: offset(3), cycle(2) (index into the cycle table).
+struct FnCall {
+  Fn fn;
+  uint16_t arg = 0;
+  bool operator==(const FnCall&) const = default;
+};
+
+// When an M function acts relative to the motion of its block (GOST 20999 Table 7).
+enum class Timing : uint8_t { None, Before, After };
+// Whether a function persists (modal) or acts in its block only.
+enum class Scope : uint8_t { Modal, Block };
+
+}  // namespace ncc

@@ -1,0 +1,791 @@
+#include "machine.h"
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+#include <numbers>
+
+namespace ncc {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2 * std::numbers::pi;
+// The in-plane axes (u, v) and the perpendicular axis w of XY, ZX, YZ (GOST S-9.2:
+// u x v = +w, so "clockwise seen from +w" is the negative sense in (u, v)).
+constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
+constexpr const char* kPlaneNames[] = {"XY", "ZX", "YZ"};
+// The interpolation parameter parallel to each linear axis (Table 1).
+constexpr char kParameterOf[3] = {'I', 'J', 'K'};
+constexpr double kSamePoint = 1e-7;  // mm: end point equal to start point
+
+bool is_linear_axis(int axis) { return axis < 3 || axis >= 6; }
+
+std::string mm_text(double v) {
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+// The angle in [0, 2π).
+double wrap(double a) {
+  a = std::fmod(a, kTwoPi);
+  return a < 0 ? a + kTwoPi : a;
+}
+
+}  // namespace
+
+Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
+                 RuntimeIssues& issues)
+    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues) {}
+
+void Machine::power_on() {
+  machine_ = config_.initial_position;
+  tool_loaded_ = 0;
+  reset_state();
+}
+
+void Machine::reset_state() {
+  modal_ = Modal{};
+  position_offset_ = {};
+  feed_.reset();
+  speed_ = 0;
+  tool_selected_ = 0;
+  offset_number_ = 0;
+  spindle_direction_ = 0;
+  cycle_ = {};
+  parabola_middle_.reset();
+  Step saved = step_;
+  step_ = Step{};
+  for (uint16_t index : sem_.power_on) {
+    const CodeDesc& code = sem_.codes[index];
+    for (const FnCall& call : code.calls) {
+      if (fn_group(call.fn) == FnGroup::Motion) motion_name_ = code.name;
+      apply(call, Scope::Modal, false);
+    }
+  }
+  step_ = saved;
+}
+
+AxisValues Machine::frame_offset(int work_offset) const {
+  AxisValues off{};
+  if (step_.block_offset == 0) return off;  // G53: the machine reference point
+  if (auto it = config_.work_offsets.find(work_offset); it != config_.work_offsets.end()) off = it->second;
+  for (int i = 0; i < kAxisCount; ++i) off[i] += position_offset_[i];
+  return off;
+}
+
+AxisValues Machine::program_position() const {
+  AxisValues p{};
+  AxisValues off = frame_offset(modal_.work_offset);
+  for (int i = 0; i < kAxisCount; ++i) p[i] = is_linear_axis(i) ? to_program(machine_[i] - off[i]) : machine_[i] - off[i];
+  return p;
+}
+
+bool Machine::has_axis_word() const {
+  for (char axis : conv_.axes)
+    if (has(axis)) return true;
+  return false;
+}
+
+AxisValues Machine::target() {
+  // Blocks 2 of a three-point parabola measure from the intermediate point (Appendix 5).
+  const AxisValues& base = parabola_middle_ ? *parabola_middle_ : machine_;
+  AxisValues t = base;
+  AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    double v = word(letter);
+    v = is_linear_axis(i) ? length_units(v) : angle_degrees(v);
+    t[i] = modal_.absolute ? v + off[i] : base[i] + v;
+  }
+  return t;
+}
+
+double Machine::angle_degrees(double v) const {
+  switch (conv_.angle_unit) {
+    case AngleUnit::Degree: return v;
+    case AngleUnit::Radian: return v * 180.0 / kPi;
+    case AngleUnit::Revolution: return v * 360.0;
+  }
+  return v;
+}
+
+Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
+  Event e{kind};
+  AxisValues off = frame_offset(modal_.work_offset);
+  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = is_linear_axis(i) ? to_program(t[i] - off[i]) : t[i] - off[i];
+  return e;
+}
+
+void Machine::emit(Event e) {
+  e.source = step_.request ? step_.request->source : 0;
+  trace_.event(e);
+}
+
+void Machine::move_to(const AxisValues& t) { machine_ = t; }
+
+FnCall Machine::current(FnGroup group) const {
+  switch (group) {
+    case FnGroup::Motion: return {modal_.motion};
+    case FnGroup::Plane: return {modal_.plane == 0 ? Fn::PlaneXY : modal_.plane == 1 ? Fn::PlaneZX : Fn::PlaneYZ};
+    case FnGroup::Distance: return {modal_.absolute ? Fn::DistanceAbsolute : Fn::DistanceIncremental};
+    case FnGroup::Units: return {modal_.inch ? Fn::UnitsInch : Fn::UnitsMm};
+    case FnGroup::FeedMode:
+      return {modal_.feed_mode == 0 ? Fn::FeedInverseTime : modal_.feed_mode == 1 ? Fn::FeedPerMinute
+                                                                                   : Fn::FeedPerRevolution};
+    case FnGroup::SpindleMode: return {modal_.constant_surface ? Fn::SpindleConstantSurface : Fn::SpindleRpm};
+    case FnGroup::CutterComp: return {modal_.comp == 0 ? Fn::CompOff : modal_.comp == 1 ? Fn::CompLeft : Fn::CompRight};
+    case FnGroup::ToolLength:
+      return {modal_.length == 0 ? Fn::LengthOff : modal_.length > 0 ? Fn::LengthPlus : Fn::LengthMinus};
+    case FnGroup::WorkOffset: return {Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)};
+    case FnGroup::Cycle:
+      return modal_.cycle < 0 ? FnCall{Fn::CycleCancel} : FnCall{Fn::Cycle, static_cast<uint16_t>(modal_.cycle)};
+    default: return {Fn::Count};
+  }
+}
+
+void Machine::tool_length_event() {
+  Event e{EventKind::ToolLengthOffset};
+  if (modal_.length != 0) {
+    auto it = config_.offsets.find(offset_number_);
+    double length = it == config_.offsets.end() ? 0 : it->second.length * modal_.length;
+    for (char axis : conv_.tool_offset_axes) e.pos[axis_index(axis)] = to_program(length);
+  }
+  emit(e);
+}
+
+void Machine::cutter_comp_event() {
+  Event e{EventKind::CutterComp};
+  e.n = modal_.comp;
+  if (auto it = config_.offsets.find(offset_number_); it != config_.offsets.end()) e.a = to_program(it->second.radius);
+  emit(e);
+}
+
+void Machine::apply(FnCall call, Scope scope, bool emit_events) {
+  auto event = [&](EventKind kind, int n = 0, double a = 0) {
+    if (!emit_events) return;
+    Event e{kind};
+    e.n = n;
+    e.a = a;
+    emit(e);
+  };
+  switch (call.fn) {
+    case Fn::MotionRapid:
+    case Fn::MotionLinear:
+    case Fn::MotionArcCw:
+    case Fn::MotionArcCcw:
+    case Fn::MotionParabola:
+    case Fn::MotionThread:
+    case Fn::MotionThreadIncreasing:
+    case Fn::MotionThreadDecreasing:
+    case Fn::MotionDwell:
+      if (parabola_middle_ && call.fn != Fn::MotionParabola) {
+        report(DiagId::ParabolaPair, 0, "the motion mode changed");
+        parabola_middle_.reset();
+      }
+      modal_.motion = call.fn;
+      break;
+    case Fn::Dwell: step_.dwell = true; break;
+    case Fn::SetPosition: step_.set_position = true; break;
+    case Fn::PathAccelerate: event(EventKind::PathMode, 0); break;
+    case Fn::PathDecelerate: event(EventKind::PathMode, 1); break;
+    case Fn::PathTapping: event(EventKind::PathMode, 2); break;
+    case Fn::PlaneXY:
+    case Fn::PlaneZX:
+    case Fn::PlaneYZ:
+      modal_.plane = call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2;
+      event(EventKind::Plane, modal_.plane);
+      break;
+    case Fn::DistanceAbsolute: modal_.absolute = true; break;
+    case Fn::DistanceIncremental: modal_.absolute = false; break;
+    case Fn::UnitsMm:
+    case Fn::UnitsInch:
+      modal_.inch = call.fn == Fn::UnitsInch;
+      event(EventKind::Units, modal_.inch);
+      break;
+    case Fn::FeedInverseTime:
+    case Fn::FeedPerMinute:
+    case Fn::FeedPerRevolution:
+      modal_.feed_mode = call.fn == Fn::FeedInverseTime ? 0 : call.fn == Fn::FeedPerMinute ? 1 : 2;
+      event(EventKind::FeedMode, modal_.feed_mode);
+      break;
+    case Fn::SpindleConstantSurface:
+    case Fn::SpindleRpm:
+      modal_.constant_surface = call.fn == Fn::SpindleConstantSurface;
+      event(EventKind::SpindleMode, modal_.constant_surface);
+      break;
+    case Fn::CompOff:
+    case Fn::CompLeft:
+    case Fn::CompRight:
+      modal_.comp = call.fn == Fn::CompOff ? 0 : call.fn == Fn::CompLeft ? 1 : 2;
+      if (emit_events) cutter_comp_event();
+      break;
+    case Fn::LengthOff:
+    case Fn::LengthPlus:
+    case Fn::LengthMinus:
+      modal_.length = call.fn == Fn::LengthOff ? 0 : call.fn == Fn::LengthPlus ? 1 : -1;
+      if (emit_events) tool_length_event();
+      break;
+    case Fn::WorkOffset:
+      if (call.arg != 0 && !config_.work_offsets.count(call.arg)) {
+        report(DiagId::OffsetUnknown, 0, call.arg);
+        break;
+      }
+      if (scope == Scope::Block) {
+        step_.block_offset = call.arg;
+      } else {
+        modal_.work_offset = call.arg;
+        if (emit_events) {
+          Event e{EventKind::WorkOffset};
+          e.n = call.arg;
+          if (auto it = config_.work_offsets.find(call.arg); it != config_.work_offsets.end())
+            for (int i = 0; i < kAxisCount; ++i) e.pos[i] = is_linear_axis(i) ? to_program(it->second[i]) : it->second[i];
+          emit(e);
+        }
+      }
+      break;
+    case Fn::CycleCancel:
+      modal_.cycle = -1;
+      cycle_ = {};
+      break;
+    case Fn::Cycle: modal_.cycle = call.arg; break;
+    case Fn::ProgramStop: event(EventKind::Stop, 0); break;
+    case Fn::ProgramOptionalStop: event(EventKind::Stop, config_.optional_stop ? 1 : 2); break;
+    case Fn::ProgramEnd: step_.end = true; break;
+    case Fn::ProgramEndInformation: step_.end_information = true; break;
+    case Fn::SpindleCw:
+    case Fn::SpindleCcw:
+      modal_.spindle = spindle_direction_ = call.fn == Fn::SpindleCw ? 1 : -1;
+      event(EventKind::SpindleOn, modal_.spindle);
+      break;
+    case Fn::SpindleStop:
+      modal_.spindle = 0;
+      event(EventKind::SpindleStop);
+      break;
+    case Fn::SpindleOrient:
+      modal_.spindle = 2;
+      event(EventKind::SpindleOrient, 0, 0);
+      break;
+    case Fn::ToolChange:
+      if (conv_.m06_stops_spindle) {
+        if (modal_.spindle != 0) apply({Fn::SpindleStop}, scope, emit_events);
+        if (modal_.mist || modal_.flood) apply({Fn::CoolantOff}, scope, emit_events);
+      }
+      tool_loaded_ = tool_selected_;
+      event(EventKind::ChangeTool, tool_loaded_);
+      break;
+    case Fn::CoolantMist:
+      modal_.mist = true;
+      event(EventKind::Coolant, 1);
+      break;
+    case Fn::CoolantFlood:
+      modal_.flood = true;
+      event(EventKind::Coolant, 2);
+      break;
+    case Fn::CoolantOff:
+      modal_.mist = modal_.flood = false;
+      event(EventKind::Coolant, 0);
+      break;
+    case Fn::ClampOn:
+    case Fn::ClampOff:
+      modal_.clamp = call.fn == Fn::ClampOn;
+      event(EventKind::Clamp, modal_.clamp);
+      break;
+    case Fn::OverrideEnable:
+    case Fn::OverrideDisable:
+      modal_.override_enabled = call.fn == Fn::OverrideEnable;
+      event(EventKind::Override, modal_.override_enabled);
+      break;
+    case Fn::SpindleHoldOff:
+    case Fn::SpindleHoldOn:
+      modal_.spindle_hold = call.fn == Fn::SpindleHoldOn;
+      event(EventKind::SpindleHold, modal_.spindle_hold);
+      break;
+    case Fn::Count: break;
+  }
+}
+
+void Machine::registers() {
+  // F, S, T and the offset number are modal registers (§1.3); G00 ignores F but
+  // keeps it (Table 5).
+  if (has('F')) {
+    feed_ = word('F');
+    Event e{EventKind::FeedRate};
+    e.a = *feed_;
+    emit(e);
+  }
+  if (has('S')) {
+    speed_ = word('S');
+    Event e{EventKind::SpindleSpeed};
+    e.a = speed_;
+    emit(e);
+  }
+  if (has('T')) {
+    tool_selected_ = static_cast<int>(word('T'));
+    if (tool_selected_ != 0 && !config_.tools.count(tool_selected_)) report(DiagId::ToolUnknown, 'T', tool_selected_);
+    Event e{EventKind::SelectTool};
+    e.n = tool_selected_;
+    emit(e);
+  }
+  for (char letter : {'D', 'H'}) {
+    if (!has(letter)) continue;
+    int number = static_cast<int>(word(letter));
+    if (number != 0 && !config_.offsets.count(number)) {
+      report(DiagId::OffsetUnknown, letter, number);
+      continue;
+    }
+    if (number == offset_number_) continue;
+    offset_number_ = number;
+    // A new offset number takes effect at once on an active compensation.
+    if (modal_.comp != 0) cutter_comp_event();
+    if (modal_.length != 0) tool_length_event();
+  }
+}
+
+BlockResult Machine::execute(const BlockRequest& request) {
+  step_ = Step{};
+  step_.request = &request;
+  auto failed = [&] { return step_.error && stop_on_error_; };
+  // 1. Preparatory functions in written order; a block-only code's group comes back
+  //    after the block.
+  for (size_t i = 0; i < request.code_count; ++i) {
+    const CodeDesc& code = sem_.codes[request.codes[i]];
+    if (code.timing != Timing::None) continue;
+    for (const FnCall& call : code.calls) {
+      FnGroup group = fn_group(call.fn);
+      if (code.scope == Scope::Block && group != FnGroup::None && call.fn != Fn::WorkOffset)
+        step_.restore.push_back(current(group));
+      if (group == FnGroup::Motion) motion_name_ = code.name;
+      apply(call, code.scope, true);
+    }
+  }
+  // 2. Registers.
+  registers();
+  if (failed()) return BlockResult::Error;
+  // 3. Auxiliary functions that start before the motion (Table 7), in written order.
+  for (size_t i = 0; i < request.code_count; ++i) {
+    const CodeDesc& code = sem_.codes[request.codes[i]];
+    if (code.timing == Timing::Before)
+      for (const FnCall& call : code.calls) apply(call, code.scope, true);
+  }
+  // 4. The action of the block.
+  action();
+  if (failed()) return BlockResult::Error;
+  // 5. Auxiliary functions that start after the motion, then stops and ends.
+  for (size_t i = 0; i < request.code_count; ++i) {
+    const CodeDesc& code = sem_.codes[request.codes[i]];
+    if (code.timing == Timing::After)
+      for (const FnCall& call : code.calls) apply(call, code.scope, true);
+  }
+  finish();
+  if (failed()) return BlockResult::Error;
+  if (step_.end_information) return BlockResult::EndOfInformation;
+  if (step_.end) return BlockResult::ProgramEnd;
+  return BlockResult::Continue;
+}
+
+void Machine::action() {
+  const bool axes = has_axis_word();
+  if (step_.dwell || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word))) {
+    if (axes) report(DiagId::DwellWithMotion, 0);
+    dwell();
+    return;
+  }
+  if (step_.set_position) {
+    set_position();
+    return;
+  }
+  if (modal_.cycle >= 0 && (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word)))) {
+    cycle();
+    return;
+  }
+  if (!axes) {
+    if (parabola_middle_) {
+      report(DiagId::ParabolaPair, 0, "this block has no dimension word");
+      parabola_middle_.reset();
+    }
+    return;
+  }
+  AxisValues t = target();
+  switch (modal_.motion) {
+    case Fn::MotionRapid: rapid(t); break;
+    case Fn::MotionLinear: linear(t); break;
+    case Fn::MotionArcCw: arc(t, true); break;
+    case Fn::MotionArcCcw: arc(t, false); break;
+    case Fn::MotionParabola: parabola(t); break;
+    case Fn::MotionThread:
+    case Fn::MotionThreadIncreasing:
+    case Fn::MotionThreadDecreasing: thread(t); break;
+    default:
+      report(DiagId::NoMotionMode, 0, motion_name_);
+      move_to(t);
+      break;
+  }
+}
+
+void Machine::finish() {
+  for (const FnCall& call : step_.restore) apply(call, Scope::Modal, true);
+  if (step_.end || step_.end_information) {
+    // Table 8: M02/M30 stop the spindle and feed and switch coolant off, then the NC
+    // returns to its initial state (§8).
+    if (parabola_middle_) report(DiagId::ParabolaPair, 0, "the program ended");
+    if (modal_.spindle != 0) apply({Fn::SpindleStop}, Scope::Modal, true);
+    if (modal_.mist || modal_.flood) apply({Fn::CoolantOff}, Scope::Modal, true);
+    Event e{EventKind::End};
+    e.n = step_.end_information;
+    emit(e);
+    reset_state();
+  }
+  if (step_.error) return;
+  uint64_t unused = step_.request->words->present & ~step_.used;
+  for (int slot = 0; slot < 26; ++slot)
+    if (unused & (uint64_t{1} << slot)) report(DiagId::WordUnused, static_cast<char>('A' + slot), std::string(1, static_cast<char>('A' + slot)));
+}
+
+void Machine::end_of_unit(uint32_t source) {
+  if (!parabola_middle_) return;
+  BlockWords none;
+  BlockRequest request{nullptr, 0, &none, source};
+  step_ = Step{};
+  step_.request = &request;
+  report(DiagId::ParabolaPair, 0, "the program ended");
+  parabola_middle_.reset();
+  step_ = Step{};
+}
+
+void Machine::comment(const std::string& text, uint32_t source) {
+  Event e{EventKind::Comment};
+  e.text = text;
+  e.source = source;
+  trace_.event(e);
+}
+
+bool Machine::need_feed(const char* what, const AxisValues& t) {
+  if (modal_.feed_mode == 0 && !has('F')) {
+    report(DiagId::InverseTimeNoFeed, 0);
+  } else if (!feed_) {
+    report(DiagId::NoFeed, 0, what);
+  } else {
+    return true;
+  }
+  move_to(t);  // recover as if the move had been made
+  return false;
+}
+
+void Machine::rapid(const AxisValues& t) {
+  emit(motion_event(EventKind::Rapid, t));
+  move_to(t);
+}
+
+void Machine::linear(const AxisValues& t) {
+  if (!need_feed("linear interpolation", t)) return;
+  emit(motion_event(EventKind::Linear, t));
+  move_to(t);
+}
+
+void Machine::arc(const AxisValues& t, bool clockwise) {
+  if (!need_feed("circular interpolation", t)) return;
+  const int* axes = kPlaneAxes[modal_.plane];
+  const int u = axes[0], v = axes[1], w = axes[2];
+  const char pu = kParameterOf[u], pv = kParameterOf[v], pw = kParameterOf[w];
+  if (!has(pu) && !has(pv)) {
+    report(DiagId::ArcNoCentre, 0, clockwise ? "clockwise" : "counter-clockwise", kPlaneNames[modal_.plane],
+           fmt::format("{} {}", pu, pv));
+    move_to(t);
+    return;
+  }
+  const Eigen::Vector2d p0(machine_[u], machine_[v]);
+  const Eigen::Vector2d p1(t[u], t[v]);
+  Eigen::Vector2d centre;
+  if (conv_.arc_centre == ArcCentre::Incremental || !modal_.absolute) {
+    // §4.3.3: increments from the start point to the centre.
+    centre = p0 + Eigen::Vector2d(has(pu) ? length_units(word(pu)) : 0, has(pv) ? length_units(word(pv)) : 0);
+  } else {
+    AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+    centre = Eigen::Vector2d(has(pu) ? length_units(word(pu)) + off[u] : p0.x(),
+                             has(pv) ? length_units(word(pv)) + off[v] : p0.y());
+  }
+  const double r0 = (p0 - centre).norm();
+  const double r1 = (p1 - centre).norm();
+  if (r0 < kSamePoint) {
+    report(DiagId::ArcZeroRadius, pu);
+    move_to(t);
+    return;
+  }
+  if (std::fabs(r0 - r1) > conv_.arc_tolerance) {
+    report(DiagId::ArcRadiusMismatch, 0, mm_text(to_program(r0)), mm_text(to_program(r1)),
+           mm_text(to_program(std::fabs(r0 - r1))), mm_text(to_program(conv_.arc_tolerance)));
+    move_to(t);
+    return;
+  }
+  const double a0 = std::atan2(p0.y() - centre.y(), p0.x() - centre.x());
+  const double a1 = std::atan2(p1.y() - centre.y(), p1.x() - centre.x());
+  // End point = start point: a full circle (S-9.4).
+  double sweep = (p1 - p0).norm() < kSamePoint ? kTwoPi : wrap(clockwise ? a0 - a1 : a1 - a0);
+  if (sweep == 0) sweep = kTwoPi;
+
+  // Linear-circular interpolation (§4.3.4, Appendix 4): the perpendicular axis moves
+  // and its parameter is the travel per radian (or per revolution).
+  const double dw = t[w] - machine_[w];
+  if (std::fabs(dw) > kSamePoint) {
+    if (auto lead = word_if(pw); lead && *lead != 0) {
+      double l = length_units(*lead);
+      double turns_angle = conv_.helix_lead == HelixLead::PerRadian ? dw / l : kTwoPi * dw / l;
+      double diff = std::remainder(turns_angle - sweep, kTwoPi);
+      if (turns_angle <= 0 || std::fabs(diff) * r0 > conv_.arc_tolerance) {
+        report(DiagId::HelixLead, pw, mm_text(*lead), mm_text(turns_angle), mm_text(sweep));
+        move_to(t);
+        return;
+      }
+      sweep = sweep + kTwoPi * std::round((turns_angle - sweep) / kTwoPi);
+    } else {
+      report(DiagId::HelixNoLead, 0, std::string(1, pw), std::string(1, kAxisLetters[w]));
+    }
+  }
+  if (conv_.arc_single_quadrant) {
+    // §4.3.5: the arc may not cross the lines through the centre parallel to u or v.
+    double from_start = clockwise ? wrap(a0) : wrap(-a0);  // angle back to the previous boundary
+    double to_boundary = kPi / 2 - std::fmod(from_start, kPi / 2);
+    if (to_boundary < 1e-12) to_boundary = kPi / 2;
+    if (sweep > to_boundary + 1e-9) {
+      report(DiagId::ArcQuadrant, 0, mm_text(sweep * 180 / kPi));
+      move_to(t);
+      return;
+    }
+  }
+  Event e = motion_event(EventKind::Arc, t);
+  e.n = modal_.plane;
+  AxisValues off = frame_offset(modal_.work_offset);
+  e.centre[0] = to_program(centre.x() - off[u]);
+  e.centre[1] = to_program(centre.y() - off[v]);
+  int turns = std::max(1, static_cast<int>(std::ceil(sweep / kTwoPi - 1e-9)));
+  e.rotation = clockwise ? -turns : turns;
+  e.a = to_program(r0);
+  e.b = sweep * 180 / kPi;
+  emit(e);
+  move_to(t);
+}
+
+void Machine::parabola(const AxisValues& t) {
+  if (!need_feed("parabolic interpolation", t)) return;
+  AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+  Eigen::Vector3d p0(machine_[0], machine_[1], machine_[2]);
+  Eigen::Vector3d p2(t[0], t[1], t[2]);
+  Eigen::Vector3d control;
+  if (has('I') || has('J') || has('K')) {
+    // §4.4.3, one block: I, J, K give the intersection of the end tangents.
+    if (parabola_middle_) {
+      report(DiagId::ParabolaPair, 0, "this block is a one-block parabola");
+      parabola_middle_.reset();
+    }
+    for (int i = 0; i < 3; ++i) {
+      char letter = kParameterOf[i];
+      if (!has(letter)) {
+        control[i] = p0[i];
+        continue;
+      }
+      double v = length_units(word(letter));
+      bool coordinates = conv_.parabola_tangent == ParabolaTangent::Coordinates && modal_.absolute;
+      control[i] = coordinates ? v + off[i] : p0[i] + v;
+    }
+  } else if (!parabola_middle_) {
+    // §4.4.2, first of two blocks: the intermediate point. Nothing moves yet.
+    parabola_middle_ = t;
+    parabola_source_ = step_.request->source;
+    return;
+  } else {
+    // Second block: the end point. The intermediate point is the curve at t = 1/2,
+    // so the tangent intersection is 2*P1 - (P0 + P2)/2.
+    Eigen::Vector3d p1((*parabola_middle_)[0], (*parabola_middle_)[1], (*parabola_middle_)[2]);
+    control = 2 * p1 - (p0 + p2) / 2;
+    parabola_middle_.reset();
+  }
+  Event e = motion_event(EventKind::Parabola, t);
+  for (int i = 0; i < 3; ++i) e.control[i] = to_program(control[i] - off[i]);
+  emit(e);
+  move_to(t);
+}
+
+void Machine::thread(const AxisValues& t) {
+  // §7.1: the thread length in X and/or Z, the pitch in I or K (mm per revolution).
+  std::string candidates = conv_.thread_allow_j ? "IJK" : "IK";
+  std::string given;
+  for (char c : candidates)
+    if (has(c)) given += c;
+  bool ok = true;
+  if (given.size() != 1) {
+    std::string list;
+    for (size_t i = 0; i < candidates.size(); ++i)
+      list += (i ? (i + 1 == candidates.size() ? " or " : ", ") : "") + std::string(1, candidates[i]);
+    report(DiagId::ThreadPitch, 0, list,
+           given.empty() ? std::string("none is programmed") : fmt::format("{} are all programmed", given));
+    ok = false;
+  }
+  if (has('F')) {
+    report(DiagId::ThreadFeed, 'F', motion_name_);
+    ok = false;
+  }
+  double pitch = ok ? length_units(word(given[0])) : 0;
+  if (ok && pitch <= 0) {
+    report(DiagId::ThreadPitch, given[0], std::string(1, given[0]), "the pitch must be greater than zero");
+    ok = false;
+  }
+  double change = 0;
+  if (modal_.motion != Fn::MotionThread && ok) {
+    // §7.4: G34/G35 start from the initial pitch; how the change is given is the NC's.
+    if (!conv_.pitch_change_word) {
+      report(DiagId::ThreadPitchChangeUndefined, 0, motion_name_);
+      ok = false;
+    } else if (!has(conv_.pitch_change_word)) {
+      report(DiagId::ThreadNoPitchChange, 0, motion_name_, std::string(1, conv_.pitch_change_word));
+      ok = false;
+    } else {
+      change = std::fabs(length_units(word(conv_.pitch_change_word)));
+      if (modal_.motion == Fn::MotionThreadDecreasing) change = -change;
+    }
+  }
+  if (ok && (std::abs(modal_.spindle) != 1 || speed_ <= 0)) {
+    report(DiagId::ThreadNoSpindle, 0);
+    ok = false;
+  }
+  if (ok) {
+    Event e = motion_event(EventKind::Thread, t);
+    e.a = to_program(pitch);
+    e.b = to_program(change);
+    emit(e);
+  }
+  move_to(t);
+}
+
+void Machine::dwell() {
+  auto time = word_if(conv_.dwell_word);
+  if (!time) {
+    report(DiagId::DwellNoTime, 0, std::string(1, conv_.dwell_word));
+    return;
+  }
+  Event e{EventKind::Dwell};
+  e.a = *time * conv_.dwell_seconds_per_unit;
+  emit(e);
+}
+
+void Machine::set_position() {
+  // The named axes take the programmed values as their current coordinates; nothing
+  // moves (Table 5). Incremental values add to the current coordinates.
+  AxisValues work{};
+  if (auto it = config_.work_offsets.find(modal_.work_offset); it != config_.work_offsets.end()) work = it->second;
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    double v = word(letter);
+    v = is_linear_axis(i) ? length_units(v) : angle_degrees(v);
+    double current = machine_[i] - work[i] - position_offset_[i];
+    double wanted = modal_.absolute ? v : current + v;
+    position_offset_[i] = machine_[i] - work[i] - wanted;
+  }
+  Event e{EventKind::PositionOffset};
+  for (int i = 0; i < kAxisCount; ++i)
+    e.pos[i] = is_linear_axis(i) ? to_program(position_offset_[i]) : position_offset_[i];
+  emit(e);
+}
+
+void Machine::cycle() {
+  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
+  const std::string& name = pattern.name;
+  const int d = kPlaneAxes[modal_.plane][2];  // the drilling axis: perpendicular to the plane
+  const char depth_letter = kAxisLetters[d];
+  // The cycle registers stay in force while the cycle is active (S-7.5).
+  if (has(depth_letter)) cycle_.depth = word(depth_letter);
+  if (auto v = word_if(conv_.cycle_level_word)) cycle_.level = v;
+  if (auto v = word_if(conv_.dwell_word)) cycle_.dwell = v;
+  if (auto v = word_if(conv_.peck_word)) cycle_.peck = v;
+  AxisValues hole = target();
+  hole[d] = machine_[d];
+  bool ok = true;
+  if (!cycle_.depth) {
+    report(DiagId::CycleNoDepth, 0, name, std::string(1, depth_letter));
+    ok = false;
+  }
+  if (!cycle_.level) {
+    report(DiagId::CycleNoRLevel, 0, name);
+    ok = false;
+  }
+  if (ok && pattern.in == CyclePattern::In::Peck && (!cycle_.peck || *cycle_.peck <= 0)) {
+    report(DiagId::PeckNotPositive, conv_.peck_word, cycle_.peck ? mm_text(*cycle_.peck) : std::string("(none)"),
+           name);
+    ok = false;
+  }
+  if (ok && pattern.dwell && !cycle_.dwell) {
+    report(DiagId::DwellNoTime, 0, std::string(1, conv_.dwell_word));
+    ok = false;
+  }
+  if (ok && pattern.in == CyclePattern::In::SpindleFeed && spindle_direction_ == 0) {
+    report(DiagId::CycleNoSpindle, 0, name);
+    ok = false;
+  }
+  if (!ok || !need_feed(name.c_str(), hole)) {
+    move_to(hole);
+    return;
+  }
+  // G90: R and the depth are coordinates; G91: R is measured from the initial level
+  // and the depth from R.
+  const double initial = machine_[d];
+  AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : initial + length_units(*cycle_.level);
+  const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
+  auto at = [&](double z) {
+    AxisValues p = hole;
+    p[d] = z;
+    return p;
+  };
+  if (hole != machine_) rapid(hole);
+  if (level != machine_[d]) rapid(at(level));
+  if (pattern.in == CyclePattern::In::SpindleFeed && modal_.spindle != spindle_direction_)
+    apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+  if (pattern.in == CyclePattern::In::Peck) {
+    // Pecks of Q, each followed by a rapid withdrawal to R and a rapid return to the
+    // depth reached.
+    const double step = length_units(*cycle_.peck) * (bottom < level ? -1 : 1);
+    double reached = level;
+    while (true) {
+      double next = reached + step;
+      if ((step < 0 && next <= bottom) || (step > 0 && next >= bottom)) next = bottom;
+      linear(at(next));
+      if (next == bottom) break;
+      rapid(at(level));
+      rapid(at(next));
+      reached = next;
+    }
+  } else {
+    linear(at(bottom));
+  }
+  if (pattern.dwell) {
+    Event e{EventKind::Dwell};
+    e.a = *cycle_.dwell * conv_.dwell_seconds_per_unit;
+    emit(e);
+  }
+  const int direction = spindle_direction_;
+  if (pattern.bottom == CyclePattern::Bottom::Reverse)
+    apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
+  if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
+  switch (pattern.out) {
+    case CyclePattern::Out::Rapid: rapid(at(initial)); break;
+    case CyclePattern::Out::Feed: linear(at(initial)); break;
+    case CyclePattern::Out::Manual: {
+      // The operator retracts by hand: the run stops; on resume the tool is at the
+      // initial level (S-7.5).
+      Event stop{EventKind::Stop};
+      stop.n = 3;
+      emit(stop);
+      emit(motion_event(EventKind::OperatorMove, at(initial)));
+      move_to(at(initial));
+      break;
+    }
+  }
+  if (pattern.bottom == CyclePattern::Bottom::Reverse)
+    apply({direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+}
+
+}  // namespace ncc

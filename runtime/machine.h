@@ -1,0 +1,186 @@
+// The motion runtime: modal state, coordinate systems and the block cycle
+// (GOST 20999 S-12; the same shape serves every dialect). The VM hands it one block
+// at a time as canonical functions plus word values; it computes the motion, checks
+// it and emits trace events.
+#pragma once
+
+#include <Eigen/Core>
+
+#include <array>
+#include <bitset>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "machine_config.h"
+#include "program_semantics.h"
+#include "support/diagnostics.h"
+#include "trace.h"
+
+namespace ncc {
+
+// The words of one block by slot ('A'..'Z' = 0..25); `present` marks those written.
+struct BlockWords {
+  std::array<double, kWordSlots> value{};
+  uint64_t present = 0;
+
+  bool has(char letter) const { return present & bit(letter); }
+  void set(int slot, double v) {
+    value[slot] = v;
+    present |= uint64_t{1} << slot;
+  }
+  void clear() { present = 0; }
+  static uint64_t bit(char letter) { return uint64_t{1} << (letter - 'A'); }
+};
+
+struct BlockRequest {
+  const uint16_t* codes = nullptr;  // indices into ProgramSemantics::codes, in written order
+  size_t code_count = 0;
+  const BlockWords* words = nullptr;
+  uint32_t source = 0;  // SourceMap::blocks index
+};
+
+// A problem found while running a block. `word` is the address it concerns (0 = the
+// whole block); the driver turns it into a located diagnostic.
+struct RuntimeIssue {
+  DiagId id;
+  std::string message;
+  uint32_t source = 0;
+  char word = 0;
+};
+
+class RuntimeIssues {
+ public:
+  virtual ~RuntimeIssues() = default;
+  virtual void issue(const RuntimeIssue& issue) = 0;
+};
+
+enum class BlockResult { Continue, ProgramEnd, EndOfInformation, Error };
+
+class Machine {
+ public:
+  Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
+
+  // Power-on: position, modal state and registers as the dialect defines them.
+  void power_on();
+  // Runs one block. With stop_on_error (a real run) an error ends the block with
+  // Error; without (the dry run of `ncc check`) the machine reports, recovers as if
+  // the block had done what it says, and continues.
+  BlockResult execute(const BlockRequest& block);
+  // The end of a program unit: pending multi-block constructs must be complete.
+  void end_of_unit(uint32_t source);
+  // Operator text of a block (a comment), shown when the block runs.
+  void comment(const std::string& text, uint32_t source);
+  void set_stop_on_error(bool on) { stop_on_error_ = on; }
+
+  // Position of the controlled point in the active work coordinate system, in
+  // program units (what the trace shows).
+  AxisValues program_position() const;
+
+ private:
+  struct Modal {
+    Fn motion = Fn::MotionLinear;
+    int plane = 0;  // 0 XY, 1 ZX, 2 YZ
+    bool absolute = true;
+    bool inch = false;
+    int feed_mode = 1;  // 0 inverse time, 1 per minute, 2 per revolution
+    bool constant_surface = false;
+    int comp = 0;    // 0 off, 1 left, 2 right
+    int length = 0;  // 0 off, 1 plus, -1 minus
+    int work_offset = 0;
+    int cycle = -1;  // index into cycles; -1 = none
+    int spindle = 0;  // 1 cw, -1 ccw, 0 stopped, 2 oriented
+    bool mist = false, flood = false;
+    int clamp = -1;  // -1 unknown
+    bool override_enabled = true;
+    bool spindle_hold = false;
+  };
+
+  struct Cycle {
+    std::optional<double> depth, level, dwell, peck;  // program units as written
+  };
+
+  // One block being executed.
+  struct Step {
+    const BlockRequest* request = nullptr;
+    uint64_t used = 0;  // words the block's functions read
+    bool error = false;
+    bool dwell = false, set_position = false, end = false, end_information = false;
+    int block_offset = -1;  // a block-only preset offset (G53): the frame of this block's targets
+    std::vector<FnCall> restore;  // modal functions to restore after a block-only code
+  };
+
+  // Words.
+  bool has(char letter) const { return step_.request->words->has(letter); }
+  double word(char letter) {
+    step_.used |= BlockWords::bit(letter);
+    return step_.request->words->value[letter - 'A'];
+  }
+  std::optional<double> word_if(char letter) {
+    if (!letter || !has(letter)) return std::nullopt;
+    return word(letter);
+  }
+  double length_units(double v) const { return modal_.inch ? v * 25.4 : v; }
+  double to_program(double mm) const { return modal_.inch ? mm / 25.4 : mm; }
+  double angle_degrees(double v) const;
+
+  // Issues.
+  template <typename... Args>
+  void report(DiagId id, char word, const Args&... args) {
+    issues_.issue({id, diag_message(id, args...), step_.request ? step_.request->source : 0, word});
+    if (diag_info(id).severity == Severity::Error) step_.error = true;
+  }
+
+  // The block cycle.
+  void reset_state();
+  FnCall current(FnGroup group) const;  // the function a modal group holds now
+  void apply(FnCall call, Scope scope, bool emit);
+  void registers();
+  void action();
+  void finish();
+  void emit(Event e);
+
+  // Coordinates.
+  AxisValues frame_offset(int work_offset) const;  // work offset + position offset, machine units
+  AxisValues target();                              // of this block's axis words, machine units
+  bool has_axis_word() const;
+  void move_to(const AxisValues& machine_target);
+  Event motion_event(EventKind kind, const AxisValues& machine_target) const;
+
+  // Motions.
+  void rapid(const AxisValues& t);
+  bool need_feed(const char* what, const AxisValues& t);
+  void linear(const AxisValues& t);
+  void arc(const AxisValues& t, bool clockwise);
+  void parabola(const AxisValues& t);
+  void thread(const AxisValues& t);
+  void dwell();
+  void set_position();
+  void cycle();
+  void tool_length_event();
+  void cutter_comp_event();
+
+  const ProgramSemantics& sem_;
+  const Conventions& conv_;
+  const MachineConfig& config_;
+  TraceSink& trace_;
+  RuntimeIssues& issues_;
+  bool stop_on_error_ = true;
+
+  Modal modal_;
+  AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
+  AxisValues position_offset_{};  // G92
+  std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
+  double speed_ = 0;
+  int tool_selected_ = 0;
+  int tool_loaded_ = 0;
+  int offset_number_ = 0;
+  int spindle_direction_ = 0;  // the last direction set (canned cycles restart the spindle in it)
+  std::string motion_name_;    // the code that set the motion group, for messages
+  Cycle cycle_;
+  std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola
+  uint32_t parabola_source_ = 0;
+  Step step_;
+};
+
+}  // namespace ncc

@@ -1,0 +1,73 @@
+// What a compiled program tells the runtime about its dialect: the G/M codes it uses
+// with their canonical functions and timing, the canned-cycle patterns, the
+// power-on state and the conventions its words follow. The compiler fills this from
+// the dialect tables and the machine profile; the bytecode file stores it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "functions.h"
+
+namespace ncc {
+
+// Word slots: 'A'..'Z' are 0..25; dialects with other addresses map them onto the
+// free slots above.
+constexpr int kWordSlots = 64;
+
+// One G or M code as the program uses it, e.g. G81 -> cycle(0), M05 -> spindle.stop
+// + coolant.off, after the motion.
+struct CodeDesc {
+  std::string name;
+  Scope scope = Scope::Modal;
+  Timing timing = Timing::None;
+  std::vector<FnCall> calls;
+};
+
+// A canned cycle as a pattern of moves (GOST 20999 Table 6 and its kin).
+struct CyclePattern {
+  enum class In : uint8_t { Feed, Peck, SpindleFeed };
+  enum class Bottom : uint8_t { None, Reverse, Stop };
+  enum class Out : uint8_t { Rapid, Feed, Manual };
+  std::string name;
+  In in = In::Feed;
+  bool dwell = false;
+  Bottom bottom = Bottom::None;
+  Out out = Out::Rapid;
+};
+
+enum class ArcCentre : uint8_t { Incremental, Absolute };
+enum class HelixLead : uint8_t { PerRadian, PerRevolution };
+enum class ParabolaTangent : uint8_t { Coordinates, Incremental };
+enum class AngleUnit : uint8_t { Degree, Radian, Revolution };
+
+// Word conventions: which address carries what, and how to read it. Addresses are
+// letters; 0 means "none".
+struct Conventions {
+  ArcCentre arc_centre = ArcCentre::Incremental;
+  HelixLead helix_lead = HelixLead::PerRadian;
+  ParabolaTangent parabola_tangent = ParabolaTangent::Coordinates;
+  AngleUnit angle_unit = AngleUnit::Degree;
+  char dwell_word = 'P';
+  double dwell_seconds_per_unit = 1.0;
+  char peck_word = 'Q';
+  char cycle_level_word = 'R';
+  char pitch_change_word = 0;
+  bool thread_allow_j = false;
+  bool arc_single_quadrant = false;
+  double arc_tolerance = 0.002;  // mm
+  bool m06_stops_spindle = false;
+  std::string tool_offset_axes = "Z";
+  std::string axes = "XYZ";  // the machine's axes, in canonical order XYZABCUVW
+};
+
+struct ProgramSemantics {
+  std::string dialect;
+  std::vector<CodeDesc> codes;
+  std::vector<CyclePattern> cycles;
+  std::vector<uint16_t> power_on;  // indices into codes, applied in order
+  Conventions conventions;
+};
+
+}  // namespace ncc

@@ -1,0 +1,392 @@
+#include "trace.h"
+
+#include <fmt/format.h>
+
+#include <cmath>
+
+namespace ncc {
+
+int axis_index(char letter) {
+  size_t i = kAxisLetters.find(letter);
+  return i == std::string_view::npos ? -1 : static_cast<int>(i);
+}
+
+namespace {
+
+constexpr const char* kPlaneNames[] = {"XY", "ZX", "YZ"};
+// The in-plane axes (u, v) and the perpendicular axis w of each plane.
+constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
+
+// Four decimals, trailing zeros dropped, never "-0".
+std::string short_number(double v) {
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string canon_number(double v) { return fmt::format("{:.4f}", v); }
+
+std::string json_number(double v) {
+  if (v == 0) v = 0;
+  if (!std::isfinite(v)) return "null";
+  return fmt::format("{}", v);
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Writes through a large buffer; formatting never waits on the stream.
+class BufferedSink : public TraceSink {
+ public:
+  BufferedSink(std::FILE* out, const SourceMap& map, std::string axes) : out_(out), map_(map), axes_(std::move(axes)) {
+    buffer_.reserve(kFlushAt + 4096);
+  }
+  ~BufferedSink() override { flush(); }
+  void flush() override {
+    if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+    buffer_.clear();
+    std::fflush(out_);
+  }
+
+ protected:
+  void line(const std::string& s) {
+    buffer_ += s;
+    buffer_ += '\n';
+    if (buffer_.size() > kFlushAt) {
+      std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
+      buffer_.clear();
+    }
+  }
+  const SourceBlock& block(const Event& e) const {
+    static const SourceBlock none;
+    return e.source < map_.blocks.size() ? map_.blocks[e.source] : none;
+  }
+  bool has_axis(char letter) const { return axes_.find(letter) != std::string::npos; }
+
+  static constexpr size_t kFlushAt = 1 << 16;
+  std::FILE* out_;
+  const SourceMap& map_;
+  std::string axes_;
+  std::string buffer_;
+};
+
+class TextSink final : public BufferedSink {
+ public:
+  using BufferedSink::BufferedSink;
+
+  void event(const Event& e) override {
+    const SourceBlock& b = block(e);
+    std::string s = b.file == 0 ? fmt::format("{}", b.line)
+                                : fmt::format("{}:{}", b.file < map_.files.size() ? map_.files[b.file] : "?", b.line);
+    s += b.has_number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', b.number) : std::string(" - ");
+    s += body(e);
+    line(s);
+  }
+
+ private:
+  // X Y Z always; another axis of the machine once it has been away from zero.
+  std::string position(const AxisValues& p) {
+    std::string s;
+    for (int i = 0; i < kAxisCount; ++i) {
+      if (i >= 3) {
+        if (!has_axis(kAxisLetters[i])) continue;
+        if (p[i] != 0) shown_[i] = true;
+        if (!shown_[i]) continue;
+      }
+      if (!s.empty()) s += ' ';
+      s += fmt::format("{}{}", kAxisLetters[i], short_number(p[i]));
+    }
+    return s;
+  }
+
+  std::string body(const Event& e) {
+    switch (e.kind) {
+      case EventKind::Units: return e.n ? "units inch" : "units mm";
+      case EventKind::Plane: return fmt::format("plane {}", kPlaneNames[e.n]);
+      case EventKind::FeedMode:
+        return fmt::format("feed_mode {}", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
+      case EventKind::FeedRate: return "feed_rate " + short_number(e.a);
+      case EventKind::SpindleMode: return e.n ? "spindle_mode constant_surface" : "spindle_mode rpm";
+      case EventKind::SpindleSpeed: return "spindle_speed " + short_number(e.a);
+      case EventKind::SpindleOn: return e.n > 0 ? "spindle cw" : "spindle ccw";
+      case EventKind::SpindleStop: return "spindle stop";
+      case EventKind::SpindleOrient: return "spindle orient " + short_number(e.a);
+      case EventKind::Rapid: return "rapid " + position(e.pos);
+      case EventKind::Linear: return "linear " + position(e.pos);
+      case EventKind::Arc: {
+        const int* axes = kPlaneAxes[e.n];
+        return fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", e.rotation > 0 ? "ccw" : "cw",
+                           kPlaneNames[e.n], position(e.pos), kAxisLetters[axes[0]], short_number(e.centre[0]),
+                           kAxisLetters[axes[1]], short_number(e.centre[1]), short_number(e.a), short_number(e.b));
+      }
+      case EventKind::Parabola:
+        return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), short_number(e.control[0]),
+                           short_number(e.control[1]), short_number(e.control[2]));
+      case EventKind::Thread: {
+        std::string s = fmt::format("thread {} pitch {}", position(e.pos), short_number(e.a));
+        if (e.b != 0) s += " change " + short_number(e.b);
+        return s;
+      }
+      case EventKind::Dwell: return "dwell " + short_number(e.a);
+      case EventKind::SelectTool: return fmt::format("tool_select {}", e.n);
+      case EventKind::ChangeTool: return fmt::format("tool_change {}", e.n);
+      case EventKind::ToolLengthOffset: return "tool_length_offset " + position(e.pos);
+      case EventKind::CutterComp:
+        return e.n == 0 ? std::string("cutter_comp off")
+                        : fmt::format("cutter_comp {} radius {}", e.n == 1 ? "left" : "right", short_number(e.a));
+      case EventKind::WorkOffset:
+        return e.n == 0 ? std::string("work_offset none") : fmt::format("work_offset {} {}", e.n, position(e.pos));
+      case EventKind::PositionOffset: return "position_offset " + position(e.pos);
+      case EventKind::Coolant: return e.n == 0 ? "coolant off" : e.n == 1 ? "coolant mist" : "coolant flood";
+      case EventKind::Clamp: return e.n ? "clamp on" : "clamp off";
+      case EventKind::Override: return e.n ? "override enabled" : "override disabled";
+      case EventKind::SpindleHold: return e.n ? "spindle_hold on" : "spindle_hold off";
+      case EventKind::PathMode:
+        return e.n == 0 ? "path accelerate" : e.n == 1 ? "path decelerate" : "path tapping";
+      case EventKind::Comment: return "comment " + quoted(e.text);
+      case EventKind::Stop: {
+        constexpr const char* kinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
+        return fmt::format("stop {}", kinds[e.n]);
+      }
+      case EventKind::OperatorMove: return "operator_move " + position(e.pos);
+      case EventKind::End: return e.n ? "end information" : "end program";
+    }
+    return "?";
+  }
+
+  bool shown_[kAxisCount] = {};
+};
+
+class JsonlSink final : public BufferedSink {
+ public:
+  using BufferedSink::BufferedSink;
+
+  void event(const Event& e) override {
+    const SourceBlock& b = block(e);
+    std::string s = fmt::format(R"({{"seq":{},"file":{},"line":{},"col":{})", ++seq_,
+                                quoted(b.file < map_.files.size() ? map_.files[b.file] : ""), b.line, b.col);
+    if (b.has_number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', b.number);
+    s += R"(,"event":")" + name(e) + '"';
+    fields(e, s);
+    line(s + "}");
+  }
+
+ private:
+  static std::string name(const Event& e) {
+    constexpr const char* names[] = {
+        "units", "plane", "feed_mode", "feed_rate", "spindle_mode", "spindle_speed", "spindle_on", "spindle_stop",
+        "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
+        "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
+        "spindle_hold", "path", "comment", "stop", "operator_move", "end"};
+    return names[static_cast<int>(e.kind)];
+  }
+
+  void pos(const Event& e, std::string& s) const {
+    for (int i = 0; i < kAxisCount; ++i)
+      if (i < 3 || has_axis(kAxisLetters[i])) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
+  }
+
+  void fields(const Event& e, std::string& s) const {
+    auto num = [&](const char* key, double v) { s += fmt::format(R"(,"{}":{})", key, json_number(v)); };
+    auto str = [&](const char* key, std::string_view v) { s += fmt::format(R"(,"{}":"{}")", key, v); };
+    switch (e.kind) {
+      case EventKind::Units: str("units", e.n ? "inch" : "mm"); break;
+      case EventKind::Plane: str("plane", kPlaneNames[e.n]); break;
+      case EventKind::FeedMode:
+        str("mode", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
+        break;
+      case EventKind::FeedRate:
+      case EventKind::SpindleSpeed: num("value", e.a); break;
+      case EventKind::SpindleMode: str("mode", e.n ? "constant_surface" : "rpm"); break;
+      case EventKind::SpindleOn: str("direction", e.n > 0 ? "cw" : "ccw"); break;
+      case EventKind::SpindleOrient: num("angle", e.a); break;
+      case EventKind::Rapid:
+      case EventKind::Linear:
+      case EventKind::ToolLengthOffset:
+      case EventKind::PositionOffset:
+      case EventKind::OperatorMove: pos(e, s); break;
+      case EventKind::Arc: {
+        pos(e, s);
+        const int* axes = kPlaneAxes[e.n];
+        str("plane", kPlaneNames[e.n]);
+        str("direction", e.rotation > 0 ? "ccw" : "cw");
+        s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[axes[0]], json_number(e.centre[0]),
+                         kAxisLetters[axes[1]], json_number(e.centre[1]));
+        num("radius", e.a);
+        num("sweep", e.b);
+        s += fmt::format(R"(,"rotation":{})", e.rotation);
+        break;
+      }
+      case EventKind::Parabola:
+        pos(e, s);
+        s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(e.control[0]),
+                         json_number(e.control[1]), json_number(e.control[2]));
+        break;
+      case EventKind::Thread:
+        pos(e, s);
+        num("pitch", e.a);
+        num("pitch_change", e.b);
+        break;
+      case EventKind::Dwell: num("seconds", e.a); break;
+      case EventKind::SelectTool:
+      case EventKind::ChangeTool: s += fmt::format(R"(,"tool":{})", e.n); break;
+      case EventKind::CutterComp:
+        str("side", e.n == 0 ? "off" : e.n == 1 ? "left" : "right");
+        num("radius", e.a);
+        break;
+      case EventKind::WorkOffset:
+        s += fmt::format(R"(,"index":{})", e.n);
+        pos(e, s);
+        break;
+      case EventKind::Coolant: str("coolant", e.n == 0 ? "off" : e.n == 1 ? "mist" : "flood"); break;
+      case EventKind::Clamp:
+      case EventKind::Override:
+      case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
+      case EventKind::PathMode: str("mode", e.n == 0 ? "accelerate" : e.n == 1 ? "decelerate" : "tapping"); break;
+      case EventKind::Comment: s += R"(,"text":)" + quoted(e.text); break;
+      case EventKind::Stop: {
+        constexpr const char* kinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
+        str("kind", kinds[e.n]);
+        break;
+      }
+      case EventKind::End: str("kind", e.n ? "information" : "program"); break;
+      case EventKind::SpindleStop: break;
+    }
+  }
+
+  uint64_t seq_ = 0;
+};
+
+// LinuxCNC's canonical calls as `rs274 -g` prints them, without its two leading
+// columns. Events LinuxCNC has no call for print as COMMENT("ncc: ...") so that
+// the output stays a list of canonical calls (docs/trace.md).
+class CanonSink final : public BufferedSink {
+ public:
+  CanonSink(std::FILE* out, const SourceMap& map, std::string axes) : BufferedSink(out, map, std::move(axes)) {
+    nine_ = has_axis('U') || has_axis('V') || has_axis('W');
+  }
+
+  void event(const Event& e) override {
+    switch (e.kind) {
+      case EventKind::Units: line(e.n ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)"); break;
+      case EventKind::Plane: {
+        constexpr const char* planes[] = {"XY", "XZ", "YZ"};
+        line(fmt::format("SELECT_PLANE(CANON_PLANE_{})", planes[e.n]));
+        break;
+      }
+      case EventKind::FeedMode: line(fmt::format("SET_FEED_MODE(0, {})", e.n == 2 ? 1 : 0)); break;
+      case EventKind::FeedRate: line(fmt::format("SET_FEED_RATE({})", canon_number(e.a))); break;
+      case EventKind::SpindleMode: line(fmt::format("SET_SPINDLE_MODE(0 {})", canon_number(0))); break;
+      case EventKind::SpindleSpeed: line(fmt::format("SET_SPINDLE_SPEED(0, {})", canon_number(e.a))); break;
+      case EventKind::SpindleOn:
+        line(e.n > 0 ? "START_SPINDLE_CLOCKWISE(0)" : "START_SPINDLE_COUNTERCLOCKWISE(0)");
+        break;
+      case EventKind::SpindleStop: line("STOP_SPINDLE_TURNING(0)"); break;
+      case EventKind::SpindleOrient: line(fmt::format("ORIENT_SPINDLE(0, {}, 0)", canon_number(e.a))); break;
+      case EventKind::Rapid: line(fmt::format("STRAIGHT_TRAVERSE({})", axes_list(e.pos, 0))); break;
+      case EventKind::Linear: line(fmt::format("STRAIGHT_FEED({})", axes_list(e.pos, 0))); break;
+      case EventKind::Arc: {
+        const int* a = kPlaneAxes[e.n];
+        line(fmt::format("ARC_FEED({}, {}, {}, {}, {}, {}, {})", canon_number(e.pos[a[0]]), canon_number(e.pos[a[1]]),
+                         canon_number(e.centre[0]), canon_number(e.centre[1]), e.rotation, canon_number(e.pos[a[2]]),
+                         axes_list(e.pos, 3)));
+        break;
+      }
+      case EventKind::Parabola:
+        line(fmt::format("PARABOLA_FEED({}, {}, {}, {})", canon_number(e.control[0]), canon_number(e.control[1]),
+                         canon_number(e.control[2]), axes_list(e.pos, 0)));
+        break;
+      case EventKind::Thread:
+        line(fmt::format("START_SPEED_FEED_SYNC({:f},0)", e.a));
+        if (e.b != 0) line(fmt::format("COMMENT(\"ncc: pitch change {} per revolution\")", canon_number(e.b)));
+        line(fmt::format("STRAIGHT_FEED({})", axes_list(e.pos, 0)));
+        line("STOP_SPEED_FEED_SYNCH()");
+        break;
+      case EventKind::Dwell: line(fmt::format("DWELL({})", canon_number(e.a))); break;
+      case EventKind::SelectTool: line(fmt::format("SELECT_TOOL({})", e.n)); break;
+      case EventKind::ChangeTool:
+        line("START_CHANGE()");
+        line(fmt::format("CHANGE_TOOL({})", e.n));
+        break;
+      case EventKind::ToolLengthOffset:
+        line(fmt::format("USE_TOOL_LENGTH_OFFSET({} {} {}, {} {} {}, {} {} {})", canon_number(e.pos[0]),
+                         canon_number(e.pos[1]), canon_number(e.pos[2]), canon_number(e.pos[3]), canon_number(e.pos[4]),
+                         canon_number(e.pos[5]), canon_number(e.pos[6]), canon_number(e.pos[7]),
+                         canon_number(e.pos[8])));
+        break;
+      case EventKind::CutterComp:
+        line(e.n == 0 ? "COMMENT(\"interpreter: cutter radius compensation off\")"
+                      : fmt::format("COMMENT(\"interpreter: cutter radius compensation on {}\")",
+                                    e.n == 1 ? "left" : "right"));
+        break;
+      case EventKind::WorkOffset: line(fmt::format("SET_G5X_OFFSET({}, {})", e.n, axes_list(e.pos, 0))); break;
+      case EventKind::PositionOffset: line(fmt::format("SET_G92_OFFSET({})", axes_list(e.pos, 0))); break;
+      case EventKind::Coolant:
+        if (e.n == 0) {
+          line("MIST_OFF()");
+          line("FLOOD_OFF()");
+        } else {
+          line(e.n == 1 ? "MIST_ON()" : "FLOOD_ON()");
+        }
+        break;
+      case EventKind::Override:
+        line(e.n ? "ENABLE_FEED_OVERRIDE()" : "DISABLE_FEED_OVERRIDE()");
+        line(e.n ? "ENABLE_SPEED_OVERRIDE(0)" : "DISABLE_SPEED_OVERRIDE(0)");
+        break;
+      case EventKind::Comment: line(fmt::format("COMMENT({})", quoted(e.text))); break;
+      case EventKind::Stop:
+        if (e.n == 3) line("COMMENT(\"ncc: manual retract\")");
+        line(e.n == 1 || e.n == 2 ? "OPTIONAL_PROGRAM_STOP()" : "PROGRAM_STOP()");
+        break;
+      case EventKind::End: line("PROGRAM_END()"); break;
+      case EventKind::Clamp: line(e.n ? "COMMENT(\"ncc: clamp on\")" : "COMMENT(\"ncc: clamp off\")"); break;
+      case EventKind::SpindleHold:
+        line(e.n ? "COMMENT(\"ncc: spindle hold on\")" : "COMMENT(\"ncc: spindle hold off\")");
+        break;
+      case EventKind::PathMode: {
+        constexpr const char* modes[] = {"accelerate", "decelerate", "tapping"};
+        line(fmt::format("COMMENT(\"ncc: path {}\")", modes[e.n]));
+        break;
+      }
+      case EventKind::OperatorMove:
+        line(fmt::format("COMMENT(\"ncc: operator move to {}\")", axes_list(e.pos, 0)));
+        break;
+    }
+  }
+
+ private:
+  // LinuxCNC prints X Y Z A B C (and U V W on machines that have them).
+  std::string axes_list(const AxisValues& p, int from) const {
+    std::string s;
+    int last = nine_ ? kAxisCount : 6;
+    for (int i = from; i < last; ++i) {
+      if (!s.empty()) s += ", ";
+      s += canon_number(p[i]);
+    }
+    return s;
+  }
+
+  bool nine_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
+                                             std::string axes) {
+  switch (format) {
+    case TraceFormat::Text: return std::make_unique<TextSink>(out, map, std::move(axes));
+    case TraceFormat::Jsonl: return std::make_unique<JsonlSink>(out, map, std::move(axes));
+    case TraceFormat::Canon: return std::make_unique<CanonSink>(out, map, std::move(axes));
+  }
+  return nullptr;
+}
+
+}  // namespace ncc

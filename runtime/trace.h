@@ -1,0 +1,113 @@
+// The trace: one event per runtime call (docs/trace.md), written by a TraceSink as
+// text, JSON Lines, or LinuxCNC canonical calls. The trace is the observable truth
+// of a run: golden tests compare it.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "machine_config.h"
+
+namespace ncc {
+
+// Where each block of a program came from; the bytecode file stores it.
+struct SourceBlock {
+  uint32_t file = 0;
+  uint32_t line = 0, col = 0, end_line = 0, end_col = 0;
+  bool has_number = false;
+  bool main_block = false;
+  bool has_errors = false;  // the compiler reported errors here (the dry run stays quiet)
+  uint32_t number = 0;
+  uint32_t first_word = 0;  // into SourceMap::words
+  uint32_t word_count = 0;
+};
+
+struct WordPosition {
+  uint8_t slot = 0;
+  uint32_t line = 0, col = 0, end_col = 0;
+};
+
+struct SourceMap {
+  std::vector<std::string> files;
+  std::vector<SourceBlock> blocks;
+  std::vector<WordPosition> words;
+};
+
+enum class EventKind : uint8_t {
+  Units,             // n: 0 mm, 1 inch
+  Plane,             // n: 0 XY, 1 ZX, 2 YZ
+  FeedMode,          // n: 0 inverse time, 1 per minute, 2 per revolution
+  FeedRate,          // a: rate in program units
+  SpindleMode,       // n: 0 rpm, 1 constant surface speed
+  SpindleSpeed,      // a
+  SpindleOn,         // n: 1 clockwise, -1 counter-clockwise
+  SpindleStop,
+  SpindleOrient,     // a: angle
+  Rapid,             // pos
+  Linear,            // pos
+  Arc,               // pos = end; n = plane; centre = (u, v); rotation; a = radius; b = sweep (degrees)
+  Parabola,          // pos = end; control = tangent intersection point (X Y Z)
+  Thread,            // pos = end; a = pitch; b = pitch change per revolution
+  Dwell,             // a: seconds
+  SelectTool,        // n
+  ChangeTool,        // n
+  ToolLengthOffset,  // pos: offset per axis (X Y Z ... )
+  CutterComp,        // n: 0 off, 1 left, 2 right; a: radius
+  WorkOffset,        // n: 0 none, 1..; pos: offset values
+  PositionOffset,    // pos: the G92 offset values
+  Coolant,           // n: 0 off, 1 mist on, 2 flood on
+  Clamp,             // n: 1 clamp, 0 unclamp
+  Override,          // n: 1 enabled, 0 disabled
+  SpindleHold,       // n: 1 on, 0 off
+  PathMode,          // n: 0 accelerate, 1 decelerate, 2 tapping
+  Comment,           // text
+  Stop,              // n: 0 program stop, 1 optional stop taken, 2 optional stop skipped, 3 manual retract
+  OperatorMove,      // pos: where the operator left the tool (manual retract)
+  End,               // n: 0 end of program, 1 end of information
+};
+
+struct Event {
+  Event() = default;
+  explicit Event(EventKind k) : kind(k) {}
+
+  EventKind kind = EventKind::Comment;
+  uint32_t source = 0;  // SourceMap::blocks index
+  int n = 0;
+  double a = 0, b = 0;
+  int rotation = 0;
+  AxisValues pos{};
+  double centre[2] = {0, 0};
+  double control[3] = {0, 0, 0};
+  std::string text;
+};
+
+class TraceSink {
+ public:
+  virtual ~TraceSink() = default;
+  virtual void event(const Event& e) = 0;
+  virtual void flush() {}
+};
+
+class NullSink final : public TraceSink {
+ public:
+  void event(const Event&) override {}
+};
+
+// Keeps every event (tests, the dry run of `ncc check`).
+class CollectSink final : public TraceSink {
+ public:
+  void event(const Event& e) override { events.push_back(e); }
+  std::vector<Event> events;
+};
+
+enum class TraceFormat { Text, Jsonl, Canon };
+
+// A sink writing `format` to `out` through a buffer; `axes` are the letters the
+// machine has (conventions.axes), `main_file` the file whose lines need no name.
+std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
+                                             std::string axes);
+
+}  // namespace ncc

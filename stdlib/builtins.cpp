@@ -1,0 +1,82 @@
+#include "builtins.h"
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace ncc {
+
+namespace {
+constexpr std::array<BuiltinInfo, static_cast<size_t>(Builtin::Count)> kBuiltins = {{
+    {"sin", 1}, {"cos", 1}, {"tan", 1}, {"asin", 1}, {"acos", 1}, {"atan", 1}, {"atan2", 2}, {"sqrt", 1},
+    {"abs", 1}, {"trunc", 1}, {"round", 1}, {"floor", 1}, {"ceil", 1}, {"exp", 1}, {"ln", 1},
+}};
+constexpr double kDeg = std::numbers::pi / 180.0;
+}  // namespace
+
+const BuiltinInfo& builtin_info(Builtin b) { return kBuiltins[static_cast<size_t>(b)]; }
+
+std::optional<Builtin> builtin_by_name(std::string_view name) {
+  for (size_t i = 0; i < kBuiltins.size(); ++i)
+    if (kBuiltins[i].name == name) return static_cast<Builtin>(i);
+  return std::nullopt;
+}
+
+bool eval_builtin(Builtin b, const double* a, double& out, std::string_view& why) {
+  switch (b) {
+    case Builtin::Sin: out = std::sin(a[0] * kDeg); break;
+    case Builtin::Cos: out = std::cos(a[0] * kDeg); break;
+    case Builtin::Tan:
+      // tan is undefined at odd multiples of 90 degrees.
+      if (std::fmod(std::fabs(a[0]) - 90.0, 180.0) == 0.0) {
+        why = "an odd multiple of 90 degrees";
+        return false;
+      }
+      out = std::tan(a[0] * kDeg);
+      break;
+    case Builtin::Asin:
+    case Builtin::Acos:
+      if (a[0] < -1.0 || a[0] > 1.0) {
+        why = "[-1, 1]";
+        return false;
+      }
+      out = (b == Builtin::Asin ? std::asin(a[0]) : std::acos(a[0])) / kDeg;
+      break;
+    case Builtin::Atan: out = std::atan(a[0]) / kDeg; break;
+    case Builtin::Atan2:
+      if (a[0] == 0.0 && a[1] == 0.0) {
+        why = "a non-zero vector";
+        return false;
+      }
+      out = std::atan2(a[0], a[1]) / kDeg;
+      break;
+    case Builtin::Sqrt:
+      if (a[0] < 0.0) {
+        why = "non-negative numbers";
+        return false;
+      }
+      out = std::sqrt(a[0]);
+      break;
+    case Builtin::Abs: out = std::fabs(a[0]); break;
+    case Builtin::Trunc: out = std::trunc(a[0]); break;
+    case Builtin::Round: out = std::round(a[0]); break;
+    case Builtin::Floor: out = std::floor(a[0]); break;
+    case Builtin::Ceil: out = std::ceil(a[0]); break;
+    case Builtin::Exp: out = std::exp(a[0]); break;
+    case Builtin::Ln:
+      if (a[0] <= 0.0) {
+        why = "positive numbers";
+        return false;
+      }
+      out = std::log(a[0]);
+      break;
+    case Builtin::Count: return false;
+  }
+  if (!std::isfinite(out)) {
+    why = "finite results";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace ncc

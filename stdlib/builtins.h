@@ -1,0 +1,28 @@
+// Built-in functions programs call in expressions (NC-110 SIN/ARS..., Macro B
+// SIN/ASIN/SQRT...). Angles are degrees, as every dialect here writes them. A
+// domain error is reported by name, never a NaN passed on.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace ncc {
+
+enum class Builtin : uint8_t {
+  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Trunc, Round, Floor, Ceil, Exp, Ln,
+  Count
+};
+
+struct BuiltinInfo {
+  std::string_view name;
+  uint8_t arity;
+};
+
+const BuiltinInfo& builtin_info(Builtin b);
+std::optional<Builtin> builtin_by_name(std::string_view name);
+
+// Evaluates b on args; on a domain error returns false and names the rule in `why`.
+bool eval_builtin(Builtin b, const double* args, double& out, std::string_view& why);
+
+}  // namespace ncc

@@ -1,0 +1,68 @@
+// Machine profiles: TOML files (docs/profile.md) read with toml++. A profile names
+// only what differs from the built-in default (stdlib/profiles/default.toml): a scalar
+// setting falls back to the default one by one; a collection table ([tools],
+// [offsets], [work_offsets]) given in the profile replaces the default's.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/machine_config.h"
+#include "support/diagnostics.h"
+
+namespace ncc::stdlib {
+
+class Profile {
+ public:
+  // Parses a profile file (path "" = the default alone). Syntax errors are reported
+  // with their location; the result is empty on error.
+  static std::optional<Profile> load(SourceManager& sources, const std::string& path, Diagnostics& diags);
+  // Parses profile text already in memory (e.g. stored in a bytecode file).
+  static std::optional<Profile> parse(SourceManager& sources, std::string name, std::string text,
+                                      Diagnostics& diags);
+
+  const std::string& name() const { return name_; }
+  const std::string& text() const { return text_; }  // the user's text; "" for the default
+  std::string resolve_path(std::string_view relative) const;
+
+  // Typed lookups by dotted key ("gost.format"). A key of the wrong type is
+  // reported and treated as absent.
+  std::optional<std::string> string(std::string_view key, Diagnostics& diags) const;
+  std::optional<double> number(std::string_view key, Diagnostics& diags) const;
+  std::optional<bool> boolean(std::string_view key, Diagnostics& diags) const;
+  std::optional<std::vector<double>> numbers(std::string_view key, Diagnostics& diags) const;
+  // An inline or nested table of numbers or strings: {X = 1, Y = 2}.
+  std::optional<std::map<std::string, double>> number_table(std::string_view key, Diagnostics& diags) const;
+  std::optional<std::map<std::string, std::string>> string_table(std::string_view key, Diagnostics& diags) const;
+  // The keys of a collection table, from the user's profile if it has the table.
+  std::vector<std::string> keys(std::string_view table) const;
+
+  // Reports keys of the user's profile that no reader looked up (likely typos).
+  void report_unused(Diagnostics& diags) const;
+  // Reports a bad value of `key` at its place in the profile.
+  void report_value(Diagnostics& diags, std::string_view key, std::string_view message) const;
+
+  struct Impl;
+
+ private:
+  Profile() = default;
+  struct Lookup;
+  Lookup find(std::string_view key) const;
+
+  std::string name_;
+  std::string text_;
+  std::string dir_;
+  std::shared_ptr<const Impl> user_;
+  std::shared_ptr<const Impl> builtin_;
+  mutable std::set<std::string, std::less<>> used_;
+};
+
+// The machine data of a profile: offsets, tools, initial position, switches.
+MachineConfig load_machine_config(const Profile& profile, Diagnostics& diags);
+
+}  // namespace ncc::stdlib

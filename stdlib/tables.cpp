@@ -1,0 +1,262 @@
+#include "tables.h"
+
+#include <charconv>
+
+#include "embedded.h"
+
+namespace ncc::stdlib {
+
+std::optional<std::string_view> embedded_file(std::string_view path) {
+  for (const EmbeddedFile& f : embedded_files())
+    if (f.path == path) return f.text;
+  return std::nullopt;
+}
+
+namespace {
+
+bool split_row(std::string_view line, std::vector<std::string>& cells, std::string& error) {
+  size_t i = 0;
+  while (i < line.size()) {
+    char c = line[i];
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+    } else if (c == '#') {
+      break;
+    } else if (c == '"') {
+      size_t close = line.find('"', i + 1);
+      if (close == std::string_view::npos) {
+        error = "unterminated quoted text";
+        return false;
+      }
+      cells.emplace_back(line.substr(i + 1, close - i - 1));
+      i = close + 1;
+    } else {
+      size_t end = line.find_first_of(" \t\r#", i);
+      if (end == std::string_view::npos) end = line.size();
+      cells.emplace_back(line.substr(i, end - i));
+      i = end;
+    }
+  }
+  return true;
+}
+
+std::optional<int> parse_int(std::string_view s) {
+  int v = 0;
+  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
+  return v;
+}
+
+template <typename E>
+bool pick(std::string_view cell, std::initializer_list<std::pair<std::string_view, E>> choices, E& out) {
+  for (const auto& [name, value] : choices)
+    if (cell == name) {
+      out = value;
+      return true;
+    }
+  return false;
+}
+
+void report(Diagnostics& diags, const Table& t, uint32_t line, std::string_view what) {
+  diags.report(DiagId::TableSyntax, {}, fmt::format("{}:{}: {}", t.name, line, what));
+}
+
+std::vector<std::string> split(std::string_view s, char sep) {
+  std::vector<std::string> out;
+  size_t start = 0;
+  while (true) {
+    size_t end = s.find(sep, start);
+    out.emplace_back(s.substr(start, end - start));
+    if (end == std::string_view::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags) {
+  Table table{std::move(name), {}};
+  uint32_t line_no = 0;
+  size_t pos = 0;
+  while (pos <= text.size()) {
+    size_t end = text.find('\n', pos);
+    if (end == std::string_view::npos) end = text.size();
+    std::string_view line = text.substr(pos, end - pos);
+    ++line_no;
+    TableRow row{{}, line_no};
+    std::string error;
+    if (!split_row(line, row.cells, error)) {
+      report(diags, table, line_no, error);
+    } else if (!row.cells.empty()) {
+      if (row.cells.size() != columns)
+        report(diags, table, line_no, fmt::format("expected {} columns, found {}", columns, row.cells.size()));
+      else
+        table.rows.push_back(std::move(row));
+    }
+    pos = end + 1;
+  }
+  return table;
+}
+
+std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags) {
+  std::string path = fmt::format("dialects/{}/{}", dialect, file);
+  auto text = embedded_file(path);
+  if (!text) {
+    diags.report(DiagId::TableSyntax, {}, fmt::format("missing table {}", path));
+    return std::nullopt;
+  }
+  return parse_table(path, *text, columns, diags);
+}
+
+bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cycles, std::vector<FnCall>& out,
+                     std::string& error) {
+  for (const std::string& part : split(text, '+')) {
+    std::string_view name = part;
+    std::string_view arg;
+    if (size_t open = name.find('('); open != std::string_view::npos) {
+      if (name.back() != ')') {
+        error = fmt::format("'{}' lacks its closing ')'", part);
+        return false;
+      }
+      arg = name.substr(open + 1, name.size() - open - 2);
+      name = name.substr(0, open);
+    }
+    auto fn = fn_by_name(name);
+    if (!fn) {
+      error = fmt::format("unknown function '{}'", name);
+      return false;
+    }
+    FnCall call{*fn, 0};
+    if (*fn == Fn::Cycle) {
+      size_t i = 0;
+      while (i < cycles.size() && cycles[i].name != arg) ++i;
+      if (i == cycles.size()) {
+        error = fmt::format("cycle '{}' is not in the cycle table", arg);
+        return false;
+      }
+      call.arg = static_cast<uint16_t>(i);
+    } else if (*fn == Fn::WorkOffset) {
+      auto n = parse_int(arg);
+      if (!n || *n < 0 || *n > 99) {
+        error = fmt::format("offset number '{}' must be 0..99", arg);
+        return false;
+      }
+      call.arg = static_cast<uint16_t>(*n);
+    } else if (!arg.empty()) {
+      error = fmt::format("function '{}' takes no argument", name);
+      return false;
+    }
+    out.push_back(call);
+  }
+  return true;
+}
+
+void read_code_table(const Table& table, char letter, const std::vector<CyclePattern>& cycles,
+                     std::map<int, CodeEntry>& codes, Diagnostics& diags) {
+  // G tables: code group scope function name
+  // M tables: code timing scope conflict function name
+  bool m = letter == 'M';
+  for (const TableRow& row : table.rows) {
+    const auto& c = row.cells;
+    CodeEntry e;
+    e.letter = letter;
+    auto number = c[0].size() > 1 && c[0][0] == letter ? parse_int(std::string_view(c[0]).substr(1)) : std::nullopt;
+    if (!number || *number < 0 || *number > 999) {
+      report(diags, table, row.line, fmt::format("'{}' is not a {} code", c[0], letter));
+      continue;
+    }
+    e.number = *number;
+    e.desc.name = c[0];
+    size_t col = 1;
+    if (m) {
+      if (!pick(c[col++], {{"before", Timing::Before}, {"after", Timing::After}}, e.desc.timing)) {
+        report(diags, table, row.line, fmt::format("timing '{}' must be before or after", c[1]));
+        continue;
+      }
+    } else {
+      e.group = c[col++];
+    }
+    if (!pick(c[col++], {{"modal", Scope::Modal}, {"block", Scope::Block}}, e.desc.scope)) {
+      report(diags, table, row.line, fmt::format("scope '{}' must be modal or block", c[col - 1]));
+      continue;
+    }
+    if (m && c[col++] != "-") e.conflict_sets = split(c[col - 1], ',');
+    std::string error;
+    if (!parse_functions(c[col++], cycles, e.desc.calls, error)) {
+      report(diags, table, row.line, error);
+      continue;
+    }
+    e.meaning = c[col];
+    codes[e.number] = std::move(e);
+  }
+}
+
+DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) {
+  DialectTables t;
+  if (auto table = load_table(dialect, "addresses.tsv", 5, diags)) {
+    for (const TableRow& row : table->rows) {
+      const auto& c = row.cells;
+      AddressEntry a;
+      a.letter = c[0].size() == 1 ? c[0][0] : 0;
+      bool ok = a.letter >= 'A' && a.letter <= 'Z';
+      ok = ok && pick(c[1],
+                      {{"dimension", WordClass::Dimension},
+                       {"angular", WordClass::Angular},
+                       {"interpolation", WordClass::Interpolation},
+                       {"feed", WordClass::Feed},
+                       {"nondimension", WordClass::NonDimension},
+                       {"undefined", WordClass::Undefined}},
+                      a.word_class);
+      ok = ok && pick(c[2],
+                      {{"once", Repeat::Once}, {"group", Repeat::Group}, {"several", Repeat::Several},
+                       {"feed", Repeat::Feed}},
+                      a.repeat);
+      auto order = parse_int(c[3]);
+      if (!ok || !order) {
+        report(diags, *table, row.line, "malformed address row");
+        continue;
+      }
+      a.order = *order;
+      a.meaning = c[4];
+      t.addresses[a.letter] = a;
+    }
+  }
+  if (auto table = load_table(dialect, "cycles.tsv", 6, diags)) {
+    for (const TableRow& row : table->rows) {
+      const auto& c = row.cells;
+      CyclePattern p;
+      p.name = c[0];
+      using P = CyclePattern;
+      bool ok = pick(c[1], {{"feed", P::In::Feed}, {"peck", P::In::Peck}, {"spindle_feed", P::In::SpindleFeed}}, p.in);
+      ok = ok && pick(c[2], {{"yes", true}, {"no", false}}, p.dwell);
+      ok = ok && pick(c[3], {{"-", P::Bottom::None}, {"reverse", P::Bottom::Reverse}, {"stop", P::Bottom::Stop}},
+                      p.bottom);
+      ok = ok && pick(c[4], {{"rapid", P::Out::Rapid}, {"feed", P::Out::Feed}, {"manual", P::Out::Manual}}, p.out);
+      if (!ok) {
+        report(diags, *table, row.line, "malformed cycle row");
+        continue;
+      }
+      t.cycles.push_back(std::move(p));
+    }
+  }
+  if (auto table = load_table(dialect, "g_codes.tsv", 5, diags)) read_code_table(*table, 'G', t.cycles, t.g_codes, diags);
+  if (auto table = load_table(dialect, "m_codes.tsv", 6, diags)) read_code_table(*table, 'M', t.cycles, t.m_codes, diags);
+  if (auto table = load_table(dialect, "power_on.tsv", 3, diags)) {
+    for (const TableRow& row : table->rows) {
+      auto& list = t.power_on[row.cells[0]];
+      for (size_t col = 1; col < 3; ++col)
+        for (const std::string& token : split(row.cells[col], ' '))
+          if (!token.empty()) list.push_back(token);
+    }
+  }
+  if (auto table = load_table(dialect, "citations.tsv", 2, diags)) {
+    for (const TableRow& row : table->rows) {
+      if (auto id = diag_by_name(row.cells[0])) t.citations[*id] = row.cells[1];
+      else report(diags, *table, row.line, fmt::format("unknown diagnostic '{}'", row.cells[0]));
+    }
+  }
+  return t;
+}
+
+}  // namespace ncc::stdlib

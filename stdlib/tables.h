@@ -1,0 +1,74 @@
+// Dialect tables as data: the text files in stdlib/dialects/<dialect>/ parsed into
+// rows. Columns are separated by blanks; "quoted text" is one cell; '#' starts a
+// comment. Each dialect front end gives the rows their meaning.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/program_semantics.h"
+#include "support/diagnostics.h"
+
+namespace ncc::stdlib {
+
+struct TableRow {
+  std::vector<std::string> cells;
+  uint32_t line = 0;
+};
+
+struct Table {
+  std::string name;  // file name, for diagnostics
+  std::vector<TableRow> rows;
+};
+
+// Parses `text`; rows whose cell count differs from `columns` are reported.
+Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags);
+
+// Loads stdlib/dialects/<dialect>/<file> from the embedded data.
+std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags);
+
+enum class WordClass : uint8_t { Dimension, Angular, Interpolation, Feed, NonDimension, Undefined };
+enum class Repeat : uint8_t { Once, Group, Several, Feed };
+
+struct AddressEntry {
+  char letter = 0;
+  WordClass word_class = WordClass::Undefined;
+  Repeat repeat = Repeat::Once;
+  int order = 0;
+  std::string meaning;
+};
+
+// A G or M code of a dialect table.
+struct CodeEntry {
+  char letter = 'G';
+  int number = 0;
+  std::string group;                       // the dialect's group label; "-" = none
+  std::vector<std::string> conflict_sets;  // M codes: sets that must not share a block
+  CodeDesc desc;                           // name, scope, timing, canonical functions
+  std::string meaning;
+};
+
+struct DialectTables {
+  std::map<char, AddressEntry> addresses;
+  std::map<int, CodeEntry> g_codes;
+  std::map<int, CodeEntry> m_codes;
+  std::vector<CyclePattern> cycles;
+  std::map<std::string, std::vector<std::string>> power_on;  // control type -> codes/functions
+  std::map<DiagId, std::string> citations;                   // the manual's rule per diagnostic
+};
+
+// Parses "motion.rapid", "comp.off+length.off", "offset(3)", "cycle(G81)" (the
+// cycle argument names a row of `cycles`). Returns false with `error` set.
+bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cycles, std::vector<FnCall>& out,
+                     std::string& error);
+
+// Reads a G or M code table; rows replace codes already in `codes`.
+void read_code_table(const Table& table, char letter, const std::vector<CyclePattern>& cycles,
+                     std::map<int, CodeEntry>& codes, Diagnostics& diags);
+
+DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags);
+
+}  // namespace ncc::stdlib

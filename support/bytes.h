@@ -1,0 +1,84 @@
+// Portable byte-level helpers: fixed little-endian encoding and CRC-32, used by the
+// bytecode file format so a file means the same on every host.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace ncc {
+
+uint32_t crc32(std::span<const uint8_t> data, uint32_t crc = 0);
+
+class ByteWriter {
+ public:
+  void u8(uint8_t v) { out_.push_back(static_cast<char>(v)); }
+  void u16(uint16_t v) { put(v, 2); }
+  void u32(uint32_t v) { put(v, 4); }
+  void u64(uint64_t v) { put(v, 8); }
+  void f64(double v) { u64(std::bit_cast<uint64_t>(v)); }
+  void bytes(std::string_view s) { out_.append(s); }
+  void str(std::string_view s) {
+    u32(static_cast<uint32_t>(s.size()));
+    bytes(s);
+  }
+  void patch_u32(size_t at, uint32_t v) {
+    for (int i = 0; i < 4; ++i) out_[at + i] = static_cast<char>((v >> (8 * i)) & 0xFF);
+  }
+  size_t size() const { return out_.size(); }
+  std::string& data() { return out_; }
+
+ private:
+  void put(uint64_t v, int n) {
+    for (int i = 0; i < n; ++i) out_.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+  }
+  std::string out_;
+};
+
+// Reads fixed-width little-endian values; any read past the end sets failed() and
+// returns zeros, so a truncated file can be detected once at the end.
+class ByteReader {
+ public:
+  explicit ByteReader(std::string_view data) : data_(data) {}
+  uint8_t u8() { return static_cast<uint8_t>(get(1)); }
+  uint16_t u16() { return static_cast<uint16_t>(get(2)); }
+  uint32_t u32() { return static_cast<uint32_t>(get(4)); }
+  uint64_t u64() { return get(8); }
+  double f64() { return std::bit_cast<double>(u64()); }
+  std::string_view bytes(size_t n) {
+    if (n > data_.size() - pos_) {
+      failed_ = true;
+      pos_ = data_.size();
+      return {};
+    }
+    std::string_view s = data_.substr(pos_, n);
+    pos_ += n;
+    return s;
+  }
+  std::string_view str() { return bytes(u32()); }
+  bool failed() const { return failed_; }
+  bool at_end() const { return pos_ == data_.size(); }
+  size_t pos() const { return pos_; }
+  size_t remaining() const { return data_.size() - pos_; }
+
+ private:
+  uint64_t get(int n) {
+    if (static_cast<size_t>(n) > data_.size() - pos_) {
+      failed_ = true;
+      pos_ = data_.size();
+      return 0;
+    }
+    uint64_t v = 0;
+    for (int i = 0; i < n; ++i) v |= static_cast<uint64_t>(static_cast<uint8_t>(data_[pos_ + i])) << (8 * i);
+    pos_ += n;
+    return v;
+  }
+  std::string_view data_;
+  size_t pos_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace ncc

@@ -1,0 +1,53 @@
+// Source files and positions shared by every stage.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncc {
+
+// 1-based line and column (columns count bytes). A range may span lines (the pp
+// dialect's blocks do). file indexes SourceManager's list.
+struct SourceRange {
+  uint32_t file = 0;
+  uint32_t line = 0;
+  uint32_t col = 0;
+  uint32_t end_line = 0;
+  uint32_t end_col = 0;  // exclusive
+
+  bool valid() const { return line != 0; }
+  static SourceRange point(uint32_t file, uint32_t line, uint32_t col) {
+    return {file, line, col, line, col + 1};
+  }
+};
+
+class SourceFile {
+ public:
+  SourceFile(std::string path, std::string text);
+  const std::string& path() const { return path_; }
+  std::string_view text() const { return text_; }
+  uint32_t line_count() const { return static_cast<uint32_t>(line_starts_.size()); }
+  // The line's text without its end-of-line characters; empty when out of range.
+  std::string_view line(uint32_t number) const;
+  uint32_t line_offset(uint32_t number) const { return line_starts_[number - 1]; }
+
+ private:
+  std::string path_;
+  std::string text_;
+  std::vector<uint32_t> line_starts_;
+};
+
+// Owns every file a compilation or a run reads, so diagnostics can quote them.
+class SourceManager {
+ public:
+  uint32_t add(std::string path, std::string text);
+  const SourceFile& file(uint32_t index) const { return files_[index]; }
+  size_t size() const { return files_.size(); }
+
+ private:
+  std::vector<SourceFile> files_;
+};
+
+}  // namespace ncc

@@ -1,0 +1,97 @@
+// `ncc disasm`: a bytecode file as readable text, one instruction per line with its
+// operands resolved and the source block it came from.
+#include <fmt/format.h>
+
+#include "module.h"
+#include "opcodes.h"
+#include "stdlib/builtins.h"
+
+namespace ncc::vm {
+
+namespace {
+
+std::string number_text(double v) {
+  if (v == 0) v = 0;
+  return fmt::format("{}", v);
+}
+
+std::string slot_name(uint32_t slot) {
+  return slot < 26 ? std::string(1, static_cast<char>('A' + slot)) : fmt::format("#{}", slot);
+}
+
+std::string source_text(const Module& m, uint32_t source) {
+  if (source >= m.source_map.blocks.size()) return "?";
+  const SourceBlock& b = m.source_map.blocks[source];
+  std::string s = fmt::format("{}:{}:{}", m.source_map.files[b.file], b.line, b.col);
+  if (b.has_number) s += fmt::format(" {}{}", b.main_block ? ':' : 'N', b.number);
+  return s;
+}
+
+std::string calls_text(const CodeDesc& c) {
+  std::string s;
+  for (const FnCall& call : c.calls) {
+    if (!s.empty()) s += '+';
+    s += fn_name(call.fn);
+    if (call.fn == Fn::WorkOffset || call.fn == Fn::Cycle) s += fmt::format("({})", call.arg);
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string disassemble(const Module& m) {
+  std::string out = fmt::format("; ncc bytecode format {}, dialect {}, profile {}\n", kFormatVersion, m.dialect,
+                                m.profile_name.empty() ? "default" : m.profile_name);
+  out += fmt::format("; {} bytes of code, {} numbers, {} strings, {} codes, {} source blocks\n", m.code.size(),
+                     m.numbers.size(), m.strings.size(), m.semantics.codes.size(), m.source_map.blocks.size());
+  out += "; codes\n";
+  for (size_t i = 0; i < m.semantics.codes.size(); ++i) {
+    const CodeDesc& c = m.semantics.codes[i];
+    out += fmt::format(";   c{:<3} {:<6} {}{} {}\n", i, c.name, c.scope == Scope::Block ? "block" : "modal",
+                       c.timing == Timing::Before ? " before" : c.timing == Timing::After ? " after" : "",
+                       calls_text(c));
+  }
+  out += "; power-on:";
+  for (uint16_t i : m.semantics.power_on) out += fmt::format(" c{}", i);
+  out += "\n; entries\n";
+  for (const Entry& e : m.entries) {
+    const char* kind = e.kind == EntryKind::Program ? "program" : e.kind == EntryKind::MainBlock ? "main block" : "subprogram";
+    out += fmt::format(";   {:<10} {:<10} at {}\n", e.name, kind, e.pc);
+  }
+  out += "; code\n";
+  size_t line = 0;
+  for (uint32_t pc = 0; pc < m.code.size();) {
+    for (const Entry& e : m.entries)
+      if (e.pc == pc) out += fmt::format("{}:\n", e.name);
+    while (line < m.lines.size() && m.lines[line].pc <= pc) {
+      if (m.lines[line].pc == pc) out += fmt::format("      ; {}\n", source_text(m, m.lines[line].source));
+      ++line;
+    }
+    Op op = static_cast<Op>(m.code[pc]);
+    const OpInfo& info = op_info(op);
+    std::string operands;
+    uint32_t at = pc + 1;
+    for (char f : info.format) {
+      uint32_t v = 0;
+      for (int i = 0; i < operand_size(f); ++i) v |= uint32_t(m.code[at + i]) << (8 * i);
+      at += static_cast<uint32_t>(operand_size(f));
+      if (!operands.empty()) operands += ", ";
+      switch (f) {
+        case 'k': operands += fmt::format("{}", number_text(m.numbers[v])); break;
+        case 's': operands += fmt::format("\"{}\"", m.strings[v]); break;
+        case 'c': operands += m.semantics.codes[v].name; break;
+        case 'w': operands += slot_name(v); break;
+        case 'j': operands += fmt::format("-> {}", v); break;
+        case 'e': operands += m.entries[v].name; break;
+        case 'v': operands += m.spaces[v].name; break;
+        case 'i': operands += fmt::format("[{}]", v); break;
+        case 'b': operands += builtin_info(static_cast<Builtin>(v)).name; break;
+      }
+    }
+    out += fmt::format("{:5}  {:<10}{}\n", pc, info.name, operands);
+    pc = at;
+  }
+  return out;
+}
+
+}  // namespace ncc::vm

@@ -1,0 +1,501 @@
+#include "module.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+
+#include "opcodes.h"
+#include "stdlib/builtins.h"
+#include "support/bytes.h"
+
+namespace ncc::vm {
+
+namespace {
+
+constexpr std::string_view kMagic = "NCCB";
+constexpr size_t kHeaderSize = 16;
+
+constexpr uint32_t tag(const char (&s)[5]) {
+  return uint32_t(uint8_t(s[0])) | uint32_t(uint8_t(s[1])) << 8 | uint32_t(uint8_t(s[2])) << 16 |
+         uint32_t(uint8_t(s[3])) << 24;
+}
+constexpr uint32_t kMeta = tag("META"), kSema = tag("SEMA"), kNums = tag("NUMS"), kStrs = tag("STRS"),
+                   kCode = tag("CODE"), kLine = tag("LINE"), kEntr = tag("ENTR"), kVars = tag("VARS"),
+                   kSrcs = tag("SRCS");
+constexpr std::array kSections = {kMeta, kSema, kNums, kStrs, kCode, kLine, kEntr, kVars, kSrcs};
+
+std::string tag_name(uint32_t t) {
+  std::string s;
+  for (int i = 0; i < 4; ++i) {
+    char c = static_cast<char>((t >> (8 * i)) & 0xFF);
+    s += (c >= 0x20 && c < 0x7F) ? c : '?';
+  }
+  return s;
+}
+
+// --- writing ---------------------------------------------------------------
+
+void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
+  w.str(s.dialect);
+  const Conventions& c = s.conventions;
+  w.u8(static_cast<uint8_t>(c.arc_centre));
+  w.u8(static_cast<uint8_t>(c.helix_lead));
+  w.u8(static_cast<uint8_t>(c.parabola_tangent));
+  w.u8(static_cast<uint8_t>(c.angle_unit));
+  w.u8(static_cast<uint8_t>(c.dwell_word));
+  w.f64(c.dwell_seconds_per_unit);
+  w.u8(static_cast<uint8_t>(c.peck_word));
+  w.u8(static_cast<uint8_t>(c.cycle_level_word));
+  w.u8(static_cast<uint8_t>(c.pitch_change_word));
+  w.u8(c.thread_allow_j);
+  w.u8(c.arc_single_quadrant);
+  w.f64(c.arc_tolerance);
+  w.u8(c.m06_stops_spindle);
+  w.str(c.tool_offset_axes);
+  w.str(c.axes);
+  w.u32(static_cast<uint32_t>(s.codes.size()));
+  for (const CodeDesc& code : s.codes) {
+    w.str(code.name);
+    w.u8(static_cast<uint8_t>(code.scope));
+    w.u8(static_cast<uint8_t>(code.timing));
+    w.u32(static_cast<uint32_t>(code.calls.size()));
+    for (const FnCall& call : code.calls) {
+      w.u16(static_cast<uint16_t>(call.fn));
+      w.u16(call.arg);
+    }
+  }
+  w.u32(static_cast<uint32_t>(s.cycles.size()));
+  for (const CyclePattern& p : s.cycles) {
+    w.str(p.name);
+    w.u8(static_cast<uint8_t>(p.in));
+    w.u8(p.dwell);
+    w.u8(static_cast<uint8_t>(p.bottom));
+    w.u8(static_cast<uint8_t>(p.out));
+  }
+  w.u32(static_cast<uint32_t>(s.power_on.size()));
+  for (uint16_t i : s.power_on) w.u16(i);
+}
+
+void write_sources(ByteWriter& w, const SourceMap& m) {
+  w.u32(static_cast<uint32_t>(m.files.size()));
+  for (const std::string& f : m.files) w.str(f);
+  w.u32(static_cast<uint32_t>(m.blocks.size()));
+  for (const SourceBlock& b : m.blocks) {
+    w.u32(b.file);
+    w.u32(b.line);
+    w.u32(b.col);
+    w.u32(b.end_line);
+    w.u32(b.end_col);
+    w.u8(static_cast<uint8_t>(b.has_number | (b.main_block << 1) | (b.has_errors << 2)));
+    w.u32(b.number);
+    w.u32(b.first_word);
+    w.u32(b.word_count);
+  }
+  w.u32(static_cast<uint32_t>(m.words.size()));
+  for (const WordPosition& p : m.words) {
+    w.u8(p.slot);
+    w.u32(p.line);
+    w.u32(p.col);
+    w.u32(p.end_col);
+  }
+}
+
+// --- reading ---------------------------------------------------------------
+
+// Reads a count and checks that at least `min_size` bytes per item remain, so a
+// corrupt count cannot make us allocate gigabytes.
+bool count(ByteReader& r, size_t min_size, uint32_t& n) {
+  n = r.u32();
+  return !r.failed() && static_cast<uint64_t>(n) * min_size <= r.remaining();
+}
+
+template <typename E>
+bool enum_value(ByteReader& r, E limit, E& out) {
+  uint8_t v = r.u8();
+  out = static_cast<E>(v);
+  return v <= static_cast<uint8_t>(limit);
+}
+
+bool read_semantics(ByteReader& r, ProgramSemantics& s) {
+  s.dialect = r.str();
+  Conventions& c = s.conventions;
+  bool ok = enum_value(r, ArcCentre::Absolute, c.arc_centre) && enum_value(r, HelixLead::PerRevolution, c.helix_lead) &&
+            enum_value(r, ParabolaTangent::Incremental, c.parabola_tangent) &&
+            enum_value(r, AngleUnit::Revolution, c.angle_unit);
+  c.dwell_word = static_cast<char>(r.u8());
+  c.dwell_seconds_per_unit = r.f64();
+  c.peck_word = static_cast<char>(r.u8());
+  c.cycle_level_word = static_cast<char>(r.u8());
+  c.pitch_change_word = static_cast<char>(r.u8());
+  c.thread_allow_j = r.u8();
+  c.arc_single_quadrant = r.u8();
+  c.arc_tolerance = r.f64();
+  c.m06_stops_spindle = r.u8();
+  c.tool_offset_axes = r.str();
+  c.axes = r.str();
+  uint32_t n = 0;
+  if (!ok || !count(r, 10, n)) return false;
+  s.codes.resize(n);
+  for (CodeDesc& code : s.codes) {
+    code.name = r.str();
+    uint32_t calls = 0;
+    if (!enum_value(r, Scope::Block, code.scope) || !enum_value(r, Timing::After, code.timing) || !count(r, 4, calls))
+      return false;
+    code.calls.resize(calls);
+    for (FnCall& call : code.calls) {
+      call.fn = static_cast<Fn>(r.u16());
+      call.arg = r.u16();
+    }
+  }
+  if (!count(r, 8, n)) return false;
+  s.cycles.resize(n);
+  for (CyclePattern& p : s.cycles) {
+    p.name = r.str();
+    if (!enum_value(r, CyclePattern::In::SpindleFeed, p.in)) return false;
+    p.dwell = r.u8();
+    if (!enum_value(r, CyclePattern::Bottom::Stop, p.bottom) || !enum_value(r, CyclePattern::Out::Manual, p.out))
+      return false;
+  }
+  if (!count(r, 2, n)) return false;
+  s.power_on.resize(n);
+  for (uint16_t& i : s.power_on) i = r.u16();
+  return !r.failed();
+}
+
+bool read_sources(ByteReader& r, SourceMap& m) {
+  uint32_t n = 0;
+  if (!count(r, 4, n)) return false;
+  m.files.resize(n);
+  for (std::string& f : m.files) f = r.str();
+  if (!count(r, 33, n)) return false;
+  m.blocks.resize(n);
+  for (SourceBlock& b : m.blocks) {
+    b.file = r.u32();
+    b.line = r.u32();
+    b.col = r.u32();
+    b.end_line = r.u32();
+    b.end_col = r.u32();
+    uint8_t flags = r.u8();
+    b.has_number = flags & 1;
+    b.main_block = flags & 2;
+    b.has_errors = flags & 4;
+    b.number = r.u32();
+    b.first_word = r.u32();
+    b.word_count = r.u32();
+  }
+  if (!count(r, 13, n)) return false;
+  m.words.resize(n);
+  for (WordPosition& p : m.words) {
+    p.slot = r.u8();
+    p.line = r.u32();
+    p.col = r.u32();
+    p.end_col = r.u32();
+  }
+  return !r.failed();
+}
+
+bool read_section(uint32_t t, ByteReader& r, Module& m) {
+  uint32_t n = 0;
+  if (t == kMeta) {
+    m.dialect = r.str();
+    m.profile_name = r.str();
+    m.profile_text = r.str();
+  } else if (t == kSema) {
+    return read_semantics(r, m.semantics);
+  } else if (t == kNums) {
+    if (!count(r, 8, n)) return false;
+    m.numbers.resize(n);
+    for (double& d : m.numbers) d = r.f64();
+  } else if (t == kStrs) {
+    if (!count(r, 4, n)) return false;
+    m.strings.resize(n);
+    for (std::string& s : m.strings) s = r.str();
+  } else if (t == kCode) {
+    std::string_view bytes = r.bytes(r.remaining());
+    m.code.assign(bytes.begin(), bytes.end());
+  } else if (t == kLine) {
+    if (!count(r, 8, n)) return false;
+    m.lines.resize(n);
+    for (LineEntry& l : m.lines) {
+      l.pc = r.u32();
+      l.source = r.u32();
+    }
+  } else if (t == kEntr) {
+    if (!count(r, 13, n)) return false;
+    m.entries.resize(n);
+    for (Entry& e : m.entries) {
+      e.name = r.str();
+      if (!enum_value(r, EntryKind::Subprogram, e.kind)) return false;
+      e.pc = r.u32();
+      e.source = r.u32();
+    }
+  } else if (t == kVars) {
+    if (!count(r, 12, n)) return false;
+    m.spaces.resize(n);
+    for (VarSpace& s : m.spaces) {
+      s.name = r.str();
+      s.size = r.u32();
+      uint32_t ranges = 0;
+      if (!count(r, 5, ranges)) return false;
+      s.types.resize(ranges);
+      for (VarSpace::Range& range : s.types) {
+        range.first = r.u32();
+        if (!enum_value(r, VarType::Long, range.type)) return false;
+      }
+    }
+  } else if (t == kSrcs) {
+    return read_sources(r, m.source_map);
+  }
+  return !r.failed();
+}
+
+uint32_t operand(const std::vector<uint8_t>& code, size_t at, int size) {
+  uint32_t v = 0;
+  for (int i = 0; i < size; ++i) v |= uint32_t(code[at + i]) << (8 * i);
+  return v;
+}
+
+}  // namespace
+
+uint32_t Module::source_of(uint32_t pc) const {
+  auto it = std::upper_bound(lines.begin(), lines.end(), pc, [](uint32_t p, const LineEntry& l) { return p < l.pc; });
+  return it == lines.begin() ? 0 : std::prev(it)->source;
+}
+
+std::string write_module(const Module& m) {
+  std::map<uint32_t, std::string> sections;
+  ByteWriter w;
+  w.str(m.dialect);
+  w.str(m.profile_name);
+  w.str(m.profile_text);
+  sections[kMeta] = std::move(w.data());
+  ByteWriter sema;
+  write_semantics(sema, m.semantics);
+  sections[kSema] = std::move(sema.data());
+  ByteWriter nums;
+  nums.u32(static_cast<uint32_t>(m.numbers.size()));
+  for (double d : m.numbers) nums.f64(d);
+  sections[kNums] = std::move(nums.data());
+  ByteWriter strs;
+  strs.u32(static_cast<uint32_t>(m.strings.size()));
+  for (const std::string& s : m.strings) strs.str(s);
+  sections[kStrs] = std::move(strs.data());
+  sections[kCode] = std::string(m.code.begin(), m.code.end());
+  ByteWriter line;
+  line.u32(static_cast<uint32_t>(m.lines.size()));
+  for (const LineEntry& l : m.lines) {
+    line.u32(l.pc);
+    line.u32(l.source);
+  }
+  sections[kLine] = std::move(line.data());
+  ByteWriter entr;
+  entr.u32(static_cast<uint32_t>(m.entries.size()));
+  for (const Entry& e : m.entries) {
+    entr.str(e.name);
+    entr.u8(static_cast<uint8_t>(e.kind));
+    entr.u32(e.pc);
+    entr.u32(e.source);
+  }
+  sections[kEntr] = std::move(entr.data());
+  ByteWriter vars;
+  vars.u32(static_cast<uint32_t>(m.spaces.size()));
+  for (const VarSpace& s : m.spaces) {
+    vars.str(s.name);
+    vars.u32(s.size);
+    vars.u32(static_cast<uint32_t>(s.types.size()));
+    for (const VarSpace::Range& r : s.types) {
+      vars.u32(r.first);
+      vars.u8(static_cast<uint8_t>(r.type));
+    }
+  }
+  sections[kVars] = std::move(vars.data());
+  ByteWriter srcs;
+  write_sources(srcs, m.source_map);
+  sections[kSrcs] = std::move(srcs.data());
+
+  ByteWriter body;
+  for (uint32_t t : kSections) {
+    body.u32(t);
+    body.u32(static_cast<uint32_t>(sections[t].size()));
+    body.bytes(sections[t]);
+  }
+  ByteWriter out;
+  out.bytes(kMagic);
+  out.u16(kFormatVersion);
+  out.u16(0);
+  out.u32(static_cast<uint32_t>(kSections.size()));
+  const std::string& b = body.data();
+  out.u32(crc32({reinterpret_cast<const uint8_t*>(b.data()), b.size()}));
+  out.bytes(b);
+  return std::move(out.data());
+}
+
+std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags) {
+  if (bytes.size() < kHeaderSize || bytes.substr(0, 4) != kMagic) {
+    diags.report(DiagId::BytecodeUnreadable, {}, name, "it does not start with the magic \"NCCB\"");
+    return std::nullopt;
+  }
+  ByteReader header(bytes.substr(4, kHeaderSize - 4));
+  uint16_t version = header.u16();
+  header.u16();
+  uint32_t section_count = header.u32();
+  uint32_t stored = header.u32();
+  if (version != kFormatVersion) {
+    diags.report(DiagId::BytecodeVersion, {}, name, version, kFormatVersion);
+    return std::nullopt;
+  }
+  std::string_view body = bytes.substr(kHeaderSize);
+  uint32_t actual = crc32({reinterpret_cast<const uint8_t*>(body.data()), body.size()});
+  if (actual != stored) {
+    diags.report(DiagId::BytecodeChecksum, {}, name, stored, actual);
+    return std::nullopt;
+  }
+  Module m;
+  ByteReader r(body);
+  std::map<uint32_t, bool> seen;
+  auto invalid = [&](const std::string& why) {
+    diags.report(DiagId::BytecodeInvalid, {}, name, why);
+    return std::nullopt;
+  };
+  for (uint32_t i = 0; i < section_count; ++i) {
+    uint32_t t = r.u32();
+    uint32_t size = r.u32();
+    if (r.failed() || size > r.remaining()) return invalid(fmt::format("section {} is truncated", i));
+    if (std::find(kSections.begin(), kSections.end(), t) == kSections.end())
+      return invalid(fmt::format("unknown section '{}'", tag_name(t)));
+    if (seen[t]) return invalid(fmt::format("section '{}' appears twice", tag_name(t)));
+    seen[t] = true;
+    ByteReader section(r.bytes(size));
+    if (!read_section(t, section, m) || !section.at_end())
+      return invalid(fmt::format("section '{}' is malformed", tag_name(t)));
+  }
+  if (!r.at_end()) return invalid("bytes follow the last section");
+  for (uint32_t t : kSections)
+    if (!seen[t]) return invalid(fmt::format("section '{}' is missing", tag_name(t)));
+  if (std::string problem = verify(m); !problem.empty()) return invalid(problem);
+  return m;
+}
+
+std::string verify(const Module& m) {
+  const ProgramSemantics& s = m.semantics;
+  auto letter_ok = [](char c) { return c == 0 || (c >= 'A' && c <= 'Z'); };
+  const Conventions& c = s.conventions;
+  if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
+      !letter_ok(c.pitch_change_word))
+    return "a convention names an address that is not a letter";
+  for (char a : c.axes)
+    if (kAxisLetters.find(a) == std::string_view::npos) return fmt::format("'{}' is not an axis", a);
+  for (char a : c.tool_offset_axes)
+    if (kAxisLetters.find(a) == std::string_view::npos) return fmt::format("'{}' is not an axis", a);
+  for (const CodeDesc& code : s.codes)
+    for (const FnCall& call : code.calls) {
+      if (call.fn >= Fn::Count) return fmt::format("code {} calls unknown function {}", code.name, int(call.fn));
+      if (call.fn == Fn::Cycle && call.arg >= s.cycles.size())
+        return fmt::format("code {} names cycle {} of {}", code.name, call.arg, s.cycles.size());
+      if (call.fn == Fn::WorkOffset && call.arg > 99) return fmt::format("code {} names offset {}", code.name, call.arg);
+    }
+  for (uint16_t i : s.power_on)
+    if (i >= s.codes.size()) return fmt::format("power-on state names code {} of {}", i, s.codes.size());
+  for (const VarSpace& space : m.spaces)
+    if (space.size > (1u << 24)) return fmt::format("variable space {} is too large", space.name);
+
+  // Source map.
+  const SourceMap& map = m.source_map;
+  for (const SourceBlock& b : map.blocks) {
+    if (b.file >= map.files.size()) return "a source block names a file that is not listed";
+    if (uint64_t(b.first_word) + b.word_count > map.words.size()) return "a source block names missing words";
+  }
+
+  // Instructions: every opcode known, every operand in range.
+  const std::vector<uint8_t>& code = m.code;
+  std::vector<bool> boundary(code.size() + 1, false);
+  std::vector<uint32_t> targets;
+  for (size_t pc = 0; pc < code.size();) {
+    boundary[pc] = true;
+    if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
+    Op op = static_cast<Op>(code[pc]);
+    const OpInfo& info = op_info(op);
+    size_t size = static_cast<size_t>(instruction_size(op));
+    if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info.name, pc);
+    size_t at = pc + 1;
+    uint8_t space = 0;
+    for (char f : info.format) {
+      uint32_t v = operand(code, at, operand_size(f));
+      at += static_cast<size_t>(operand_size(f));
+      bool ok = true;
+      switch (f) {
+        case 'k': ok = v < m.numbers.size(); break;
+        case 's': ok = v < m.strings.size(); break;
+        case 'c': ok = v < s.codes.size(); break;
+        case 'w': ok = v < kWordSlots; break;
+        case 'e': ok = v < m.entries.size(); break;
+        case 'v': ok = v < m.spaces.size(); space = static_cast<uint8_t>(v); break;
+        case 'i': ok = v < m.spaces[space].size; break;
+        case 'b':
+          ok = v < static_cast<uint32_t>(Builtin::Count) &&
+               builtin_info(static_cast<Builtin>(v)).arity == (op == Op::Call1 ? 1 : 2);
+          break;
+        case 'j': targets.push_back(v); break;
+      }
+      if (!ok) return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
+    }
+    pc += size;
+  }
+  auto at_boundary = [&](uint32_t pc) { return pc < code.size() && boundary[pc]; };
+  for (uint32_t t : targets)
+    if (!at_boundary(t)) return fmt::format("a jump goes to {}, which is not an instruction", t);
+  for (const Entry& e : m.entries) {
+    if (!at_boundary(e.pc)) return fmt::format("entry point {} is not at an instruction", e.name);
+    if (e.source >= map.blocks.size() && !map.blocks.empty()) return fmt::format("entry point {} names no block", e.name);
+  }
+  for (size_t i = 0; i < m.lines.size(); ++i) {
+    if (!at_boundary(m.lines[i].pc)) return "the line table points between instructions";
+    if (i > 0 && m.lines[i].pc <= m.lines[i - 1].pc) return "the line table is not in code order";
+    if (m.lines[i].source >= map.blocks.size()) return "the line table names a block that does not exist";
+  }
+
+  // The stack: each instruction is reached with one depth, never below its pops,
+  // never above kMaxStack, and no path runs off the end of the code.
+  std::vector<int> depth(code.size(), -1);
+  std::vector<uint32_t> work;
+  for (const Entry& e : m.entries) {
+    if (depth[e.pc] > 0) return fmt::format("entry point {} is reached with values on the stack", e.name);
+    depth[e.pc] = 0;
+    work.push_back(e.pc);
+  }
+  while (!work.empty()) {
+    uint32_t pc = work.back();
+    work.pop_back();
+    Op op = static_cast<Op>(code[pc]);
+    const OpInfo& info = op_info(op);
+    int d = depth[pc];
+    if (d < info.pop) return fmt::format("{} at {} pops more values than the stack holds", info.name, pc);
+    d = d - info.pop + info.push;
+    if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
+    uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
+    std::vector<uint32_t> successors;
+    switch (op) {
+      case Op::Jump: successors = {operand(code, pc + 1, 4)}; break;
+      case Op::JumpIf:
+      case Op::JumpIfNot:
+      case Op::JumpSkip:
+      case Op::Repeat:
+      case Op::EndRepeat: successors = {operand(code, pc + 1, 4), next}; break;
+      case Op::Return:
+      case Op::End: break;
+      default: successors = {next};
+    }
+    for (uint32_t to : successors) {
+      if (to >= code.size()) return fmt::format("execution can run past the end of the code after {}", pc);
+      if (depth[to] == -1) {
+        depth[to] = d;
+        work.push_back(to);
+      } else if (depth[to] != d) {
+        return fmt::format("the stack depth at {} differs between paths ({} and {})", to, depth[to], d);
+      }
+    }
+  }
+  return {};
+}
+
+}  // namespace ncc::vm

@@ -1,0 +1,60 @@
+// A compiled program in memory, and its file form (.ncb): magic, format version,
+// CRC-32, then sections (meta, semantics, constants, strings, code, line table,
+// entry points, variable spaces, source map). docs/bytecode.md describes the bytes.
+// Loading verifies every instruction, operand and jump before anything runs.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "runtime/program_semantics.h"
+#include "runtime/trace.h"
+#include "support/diagnostics.h"
+#include "variables.h"
+
+namespace ncc::vm {
+
+constexpr uint16_t kFormatVersion = 1;
+constexpr uint32_t kMaxStack = 256;
+
+enum class EntryKind : uint8_t { Program, MainBlock, Subprogram };
+
+struct Entry {
+  std::string name;  // "%0001", ":100"
+  EntryKind kind = EntryKind::Program;
+  uint32_t pc = 0;
+  uint32_t source = 0;
+};
+
+// From `pc` on, the code belongs to source block `source` (until the next entry).
+struct LineEntry {
+  uint32_t pc = 0;
+  uint32_t source = 0;
+};
+
+struct Module {
+  std::string dialect;
+  std::string profile_name;
+  std::string profile_text;  // the machine profile it was compiled with ("" = default)
+  ProgramSemantics semantics;
+  std::vector<double> numbers;
+  std::vector<std::string> strings;
+  std::vector<uint8_t> code;
+  std::vector<LineEntry> lines;
+  std::vector<Entry> entries;
+  std::vector<VarSpace> spaces;
+  SourceMap source_map;
+
+  uint32_t source_of(uint32_t pc) const;
+};
+
+std::string write_module(const Module& m);
+// Parses, checks the checksum and verifies; reports and returns nothing on failure.
+std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags);
+// "" when the module is sound, else the first problem found.
+std::string verify(const Module& m);
+std::string disassemble(const Module& m);
+
+}  // namespace ncc::vm

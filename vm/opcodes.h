@@ -1,0 +1,90 @@
+// The ncc VM instruction set. This page is the whole VM: read it first.
+//
+// Code is a byte string. Each instruction is an opcode byte followed by its
+// operands, little-endian, as its format says:
+//   k  u32  index into the number constants      s  u32  index into the strings
+//   c  u16  index into the program's G/M codes   w  u8   word slot ('A'..'Z' = 0..25)
+//   j  u32  code offset of an instruction         e  u16  index into the entry points
+//   v  u8   variable space                        i  u32  variable index
+//   b  u8   builtin function (stdlib/builtins.h)
+// `pop` and `push` are the fixed stack effects the verifier checks.
+//
+// A machine block is built up and then run: CODE and WORD/WORDPOP fill the pending
+// block, EXEC hands it to the motion runtime and clears it.
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+
+namespace ncc::vm {
+
+#define NCC_OPCODES(X)                                                                         \
+  X(Nop, "", 0, 0, "do nothing")                                                               \
+  X(Const, "k", 0, 1, "push numbers[k]")                                                       \
+  X(Load, "vi", 0, 1, "push variable v[i]")                                                    \
+  X(LoadX, "v", 1, 1, "pop an index; push variable v[index]")                                  \
+  X(Store, "vi", 1, 0, "pop a value into variable v[i]")                                       \
+  X(StoreX, "v", 2, 0, "pop a value, then an index; store the value into v[index]")            \
+  X(Neg, "", 1, 1, "negate the top")                                                           \
+  X(Not, "", 1, 1, "1 if the top is 0, else 0")                                                \
+  X(Add, "", 2, 1, "a + b")                                                                    \
+  X(Sub, "", 2, 1, "a - b")                                                                    \
+  X(Mul, "", 2, 1, "a * b")                                                                    \
+  X(Div, "", 2, 1, "a / b; division by zero is a run-time error")                              \
+  X(Mod, "", 2, 1, "a mod b (sign of a); b = 0 is a run-time error")                           \
+  X(Pow, "", 2, 1, "a to the power b")                                                         \
+  X(Eq, "", 2, 1, "1 if a == b")                                                               \
+  X(Ne, "", 2, 1, "1 if a != b")                                                               \
+  X(Lt, "", 2, 1, "1 if a < b")                                                                \
+  X(Le, "", 2, 1, "1 if a <= b")                                                               \
+  X(Gt, "", 2, 1, "1 if a > b")                                                                \
+  X(Ge, "", 2, 1, "1 if a >= b")                                                               \
+  X(And, "", 2, 1, "1 if a and b are not 0")                                                   \
+  X(Or, "", 2, 1, "1 if a or b is not 0")                                                      \
+  X(Xor, "", 2, 1, "1 if exactly one of a, b is not 0")                                        \
+  X(Call1, "b", 1, 1, "apply the one-argument builtin b")                                      \
+  X(Call2, "b", 2, 1, "apply the two-argument builtin b to a, b")                              \
+  X(Jump, "j", 0, 0, "go to j")                                                                \
+  X(JumpIfNot, "j", 1, 0, "pop; go to j if it is 0")                                           \
+  X(JumpIf, "j", 1, 0, "pop; go to j if it is not 0")                                          \
+  X(JumpSkip, "j", 0, 0, "go to j if the block-skip switch is on")                             \
+  X(Step, "", 0, 0, "count one executed block against --max-steps")                            \
+  X(Code, "c", 0, 0, "add G/M code c to the pending block")                                    \
+  X(Word, "wk", 0, 0, "set word w of the pending block to numbers[k]")                         \
+  X(WordPop, "w", 1, 0, "pop the value of word w of the pending block")                        \
+  X(Exec, "", 0, 0, "run the pending block on the motion runtime, then clear it")              \
+  X(Comment, "s", 0, 0, "show strings[s] to the operator")                                     \
+  X(Repeat, "j", 1, 0, "pop a count; open a repeat loop, or go to j if the count is below 1")  \
+  X(EndRepeat, "j", 0, 0, "count down the innermost repeat loop; go to j while it runs")       \
+  X(CallEntry, "e", 0, 0, "call entry point e")                                                \
+  X(Return, "", 0, 0, "return from a call")                                                    \
+  X(End, "", 0, 0, "end of the program unit")
+
+enum class Op : uint8_t {
+#define NCC_OP_ENUM(name, format, pop, push, doc) name,
+  NCC_OPCODES(NCC_OP_ENUM)
+#undef NCC_OP_ENUM
+  Count
+};
+
+struct OpInfo {
+  std::string_view name;
+  std::string_view format;
+  uint8_t pop;
+  uint8_t push;
+  std::string_view doc;
+};
+
+const OpInfo& op_info(Op op);
+// Bytes an operand of this format character takes.
+constexpr int operand_size(char f) {
+  switch (f) {
+    case 'k': case 's': case 'j': case 'i': return 4;
+    case 'c': case 'e': return 2;
+    default: return 1;  // w v b
+  }
+}
+// The size of a whole instruction with opcode `op`.
+int instruction_size(Op op);
+
+}  // namespace ncc::vm
