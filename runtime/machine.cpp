@@ -532,15 +532,23 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   const double dw = t[w] - machine_[w];
   if (std::fabs(dw) > kSamePoint) {
     if (auto lead = word_if(pw); lead && *lead != 0) {
+      // The lead selects the number of turns; the end point stays as programmed. It
+      // must agree with the travel: lead x sweep = travel, within the arc tolerance
+      // plus the rounding of the lead word over the sweep.
       double l = length_units(*lead);
-      double turns_angle = conv_.helix_lead == HelixLead::PerRadian ? dw / l : kTwoPi * dw / l;
-      double diff = std::remainder(turns_angle - sweep, kTwoPi);
-      if (turns_angle <= 0 || std::fabs(diff) * r0 > conv_.arc_tolerance) {
-        report(DiagId::HelixLead, pw, mm_text(*lead), mm_text(turns_angle), mm_text(sweep));
+      double per_radian = conv_.helix_lead == HelixLead::PerRadian ? l : l / kTwoPi;
+      double lead_angle = dw / per_radian;
+      double turns = std::round((lead_angle - sweep) / kTwoPi);
+      double candidate = sweep + kTwoPi * turns;
+      double slack = conv_.arc_tolerance + candidate * length_units(conv_.lead_resolution) / 2 *
+                                               (conv_.helix_lead == HelixLead::PerRadian ? 1 : 1 / kTwoPi);
+      if (lead_angle <= 0 || candidate <= 0 || std::fabs(candidate * per_radian - dw) > slack) {
+        report(DiagId::HelixLead, pw, mm_text(*lead), mm_text(lead_angle), mm_text(sweep),
+               mm_text(to_program(std::fabs(candidate * per_radian - dw))));
         move_to(t);
         return;
       }
-      sweep = sweep + kTwoPi * std::round((turns_angle - sweep) / kTwoPi);
+      sweep = candidate;
     } else {
       report(DiagId::HelixNoLead, 0, std::string(1, pw), std::string(1, kAxisLetters[w]));
     }

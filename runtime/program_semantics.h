@@ -57,6 +57,9 @@ struct Conventions {
   bool thread_allow_j = false;
   bool arc_single_quadrant = false;
   double arc_tolerance = 0.002;  // mm
+  // The resolution of the helix lead words I/J/K (program units): a lead written to
+  // that precision is exact enough over the whole sweep.
+  double lead_resolution = 0;
   bool m06_stops_spindle = false;
   std::string tool_offset_axes = "Z";
   std::string axes = "XYZ";  // the machine's axes, in canonical order XYZABCUVW

@@ -50,6 +50,7 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(c.thread_allow_j);
   w.u8(c.arc_single_quadrant);
   w.f64(c.arc_tolerance);
+  w.f64(c.lead_resolution);
   w.u8(c.m06_stops_spindle);
   w.str(c.tool_offset_axes);
   w.str(c.axes);
@@ -130,6 +131,7 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.thread_allow_j = r.u8();
   c.arc_single_quadrant = r.u8();
   c.arc_tolerance = r.f64();
+  c.lead_resolution = r.f64();
   c.m06_stops_spindle = r.u8();
   c.tool_offset_axes = r.str();
   c.axes = r.str();

@@ -83,12 +83,12 @@ std::string print(const Program& p, const SourceManager& sources) {
   auto letter = [](char l) { return l ? std::string(1, l) : std::string("-"); };
   out += fmt::format(
       "conventions arc_centre={} helix_lead={} parabola={} angle={} dwell={}*{}s peck={} cycle_level={} "
-      "pitch_change={} thread_j={} single_quadrant={} arc_tolerance={} m06_stops_spindle={} length_axes={} "
+      "pitch_change={} thread_j={} single_quadrant={} arc_tolerance={} lead_resolution={} m06_stops_spindle={} length_axes={} "
       "axes={}\n",
       pick(c.arc_centre, {"incremental", "absolute"}), pick(c.helix_lead, {"per_radian", "per_revolution"}),
       pick(c.parabola_tangent, {"coordinates", "incremental"}), pick(c.angle_unit, {"deg", "rad", "rev"}),
       letter(c.dwell_word), number_text(c.dwell_seconds_per_unit), letter(c.peck_word), letter(c.cycle_level_word),
-      letter(c.pitch_change_word), c.thread_allow_j, c.arc_single_quadrant, number_text(c.arc_tolerance),
+      letter(c.pitch_change_word), c.thread_allow_j, c.arc_single_quadrant, number_text(c.arc_tolerance), number_text(c.lead_resolution),
       c.m06_stops_spindle, c.tool_offset_axes, c.axes);
   for (size_t i = 0; i < p.semantics.cycles.size(); ++i) {
     const CyclePattern& cy = p.semantics.cycles[i];

@@ -299,10 +299,11 @@ void Reader::read_block(std::string_view line, uint32_t line_no) {
   block_ = ir::Block{};
   seen_element_ = false;
   optional_rest_ = false;
+  uint32_t errors = diags_.error_count();
   GostParser::BlockContext* ctx = parser_.block();
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
   for (auto* element : ctx->element()) visit(element);
-  block_.has_errors = line_has_errors_;
+  block_.has_errors = diags_.error_count() != errors;
   finish_block();
 }
 
@@ -441,30 +442,25 @@ antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
   std::string address = main ? ":" : "N";
   if (seen_element_ || block_.number) {
     diags_.report(DiagId::BlockNumberPosition, r, ctx->getText());
-    block_.has_errors = true;
     return nullptr;
   }
   seen_element_ = true;
   if (main && !s_.format.main_block) {
     diags_.report(DiagId::FeatureNotInFormat, r, "the main block ':'", ":");
-    block_.has_errors = true;
     return nullptr;
   }
   WrittenNumber n = written_number(ctx->sign(), ctx->number(), 'N');
   if (main && n.before.empty() && !n.has_point) {
     diags_.report(DiagId::MainBlockNoDigits, r);
-    block_.has_errors = true;
     return nullptr;
   }
   const WordFormat* format = s_.format.word('N');
   if (!format) {
     diags_.report(DiagId::AddressUndefined, r, "N");
-    block_.has_errors = true;
     return nullptr;
   }
   auto value = decode('N', *format, n, s_.decode, r, diags_);
   if (!value) {
-    block_.has_errors = true;
     return nullptr;
   }
   block_.number = static_cast<uint32_t>(*value);
@@ -508,14 +504,12 @@ antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
   if (!format) {
     diags_.report(DiagId::AddressUndefined, r, std::string(1, letter));
     w.kind = ir::WordKind::Ignored;
-    block_.has_errors = true;
     block_.words.push_back(std::move(w));
     return nullptr;
   }
   auto value = decode(letter, *format, n, s_.decode, r, diags_);
   if (!value) {
     w.kind = ir::WordKind::Ignored;
-    block_.has_errors = true;
     block_.words.push_back(std::move(w));
     return nullptr;
   }
@@ -555,7 +549,6 @@ void Reader::check_comment_text(antlr4::Token* token) {
     if (c != '%' && c != ':') continue;
     uint32_t col = base_ + static_cast<uint32_t>(i) + 1;
     diags_.report(c == '%' ? DiagId::CommentPercent : DiagId::CommentColon, {file_, line_no_, col, line_no_, col + 1});
-    block_.has_errors = true;
   }
 }
 
@@ -566,7 +559,6 @@ antlrcpp::Any Reader::visitComment(GostParser::CommentContext* ctx) {
   size_t length = t->getStopIndex() - begin + 1;
   if (ctx->OPEN_COMMENT()) {
     diags_.report(DiagId::CommentUnterminated, range(t, t));
-    block_.has_errors = true;
     block_.comments.emplace_back(line_text_.substr(begin + 1, length - 1));
   } else {
     block_.comments.emplace_back(line_text_.substr(begin + 1, length - 2));

@@ -1,5 +1,6 @@
 #include "settings.h"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -132,6 +133,9 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   for (char axis : std::string_view("XYZABCUVW"))
     if (s.format.word(axis)) c.axes += axis;
   c.cycle_level_word = s.format.word('R') ? 'R' : 0;
+  for (char letter : {'I', 'J', 'K'})
+    if (const WordFormat* w = s.format.word(letter))
+      c.lead_resolution = std::max(c.lead_resolution, std::pow(10.0, -w->frac_digits));
 
   if (auto split = p.numbers("gost.tool_word_split", diags)) {
     const WordFormat* t = s.format.word('T');
