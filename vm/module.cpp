@@ -339,11 +339,15 @@ std::optional<Module> read_module(std::string_view bytes, const std::string& nam
   }
   ByteReader header(bytes.substr(4, kHeaderSize - 4));
   uint16_t version = header.u16();
-  header.u16();
+  uint16_t flags = header.u16();
   uint32_t section_count = header.u32();
   uint32_t stored = header.u32();
   if (version != kFormatVersion) {
     diags.report(DiagId::BytecodeVersion, {}, name, version, kFormatVersion);
+    return std::nullopt;
+  }
+  if (flags != 0) {
+    diags.report(DiagId::BytecodeInvalid, {}, name, fmt::format("its header has unknown flags {:#06x}", flags));
     return std::nullopt;
   }
   std::string_view body = bytes.substr(kHeaderSize);

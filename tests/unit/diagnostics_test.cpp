@@ -1,0 +1,107 @@
+// Diagnostics: the catalogue, the printers and the collector.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "support/diagnostics.h"
+
+namespace ncc {
+namespace {
+
+TEST(Diagnostics, CodesAreUniqueAndDocumented) {
+  std::ifstream in(NCC_TEST_DATA "/../docs/diagnostics.md");
+  std::stringstream doc;
+  doc << in.rdbuf();
+  std::set<uint16_t> numbers;
+  std::set<std::string_view> names;
+  for (uint16_t i = 0; i <= static_cast<uint16_t>(DiagId::DialectUnknown); ++i) {
+    const DiagInfo& d = diag_info(static_cast<DiagId>(i));
+    EXPECT_TRUE(numbers.insert(d.number).second) << d.number;
+    EXPECT_TRUE(names.insert(d.name).second) << d.name;
+    EXPECT_EQ(diag_by_name(d.name), d.id);
+    // docs/diagnostics.md lists every entry as the catalogue has it.
+    std::string row = fmt::format("| {} | `{}` |", diag_code(d.id), d.name);
+    EXPECT_NE(doc.str().find(row), std::string::npos) << "docs/diagnostics.md lacks " << row;
+  }
+}
+
+TEST(Diagnostics, TextHasLocationCodeLineAndCaret) {
+  SourceManager sources;
+  uint32_t f = sources.add("p.nc", "%1\nN1 X10 X20\n");
+  Diagnostics diags;
+  Diagnostic* d = diags.report(DiagId::WordRepeated, {f, 2, 8, 2, 11}, "X");
+  d->notes.push_back({{f, 2, 4, 2, 7}, "X10 is here"});
+  EXPECT_EQ(format_text(*d, sources),
+            "p.nc:2:8: error: X appears more than once in the block [NC3001]\n"
+            "    2 | N1 X10 X20\n"
+            "      |        ^~~\n"
+            "p.nc:2:4: note: X10 is here\n"
+            "    2 | N1 X10 X20\n"
+            "      |    ^~~\n");
+}
+
+TEST(Diagnostics, CaretCountsCharactersNotBytes) {
+  SourceManager sources;
+  uint32_t f = sources.add("p.nc", "(ДЕТАЛЬ) X\x01\n");
+  Diagnostics diags;
+  // The control byte is at byte column 17 but display column 11.
+  Diagnostic* d = diags.report(DiagId::CharInvalid, {f, 1, 17, 1, 18}, "control character 0x01");
+  std::string text = format_text(*d, sources);
+  EXPECT_NE(text.find("    1 | (ДЕТАЛЬ) X \n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n      | " + std::string(10, ' ') + "^\n"), std::string::npos) << text;
+}
+
+TEST(Diagnostics, LongLinesAreCutAroundTheColumn) {
+  SourceManager sources;
+  std::string line(5000, 'X');
+  uint32_t f = sources.add("p.nc", line + "\n");
+  Diagnostics diags;
+  Diagnostic* d = diags.report(DiagId::SyntaxError, {f, 1, 4000, 1, 4001}, "'X'");
+  std::string text = format_text(*d, sources);
+  EXPECT_LT(text.size(), 400u);
+  EXPECT_NE(text.find("..."), std::string::npos);
+}
+
+TEST(Diagnostics, CitationIsAppended) {
+  Diagnostics diags;
+  diags.set_citations({{DiagId::ThreadFeed, "GOST 20999 §7.3"}});
+  Diagnostic* d = diags.report(DiagId::ThreadFeed, {}, "G33");
+  EXPECT_EQ(d->message, "F must not be programmed in a thread block G33: the pitch sets the feed (GOST 20999 §7.3)");
+}
+
+TEST(Diagnostics, ErrorLimitStopsWithOneMessage) {
+  Diagnostics diags(2);
+  for (int i = 0; i < 5; ++i) diags.report(DiagId::NoDigits, {}, "X");
+  diags.report(DiagId::StrayRightParen, {});
+  ASSERT_EQ(diags.all().size(), 4u);  // two errors, the limit notice, the warning
+  EXPECT_EQ(diags.all()[2].id, DiagId::TooManyErrors);
+  EXPECT_TRUE(diags.limit_reached());
+}
+
+TEST(Diagnostics, JsonEscapes) {
+  EXPECT_EQ(json_escape("a\"b\\c\nd\x01"), "a\\\"b\\\\c\\nd\\u0001");
+  SourceManager sources;
+  uint32_t f = sources.add("p\"q.nc", "X\n");
+  Diagnostics diags;
+  diags.report(DiagId::NoDigits, {f, 1, 1, 1, 2}, "X");
+  EXPECT_EQ(format_all(diags.all(), sources, DiagFormat::Json),
+            R"({"code":"NC2002","name":"no-digits","severity":"error","message":"word X has no digits; a value of zero is written with at least one zero","range":{"file":"p\"q.nc","line":1,"column":1,"end_line":1,"end_column":2},"notes":[]})"
+            "\n");
+}
+
+TEST(Diagnostics, SarifNamesRulesAndResults) {
+  SourceManager sources;
+  uint32_t f = sources.add("p.nc", "X\n");
+  Diagnostics diags;
+  diags.report(DiagId::NoDigits, {f, 1, 1, 1, 2}, "X");
+  diags.report(DiagId::StrayRightParen, {f, 1, 1, 1, 2});
+  std::string s = format_all(diags.all(), sources, DiagFormat::Sarif);
+  EXPECT_NE(s.find(R"("version":"2.1.0")"), std::string::npos);
+  EXPECT_NE(s.find(R"({"id":"NC2002","name":"no-digits"})"), std::string::npos);
+  EXPECT_NE(s.find(R"("ruleId":"NC1005","level":"warning")"), std::string::npos);
+  EXPECT_NE(s.find(R"("region":{"startLine":1,"startColumn":1,"endLine":1,"endColumn":2})"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ncc
