@@ -28,6 +28,10 @@ std::string mm_text(double v) {
   return s;
 }
 
+// Programmed positions live on a nanometre grid, so that increments add up exactly
+// as decimals do (0.1 + 0.2 is 0.3) and traces stay bit-for-bit stable.
+double snap(double v) { return std::round(v * 1e9) / 1e9; }
+
 // The angle in [0, 2π).
 double wrap(double a) {
   a = std::fmod(a, kTwoPi);
@@ -68,9 +72,13 @@ void Machine::reset_state() {
   step_ = saved;
 }
 
+AxisValues Machine::target_frame() const {
+  if (step_.block_offset == 0) return {};  // G53: the machine reference point
+  return frame_offset(step_.block_offset > 0 ? step_.block_offset : modal_.work_offset);
+}
+
 AxisValues Machine::frame_offset(int work_offset) const {
   AxisValues off{};
-  if (step_.block_offset == 0) return off;  // G53: the machine reference point
   if (auto it = config_.work_offsets.find(work_offset); it != config_.work_offsets.end()) off = it->second;
   for (int i = 0; i < kAxisCount; ++i) off[i] += position_offset_[i];
   return off;
@@ -93,13 +101,13 @@ AxisValues Machine::target() {
   // Blocks 2 of a three-point parabola measure from the intermediate point (Appendix 5).
   const AxisValues& base = parabola_middle_ ? *parabola_middle_ : machine_;
   AxisValues t = base;
-  AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+  AxisValues off = target_frame();
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
     double v = word(letter);
     v = is_linear_axis(i) ? length_units(v) : angle_degrees(v);
-    t[i] = modal_.absolute ? v + off[i] : base[i] + v;
+    t[i] = snap(modal_.absolute ? v + off[i] : base[i] + v);
   }
   return t;
 }
@@ -182,6 +190,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::MotionThreadIncreasing:
     case Fn::MotionThreadDecreasing:
     case Fn::MotionDwell:
+      if (call.fn == Fn::MotionDwell) step_.dwell_code = true;
       if (parabola_middle_ && call.fn != Fn::MotionParabola) {
         report(DiagId::ParabolaPair, 0, "the motion mode changed");
         parabola_middle_.reset();
@@ -208,10 +217,14 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::FeedInverseTime:
     case Fn::FeedPerMinute:
-    case Fn::FeedPerRevolution:
-      modal_.feed_mode = call.fn == Fn::FeedInverseTime ? 0 : call.fn == Fn::FeedPerMinute ? 1 : 2;
+    case Fn::FeedPerRevolution: {
+      int mode = call.fn == Fn::FeedInverseTime ? 0 : call.fn == Fn::FeedPerMinute ? 1 : 2;
+      // F means something else in the new mode: it must be programmed again.
+      if (mode != modal_.feed_mode) feed_.reset();
+      modal_.feed_mode = mode;
       event(EventKind::FeedMode, modal_.feed_mode);
       break;
+    }
     case Fn::SpindleConstantSurface:
     case Fn::SpindleRpm:
       modal_.constant_surface = call.fn == Fn::SpindleConstantSurface;
@@ -221,17 +234,15 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::CompLeft:
     case Fn::CompRight:
       modal_.comp = call.fn == Fn::CompOff ? 0 : call.fn == Fn::CompLeft ? 1 : 2;
-      if (emit_events) cutter_comp_event();
       break;
     case Fn::LengthOff:
     case Fn::LengthPlus:
     case Fn::LengthMinus:
       modal_.length = call.fn == Fn::LengthOff ? 0 : call.fn == Fn::LengthPlus ? 1 : -1;
-      if (emit_events) tool_length_event();
       break;
     case Fn::WorkOffset:
       if (call.arg != 0 && !config_.work_offsets.count(call.arg)) {
-        report(DiagId::OffsetUnknown, 0, call.arg);
+        report_code(DiagId::WorkOffsetUnknown, step_.code_name, call.arg);
         break;
       }
       if (scope == Scope::Block) {
@@ -252,8 +263,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       cycle_ = {};
       break;
     case Fn::Cycle: modal_.cycle = call.arg; break;
-    case Fn::ProgramStop: event(EventKind::Stop, 0); break;
-    case Fn::ProgramOptionalStop: event(EventKind::Stop, config_.optional_stop ? 1 : 2); break;
+    // Stops come after everything else of the block (Table 8: "after the commands of
+    // the block are executed").
+    case Fn::ProgramStop: step_.stop = 1; break;
+    case Fn::ProgramOptionalStop: step_.stop = config_.optional_stop ? 2 : 3; break;
     case Fn::ProgramEnd: step_.end = true; break;
     case Fn::ProgramEndInformation: step_.end_information = true; break;
     case Fn::SpindleCw:
@@ -337,17 +350,30 @@ void Machine::registers() {
       report(DiagId::OffsetUnknown, letter, number);
       continue;
     }
-    if (number == offset_number_) continue;
-    offset_number_ = number;
-    // A new offset number takes effect at once on an active compensation.
-    if (modal_.comp != 0) cutter_comp_event();
-    if (modal_.length != 0) tool_length_event();
+    offset_number_ = number;  // takes effect at once on an active compensation
   }
+}
+
+Machine::Compensation Machine::compensation() const {
+  auto it = config_.offsets.find(offset_number_);
+  double radius = it == config_.offsets.end() ? 0 : it->second.radius;
+  double length = it == config_.offsets.end() ? 0 : it->second.length;
+  return {modal_.comp, modal_.comp ? radius : 0, modal_.length * length};
+}
+
+void Machine::flush_compensation() {
+  // An event when the compensation in effect changes: one per block, with the
+  // offset number the block ends with.
+  Compensation now = compensation();
+  if (now.side != step_.compensation.side || now.radius != step_.compensation.radius) cutter_comp_event();
+  if (now.length != step_.compensation.length) tool_length_event();
+  step_.compensation = now;
 }
 
 BlockResult Machine::execute(const BlockRequest& request) {
   step_ = Step{};
   step_.request = &request;
+  step_.compensation = compensation();
   auto failed = [&] { return step_.error && stop_on_error_; };
   // 1. Preparatory functions in written order; a block-only code's group comes back
   //    after the block.
@@ -359,11 +385,15 @@ BlockResult Machine::execute(const BlockRequest& request) {
       if (code.scope == Scope::Block && group != FnGroup::None && call.fn != Fn::WorkOffset)
         step_.restore.push_back(current(group));
       if (group == FnGroup::Motion) motion_name_ = code.name;
+      step_.code = request.codes[i];
+      step_.code_name = code.name;
       apply(call, code.scope, true);
     }
   }
+  step_.code = -1;
   // 2. Registers.
   registers();
+  flush_compensation();
   if (failed()) return BlockResult::Error;
   // 3. Auxiliary functions that start before the motion (Table 7), in written order.
   for (size_t i = 0; i < request.code_count; ++i) {
@@ -389,7 +419,7 @@ BlockResult Machine::execute(const BlockRequest& request) {
 
 void Machine::action() {
   const bool axes = has_axis_word();
-  if (step_.dwell || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word))) {
+  if (step_.dwell || step_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word))) {
     if (axes) report(DiagId::DwellWithMotion, 0);
     dwell();
     return;
@@ -398,8 +428,9 @@ void Machine::action() {
     set_position();
     return;
   }
-  if (modal_.cycle >= 0 && (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word)))) {
-    cycle();
+  if (modal_.cycle >= 0) {
+    if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) cycle();
+    else cycle_registers();
     return;
   }
   if (!axes) {
@@ -428,21 +459,48 @@ void Machine::action() {
 
 void Machine::finish() {
   for (const FnCall& call : step_.restore) apply(call, Scope::Modal, true);
+  flush_compensation();
+  if (step_.stop) {
+    Event e{EventKind::Stop};
+    e.n = step_.stop - 1;
+    emit(e);
+  }
   if (step_.end || step_.end_information) {
     // Table 8: M02/M30 stop the spindle and feed and switch coolant off, then the NC
-    // returns to its initial state (§8).
+    // returns to its initial state (§8), which the trace shows as it changes.
     if (parabola_middle_) report(DiagId::ParabolaPair, 0, "the program ended");
-    if (modal_.spindle != 0) apply({Fn::SpindleStop}, Scope::Modal, true);
-    if (modal_.mist || modal_.flood) apply({Fn::CoolantOff}, Scope::Modal, true);
+    apply({Fn::SpindleStop}, Scope::Modal, true);
+    apply({Fn::CoolantOff}, Scope::Modal, true);
+    Modal before = modal_;
+    AxisValues position_offset = position_offset_;
+    reset_state();
+    emit_reset(before, position_offset);
     Event e{EventKind::End};
     e.n = step_.end_information;
     emit(e);
-    reset_state();
   }
   if (step_.error) return;
   uint64_t unused = step_.request->words->present & ~step_.used;
   for (int slot = 0; slot < 26; ++slot)
     if (unused & (uint64_t{1} << slot)) report(DiagId::WordUnused, static_cast<char>('A' + slot), std::string(1, static_cast<char>('A' + slot)));
+}
+
+void Machine::emit_reset(const Modal& before, const AxisValues& position_offset) {
+  auto changed = [&](EventKind kind, int n) {
+    Event e{kind};
+    e.n = n;
+    emit(e);
+  };
+  if (before.inch != modal_.inch) changed(EventKind::Units, modal_.inch);
+  if (before.plane != modal_.plane) changed(EventKind::Plane, modal_.plane);
+  if (before.feed_mode != modal_.feed_mode) changed(EventKind::FeedMode, modal_.feed_mode);
+  if (before.constant_surface != modal_.constant_surface) changed(EventKind::SpindleMode, modal_.constant_surface);
+  flush_compensation();
+  if (before.work_offset != modal_.work_offset) apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
+  if (position_offset != position_offset_) {
+    Event e{EventKind::PositionOffset};
+    emit(e);
+  }
 }
 
 void Machine::end_of_unit(uint32_t source) {
@@ -504,7 +562,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     // §4.3.3: increments from the start point to the centre.
     centre = p0 + Eigen::Vector2d(has(pu) ? length_units(word(pu)) : 0, has(pv) ? length_units(word(pv)) : 0);
   } else {
-    AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+    AxisValues off = target_frame();
     centre = Eigen::Vector2d(has(pu) ? length_units(word(pu)) + off[u] : p0.x(),
                              has(pv) ? length_units(word(pv)) + off[v] : p0.y());
   }
@@ -515,7 +573,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     move_to(t);
     return;
   }
-  if (std::fabs(r0 - r1) > conv_.arc_tolerance) {
+  if (std::fabs(r0 - r1) > conv_.arc_tolerance + kSamePoint) {
     report(DiagId::ArcRadiusMismatch, 0, mm_text(to_program(r0)), mm_text(to_program(r1)),
            mm_text(to_program(std::fabs(r0 - r1))), mm_text(to_program(conv_.arc_tolerance)));
     move_to(t);
@@ -531,32 +589,39 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   // and its parameter is the travel per radian (or per revolution).
   const double dw = t[w] - machine_[w];
   if (std::fabs(dw) > kSamePoint) {
-    if (auto lead = word_if(pw); lead && *lead != 0) {
+    const bool per_revolution = conv_.helix_lead == HelixLead::PerRevolution;
+    if (auto lead = word_if(pw)) {
       // The lead selects the number of turns; the end point stays as programmed. It
       // must agree with the travel: lead x sweep = travel, within the arc tolerance
       // plus the rounding of the lead word over the sweep.
-      double l = length_units(*lead);
-      double per_radian = conv_.helix_lead == HelixLead::PerRadian ? l : l / kTwoPi;
-      double lead_angle = dw / per_radian;
-      double turns = std::round((lead_angle - sweep) / kTwoPi);
-      double candidate = sweep + kTwoPi * turns;
-      double slack = conv_.arc_tolerance + candidate * length_units(conv_.lead_resolution) / 2 *
-                                               (conv_.helix_lead == HelixLead::PerRadian ? 1 : 1 / kTwoPi);
-      if (lead_angle <= 0 || candidate <= 0 || std::fabs(candidate * per_radian - dw) > slack) {
-        report(DiagId::HelixLead, pw, mm_text(*lead), mm_text(lead_angle), mm_text(sweep),
-               mm_text(to_program(std::fabs(candidate * per_radian - dw))));
+      double per_radian = length_units(*lead) / (per_revolution ? kTwoPi : 1);
+      double candidate = sweep;
+      if (per_radian != 0) {
+        double lead_angle = dw / per_radian;
+        candidate = sweep + kTwoPi * std::round((lead_angle - sweep) / kTwoPi);
+        if (lead_angle <= 0 || candidate <= 0) candidate = sweep;
+      }
+      double off = std::fabs(candidate * per_radian - dw);
+      double slack = conv_.arc_tolerance + kSamePoint +
+                     candidate * length_units(conv_.lead_resolution) / 2 / (per_revolution ? kTwoPi : 1);
+      if (off > slack) {
+        report(DiagId::HelixLead, pw, mm_text(*lead),
+               per_radian == 0 ? std::string("no end") : mm_text(dw / per_radian), mm_text(sweep),
+               mm_text(to_program(off)));
         move_to(t);
         return;
       }
       sweep = candidate;
     } else {
-      report(DiagId::HelixNoLead, 0, std::string(1, pw), std::string(1, kAxisLetters[w]));
+      report(DiagId::HelixNoLead, 0, std::string(1, pw), std::string(1, kAxisLetters[w]),
+             per_revolution ? "revolution" : "radian");
     }
   }
   if (conv_.arc_single_quadrant) {
     // §4.3.5: the arc may not cross the lines through the centre parallel to u or v.
-    double from_start = clockwise ? wrap(a0) : wrap(-a0);  // angle back to the previous boundary
-    double to_boundary = kPi / 2 - std::fmod(from_start, kPi / 2);
+    // The angle from the start to the next boundary in the direction of travel.
+    double into_quadrant = std::fmod(wrap(a0), kPi / 2);
+    double to_boundary = clockwise ? into_quadrant : kPi / 2 - into_quadrant;
     if (to_boundary < 1e-12) to_boundary = kPi / 2;
     if (sweep > to_boundary + 1e-9) {
       report(DiagId::ArcQuadrant, 0, mm_text(sweep * 180 / kPi));
@@ -579,7 +644,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
 
 void Machine::parabola(const AxisValues& t) {
   if (!need_feed("parabolic interpolation", t)) return;
-  AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
+  AxisValues off = target_frame();
   Eigen::Vector3d p0(machine_[0], machine_[1], machine_[2]);
   Eigen::Vector3d p2(t[0], t[1], t[2]);
   Eigen::Vector3d control;
@@ -588,6 +653,8 @@ void Machine::parabola(const AxisValues& t) {
     if (parabola_middle_) {
       report(DiagId::ParabolaPair, 0, "this block is a one-block parabola");
       parabola_middle_.reset();
+      move_to(t);
+      return;
     }
     for (int i = 0; i < 3; ++i) {
       char letter = kParameterOf[i];
@@ -602,7 +669,6 @@ void Machine::parabola(const AxisValues& t) {
   } else if (!parabola_middle_) {
     // §4.4.2, first of two blocks: the intermediate point. Nothing moves yet.
     parabola_middle_ = t;
-    parabola_source_ = step_.request->source;
     return;
   } else {
     // Second block: the end point. The intermediate point is the curve at t = 1/2,
@@ -612,47 +678,72 @@ void Machine::parabola(const AxisValues& t) {
     parabola_middle_.reset();
   }
   Event e = motion_event(EventKind::Parabola, t);
-  for (int i = 0; i < 3; ++i) e.control[i] = to_program(control[i] - off[i]);
+  AxisValues shown = frame_offset(modal_.work_offset);
+  for (int i = 0; i < 3; ++i) e.control[i] = to_program(control[i] - shown[i]);
   emit(e);
   move_to(t);
 }
 
 void Machine::thread(const AxisValues& t) {
-  // §7.1: the thread length in X and/or Z, the pitch in I or K (mm per revolution).
+  // §7.1: the thread length in X and/or Z, the pitch in I or K (mm per revolution),
+  // measured along the axis of the pitch word.
   std::string candidates = conv_.thread_allow_j ? "IJK" : "IK";
   std::string given;
   for (char c : candidates)
     if (has(c)) given += c;
+  auto listed = [](const std::string& letters, const char* last) {
+    std::string list;
+    for (size_t i = 0; i < letters.size(); ++i)
+      list += (i ? (i + 1 == letters.size() ? last : ", ") : "") + std::string(1, letters[i]);
+    return list;
+  };
   bool ok = true;
   if (given.size() != 1) {
-    std::string list;
-    for (size_t i = 0; i < candidates.size(); ++i)
-      list += (i ? (i + 1 == candidates.size() ? " or " : ", ") : "") + std::string(1, candidates[i]);
-    report(DiagId::ThreadPitch, 0, list,
-           given.empty() ? std::string("none is programmed") : fmt::format("{} are all programmed", given));
+    report(DiagId::ThreadPitch, 0, listed(candidates, " or "),
+           given.empty() ? std::string("none is programmed")
+                         : fmt::format("{} {} programmed", listed(given, " and "), given.size() == 2 ? "are both" : "are all"));
     ok = false;
   }
   if (has('F')) {
     report(DiagId::ThreadFeed, 'F', motion_name_);
     ok = false;
   }
-  double pitch = ok ? length_units(word(given[0])) : 0;
+  const char pitch_word = ok ? given[0] : 0;
+  const int pitch_axis = pitch_word ? pitch_word - 'I' : 0;
+  double pitch = ok ? length_units(word(pitch_word)) : 0;
   if (ok && pitch <= 0) {
-    report(DiagId::ThreadPitch, given[0], std::string(1, given[0]), "the pitch must be greater than zero");
+    report(DiagId::ThreadPitchSign, pitch_word, fmt::format("{}{}", pitch_word, mm_text(word(pitch_word))));
+    ok = false;
+  }
+  const double length = std::fabs(t[pitch_axis] - machine_[pitch_axis]);
+  if (ok && length < kSamePoint) {
+    report(DiagId::ThreadPitchAxis, pitch_word, std::string(1, pitch_word), std::string(1, kAxisLetters[pitch_axis]));
     ok = false;
   }
   double change = 0;
   if (modal_.motion != Fn::MotionThread && ok) {
     // §7.4: G34/G35 start from the initial pitch; how the change is given is the NC's.
+    const bool decreasing = modal_.motion == Fn::MotionThreadDecreasing;
     if (!conv_.pitch_change_word) {
       report(DiagId::ThreadPitchChangeUndefined, 0, motion_name_);
       ok = false;
     } else if (!has(conv_.pitch_change_word)) {
       report(DiagId::ThreadNoPitchChange, 0, motion_name_, std::string(1, conv_.pitch_change_word));
       ok = false;
+    } else if (double d = word(conv_.pitch_change_word); d <= 0) {
+      report(DiagId::ThreadPitchChangeSign, conv_.pitch_change_word, mm_text(d), motion_name_,
+             decreasing ? "subtracts" : "adds");
+      ok = false;
     } else {
-      change = std::fabs(length_units(word(conv_.pitch_change_word)));
-      if (modal_.motion == Fn::MotionThreadDecreasing) change = -change;
+      change = length_units(d) * (decreasing ? -1 : 1);
+      // After n revolutions the pitch is p + n*change and the thread has advanced
+      // p*n + change*n*n/2; a decreasing pitch must not reach zero before the end.
+      double reach = decreasing ? pitch * pitch / (2 * -change) : INFINITY;
+      if (length > reach) {
+        report(DiagId::ThreadPitchZero, conv_.pitch_change_word, motion_name_, mm_text(to_program(reach)),
+               mm_text(to_program(length)));
+        ok = false;
+      }
     }
   }
   if (ok && (std::abs(modal_.spindle) != 1 || speed_ <= 0)) {
@@ -671,12 +762,20 @@ void Machine::thread(const AxisValues& t) {
 void Machine::dwell() {
   auto time = word_if(conv_.dwell_word);
   if (!time) {
-    report(DiagId::DwellNoTime, 0, std::string(1, conv_.dwell_word));
+    report(DiagId::DwellNoTime, 0, dwell_address());
+    return;
+  }
+  if (*time < 0) {
+    report(DiagId::DwellNegative, conv_.dwell_word, mm_text(*time));
     return;
   }
   Event e{EventKind::Dwell};
   e.a = *time * conv_.dwell_seconds_per_unit;
   emit(e);
+}
+
+std::string Machine::dwell_address() const {
+  return conv_.dwell_word ? std::string(1, conv_.dwell_word) : std::string("a dwell address, which this machine lacks");
 }
 
 void Machine::set_position() {
@@ -699,38 +798,51 @@ void Machine::set_position() {
   emit(e);
 }
 
-void Machine::cycle() {
-  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
-  const std::string& name = pattern.name;
-  const int d = kPlaneAxes[modal_.plane][2];  // the drilling axis: perpendicular to the plane
-  const char depth_letter = kAxisLetters[d];
-  // The cycle registers stay in force while the cycle is active (S-7.5).
+void Machine::cycle_registers() {
+  // The cycle registers stay in force while the cycle is active (S-7.5); any block
+  // may change them, the cycle runs only in blocks with a dimension word.
+  const char depth_letter = kAxisLetters[kPlaneAxes[modal_.plane][2]];
   if (has(depth_letter)) cycle_.depth = word(depth_letter);
   if (auto v = word_if(conv_.cycle_level_word)) cycle_.level = v;
   if (auto v = word_if(conv_.dwell_word)) cycle_.dwell = v;
   if (auto v = word_if(conv_.peck_word)) cycle_.peck = v;
+}
+
+void Machine::cycle() {
+  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
+  const std::string name = "canned cycle " + pattern.name;
+  const int d = kPlaneAxes[modal_.plane][2];  // the drilling axis: perpendicular to the plane
+  const char depth_letter = kAxisLetters[d];
+  cycle_registers();
   AxisValues hole = target();
   hole[d] = machine_[d];
   bool ok = true;
   if (!cycle_.depth) {
-    report(DiagId::CycleNoDepth, 0, name, std::string(1, depth_letter));
+    report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, depth_letter));
     ok = false;
   }
   if (!cycle_.level) {
-    report(DiagId::CycleNoRLevel, 0, name);
+    report(DiagId::CycleNoRLevel, 0, pattern.name);
     ok = false;
   }
-  if (ok && pattern.in == CyclePattern::In::Peck && (!cycle_.peck || *cycle_.peck <= 0)) {
-    report(DiagId::PeckNotPositive, conv_.peck_word, cycle_.peck ? mm_text(*cycle_.peck) : std::string("(none)"),
-           name);
-    ok = false;
+  if (ok && pattern.in == CyclePattern::In::Peck) {
+    if (!cycle_.peck) {
+      report(DiagId::CycleNoPeck, 0, pattern.name, conv_.peck_word ? std::string(1, conv_.peck_word) : "Q");
+      ok = false;
+    } else if (*cycle_.peck <= 0) {
+      report(DiagId::PeckNotPositive, conv_.peck_word, mm_text(*cycle_.peck), pattern.name);
+      ok = false;
+    }
   }
   if (ok && pattern.dwell && !cycle_.dwell) {
-    report(DiagId::DwellNoTime, 0, std::string(1, conv_.dwell_word));
+    report(DiagId::CycleNoDwell, 0, pattern.name, dwell_address());
+    ok = false;
+  } else if (ok && pattern.dwell && *cycle_.dwell < 0) {
+    report(DiagId::DwellNegative, conv_.dwell_word, mm_text(*cycle_.dwell));
     ok = false;
   }
   if (ok && pattern.in == CyclePattern::In::SpindleFeed && spindle_direction_ == 0) {
-    report(DiagId::CycleNoSpindle, 0, name);
+    report(DiagId::CycleNoSpindle, 0, pattern.name);
     ok = false;
   }
   if (!ok || !need_feed(name.c_str(), hole)) {
@@ -739,16 +851,27 @@ void Machine::cycle() {
   }
   // G90: R and the depth are coordinates; G91: R is measured from the initial level
   // and the depth from R.
-  const double initial = machine_[d];
-  AxisValues off = frame_offset(step_.block_offset >= 0 ? step_.block_offset : modal_.work_offset);
-  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : initial + length_units(*cycle_.level);
+  const double start = machine_[d];
+  AxisValues off = target_frame();
+  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
   const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
+  // The tool never travels between holes on the work side of R: a start below R
+  // first goes up to R, and R is then the initial level it returns to.
+  const bool below_level = (bottom < level) ? start < level : start > level;
+  const double initial = below_level ? level : start;
   auto at = [&](double z) {
     AxisValues p = hole;
     p[d] = z;
     return p;
   };
-  if (hole != machine_) rapid(hole);
+  if (below_level) {
+    AxisValues up = machine_;
+    up[d] = level;
+    rapid(up);
+  }
+  // Moves of zero length (already at the hole, R equal to the initial level) are
+  // not made.
+  if (hole != machine_) rapid(at(machine_[d]));
   if (level != machine_[d]) rapid(at(level));
   if (pattern.in == CyclePattern::In::SpindleFeed && modal_.spindle != spindle_direction_)
     apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);

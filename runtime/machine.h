@@ -47,6 +47,7 @@ struct RuntimeIssue {
   std::string message;
   uint32_t source = 0;
   char word = 0;
+  int code = -1;  // or the G/M code (ProgramSemantics::codes index) it concerns
 };
 
 class RuntimeIssues {
@@ -96,6 +97,13 @@ class Machine {
     bool spindle_hold = false;
   };
 
+  // The compensation in effect: side, radius, signed length.
+  struct Compensation {
+    int side = 0;
+    double radius = 0;
+    double length = 0;
+  };
+
   struct Cycle {
     std::optional<double> depth, level, dwell, peck;  // program units as written
   };
@@ -105,7 +113,11 @@ class Machine {
     const BlockRequest* request = nullptr;
     uint64_t used = 0;  // words the block's functions read
     bool error = false;
-    bool dwell = false, set_position = false, end = false, end_information = false;
+    bool dwell = false, dwell_code = false, set_position = false, end = false, end_information = false;
+    Compensation compensation;  // in effect when the block started (or last reported)
+    int stop = 0;       // 1 program stop, 2 optional stop taken, 3 skipped
+    int code = -1;      // the code being applied, for messages about it
+    std::string code_name;
     int block_offset = -1;  // a block-only preset offset (G53): the frame of this block's targets
     std::vector<FnCall> restore;  // modal functions to restore after a block-only code
   };
@@ -127,8 +139,16 @@ class Machine {
   // Issues.
   template <typename... Args>
   void report(DiagId id, char word, const Args&... args) {
-    issues_.issue({id, diag_message(id, args...), step_.request ? step_.request->source : 0, word});
-    if (diag_info(id).severity == Severity::Error) step_.error = true;
+    issue({id, diag_message(id, args...), step_.request ? step_.request->source : 0, word, -1});
+  }
+  // A problem with the code being applied (located at its word).
+  template <typename... Args>
+  void report_code(DiagId id, const Args&... args) {
+    issue({id, diag_message(id, args...), step_.request ? step_.request->source : 0, 0, step_.code});
+  }
+  void issue(const RuntimeIssue& i) {
+    issues_.issue(i);
+    if (diag_info(i.id).severity == Severity::Error) step_.error = true;
   }
 
   // The block cycle.
@@ -142,6 +162,7 @@ class Machine {
 
   // Coordinates.
   AxisValues frame_offset(int work_offset) const;  // work offset + position offset, machine units
+  AxisValues target_frame() const;                  // the frame this block's words are in (G53: none)
   AxisValues target();                              // of this block's axis words, machine units
   bool has_axis_word() const;
   void move_to(const AxisValues& machine_target);
@@ -155,10 +176,15 @@ class Machine {
   void parabola(const AxisValues& t);
   void thread(const AxisValues& t);
   void dwell();
+  std::string dwell_address() const;
   void set_position();
   void cycle();
+  void cycle_registers();
   void tool_length_event();
   void cutter_comp_event();
+  Compensation compensation() const;
+  void flush_compensation();
+  void emit_reset(const Modal& before, const AxisValues& position_offset);
 
   const ProgramSemantics& sem_;
   const Conventions& conv_;
@@ -179,7 +205,6 @@ class Machine {
   std::string motion_name_;    // the code that set the motion group, for messages
   Cycle cycle_;
   std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola
-  uint32_t parabola_source_ = 0;
   Step step_;
 };
 

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "support/diagnostics.h"
+
 namespace ncc {
 
 int axis_index(char letter) {
@@ -34,14 +36,8 @@ std::string json_number(double v) {
   return fmt::format("{}", v);
 }
 
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
+// A JSON (and C) string literal: control characters escaped, broken UTF-8 as U+FFFD.
+std::string quoted(const std::string& s) { return "\"" + json_escape(s) + "\""; }
 
 // Writes through a large buffer; formatting never waits on the stream.
 class BufferedSink : public TraceSink {

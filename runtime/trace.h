@@ -27,6 +27,7 @@ struct SourceBlock {
 
 struct WordPosition {
   uint8_t slot = 0;
+  int16_t code = -1;  // a G/M word: its index in ProgramSemantics::codes
   uint32_t line = 0, col = 0, end_col = 0;
 };
 

@@ -98,16 +98,23 @@ Profile::Lookup Profile::find(std::string_view key) const {
   return {v.node(), builtin_.get()};
 }
 
-void Profile::report_value(Diagnostics& diags, std::string_view key, std::string_view message) const {
+SourceRange Profile::range_of(std::string_view key) const {
   Lookup l = find(key);
-  SourceRange range = l.node ? region_range(l.node->source(), l.owner->file) : SourceRange{};
-  diags.report(DiagId::ProfileValue, range, fmt::format("'{}' {}", key, message));
+  return l.node ? region_range(l.node->source(), l.owner->file) : SourceRange{};
+}
+
+bool Profile::user_sets(std::string_view key) const {
+  return user_ && user_->table.at_path(toml::path{key}).node() != nullptr;
+}
+
+void Profile::report_value(Diagnostics& diags, std::string_view key, std::string_view message) const {
+  diags.report(DiagId::ProfileValue, range_of(key), fmt::format("'{}' {}", key, message));
 }
 
 std::optional<std::string> Profile::string(std::string_view key, Diagnostics& diags) const {
   Lookup l = find(key);
   if (!l.node) return std::nullopt;
-  if (auto v = l.node->value<std::string>()) return *v;
+  if (l.node->is_string()) return *l.node->value<std::string>();
   report_value(diags, key, "must be a string");
   return std::nullopt;
 }
@@ -123,7 +130,7 @@ std::optional<double> Profile::number(std::string_view key, Diagnostics& diags) 
 std::optional<bool> Profile::boolean(std::string_view key, Diagnostics& diags) const {
   Lookup l = find(key);
   if (!l.node) return std::nullopt;
-  if (auto v = l.node->value<bool>()) return *v;
+  if (l.node->is_boolean()) return *l.node->value<bool>();
   report_value(diags, key, "must be true or false");
   return std::nullopt;
 }
@@ -206,8 +213,9 @@ void Profile::report_unused(Diagnostics& diags) const {
   std::vector<std::string> leaves;
   collect_leaves(user_->table, "", leaves);
   for (const std::string& key : leaves) {
-    // A key is used if it or one of its parent tables was looked up as a whole.
-    bool used = false;
+    // A key is used if it, a table holding it, or a key inside it was looked up.
+    auto child = used_.lower_bound(key + ".");
+    bool used = child != used_.end() && child->compare(0, key.size() + 1, key + ".") == 0;
     for (std::string k = key; !used; k = k.substr(0, k.rfind('.'))) {
       used = used_.count(k) > 0;
       if (k.find('.') == std::string::npos) break;

@@ -46,6 +46,10 @@ class Profile {
   void report_unused(Diagnostics& diags) const;
   // Reports a bad value of `key` at its place in the profile.
   void report_value(Diagnostics& diags, std::string_view key, std::string_view message) const;
+  // Where `key`'s value is written (the user's profile, else the default).
+  SourceRange range_of(std::string_view key) const;
+  // Whether the user's profile sets `key` (rather than inheriting the default).
+  bool user_sets(std::string_view key) const;
 
   struct Impl;
 

@@ -13,11 +13,24 @@ constexpr std::array kCatalogue = {
 #undef DIAG
 };
 
-// Display width of a UTF-8 prefix: one column per code point.
+// The length of the valid, printable UTF-8 sequence at s[i], or 0.
+size_t utf8_length(std::string_view s, size_t i) {
+  unsigned char c = static_cast<unsigned char>(s[i]);
+  if (c >= 0x20 && c < 0x7F) return 1;
+  size_t n = c >= 0xF0 && c < 0xF5 ? 4 : c >= 0xE0 ? (c < 0xF0 ? 3 : 0) : c >= 0xC2 ? 2 : 0;
+  if (n == 0 || i + n > s.size()) return 0;
+  for (size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
+  return n;
+}
+
+// Display width of a line prefix: one column per character, valid or not.
 size_t display_width(std::string_view s) {
   size_t w = 0;
-  for (unsigned char c : s)
-    if ((c & 0xC0) != 0x80) ++w;
+  for (size_t i = 0; i < s.size(); ++w) {
+    size_t n = utf8_length(s, i);
+    i += n ? n : 1;
+  }
   return w;
 }
 
@@ -42,9 +55,17 @@ Excerpt make_excerpt(std::string_view line, uint32_t col, uint32_t end_col) {
   while (stop < line.size() && (static_cast<unsigned char>(line[stop]) & 0xC0) == 0x80) ++stop;
   Excerpt e;
   if (begin > 0) e.text = "...";
-  for (size_t i = begin; i < stop; ++i) {
+  // Control characters print as spaces and broken UTF-8 as '?', one column each.
+  for (size_t i = begin; i < stop;) {
     unsigned char c = static_cast<unsigned char>(line[i]);
-    e.text += (c < 0x20 || c == 0x7F) ? ' ' : static_cast<char>(c);
+    size_t n = utf8_length(line, i);
+    if (n == 0) {
+      e.text += (c < 0x80 && (c < 0x20 || c == 0x7F)) ? ' ' : '?';
+      ++i;
+    } else {
+      e.text.append(line.substr(i, n));
+      i += n;
+    }
   }
   if (stop < line.size()) e.text += "...";
   size_t prefix = begin > 0 ? 3 : 0;
@@ -81,6 +102,17 @@ const char* severity_color(Severity s) {
     case Severity::Note: return "\033[1;30m";
   }
   return "";
+}
+
+// SARIF counts columns in characters (columnKind unicodeCodePoints); ncc in bytes.
+uint32_t char_column(const SourceManager& sources, const SourceRange& r, uint32_t byte_col, uint32_t line) {
+  std::string_view text = sources.file(r.file).line(line);
+  return static_cast<uint32_t>(display_width(text.substr(0, std::min<size_t>(byte_col - 1, text.size())))) + 1;
+}
+
+std::string sarif_region(const SourceManager& sources, const SourceRange& r) {
+  return fmt::format(R"({{"startLine":{},"startColumn":{},"endLine":{},"endColumn":{}}})", r.line,
+                     char_column(sources, r, r.col, r.line), r.end_line, char_column(sources, r, r.end_col, r.end_line));
 }
 
 std::string sarif_level(Severity s) {
@@ -165,7 +197,19 @@ std::string format_text(const Diagnostic& d, const SourceManager& sources, bool 
 std::string json_escape(std::string_view s) {
   std::string out;
   out.reserve(s.size());
-  for (unsigned char c : s) {
+  for (size_t i = 0; i < s.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c >= 0x80) {
+      // JSON text is UTF-8: a byte that starts no valid sequence becomes U+FFFD.
+      size_t n = utf8_length(s, i);
+      if (n == 0) {
+        out += "\\ufffd";
+      } else {
+        out.append(s.substr(i, n));
+        i += n - 1;
+      }
+      continue;
+    }
     switch (c) {
       case '"': out += "\\\""; break;
       case '\\': out += "\\\\"; break;
@@ -207,16 +251,27 @@ std::string format_all(const std::vector<Diagnostic>& list, const SourceManager&
       for (size_t i = 0; i < rules.size(); ++i)
         out += fmt::format(R"({}{{"id":"{}","name":"{}"}})", i ? "," : "", diag_code(rules[i]),
                            diag_info(rules[i]).name);
-      out += "]}},\"results\":[";
+      out += "]}},\"columnKind\":\"unicodeCodePoints\",\"results\":[";
       for (size_t i = 0; i < list.size(); ++i) {
         const Diagnostic& d = list[i];
         out += fmt::format(R"({}{{"ruleId":"{}","level":"{}","message":{{"text":"{}"}})", i ? "," : "",
                            diag_code(d.id), sarif_level(d.severity), json_escape(d.message));
         if (d.range.valid() && d.range.file < sources.size())
           out += fmt::format(
-              R"(,"locations":[{{"physicalLocation":{{"artifactLocation":{{"uri":"{}"}},"region":{{"startLine":{},"startColumn":{},"endLine":{},"endColumn":{}}}}}}}])",
-              json_escape(sources.file(d.range.file).path()), d.range.line, d.range.col, d.range.end_line,
-              d.range.end_col);
+              R"(,"locations":[{{"physicalLocation":{{"artifactLocation":{{"uri":"{}"}},"region":{}}}}}])",
+              json_escape(sources.file(d.range.file).path()), sarif_region(sources, d.range));
+        if (!d.notes.empty()) {
+          out += R"(,"relatedLocations":[)";
+          for (size_t k = 0; k < d.notes.size(); ++k) {
+            const Note& n = d.notes[k];
+            out += fmt::format(R"({}{{"message":{{"text":"{}"}})", k ? "," : "", json_escape(n.message));
+            if (n.range.valid() && n.range.file < sources.size())
+              out += fmt::format(R"(,"physicalLocation":{{"artifactLocation":{{"uri":"{}"}},"region":{}}})",
+                                 json_escape(sources.file(n.range.file).path()), sarif_region(sources, n.range));
+            out += "}";
+          }
+          out += "]";
+        }
         out += "}";
       }
       out += "]}]}\n";

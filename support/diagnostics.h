@@ -21,6 +21,7 @@ enum class DiagId : uint16_t {
 #define DIAG(id, number, name, severity, message) id,
 #include "diagnostics.def"
 #undef DIAG
+  Count
 };
 
 struct DiagInfo {

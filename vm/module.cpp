@@ -95,6 +95,7 @@ void write_sources(ByteWriter& w, const SourceMap& m) {
   w.u32(static_cast<uint32_t>(m.words.size()));
   for (const WordPosition& p : m.words) {
     w.u8(p.slot);
+    w.u16(static_cast<uint16_t>(p.code));
     w.u32(p.line);
     w.u32(p.col);
     w.u32(p.end_col);
@@ -185,10 +186,11 @@ bool read_sources(ByteReader& r, SourceMap& m) {
     b.first_word = r.u32();
     b.word_count = r.u32();
   }
-  if (!count(r, 13, n)) return false;
+  if (!count(r, 15, n)) return false;
   m.words.resize(n);
   for (WordPosition& p : m.words) {
     p.slot = r.u8();
+    p.code = static_cast<int16_t>(r.u16());
     p.line = r.u32();
     p.col = r.u32();
     p.end_col = r.u32();
@@ -333,8 +335,12 @@ std::string write_module(const Module& m) {
 }
 
 std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags) {
-  if (bytes.size() < kHeaderSize || bytes.substr(0, 4) != kMagic) {
+  if (bytes.substr(0, 4) != kMagic) {
     diags.report(DiagId::BytecodeUnreadable, {}, name, "it does not start with the magic \"NCCB\"");
+    return std::nullopt;
+  }
+  if (bytes.size() < kHeaderSize) {
+    diags.report(DiagId::BytecodeUnreadable, {}, name, fmt::format("it is shorter than the {}-byte header", kHeaderSize));
     return std::nullopt;
   }
   ByteReader header(bytes.substr(4, kHeaderSize - 4));

@@ -57,11 +57,12 @@ constexpr Command kCommands[] = {
     {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
 };
 
-void print_main_help() {
-  std::printf("ncc - compiler, checker and VM for CNC part programs\n\nusage: ncc COMMAND [options] FILE\n\ncommands:\n");
-  for (const Command& c : kCommands) std::printf("  %-9s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
-  std::printf("\n'ncc COMMAND --help' describes a command and its options.\n");
-  std::printf("exit status: 0 success, 1 the program has errors, 2 usage or I/O errors\n");
+void print_main_help(std::FILE* out) {
+  std::fprintf(out, "ncc - compiler, checker and VM for CNC part programs\n\nusage: ncc COMMAND [options] FILE\n\ncommands:\n");
+  for (const Command& c : kCommands)
+    std::fprintf(out, "  %-9s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
+  std::fprintf(out, "\n'ncc COMMAND --help' describes a command and its options.\n");
+  std::fprintf(out, "exit status: 0 success, 1 the program has errors, 2 usage or I/O errors\n");
 }
 
 void print_command_help(const Command& c) {
@@ -191,7 +192,7 @@ class Cli {
 
   int source_only(FileKind kind) {
     if (kind == FileKind::Source) return kOk;
-    s_.diags.report(DiagId::DialectUnknown, {}, fmt::format("'{}' is a bytecode file; 'ncc {}' reads source", o_.input, o_.command));
+    s_.diags.report(DiagId::InputKind, {}, o_.input, o_.command);
     return kUsage;
   }
 
@@ -212,9 +213,10 @@ class Cli {
   }
 
   int check(FileKind kind, uint32_t file) {
-    if (int st = source_only(kind)) return finish(st, stdout);
+    // The report goes to stdout; when the check cannot run at all, stderr.
+    if (int st = source_only(kind)) return finish(st, stderr);
     auto program = analyse(s_, file, o_.dialect);
-    if (!program) return finish(kUsage, stdout);
+    if (!program) return finish(kUsage, stderr);
     if (!s_.diags.limit_reached()) dry_run(s_, lower_program(s_, *program), o_.run);
     int status = finish(kOk, stdout);
     if (o_.diag_format == DiagFormat::Text)
@@ -266,7 +268,7 @@ class Cli {
     RunResult result = run_module(s_, *m, o_.run, writer ? *writer : static_cast<TraceSink&>(none));
     writer.reset();
     if (close && std::fclose(out) != 0) s_.diags.report(DiagId::FileUnwritable, {}, o_.trace, std::strerror(errno));
-    return finish(result.ok ? kOk : kProgramErrors, stderr);
+    return finish(result.usage_error ? kUsage : result.ok ? kOk : kProgramErrors, stderr);
   }
 
   int disasm(FileKind kind, uint32_t file) {
@@ -299,7 +301,7 @@ int main(int argc, char** argv) {
   using namespace ncc;
   std::vector<std::string> args(argv + 1, argv + argc);
   if (args.empty() || args[0] == "-h" || args[0] == "--help" || args[0] == "help") {
-    print_main_help();
+    print_main_help(args.empty() ? stderr : stdout);
     return args.empty() ? kUsage : kOk;
   }
   if (args[0] == "--version") {

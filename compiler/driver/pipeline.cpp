@@ -1,5 +1,6 @@
 #include "pipeline.h"
 
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -31,10 +32,10 @@ class IssueReporter final : public RuntimeIssues {
       const SourceBlock& b = m_.source_map.blocks[i.source];
       uint32_t file = b.file < file_ids_.size() ? file_ids_[b.file] : 0;
       range = {file, b.line, b.col, b.end_line, b.end_col};
-      if (i.word) {
+      if (i.word || i.code >= 0) {
         for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
           const WordPosition& p = m_.source_map.words[w];
-          if (p.slot == i.word - 'A') {
+          if (i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.word - 'A')) {
             range = {file, p.line, p.col, p.line, p.end_col};
             break;
           }
@@ -66,6 +67,7 @@ std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
   std::vector<uint32_t> ids;
   for (const std::string& path : m.source_map.files) {
     uint32_t found = UINT32_MAX;
+    // A bytecode file remembers its sources by path; they may have moved.
     for (uint32_t i = 0; i < s.sources.size(); ++i)
       if (s.sources.file(i).path() == path) found = i;
     if (found == UINT32_MAX) found = s.sources.add(path, read_file(path).value_or(""));
@@ -87,8 +89,10 @@ const stdlib::Profile* run_profile(Session& s, const vm::Module& m) {
 RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry) {
   RunResult result;
   const stdlib::Profile* profile = run_profile(s, m);
-  if (!profile) return {false, 0};
+  if (!profile) return {false, true, 0};
+  uint32_t errors = s.diags.error_count();
   MachineConfig config = stdlib::load_machine_config(*profile, s.diags);
+  if (s.diags.error_count() != errors) return {false, true, 0};
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
   IssueReporter reporter(s, m, source_files(s, m), dry);
@@ -106,11 +110,11 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   if (settings.start_block) {
     std::string name = fmt::format(":{}", *settings.start_block);
     first = m.entries.size();
-    for (size_t i = 0; i < m.entries.size(); ++i)
-      if (m.entries[i].name == name) first = i;
+    for (size_t i = 0; i < m.entries.size() && first == m.entries.size(); ++i)
+      if (m.entries[i].name == name) first = i;  // the first on the medium
     if (first == m.entries.size()) {
       s.diags.report(DiagId::StartBlockNotFound, {}, *settings.start_block);
-      return {false, 0};
+      return {false, true, 0};
     }
   }
   for (size_t i = first; i < m.entries.size(); ++i) {
@@ -139,6 +143,11 @@ bool load_profile(Session& s, const std::string& path) {
 }
 
 std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    s.diags.report(DiagId::FileUnreadable, {}, path, "it is a directory");
+    return std::nullopt;
+  }
   auto text = read_file(path);
   if (!text) {
     s.diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno ? errno : EIO));
@@ -150,9 +159,13 @@ std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::s
 
 std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect) {
   if (!s.profile && !load_profile(s, "")) return std::nullopt;
+  // The whole profile is read and checked here, machine data too: a profile with
+  // errors stops the command (exit status 2) before the program is read.
+  uint32_t errors = s.diags.error_count();
   auto frontend = make_frontend(dialect, *s.profile, s.diags);
-  if (!frontend) return std::nullopt;
+  stdlib::load_machine_config(*s.profile, s.diags);
   s.profile->report_unused(s.diags);
+  if (!frontend || s.diags.error_count() != errors) return std::nullopt;
   ir::Program program = frontend->read(s.sources, file, s.diags);
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags);
   return program;

@@ -47,6 +47,7 @@ std::optional<vm::Module> load_module(Session& s, uint32_t file);
 
 struct RunResult {
   bool ok = true;
+  bool usage_error = false;  // the run could not start: profile, start block
   uint64_t steps = 0;
 };
 RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace);

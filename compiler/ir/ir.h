@@ -83,7 +83,8 @@ struct Stmt {
   ExprId target = kNoExpr;  // Assign: a Var expression
   ExprId value = kNoExpr;   // Assign value; RepeatBegin/Call count
   ExprId cond = kNoExpr;    // Jump condition
-  std::string label;        // Jump target label; Call target
+  std::string label;        // Jump target label; Call target; Comment text
+  bool optional = false;    // Comment after a mid-block '/': dropped when block skip is on
 };
 
 struct Block {

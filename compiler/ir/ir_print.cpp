@@ -124,7 +124,7 @@ std::string print(const Program& p, const SourceManager& sources) {
       }
       for (const Stmt& s : b.stmts) {
         switch (s.kind) {
-          case StmtKind::Comment: out += fmt::format("    comment \"{}\"\n", s.label); break;
+          case StmtKind::Comment: out += fmt::format("    comment {}\"{}\"\n", s.optional ? "/" : "", s.label); break;
           case StmtKind::Machine: {
             out += "    machine";
             for (const Word& w : b.words) {

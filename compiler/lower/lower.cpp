@@ -77,8 +77,9 @@ class Lowering {
     s.number = b.number.value_or(0);
     s.first_word = static_cast<uint32_t>(m_.source_map.words.size());
     for (const ir::Word& w : b.words)
-      if (w.kind == ir::WordKind::Parameter)
-        m_.source_map.words.push_back({w.slot, w.range.line, w.range.col, w.range.end_col});
+      if (w.kind == ir::WordKind::Parameter || (w.kind == ir::WordKind::Code && w.code >= 0))
+        m_.source_map.words.push_back({w.slot, static_cast<int16_t>(w.kind == ir::WordKind::Code ? w.code : -1),
+                                       w.range.line, w.range.col, w.range.end_col});
     s.word_count = static_cast<uint32_t>(m_.source_map.words.size()) - s.first_word;
     m_.source_map.blocks.push_back(s);
     return static_cast<uint32_t>(m_.source_map.blocks.size() - 1);
@@ -170,10 +171,13 @@ class Lowering {
       op(Op::Step);
       for (const ir::Stmt& s : b.stmts) {
         switch (s.kind) {
-          case ir::StmtKind::Comment:
+          case ir::StmtKind::Comment: {
+            uint32_t skip_comment = s.optional ? jump(Op::JumpSkip) : 0;
             op(Op::Comment);
             u32(string(s.label));
+            if (skip_comment) patch(skip_comment, pc());
             break;
+          }
           case ir::StmtKind::Machine: machine(b); break;
           case ir::StmtKind::Assign: {
             const ir::Expr& target = p_.exprs[s.target];

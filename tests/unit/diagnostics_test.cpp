@@ -15,7 +15,7 @@ TEST(Diagnostics, CodesAreUniqueAndDocumented) {
   doc << in.rdbuf();
   std::set<uint16_t> numbers;
   std::set<std::string_view> names;
-  for (uint16_t i = 0; i <= static_cast<uint16_t>(DiagId::DialectUnknown); ++i) {
+  for (uint16_t i = 0; i < static_cast<uint16_t>(DiagId::Count); ++i) {
     const DiagInfo& d = diag_info(static_cast<DiagId>(i));
     EXPECT_TRUE(numbers.insert(d.number).second) << d.number;
     EXPECT_TRUE(names.insert(d.name).second) << d.name;

@@ -142,7 +142,7 @@ TEST(Vm, TypedVariables) {
   Builder t;
   ir::Block& b = t.block();
   t.assign(b, t.var(1), t.num(3.7));    // byte: truncated to 3
-  t.assign(b, t.var(26), t.num(0.1));   // real (float)
+  t.assign(b, t.var(26), t.num(1000.1));  // real (float)
   t.assign(b, t.var(31), t.num(0.1));   // long real
   t.move_x(t.block(), t.var(1));
   t.move_x(t.block(), t.var(26));
@@ -151,7 +151,8 @@ TEST(Vm, TypedVariables) {
   auto r = t.run();
   ASSERT_EQ(r.xs.size(), 4u);
   EXPECT_EQ(r.xs[0], 3);
-  EXPECT_EQ(r.xs[1], static_cast<double>(0.1f));
+  EXPECT_NEAR(r.xs[1], static_cast<double>(1000.1f), 1e-9);  // positions live on a nanometre grid
+  EXPECT_GT(std::fabs(r.xs[1] - 1000.1), 1e-5);
   EXPECT_EQ(r.xs[2], 0.1);
   EXPECT_EQ(r.xs[3], 0.1);
 }

@@ -37,11 +37,13 @@ double scaled(std::string_view digits, int scale) {
   return value;
 }
 
+// The word as written, for messages; a very long one is abbreviated.
 std::string written(char letter, const WrittenNumber& n) {
   std::string s(1, letter);
   if (n.has_sign) s += n.negative ? '-' : '+';
   s += n.before;
   if (n.has_point) s += '.' + n.after;
+  if (s.size() > 40) s = fmt::format("{}...{} ({} characters)", s.substr(0, 16), s.substr(s.size() - 8), s.size());
   return s;
 }
 
@@ -80,13 +82,14 @@ std::optional<Format> parse_format(std::string_view text, std::vector<FormatProb
     if (end == std::string_view::npos) end = text.size();
     std::string_view item = text.substr(pos, end - pos);
     pos = end;
-    if (item == "%") f.program_start = true;
-    else if (item == ":") f.main_block = true;
-    else if (item == "/") f.block_skip = true;
-    else if (item == "DS") f.decimal_sign = true;
-    else if (item == ".") f.tab = true;
-    else if (item == "*") continue;
-    else {
+    bool* flag = item == "%" ? &f.program_start : item == ":" ? &f.main_block : item == "/" ? &f.block_skip
+               : item == "DS" ? &f.decimal_sign : item == "." ? &f.tab : nullptr;
+    if (flag) {
+      if (*flag) fail(item, "the item is given twice");
+      *flag = true;
+    } else if (item == "*") {
+      continue;
+    } else {
       char letter = item[0];
       bool dim = kDimensionAddresses.find(letter) != std::string_view::npos;
       bool nondim = kNonDimensionAddresses.find(letter) != std::string_view::npos;
@@ -189,6 +192,10 @@ std::optional<double> decode(char letter, const WordFormat& format, const Writte
     }
     int count = static_cast<int>(digits.size());
     if (format.suppress == Suppress::None && count != a) {
+      if (opts.mode == Mode::Lenient && count < a) {
+        diags.report(DiagId::DigitCountLenient, range, word, count, format.text, a);
+        return scaled(digits, 0);
+      }
       diags.report(DiagId::DigitCount, range, word, a, format.text);
       return std::nullopt;
     }

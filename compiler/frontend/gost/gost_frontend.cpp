@@ -149,6 +149,7 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   ir::Block block_;
   bool seen_element_ = false;   // something other than a leading '/' was read
   bool optional_rest_ = false;  // a '/' inside the block made the rest optional
+  size_t optional_comments_from_ = SIZE_MAX;  // comments from this index on are optional too
   std::map<int, int32_t> code_map_;
 };
 
@@ -183,20 +184,12 @@ void Reader::parse(std::string_view text, uint32_t line_no, uint32_t base) {
 }
 
 bool Reader::binary_file() {
-  // NUL runs are legal tape leader (§1.9); other control bytes and broken UTF-8 are not text.
+  // Control characters other than those the NC ignores (Table 2 note 2) mark a
+  // binary file; bytes above 0x7F may be 8-bit text (KOI8-R comments) and do not.
   std::string_view text = source_.text().substr(0, 4096);
   size_t bad = 0;
-  for (size_t i = 0; i < text.size(); ++i) {
-    unsigned char c = static_cast<unsigned char>(text[i]);
-    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\0') || c == 0x7F) {
-      ++bad;
-    } else if (c >= 0x80) {
-      size_t len = 0;
-      describe_char(text, i, len);
-      if (len == 1) ++bad;
-      else i += len - 1;
-    }
-  }
+  for (unsigned char c : text)
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\0') ++bad;
   if (bad * 10 > text.size() && bad > 2) {
     diags_.report(DiagId::BinaryFile, SourceRange::point(file_, 1, 1), bad, text.size());
     return true;
@@ -224,6 +217,11 @@ void Reader::run() {
       case State::Leader:
         if (!s_.format.program_start) {
           if (blank) break;
+          if (line[first] == '%') {
+            diags_.report(DiagId::FeatureNotInFormat, SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)),
+                          "the program-start character '%'", "%");
+            break;
+          }
           start_program({}, line_no, 1);
           read_block(line, line_no);
         } else if (size_t pct = line.find('%'); pct != std::string_view::npos) {
@@ -232,7 +230,12 @@ void Reader::run() {
         break;
       case State::Program:
         if (blank) break;
-        if (line[first] == '%' && s_.format.program_start) {
+        if (line[first] == '%' && !s_.format.program_start) {
+          diags_.report(DiagId::FeatureNotInFormat, SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)),
+                        "the program-start character '%'", "%");
+          break;
+        }
+        if (line[first] == '%') {
           // §1.9: the next program starts before this one ended.
           end_program(SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)), false);
           start_program(line.substr(first), line_no, static_cast<uint32_t>(first));
@@ -261,10 +264,10 @@ void Reader::start_program(std::string_view line, uint32_t line_no, uint32_t col
   parse(line, line_no, col);
   GostParser::ProgramStartContext* ctx = parser_.programStart();
   unit_.range = range(ctx);
-  if (line_has_errors_) return;
   auto percents = ctx->PERCENT();
+  // §1.8: the first of two '%' marks the physical start of the medium.
   if (percents.size() == 2 && !first_program)
-    diags_.report(DiagId::TapeStartMarker, range(percents[1]->getSymbol(), percents[1]->getSymbol()));
+    diags_.report(DiagId::TapeStartMarker, range(percents[0]->getSymbol(), percents[0]->getSymbol()));
   std::string number;
   for (auto* d : ctx->DIGITS()) number += d->getText();
   if (!number.empty()) {
@@ -299,6 +302,7 @@ void Reader::read_block(std::string_view line, uint32_t line_no) {
   block_ = ir::Block{};
   seen_element_ = false;
   optional_rest_ = false;
+  optional_comments_from_ = SIZE_MAX;
   uint32_t errors = diags_.error_count();
   GostParser::BlockContext* ctx = parser_.block();
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
@@ -314,9 +318,10 @@ void Reader::finish_block() {
   first_block_ = false;
 
   // The machine action reads the codes and parameter words; comments show first.
-  for (const std::string& text : block_.comments) {
+  for (size_t i = 0; i < block_.comments.size(); ++i) {
     ir::Stmt c{ir::StmtKind::Comment, block_.range};
-    c.label = text;
+    c.label = block_.comments[i];
+    c.optional = i >= optional_comments_from_;
     block_.stmts.push_back(std::move(c));
   }
   bool action = false;
@@ -350,7 +355,14 @@ void Reader::finish_block() {
     if (!has_group("a")) missing.push_back("the motion (group a)");
     if (!has_group("i")) missing.push_back("G90/G91");
     if (s_.control_type != "positioning" && !has_group("c")) missing.push_back("the plane (G17-G19)");
-    if (!has_word("F")) missing.push_back("F");
+    auto feed_motion = [&] {
+      for (const ir::Word& w : block_.words)
+        if (w.kind == ir::WordKind::Code && w.code >= 0)
+          for (const FnCall& call : program_.semantics.codes[w.code].calls)
+            if (fn_group(call.fn) == FnGroup::Motion && call.fn != Fn::MotionRapid) return true;
+      return false;
+    };
+    if (feed_motion() && !has_word("F")) missing.push_back("F");
     if (!has_word("S") || !has_spindle()) missing.push_back("S with M03/M04/M05");
     if (!has_word("T")) missing.push_back("T");
     if (!missing.empty()) {
@@ -402,8 +414,12 @@ antlrcpp::Any Reader::visitSkip(GostParser::SkipContext* ctx) {
   }
   // Table 2 and §2.7: before the block number (or as the first thing in a block
   // without one) '/' acts on the whole block; inside it, on the rest of the block.
-  if (!seen_element_) block_.skippable = true;
-  else optional_rest_ = true;
+  if (!seen_element_) {
+    block_.skippable = true;
+  } else if (!optional_rest_) {
+    optional_rest_ = true;
+    optional_comments_from_ = block_.comments.size();
+  }
   return nullptr;
 }
 
@@ -449,8 +465,9 @@ antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
     diags_.report(DiagId::FeatureNotInFormat, r, "the main block ':'", ":");
     return nullptr;
   }
-  WrittenNumber n = written_number(ctx->sign(), ctx->number(), 'N');
-  if (main && n.before.empty() && !n.has_point) {
+  const char letter = main ? ':' : 'N';
+  WrittenNumber n = written_number(ctx->sign(), ctx->number(), letter);
+  if (main && n.before.empty() && n.after.empty()) {
     diags_.report(DiagId::MainBlockNoDigits, r);
     return nullptr;
   }
@@ -459,7 +476,7 @@ antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
     diags_.report(DiagId::AddressUndefined, r, "N");
     return nullptr;
   }
-  auto value = decode('N', *format, n, s_.decode, r, diags_);
+  auto value = decode(letter, *format, n, s_.decode, r, diags_);
   if (!value) {
     return nullptr;
   }
@@ -580,7 +597,6 @@ class GostFrontend final : public Frontend {
     program.semantics.dialect = "gost";
     program.semantics.conventions = settings_.conventions;
     program.semantics.cycles = settings_.tables.cycles;
-    diags.set_citations(settings_.tables.citations);
     Reader reader(settings_, program, sources.file(file), file, diags);
     reader.run();
     set_power_on(program);

@@ -26,21 +26,20 @@ bool choose(const stdlib::Profile& p, const std::string& key, std::initializer_l
   return false;
 }
 
-// An address setting: one letter the format describes, or "" for none.
-bool address(const stdlib::Profile& p, const std::string& key, const Format& format, bool allow_none, char& out,
-             Diagnostics& diags) {
+// An address setting: one letter the format describes, or "" for none. A default
+// the user's format lacks means "none": that function is not available.
+bool address(const stdlib::Profile& p, const std::string& key, const Format& format, char& out, Diagnostics& diags) {
   auto v = p.string(key, diags);
   if (!v) return true;
-  if (v->empty() && allow_none) {
-    out = 0;
+  out = 0;
+  if (v->empty()) return true;
+  if (v->size() == 1 && format.word((*v)[0])) {
+    out = (*v)[0];
     return true;
   }
-  if (v->size() != 1 || !format.word((*v)[0])) {
-    p.report_value(diags, key, "must be an address letter of the format descriptor");
-    return false;
-  }
-  out = (*v)[0];
-  return true;
+  if (!p.user_sets(key)) return true;
+  p.report_value(diags, key, "must be an address letter of the format descriptor, or \"\" for none");
+  return false;
 }
 
 void set_code(stdlib::DialectTables& t, int number, std::string group, Scope scope, std::vector<FnCall> calls,
@@ -60,11 +59,14 @@ void set_code(stdlib::DialectTables& t, int number, std::string group, Scope sco
 std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& diags) {
   Settings s;
   s.tables = stdlib::load_dialect_tables("gost", diags);
+  diags.set_citations(s.tables.citations);
   bool ok = !diags.has_errors();
 
   // The format descriptor: inline, or the first non-comment line of a .fmt file.
   std::string format_text;
+  std::string format_key = "gost.format";
   if (auto file = p.string("gost.format_file", diags); file && !file->empty()) {
+    format_key = "gost.format_file";
     std::ifstream in(p.resolve_path(*file), std::ios::binary);
     if (!in) {
       p.report_value(diags, "gost.format_file", "names a file that cannot be read");
@@ -80,9 +82,9 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   auto format = parse_format(format_text, problems);
   for (const FormatProblem& problem : problems) {
     if (problem.error)
-      p.report_value(diags, "gost.format", diag_message(DiagId::FormatInvalid, problem.item, problem.message));
+      diags.report(DiagId::FormatInvalid, p.range_of(format_key), problem.item, problem.message);
     else
-      diags.report(DiagId::FormatAmbiguous, {}, problem.item, problem.message);
+      diags.report(DiagId::FormatAmbiguous, p.range_of(format_key), problem.item, problem.message);
   }
   if (!format) return std::nullopt;
   s.format = std::move(*format);
@@ -111,9 +113,9 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   ok &= choose(p, "gost.parabola_ijk",
                {{"coordinates", ParabolaTangent::Coordinates}, {"incremental", ParabolaTangent::Incremental}},
                c.parabola_tangent, diags);
-  ok &= address(p, "gost.dwell_address", s.format, false, c.dwell_word, diags);
-  ok &= address(p, "gost.peck_address", s.format, true, c.peck_word, diags);
-  ok &= address(p, "gost.thread_pitch_change_address", s.format, true, c.pitch_change_word, diags);
+  ok &= address(p, "gost.dwell_address", s.format, c.dwell_word, diags);
+  ok &= address(p, "gost.peck_address", s.format, c.peck_word, diags);
+  ok &= address(p, "gost.thread_pitch_change_address", s.format, c.pitch_change_word, diags);
   if (auto v = p.boolean("gost.thread_allow_j", diags)) c.thread_allow_j = *v;
   if (auto v = p.boolean("gost.arc_single_quadrant", diags)) c.arc_single_quadrant = *v;
   if (auto v = p.boolean("gost.m06_stops_spindle", diags)) c.m06_stops_spindle = *v;

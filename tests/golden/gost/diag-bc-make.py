@@ -6,12 +6,16 @@ Header: "NCCB", u16 format version, u16 0, u32 section count, u32 CRC-32 (zlib)
 of every byte after the 16-byte header, little-endian at offset 12; then the
 sections, each a 4-byte tag, a u32 size and its bytes.
 """
+import os
 import struct
 import subprocess
 import sys
 import zlib
 
 HEADER = 16
+# Opcodes (vm/opcodes.h).
+NOP, CONST, NEG, DIV, CALL1, WORD, CALL_ENTRY = 0, 1, 6, 11, 23, 31, 37
+SQRT = 7  # stdlib/builtins.h
 
 
 def with_crc(data):
@@ -38,8 +42,7 @@ def main():
     assert good[:4] == b"NCCB" and struct.unpack_from("<I", good, 12)[0] == zlib.crc32(good[HEADER:])
 
     files = {}
-    # The first byte of the magic changed: not a bytecode file at all.
-    files["magic"] = b"X" + good[1:]
+    # (A changed magic is not made: such a file is read as source, see NC1009.)
     # Format version 2 in bytes 4-5.
     files["version"] = good[:4] + struct.pack("<H", 2) + good[6:]
     # One byte of the body flipped, the stored checksum left as it was.
@@ -52,11 +55,22 @@ def main():
     files["opcode"] = with_crc(good[:code] + b"\xff" + good[code + 1:])
     # The last four bytes cut off, the checksum recomputed: the last section is short.
     files["section"] = with_crc(good[:-4])
+    # A sound file whose code divides by zero (GOST source never computes): block N1's
+    # "Word X k0; Word Y k1" (12 bytes) becomes "Const k1; Const k0; Div; Nop", 10 / 0.
+    words = bytes([WORD, ord("X") - ord("A")]) + struct.pack("<I", 0) + bytes([WORD, ord("Y") - ord("A")]) + struct.pack("<I", 1)
+    divide = bytes([CONST]) + struct.pack("<I", 1) + bytes([CONST]) + struct.pack("<I", 0) + bytes([DIV, NOP])
+    assert good.count(words) == 1 and len(words) == len(divide)
+    files["divide"] = with_crc(good.replace(words, divide))
+    # The same 12 bytes as "Const k1; Neg; Call1 sqrt; Nop x 4": the square root of -10.
+    domain = bytes([CONST]) + struct.pack("<I", 1) + bytes([NEG, CALL1, SQRT]) + bytes([NOP] * 4)
+    files["domain"] = with_crc(good.replace(words, domain))
+    # ... and as "CallEntry 0; Nop x 9": block N1 calls its own program without end.
+    recurse = bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 9)
+    files["recursion"] = with_crc(good.replace(words, recurse))
 
     for name, data in files.items():
         with open(f"diag-bc-{name}.bin", "wb") as f:
             f.write(data)
-    import os
     os.remove("diag-bc-good.tmp")
 
 

@@ -1,0 +1,7 @@
+comments-anywhere: parenthesised text may stand anywhere between words; each becomes a comment event, in order (GOST 20999 §1.5, §1.7)
+%1 (program title - kept with the program start, no event)
+(before N)N1(after N)G00(after G)X1.(after X)Y2.(last)
+N2 (a block of only a comment)
+(a block without number, only a comment)
+N3(no spaces)G01 X3.F100(after F)
+N4 (an opening ( inside a comment is text) M30 (  spaces are kept  )

@@ -1,0 +1,12 @@
+G80 clears the cycle registers: a new cycle must give the depth, R and Q again; F is not a cycle register
+%
+N1 G90 G00 X0 Y0 Z10. S500 M03
+N2 G83 X10. Y10. Z-5. Q2. R2. F100. (SETS THE DEPTH, Q AND R)
+N3 G80 (CANCEL AND CLEAR)
+N4 G81 X20. R2. (THE DEPTH IS CLEARED, NC4017)
+N5 G80
+N6 G81 X30. Z-5. (R IS CLEARED, NC4018)
+N7 G80
+N8 G83 X40. Z-5. R2. (Q IS CLEARED, NC4024)
+N9 G80 M05
+N10 M30

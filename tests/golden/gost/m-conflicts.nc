@@ -1,0 +1,18 @@
+m-conflicts: M codes that control the same function must not share a block, nor may one M appear twice (ncc decision 14, NC3005); codes Table 7 leaves undefined are NC3004
+%
+N1 M00 M01 (stop set)
+N2 M03 M04 (spindle set)
+N3 M05 M19 (spindle set)
+N4 M07 M09 (mist)
+N5 M08 M09 (flood)
+N6 M10 M11 (clamp)
+N7 M48 M49 (override)
+N8 M58 M59 (spindle hold)
+N9 M03 M03 (the same code twice)
+N10 T1 M06 M06 (the same code twice, no set)
+N11 M07 M08 M03 M10 M49 M59 (one of each set - allowed)
+N12 M12 (not defined, M12-M18)
+N13 M20 M29 (permanently not defined, M20-M29)
+N14 M31 M47 M50 M57 (not defined)
+N15 M60 M89 M90 M99 (not defined, permanently not defined)
+N16 M02 M30 (stop set)
