@@ -605,9 +605,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
       double slack = conv_.arc_tolerance + kSamePoint +
                      candidate * length_units(conv_.lead_resolution) / 2 / (per_revolution ? kTwoPi : 1);
       if (off > slack) {
-        report(DiagId::HelixLead, pw, mm_text(*lead),
-               per_radian == 0 ? std::string("no end") : mm_text(dw / per_radian), mm_text(sweep),
-               mm_text(to_program(off)));
+        report(DiagId::HelixLead, pw, mm_text(*lead), mm_text(to_program(dw)),
+               per_radian == 0 ? std::string("infinitely many") : mm_text(dw / per_radian), mm_text(sweep));
         move_to(t);
         return;
       }
