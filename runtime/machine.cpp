@@ -84,11 +84,10 @@ AxisValues Machine::frame_offset(int work_offset) const {
   return off;
 }
 
-AxisValues Machine::program_position() const {
-  AxisValues p{};
-  AxisValues off = frame_offset(modal_.work_offset);
-  for (int i = 0; i < kAxisCount; ++i) p[i] = is_linear_axis(i) ? to_program(machine_[i] - off[i]) : machine_[i] - off[i];
-  return p;
+AxisValues Machine::in_program_units(AxisValues v) const {
+  for (int i = 0; i < kAxisCount; ++i)
+    if (is_linear_axis(i)) v[i] = to_program(v[i]);
+  return v;
 }
 
 bool Machine::has_axis_word() const {
@@ -122,9 +121,11 @@ double Machine::angle_degrees(double v) const {
 }
 
 Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
+  // The trace shows positions in the active work coordinate system (docs/trace.md).
   Event e{kind};
   AxisValues off = frame_offset(modal_.work_offset);
-  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = is_linear_axis(i) ? to_program(t[i] - off[i]) : t[i] - off[i];
+  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
+  e.pos = in_program_units(e.pos);
   return e;
 }
 
@@ -253,7 +254,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
           Event e{EventKind::WorkOffset};
           e.n = call.arg;
           if (auto it = config_.work_offsets.find(call.arg); it != config_.work_offsets.end())
-            for (int i = 0; i < kAxisCount; ++i) e.pos[i] = is_linear_axis(i) ? to_program(it->second[i]) : it->second[i];
+            e.pos = in_program_units(it->second);
           emit(e);
         }
       }
@@ -375,46 +376,44 @@ BlockResult Machine::execute(const BlockRequest& request) {
   step_.request = &request;
   step_.compensation = compensation();
   auto failed = [&] { return step_.error && stop_on_error_; };
-  // 1. Preparatory functions in written order; a block-only code's group comes back
-  //    after the block.
-  for (size_t i = 0; i < request.code_count; ++i) {
-    const CodeDesc& code = sem_.codes[request.codes[i]];
-    if (code.timing != Timing::None) continue;
-    for (const FnCall& call : code.calls) {
-      FnGroup group = fn_group(call.fn);
-      if (code.scope == Scope::Block && group != FnGroup::None && call.fn != Fn::WorkOffset)
-        step_.restore.push_back(current(group));
-      if (group == FnGroup::Motion) motion_name_ = code.name;
-      step_.code = request.codes[i];
-      step_.code_name = code.name;
-      apply(call, code.scope, true);
-    }
-  }
-  step_.code = -1;
+  // 1. Preparatory functions in written order.
+  apply_codes(Timing::None);
   // 2. Registers.
   registers();
   flush_compensation();
   if (failed()) return BlockResult::Error;
   // 3. Auxiliary functions that start before the motion (Table 7), in written order.
-  for (size_t i = 0; i < request.code_count; ++i) {
-    const CodeDesc& code = sem_.codes[request.codes[i]];
-    if (code.timing == Timing::Before)
-      for (const FnCall& call : code.calls) apply(call, code.scope, true);
-  }
+  apply_codes(Timing::Before);
   // 4. The action of the block.
   action();
   if (failed()) return BlockResult::Error;
   // 5. Auxiliary functions that start after the motion, then stops and ends.
-  for (size_t i = 0; i < request.code_count; ++i) {
-    const CodeDesc& code = sem_.codes[request.codes[i]];
-    if (code.timing == Timing::After)
-      for (const FnCall& call : code.calls) apply(call, code.scope, true);
-  }
+  apply_codes(Timing::After);
   finish();
   if (failed()) return BlockResult::Error;
   if (step_.end_information) return BlockResult::EndOfInformation;
   if (step_.end) return BlockResult::ProgramEnd;
   return BlockResult::Continue;
+}
+
+void Machine::apply_codes(Timing timing) {
+  const BlockRequest& request = *step_.request;
+  for (size_t i = 0; i < request.code_count; ++i) {
+    const CodeDesc& code = sem_.codes[request.codes[i]];
+    if (code.timing != timing) continue;
+    step_.code = request.codes[i];
+    step_.code_name = code.name;
+    for (const FnCall& call : code.calls) {
+      // A block-only code's group comes back after the block (G53 works differently:
+      // it only changes the frame of this block's words).
+      FnGroup group = fn_group(call.fn);
+      if (code.scope == Scope::Block && group != FnGroup::None && call.fn != Fn::WorkOffset)
+        step_.restore.push_back(current(group));
+      if (group == FnGroup::Motion) motion_name_ = code.name;
+      apply(call, code.scope, true);
+    }
+  }
+  step_.code = -1;
 }
 
 void Machine::action() {
@@ -792,8 +791,7 @@ void Machine::set_position() {
     position_offset_[i] = machine_[i] - work[i] - wanted;
   }
   Event e{EventKind::PositionOffset};
-  for (int i = 0; i < kAxisCount; ++i)
-    e.pos[i] = is_linear_axis(i) ? to_program(position_offset_[i]) : position_offset_[i];
+  e.pos = in_program_units(position_offset_);
   emit(e);
 }
 

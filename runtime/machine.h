@@ -74,10 +74,6 @@ class Machine {
   void comment(const std::string& text, uint32_t source);
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
 
-  // Position of the controlled point in the active work coordinate system, in
-  // program units (what the trace shows).
-  AxisValues program_position() const;
-
  private:
   struct Modal {
     Fn motion = Fn::MotionLinear;
@@ -135,6 +131,7 @@ class Machine {
   double length_units(double v) const { return modal_.inch ? v * 25.4 : v; }
   double to_program(double mm) const { return modal_.inch ? mm / 25.4 : mm; }
   double angle_degrees(double v) const;
+  AxisValues in_program_units(AxisValues v) const;
 
   // Issues.
   template <typename... Args>
@@ -155,6 +152,7 @@ class Machine {
   void reset_state();
   FnCall current(FnGroup group) const;  // the function a modal group holds now
   void apply(FnCall call, Scope scope, bool emit);
+  void apply_codes(Timing timing);  // the block's codes with this timing, in written order
   void registers();
   void action();
   void finish();

@@ -6,16 +6,10 @@
 #include <cmath>
 #include <numbers>
 
-#include "runtime/machine.h"
+#include "collect_issues.h"
 
 namespace ncc {
 namespace {
-
-class Issues final : public RuntimeIssues {
- public:
-  void issue(const RuntimeIssue& i) override { list.push_back(i); }
-  std::vector<RuntimeIssue> list;
-};
 
 // A machine with one code per canonical function it needs.
 class Rig {
@@ -64,7 +58,7 @@ class Rig {
   ProgramSemantics sem;
   MachineConfig config;
   CollectSink trace;
-  Issues issues;
+  CollectIssues issues;
   Machine machine{sem, config, trace, issues};
 
  private:

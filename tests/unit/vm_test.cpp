@@ -3,18 +3,13 @@
 // verified and run. What a program computes is observed through the motion it makes.
 #include <gtest/gtest.h>
 
+#include "collect_issues.h"
 #include "lower/lower.h"
 #include "runtime/machine.h"
 #include "vm/vm.h"
 
 namespace ncc {
 namespace {
-
-class Collect final : public RuntimeIssues {
- public:
-  void issue(const RuntimeIssue& i) override { issues.push_back(i); }
-  std::vector<RuntimeIssue> issues;
-};
 
 // A one-unit program whose blocks the test fills; code 0 is G00 (rapid).
 struct Builder {
@@ -77,7 +72,7 @@ struct Builder {
       return {};
     }
     CollectSink trace;
-    Collect issues;
+    CollectIssues issues;
     MachineConfig config;
     Machine machine(loaded->semantics, config, trace, issues);
     machine.power_on();
@@ -86,7 +81,7 @@ struct Builder {
     r.status = vm.run(0);
     for (const Event& e : trace.events)
       if (e.kind == EventKind::Rapid) r.xs.push_back(e.pos[0]);
-    r.issues = issues.issues;
+    r.issues = issues.list;
     return r;
   }
 };
