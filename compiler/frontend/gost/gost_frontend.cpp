@@ -199,50 +199,35 @@ bool Reader::binary_file() {
 
 void Reader::run() {
   if (binary_file()) return;
-  if (!s_.format.program_start) state_ = State::Leader;
   for (uint32_t line_no = 1; line_no <= source_.line_count() && !diags_.limit_reached(); ++line_no) {
     std::string_view line = source_.line(line_no);
-    if (line_no == source_.line_count() && line.empty()) break;
     size_t first = 0;
     while (first < line.size() && is_ignored(line[first])) ++first;
-    bool blank = first == line.size();
-    switch (state_) {
-      case State::Trailer:
-        // §1.9: after the end of information nothing is perceived.
-        if (!blank) {
-          diags_.report(DiagId::TrailerIgnored, SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)));
-          return;
-        }
-        break;
-      case State::Leader:
-        if (!s_.format.program_start) {
-          if (blank) break;
-          if (line[first] == '%') {
-            diags_.report(DiagId::FeatureNotInFormat, SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)),
-                          "the program-start character '%'", "%");
-            break;
-          }
-          start_program({}, line_no, 1);
-          read_block(line, line_no);
-        } else if (size_t pct = line.find('%'); pct != std::string_view::npos) {
-          start_program(line.substr(pct), line_no, static_cast<uint32_t>(pct));
-        }
-        break;
-      case State::Program:
-        if (blank) break;
-        if (line[first] == '%' && !s_.format.program_start) {
-          diags_.report(DiagId::FeatureNotInFormat, SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)),
-                        "the program-start character '%'", "%");
-          break;
-        }
-        if (line[first] == '%') {
-          // §1.9: the next program starts before this one ended.
-          end_program(SourceRange::point(file_, line_no, static_cast<uint32_t>(first + 1)), false);
-          start_program(line.substr(first), line_no, static_cast<uint32_t>(first));
-          break;
-        }
-        read_block(line, line_no);
-        break;
+    if (first == line.size()) continue;  // nothing the NC perceives: not a block
+    auto at = [&](size_t col) { return SourceRange::point(file_, line_no, static_cast<uint32_t>(col + 1)); };
+    if (state_ == State::Trailer) {
+      // §1.9: after the end of information nothing is perceived.
+      diags_.report(DiagId::TrailerIgnored, at(first));
+      return;
+    }
+    if (!s_.format.program_start) {
+      if (line[first] == '%') {
+        diags_.report(DiagId::FeatureNotInFormat, at(first), "the program-start character '%'", "%");
+        continue;
+      }
+      // Without '%' the medium holds programs one after the other.
+      if (state_ == State::Leader) start_program({}, line_no, 0);
+      read_block(line, line_no);
+    } else if (state_ == State::Leader) {
+      // §1.8: anything before the '%' is leader and is not read.
+      if (size_t pct = line.find('%'); pct != std::string_view::npos)
+        start_program(line.substr(pct), line_no, static_cast<uint32_t>(pct));
+    } else if (line[first] == '%') {
+      // §1.9: the next program starts before this one ended.
+      end_program(at(first), false);
+      start_program(line.substr(first), line_no, static_cast<uint32_t>(first));
+    } else {
+      read_block(line, line_no);
     }
   }
   if (state_ == State::Program) {
