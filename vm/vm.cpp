@@ -215,12 +215,17 @@ RunStatus Vm::run(uint32_t entry) {
         p.pc = m_.entries[u16_at(operands)].pc;
         break;
       case Op::Return:
-        if (p.frames.empty()) return RunStatus::UnitEnded;
+        if (p.frames.empty()) {
+          p.pc = pc;
+          return RunStatus::UnitEnded;
+        }
         p.loops.resize(p.frames.back().loops);
         p.pc = p.frames.back().return_pc;
         p.frames.pop_back();
         break;
-      case Op::End: return RunStatus::UnitEnded;
+      case Op::End:
+        p.pc = pc;
+        return RunStatus::UnitEnded;
       case Op::Count: return fail(pc, DiagId::BytecodeInvalid, "program", "an unknown opcode");
     }
   }

@@ -25,6 +25,7 @@ class Vm {
   // information ends (M30) or an error stops it.
   RunStatus run(uint32_t entry);
   uint64_t steps() const { return steps_; }
+  uint32_t pc() const { return process_.pc; }  // where the last run stopped
 
  private:
   struct Frame {

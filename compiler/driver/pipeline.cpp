@@ -24,7 +24,7 @@ class IssueReporter final : public RuntimeIssues {
       : s_(s), m_(m), file_ids_(std::move(file_ids)), dry_(dry) {}
 
   void issue(const RuntimeIssue& i) override {
-    if (!seen_.insert({static_cast<int>(i.id), i.source, i.word}).second) return;
+    if (!seen_.insert({static_cast<int>(i.id), i.source, i.word, i.code}).second) return;
     // In a dry run a block the compiler already rejected would only repeat its errors.
     if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
     SourceRange range;
@@ -50,7 +50,7 @@ class IssueReporter final : public RuntimeIssues {
   const vm::Module& m_;
   std::vector<uint32_t> file_ids_;
   bool dry_;
-  std::set<std::tuple<int, uint32_t, char>> seen_;
+  std::set<std::tuple<int, uint32_t, char, int>> seen_;
 };
 
 std::optional<std::string> read_file(const std::string& path) {
@@ -62,12 +62,13 @@ std::optional<std::string> read_file(const std::string& path) {
   return buffer.str();
 }
 
-// The module's source files as SourceManager indices (registered on first use).
+// The module's source files as SourceManager indices (registered on first use). A
+// bytecode file names its sources by path; if one has gone, diagnostics still give
+// file:line:col, without the quoted line.
 std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
   std::vector<uint32_t> ids;
   for (const std::string& path : m.source_map.files) {
     uint32_t found = UINT32_MAX;
-    // A bytecode file remembers its sources by path; they may have moved.
     for (uint32_t i = 0; i < s.sources.size(); ++i)
       if (s.sources.file(i).path() == path) found = i;
     if (found == UINT32_MAX) found = s.sources.add(path, read_file(path).value_or(""));
@@ -120,7 +121,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   for (size_t i = first; i < m.entries.size(); ++i) {
     if (i != first && m.entries[i].kind != vm::EntryKind::Program) continue;
     vm::RunStatus status = vm.run(static_cast<uint32_t>(i));
-    if (status == vm::RunStatus::UnitEnded) machine.end_of_unit(m.source_of(static_cast<uint32_t>(m.code.size() - 1)));
+    if (status == vm::RunStatus::UnitEnded) machine.end_of_unit(m.source_of(vm.pc()));
     if (status == vm::RunStatus::Error) {
       result.ok = false;
       break;
