@@ -1,6 +1,6 @@
 // GOST 20999-83 (ST SEV 3585-82) word-address coding: the tokens of one block.
 //
-// The tape reader (compiler/frontend/gost/tape.cpp) splits the medium into lines at
+// The tape reader (compiler/frontend/gost/gost_frontend.cpp) splits the medium into lines at
 // LF, skips the leader before '%', and hands the program-start line and each block
 // here one at a time. Bytes outside 7-bit ASCII reach the lexer as U+0001, which is
 // INVALID outside a comment; comment text is taken from the original bytes.

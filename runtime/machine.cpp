@@ -5,28 +5,21 @@
 #include <cmath>
 #include <numbers>
 
+#include "support/text.h"
+
 namespace ncc {
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2 * std::numbers::pi;
-// The in-plane axes (u, v) and the perpendicular axis w of XY, ZX, YZ (GOST S-9.2:
-// u x v = +w, so "clockwise seen from +w" is the negative sense in (u, v)).
-constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
-constexpr const char* kPlaneNames[] = {"XY", "ZX", "YZ"};
 // The interpolation parameter parallel to each linear axis (Table 1).
 constexpr char kParameterOf[3] = {'I', 'J', 'K'};
 constexpr double kSamePoint = 1e-7;  // mm: end point equal to start point
+constexpr int kMaxPecks = 10000;      // per hole
+constexpr double kMaxTurns = 1e6;     // of one helix
 
 bool is_linear_axis(int axis) { return axis < 3 || axis >= 6; }
-
-std::string mm_text(double v) {
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  return s;
-}
 
 // Programmed positions live on a nanometre grid, so that increments add up exactly
 // as decimals do (0.1 + 0.2 is 0.3) and traces stay bit-for-bit stable.
@@ -152,7 +145,12 @@ FnCall Machine::current(FnGroup group) const {
     case FnGroup::WorkOffset: return {Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)};
     case FnGroup::Cycle:
       return modal_.cycle < 0 ? FnCall{Fn::CycleCancel} : FnCall{Fn::Cycle, static_cast<uint16_t>(modal_.cycle)};
-    default: return {Fn::Count};
+    case FnGroup::Spindle:
+      return {modal_.spindle == 1 ? Fn::SpindleCw : modal_.spindle == -1 ? Fn::SpindleCcw
+              : modal_.spindle == 2 ? Fn::SpindleOrient : Fn::SpindleStop};
+    case FnGroup::Override: return {modal_.override_enabled ? Fn::OverrideEnable : Fn::OverrideDisable};
+    case FnGroup::SpindleHold: return {modal_.spindle_hold ? Fn::SpindleHoldOn : Fn::SpindleHoldOff};
+    default: return {Fn::Count};  // not restorable: the tables reject such block-only codes
   }
 }
 
@@ -337,22 +335,30 @@ void Machine::registers() {
     e.a = speed_;
     emit(e);
   }
-  if (has('T')) {
-    tool_selected_ = static_cast<int>(word('T'));
+  if (auto tool = whole_number('T', "tool numbers")) {
+    tool_selected_ = *tool;
     if (tool_selected_ != 0 && !config_.tools.count(tool_selected_)) report(DiagId::ToolUnknown, 'T', tool_selected_);
     Event e{EventKind::SelectTool};
     e.n = tool_selected_;
     emit(e);
   }
   for (char letter : {'D', 'H'}) {
-    if (!has(letter)) continue;
-    int number = static_cast<int>(word(letter));
-    if (number != 0 && !config_.offsets.count(number)) {
-      report(DiagId::OffsetUnknown, letter, number);
+    auto number = whole_number(letter, "offset numbers");
+    if (!number) continue;
+    if (*number != 0 && !config_.offsets.count(*number)) {
+      report(DiagId::OffsetUnknown, letter, *number);
       continue;
     }
-    offset_number_ = number;  // takes effect at once on an active compensation
+    offset_number_ = *number;  // takes effect at once on an active compensation
   }
+}
+
+std::optional<int> Machine::whole_number(char letter, const char* what) {
+  if (!has(letter)) return std::nullopt;
+  double v = word(letter);
+  if (v >= 0 && v <= 999999999 && v == std::trunc(v)) return static_cast<int>(v);
+  report(DiagId::DomainError, letter, fmt::format("{}{}", letter, four_decimals(v)), what);
+  return std::nullopt;
 }
 
 Machine::Compensation Machine::compensation() const {
@@ -573,8 +579,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     return;
   }
   if (std::fabs(r0 - r1) > conv_.arc_tolerance + kSamePoint) {
-    report(DiagId::ArcRadiusMismatch, 0, mm_text(to_program(r0)), mm_text(to_program(r1)),
-           mm_text(to_program(std::fabs(r0 - r1))), mm_text(to_program(conv_.arc_tolerance)));
+    report(DiagId::ArcRadiusMismatch, 0, four_decimals(to_program(r0)), four_decimals(to_program(r1)),
+           four_decimals(to_program(std::fabs(r0 - r1))), four_decimals(to_program(conv_.arc_tolerance)));
     move_to(t);
     return;
   }
@@ -604,8 +610,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
       double slack = conv_.arc_tolerance + kSamePoint +
                      candidate * length_units(conv_.lead_resolution) / 2 / (per_revolution ? kTwoPi : 1);
       if (off > slack) {
-        report(DiagId::HelixLead, pw, mm_text(*lead), mm_text(to_program(dw)),
-               per_radian == 0 ? std::string("infinitely many") : mm_text(dw / per_radian), mm_text(sweep));
+        report(DiagId::HelixLead, pw, four_decimals(*lead), four_decimals(to_program(dw)),
+               per_radian == 0 ? std::string("infinitely many") : four_decimals(dw / per_radian), four_decimals(sweep));
         move_to(t);
         return;
       }
@@ -622,10 +628,15 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     double to_boundary = clockwise ? into_quadrant : kPi / 2 - into_quadrant;
     if (to_boundary < 1e-12) to_boundary = kPi / 2;
     if (sweep > to_boundary + 1e-9) {
-      report(DiagId::ArcQuadrant, 0, mm_text(sweep * 180 / kPi));
+      report(DiagId::ArcQuadrant, 0, four_decimals(sweep * 180 / kPi));
       move_to(t);
       return;
     }
+  }
+  if (sweep / kTwoPi > kMaxTurns) {
+    report(DiagId::HelixTurns, pw, four_decimals(sweep / kTwoPi), kMaxTurns);
+    move_to(t);
+    return;
   }
   Event e = motion_event(EventKind::Arc, t);
   e.n = modal_.plane;
@@ -710,7 +721,7 @@ void Machine::thread(const AxisValues& t) {
   const int pitch_axis = pitch_word ? pitch_word - 'I' : 0;
   double pitch = ok ? length_units(word(pitch_word)) : 0;
   if (ok && pitch <= 0) {
-    report(DiagId::ThreadPitchSign, pitch_word, fmt::format("{}{}", pitch_word, mm_text(word(pitch_word))));
+    report(DiagId::ThreadPitchSign, pitch_word, fmt::format("{}{}", pitch_word, four_decimals(word(pitch_word))));
     ok = false;
   }
   const double length = std::fabs(t[pitch_axis] - machine_[pitch_axis]);
@@ -729,7 +740,7 @@ void Machine::thread(const AxisValues& t) {
       report(DiagId::ThreadNoPitchChange, 0, motion_name_, std::string(1, conv_.pitch_change_word));
       ok = false;
     } else if (double d = word(conv_.pitch_change_word); d <= 0) {
-      report(DiagId::ThreadPitchChangeSign, conv_.pitch_change_word, mm_text(d), motion_name_,
+      report(DiagId::ThreadPitchChangeSign, conv_.pitch_change_word, four_decimals(d), motion_name_,
              decreasing ? "subtracts" : "adds");
       ok = false;
     } else {
@@ -738,8 +749,8 @@ void Machine::thread(const AxisValues& t) {
       // p*n + change*n*n/2; a decreasing pitch must not reach zero before the end.
       double reach = decreasing ? pitch * pitch / (2 * -change) : INFINITY;
       if (length > reach) {
-        report(DiagId::ThreadPitchZero, conv_.pitch_change_word, motion_name_, mm_text(to_program(reach)),
-               mm_text(to_program(length)));
+        report(DiagId::ThreadPitchZero, conv_.pitch_change_word, motion_name_, four_decimals(to_program(reach)),
+               four_decimals(to_program(length)));
         ok = false;
       }
     }
@@ -764,7 +775,7 @@ void Machine::dwell() {
     return;
   }
   if (*time < 0) {
-    report(DiagId::DwellNegative, conv_.dwell_word, mm_text(*time));
+    report(DiagId::DwellNegative, conv_.dwell_word, four_decimals(*time));
     return;
   }
   Event e{EventKind::Dwell};
@@ -827,7 +838,7 @@ void Machine::cycle() {
       report(DiagId::CycleNoPeck, 0, pattern.name, conv_.peck_word ? std::string(1, conv_.peck_word) : "Q");
       ok = false;
     } else if (*cycle_.peck <= 0) {
-      report(DiagId::PeckNotPositive, conv_.peck_word, mm_text(*cycle_.peck), pattern.name);
+      report(DiagId::PeckNotPositive, conv_.peck_word, four_decimals(*cycle_.peck), pattern.name);
       ok = false;
     }
   }
@@ -835,7 +846,7 @@ void Machine::cycle() {
     report(DiagId::CycleNoDwell, 0, pattern.name, dwell_address());
     ok = false;
   } else if (ok && pattern.dwell && *cycle_.dwell < 0) {
-    report(DiagId::DwellNegative, conv_.dwell_word, mm_text(*cycle_.dwell));
+    report(DiagId::DwellNegative, conv_.dwell_word, four_decimals(*cycle_.dwell));
     ok = false;
   }
   if (ok && pattern.in == CyclePattern::In::SpindleFeed && spindle_direction_ == 0) {
@@ -875,6 +886,12 @@ void Machine::cycle() {
   if (pattern.in == CyclePattern::In::Peck) {
     // Pecks of Q, each followed by a rapid withdrawal to R and a rapid return to the
     // depth reached.
+    double pecks = std::ceil(std::fabs(bottom - level) / length_units(*cycle_.peck));
+    if (pecks > kMaxPecks) {
+      report(DiagId::CyclePecks, conv_.peck_word, pattern.name, four_decimals(pecks), four_decimals(*cycle_.peck),
+             kMaxPecks);
+      return;
+    }
     const double step = length_units(*cycle_.peck) * (bottom < level ? -1 : 1);
     double reached = level;
     while (true) {

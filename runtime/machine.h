@@ -24,7 +24,7 @@ struct BlockWords {
   std::array<double, kWordSlots> value{};
   uint64_t present = 0;
 
-  bool has(char letter) const { return present & bit(letter); }
+  bool has(char letter) const { return letter >= 'A' && letter <= 'Z' && (present & bit(letter)); }
   void set(int slot, double v) {
     value[slot] = v;
     present |= uint64_t{1} << slot;
@@ -131,6 +131,7 @@ class Machine {
   double length_units(double v) const { return modal_.inch ? v * 25.4 : v; }
   double to_program(double mm) const { return modal_.inch ? mm / 25.4 : mm; }
   double angle_degrees(double v) const;
+  std::optional<int> whole_number(char letter, const char* what);  // T, D, H
   AxisValues in_program_units(AxisValues v) const;
 
   // Issues.

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <iterator>
 
 #include "support/diagnostics.h"
+#include "support/text.h"
 
 namespace ncc {
 
@@ -15,26 +17,11 @@ int axis_index(char letter) {
 
 namespace {
 
-constexpr const char* kPlaneNames[] = {"XY", "ZX", "YZ"};
-// The in-plane axes (u, v) and the perpendicular axis w of each plane.
-constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
-
-// Four decimals, trailing zeros dropped, never "-0".
-std::string short_number(double v) {
-  std::string s = fmt::format("{:.4f}", v);
-  while (s.back() == '0') s.pop_back();
-  if (s.back() == '.') s.pop_back();
-  if (s == "-0") s = "0";
-  return s;
-}
+constexpr const char* kStopKinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
 
 std::string canon_number(double v) { return fmt::format("{:.4f}", v); }
 
-std::string json_number(double v) {
-  if (v == 0) v = 0;
-  if (!std::isfinite(v)) return "null";
-  return fmt::format("{}", v);
-}
+std::string json_number(double v) { return std::isfinite(v) ? shortest(v) : std::string("null"); }
 
 // A JSON (and C) string literal: control characters escaped, broken UTF-8 as U+FFFD.
 std::string quoted(const std::string& s) { return "\"" + json_escape(s) + "\""; }
@@ -81,7 +68,7 @@ class TextSink final : public BufferedSink {
   void event(const Event& e) override {
     const SourceBlock& b = block(e);
     std::string s = b.file == 0 ? fmt::format("{}", b.line)
-                                : fmt::format("{}:{}", b.file < map_.files.size() ? map_.files[b.file] : "?", b.line);
+                                : fmt::format("{}:{}", printable(b.file < map_.files.size() ? map_.files[b.file] : "?"), b.line);
     s += b.has_number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', b.number) : std::string(" - ");
     s += body(e);
     line(s);
@@ -98,7 +85,7 @@ class TextSink final : public BufferedSink {
         if (!shown_[i]) continue;
       }
       if (!s.empty()) s += ' ';
-      s += fmt::format("{}{}", kAxisLetters[i], short_number(p[i]));
+      s += fmt::format("{}{}", kAxisLetters[i], four_decimals(p[i]));
     }
     return s;
   }
@@ -109,35 +96,35 @@ class TextSink final : public BufferedSink {
       case EventKind::Plane: return fmt::format("plane {}", kPlaneNames[e.n]);
       case EventKind::FeedMode:
         return fmt::format("feed_mode {}", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
-      case EventKind::FeedRate: return "feed_rate " + short_number(e.a);
+      case EventKind::FeedRate: return "feed_rate " + four_decimals(e.a);
       case EventKind::SpindleMode: return e.n ? "spindle_mode constant_surface" : "spindle_mode rpm";
-      case EventKind::SpindleSpeed: return "spindle_speed " + short_number(e.a);
+      case EventKind::SpindleSpeed: return "spindle_speed " + four_decimals(e.a);
       case EventKind::SpindleOn: return e.n > 0 ? "spindle cw" : "spindle ccw";
       case EventKind::SpindleStop: return "spindle stop";
-      case EventKind::SpindleOrient: return "spindle orient " + short_number(e.a);
+      case EventKind::SpindleOrient: return "spindle orient " + four_decimals(e.a);
       case EventKind::Rapid: return "rapid " + position(e.pos);
       case EventKind::Linear: return "linear " + position(e.pos);
       case EventKind::Arc: {
         const int* axes = kPlaneAxes[e.n];
         return fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", e.rotation > 0 ? "ccw" : "cw",
-                           kPlaneNames[e.n], position(e.pos), kAxisLetters[axes[0]], short_number(e.centre[0]),
-                           kAxisLetters[axes[1]], short_number(e.centre[1]), short_number(e.a), short_number(e.b));
+                           kPlaneNames[e.n], position(e.pos), kAxisLetters[axes[0]], four_decimals(e.centre[0]),
+                           kAxisLetters[axes[1]], four_decimals(e.centre[1]), four_decimals(e.a), four_decimals(e.b));
       }
       case EventKind::Parabola:
-        return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), short_number(e.control[0]),
-                           short_number(e.control[1]), short_number(e.control[2]));
+        return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), four_decimals(e.control[0]),
+                           four_decimals(e.control[1]), four_decimals(e.control[2]));
       case EventKind::Thread: {
-        std::string s = fmt::format("thread {} pitch {}", position(e.pos), short_number(e.a));
-        if (e.b != 0) s += " change " + short_number(e.b);
+        std::string s = fmt::format("thread {} pitch {}", position(e.pos), four_decimals(e.a));
+        if (e.b != 0) s += " change " + four_decimals(e.b);
         return s;
       }
-      case EventKind::Dwell: return "dwell " + short_number(e.a);
+      case EventKind::Dwell: return "dwell " + four_decimals(e.a);
       case EventKind::SelectTool: return fmt::format("tool_select {}", e.n);
       case EventKind::ChangeTool: return fmt::format("tool_change {}", e.n);
       case EventKind::ToolLengthOffset: return "tool_length_offset " + position(e.pos);
       case EventKind::CutterComp:
         return e.n == 0 ? std::string("cutter_comp off")
-                        : fmt::format("cutter_comp {} radius {}", e.n == 1 ? "left" : "right", short_number(e.a));
+                        : fmt::format("cutter_comp {} radius {}", e.n == 1 ? "left" : "right", four_decimals(e.a));
       case EventKind::WorkOffset:
         return e.n == 0 ? std::string("work_offset none") : fmt::format("work_offset {} {}", e.n, position(e.pos));
       case EventKind::PositionOffset: return "position_offset " + position(e.pos);
@@ -148,10 +135,7 @@ class TextSink final : public BufferedSink {
       case EventKind::PathMode:
         return e.n == 0 ? "path accelerate" : e.n == 1 ? "path decelerate" : "path tapping";
       case EventKind::Comment: return "comment " + quoted(e.text);
-      case EventKind::Stop: {
-        constexpr const char* kinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
-        return fmt::format("stop {}", kinds[e.n]);
-      }
+      case EventKind::Stop: return fmt::format("stop {}", kStopKinds[e.n]);
       case EventKind::OperatorMove: return "operator_move " + position(e.pos);
       case EventKind::End: return e.n ? "end information" : "end program";
     }
@@ -182,6 +166,7 @@ class JsonlSink final : public BufferedSink {
         "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
         "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
         "spindle_hold", "path", "comment", "stop", "operator_move", "end"};
+    static_assert(std::size(names) == static_cast<size_t>(EventKind::End) + 1, "one name per event kind");
     return names[static_cast<int>(e.kind)];
   }
 
@@ -248,11 +233,7 @@ class JsonlSink final : public BufferedSink {
       case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
       case EventKind::PathMode: str("mode", e.n == 0 ? "accelerate" : e.n == 1 ? "decelerate" : "tapping"); break;
       case EventKind::Comment: s += R"(,"text":)" + quoted(e.text); break;
-      case EventKind::Stop: {
-        constexpr const char* kinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
-        str("kind", kinds[e.n]);
-        break;
-      }
+      case EventKind::Stop: str("kind", kStopKinds[e.n]); break;
       case EventKind::End: str("kind", e.n ? "information" : "program"); break;
       case EventKind::SpindleStop: break;
     }
@@ -280,7 +261,9 @@ class CanonSink final : public BufferedSink {
       }
       case EventKind::FeedMode: line(fmt::format("SET_FEED_MODE(0, {})", e.n == 2 ? 1 : 0)); break;
       case EventKind::FeedRate: line(fmt::format("SET_FEED_RATE({})", canon_number(e.a))); break;
-      case EventKind::SpindleMode: line(fmt::format("SET_SPINDLE_MODE(0 {})", canon_number(0))); break;
+      // LinuxCNC passes the maximum spindle speed for constant surface speed, 1e30
+      // when the program gives none (GOST has no such word), and 0 for rpm.
+      case EventKind::SpindleMode: line(fmt::format("SET_SPINDLE_MODE(0 {})", canon_number(e.n ? 1e30 : 0))); break;
       case EventKind::SpindleSpeed: line(fmt::format("SET_SPINDLE_SPEED(0, {})", canon_number(e.a))); break;
       case EventKind::SpindleOn:
         line(e.n > 0 ? "START_SPINDLE_CLOCKWISE(0)" : "START_SPINDLE_COUNTERCLOCKWISE(0)");

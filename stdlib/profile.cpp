@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -122,8 +123,8 @@ std::optional<std::string> Profile::string(std::string_view key, Diagnostics& di
 std::optional<double> Profile::number(std::string_view key, Diagnostics& diags) const {
   Lookup l = find(key);
   if (!l.node) return std::nullopt;
-  if (l.node->is_number()) return l.node->value<double>();
-  report_value(diags, key, "must be a number");
+  if (l.node->is_number() && std::isfinite(*l.node->value<double>())) return l.node->value<double>();
+  report_value(diags, key, "must be a finite number");
   return std::nullopt;
 }
 
@@ -142,14 +143,14 @@ std::optional<std::vector<double>> Profile::numbers(std::string_view key, Diagno
   std::vector<double> out;
   if (a)
     for (const toml::node& n : *a) {
-      if (!n.is_number()) {
+      if (!n.is_number() || !std::isfinite(*n.value<double>())) {
         a = nullptr;
         break;
       }
       out.push_back(*n.value<double>());
     }
   if (!a) {
-    report_value(diags, key, "must be an array of numbers");
+    report_value(diags, key, "must be an array of finite numbers");
     return std::nullopt;
   }
   return out;
@@ -162,14 +163,14 @@ std::optional<std::map<std::string, double>> Profile::number_table(std::string_v
   std::map<std::string, double> out;
   if (t)
     for (const auto& [k, v] : *t) {
-      if (!v.is_number()) {
+      if (!v.is_number() || !std::isfinite(*v.value<double>())) {
         t = nullptr;
         break;
       }
       out[std::string(k.str())] = *v.value<double>();
     }
   if (!t) {
-    report_value(diags, key, "must be a table of numbers, e.g. { X = 0.0, Y = 0.0 }");
+    report_value(diags, key, "must be a table of finite numbers, e.g. { X = 0.0, Y = 0.0 }");
     return std::nullopt;
   }
   return out;
@@ -260,10 +261,6 @@ std::optional<int> table_number(const Profile& p, const std::string& table, cons
 MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   MachineConfig m;
   if (auto v = p.string("machine.name", diags)) m.name = *v;
-  if (auto v = p.number("machine.rapid_rate", diags)) {
-    if (*v > 0) m.rapid_rate = *v;
-    else p.report_value(diags, "machine.rapid_rate", "must be greater than zero");
-  }
   if (auto v = p.boolean("machine.block_skip", diags)) m.block_skip = *v;
   if (auto v = p.boolean("machine.optional_stop", diags)) m.optional_stop = *v;
   axis_values(p, "machine.initial_position", m.initial_position, diags);
@@ -276,10 +273,7 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     auto n = table_number(p, "tools", key, diags);
     if (!n) continue;
     ToolEntry t;
-    std::string base = "tools." + key;
-    if (auto v = p.string(base + ".description", diags)) t.description = *v;
-    if (auto v = p.number(base + ".length", diags)) t.length = *v;
-    if (auto v = p.number(base + ".radius", diags)) t.radius = *v;
+    if (auto v = p.string("tools." + key + ".description", diags)) t.description = *v;
     m.tools[*n] = t;
   }
   for (const std::string& key : p.keys("offsets")) {
@@ -288,7 +282,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     OffsetEntry o;
     std::string base = "offsets." + key;
     if (auto v = p.number(base + ".length", diags)) o.length = *v;
-    if (auto v = p.number(base + ".radius", diags)) o.radius = *v;
+    if (auto v = p.number(base + ".radius", diags)) {
+      if (*v >= 0) o.radius = *v;
+      else p.report_value(diags, base + ".radius", "must not be negative");
+    }
     m.offsets[*n] = o;
   }
   return m;

@@ -187,6 +187,17 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
       report(diags, table, row.line, error);
       continue;
     }
+    // A block-only code gives its groups back after the block; coolant and clamps
+    // have no single state to give back.
+    bool restorable = true;
+    for (const FnCall& call : e.desc.calls) {
+      FnGroup g = fn_group(call.fn);
+      restorable = restorable && g != FnGroup::Mist && g != FnGroup::Flood && g != FnGroup::Clamp;
+    }
+    if (e.desc.scope == Scope::Block && !restorable) {
+      report(diags, table, row.line, "a block-only code cannot switch coolant or clamps: use a modal code");
+      continue;
+    }
     e.meaning = c[col];
     codes[e.number] = std::move(e);
   }

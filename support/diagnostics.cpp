@@ -155,13 +155,11 @@ std::optional<DiagId> diag_by_name(std::string_view name) {
 
 Diagnostic* Diagnostics::add(Diagnostic d) {
   if (auto it = citations_.find(d.id); it != citations_.end()) d.message += " (" + it->second + ")";
-  if (werror_ && d.severity == Severity::Warning) d.severity = Severity::Error;
   if (d.severity == Severity::Error) {
     if (limit_reached_) return nullptr;
     if (error_limit_ != 0 && errors_ >= error_limit_) {
       limit_reached_ = true;
-      ++errors_;
-      list_.push_back({DiagId::TooManyErrors, Severity::Error, {}, diag_message(DiagId::TooManyErrors, errors_ - 1), {}});
+      list_.push_back({DiagId::TooManyErrors, Severity::Error, {}, diag_message(DiagId::TooManyErrors, errors_), {}});
       return nullptr;
     }
     ++errors_;

@@ -56,7 +56,7 @@ std::string diag_message(DiagId id, const Args&... args) {
 }
 
 // Collects diagnostics in the order they are reported; stops accepting errors after
-// `error_limit` (0 = no limit) with one NC1019.
+// `error_limit` (0 = no limit) with one NC1019, which error_count() does not count.
 class Diagnostics {
  public:
   explicit Diagnostics(uint32_t error_limit = 0) : error_limit_(error_limit) {}
@@ -69,12 +69,11 @@ class Diagnostics {
   // "... (GOST 20999 §7.3)". Loaded from stdlib/dialects/<dialect>/citations.tsv.
   void set_citations(std::map<DiagId, std::string> citations) { citations_ = std::move(citations); }
   Diagnostic* add(Diagnostic d);  // nullptr when dropped past the error limit
-  void set_warnings_as_errors(bool on) { werror_ = on; }
 
   const std::vector<Diagnostic>& all() const { return list_; }
   uint32_t error_count() const { return errors_; }
   uint32_t warning_count() const { return warnings_; }
-  bool has_errors() const { return errors_ > 0; }
+  bool has_errors() const { return errors_ > 0; }  // the limit notice needs errors before it
   bool limit_reached() const { return limit_reached_; }
   void clear();
 
@@ -84,7 +83,6 @@ class Diagnostics {
   uint32_t errors_ = 0;
   uint32_t warnings_ = 0;
   bool limit_reached_ = false;
-  bool werror_ = false;
   std::map<DiagId, std::string> citations_;
 };
 

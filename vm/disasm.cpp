@@ -2,18 +2,17 @@
 // operands resolved and the source block it came from.
 #include <fmt/format.h>
 
+#include "support/text.h"
+
 #include "module.h"
 #include "opcodes.h"
 #include "stdlib/builtins.h"
+#include "support/diagnostics.h"
 
 namespace ncc::vm {
 
 namespace {
 
-std::string number_text(double v) {
-  if (v == 0) v = 0;
-  return fmt::format("{}", v);
-}
 
 std::string slot_name(uint32_t slot) {
   return slot < 26 ? std::string(1, static_cast<char>('A' + slot)) : fmt::format("#{}", slot);
@@ -77,8 +76,8 @@ std::string disassemble(const Module& m) {
       at += static_cast<uint32_t>(operand_size(f));
       if (!operands.empty()) operands += ", ";
       switch (f) {
-        case 'k': operands += fmt::format("{}", number_text(m.numbers[v])); break;
-        case 's': operands += fmt::format("\"{}\"", m.strings[v]); break;
+        case 'k': operands += fmt::format("{}", shortest(m.numbers[v])); break;
+        case 's': operands += "\"" + json_escape(m.strings[v]) + "\""; break;
         case 'c': operands += m.semantics.codes[v].name; break;
         case 'w': operands += slot_name(v); break;
         case 'j': operands += fmt::format("-> {}", v); break;

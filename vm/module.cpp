@@ -1,12 +1,14 @@
 #include "module.h"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <map>
 
 #include "opcodes.h"
 #include "stdlib/builtins.h"
 #include "support/bytes.h"
+#include "support/text.h"
 
 namespace ncc::vm {
 
@@ -225,13 +227,12 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       l.source = r.u32();
     }
   } else if (t == kEntr) {
-    if (!count(r, 13, n)) return false;
+    if (!count(r, 9, n)) return false;
     m.entries.resize(n);
     for (Entry& e : m.entries) {
       e.name = r.str();
       if (!enum_value(r, EntryKind::Subprogram, e.kind)) return false;
       e.pc = r.u32();
-      e.source = r.u32();
     }
   } else if (t == kVars) {
     if (!count(r, 12, n)) return false;
@@ -298,7 +299,6 @@ std::string write_module(const Module& m) {
     entr.str(e.name);
     entr.u8(static_cast<uint8_t>(e.kind));
     entr.u32(e.pc);
-    entr.u32(e.source);
   }
   sections[kEntr] = std::move(entr.data());
   ByteWriter vars;
@@ -376,6 +376,8 @@ std::optional<Module> read_module(std::string_view bytes, const std::string& nam
     if (std::find(kSections.begin(), kSections.end(), t) == kSections.end())
       return invalid(fmt::format("unknown section '{}'", tag_name(t)));
     if (seen[t]) return invalid(fmt::format("section '{}' appears twice", tag_name(t)));
+    if (i >= kSections.size() || kSections[i] != t)
+      return invalid(fmt::format("section '{}' is out of order", tag_name(t)));
     seen[t] = true;
     ByteReader section(r.bytes(size));
     if (!read_section(t, section, m) || !section.at_end())
@@ -395,10 +397,25 @@ std::string verify(const Module& m) {
   if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
       !letter_ok(c.pitch_change_word))
     return "a convention names an address that is not a letter";
-  for (char a : c.axes)
-    if (kAxisLetters.find(a) == std::string_view::npos) return fmt::format("'{}' is not an axis", a);
-  for (char a : c.tool_offset_axes)
-    if (kAxisLetters.find(a) == std::string_view::npos) return fmt::format("'{}' is not an axis", a);
+  for (const std::string* axes : {&c.axes, &c.tool_offset_axes})
+    for (size_t i = 0; i < axes->size(); ++i)
+      if (kAxisLetters.find((*axes)[i]) == std::string_view::npos || axes->find((*axes)[i]) != i)
+        return fmt::format("'{}' in \"{}\" is not an axis, or appears twice", printable(axes->substr(i, 1)), printable(*axes));
+  if (!(c.arc_tolerance >= 0 && std::isfinite(c.arc_tolerance)) ||
+      !(c.lead_resolution >= 0 && std::isfinite(c.lead_resolution)) ||
+      !(c.dwell_seconds_per_unit > 0 && std::isfinite(c.dwell_seconds_per_unit)))
+    return "a convention holds a number that is negative or not finite";
+  // Names reach terminals and messages: no control characters.
+  std::vector<const std::string*> names = {&m.dialect, &m.profile_name, &s.dialect};
+  for (const CodeDesc& code : s.codes) names.push_back(&code.name);
+  for (const CyclePattern& p : s.cycles) names.push_back(&p.name);
+  for (const Entry& e : m.entries) names.push_back(&e.name);
+  for (const VarSpace& v : m.spaces) names.push_back(&v.name);
+  for (const std::string& f : m.source_map.files) names.push_back(&f);
+  for (const std::string* name : names)
+    if (printable(*name) != *name) return fmt::format("the name \"{}\" holds control characters", printable(*name));
+  for (double v : m.numbers)
+    if (!std::isfinite(v)) return "a number constant is not finite";
   for (const CodeDesc& code : s.codes)
     for (const FnCall& call : code.calls) {
       if (call.fn >= Fn::Count) return fmt::format("code {} calls unknown function {}", code.name, int(call.fn));
@@ -408,8 +425,9 @@ std::string verify(const Module& m) {
     }
   for (uint16_t i : s.power_on)
     if (i >= s.codes.size()) return fmt::format("power-on state names code {} of {}", i, s.codes.size());
-  for (const VarSpace& space : m.spaces)
-    if (space.size > (1u << 24)) return fmt::format("variable space {} is too large", space.name);
+  uint64_t variables = 0;
+  for (const VarSpace& space : m.spaces) variables += space.size;
+  if (variables > kMaxVariables) return fmt::format("the variable spaces hold more than {} values", kMaxVariables);
 
   // Source map.
   const SourceMap& map = m.source_map;
@@ -417,11 +435,14 @@ std::string verify(const Module& m) {
     if (b.file >= map.files.size()) return "a source block names a file that is not listed";
     if (uint64_t(b.first_word) + b.word_count > map.words.size()) return "a source block names missing words";
   }
+  for (const WordPosition& w : map.words)
+    if (w.slot >= kWordSlots || w.code < -1 || w.code >= static_cast<int>(s.codes.size()))
+      return "the source map names a word that does not exist";
 
   // Instructions: every opcode known, every operand in range.
   const std::vector<uint8_t>& code = m.code;
   std::vector<bool> boundary(code.size() + 1, false);
-  std::vector<uint32_t> targets;
+  std::vector<std::pair<uint32_t, uint32_t>> jumps;  // (pc, target)
   for (size_t pc = 0; pc < code.size();) {
     boundary[pc] = true;
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
@@ -447,19 +468,22 @@ std::string verify(const Module& m) {
           ok = v < static_cast<uint32_t>(Builtin::Count) &&
                builtin_info(static_cast<Builtin>(v)).arity == (op == Op::Call1 ? 1 : 2);
           break;
-        case 'j': targets.push_back(v); break;
+        case 'j': jumps.emplace_back(static_cast<uint32_t>(pc), v); break;
       }
       if (!ok) return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
     }
     pc += size;
   }
+  // Every loop and every call passes a Step, so --max-steps bounds every run: a
+  // jump backwards, and every entry point, lands on a Step.
   auto at_boundary = [&](uint32_t pc) { return pc < code.size() && boundary[pc]; };
-  for (uint32_t t : targets)
-    if (!at_boundary(t)) return fmt::format("a jump goes to {}, which is not an instruction", t);
-  for (const Entry& e : m.entries) {
-    if (!at_boundary(e.pc)) return fmt::format("entry point {} is not at an instruction", e.name);
-    if (e.source >= map.blocks.size() && !map.blocks.empty()) return fmt::format("entry point {} names no block", e.name);
+  auto at_step = [&](uint32_t pc) { return at_boundary(pc) && code[pc] == static_cast<uint8_t>(Op::Step); };
+  for (auto [from, to] : jumps) {
+    if (!at_boundary(to)) return fmt::format("a jump goes to {}, which is not an instruction", to);
+    if (to <= from && !at_step(to)) return fmt::format("the jump back from {} to {} does not land on a Step", from, to);
   }
+  for (const Entry& e : m.entries)
+    if (!at_step(e.pc)) return fmt::format("entry point {} does not start with a Step", printable(e.name));
   for (size_t i = 0; i < m.lines.size(); ++i) {
     if (!at_boundary(m.lines[i].pc)) return "the line table points between instructions";
     if (i > 0 && m.lines[i].pc <= m.lines[i - 1].pc) return "the line table is not in code order";
@@ -484,6 +508,8 @@ std::string verify(const Module& m) {
     if (d < info.pop) return fmt::format("{} at {} pops more values than the stack holds", info.name, pc);
     d = d - info.pop + info.push;
     if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
+    if ((op == Op::Return || op == Op::End) && d != 0)
+      return fmt::format("{} at {} leaves {} values on the stack", info.name, pc, d);
     uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
     std::vector<uint32_t> successors;
     switch (op) {

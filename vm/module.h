@@ -16,8 +16,9 @@
 
 namespace ncc::vm {
 
-constexpr uint16_t kFormatVersion = 1;
+constexpr uint16_t kFormatVersion = 2;
 constexpr uint32_t kMaxStack = 256;
+constexpr uint64_t kMaxVariables = 1u << 24;  // all spaces together
 
 enum class EntryKind : uint8_t { Program, MainBlock, Subprogram };
 
@@ -25,7 +26,6 @@ struct Entry {
   std::string name;  // "%0001", ":100"
   EntryKind kind = EntryKind::Program;
   uint32_t pc = 0;
-  uint32_t source = 0;
 };
 
 // From `pc` on, the code belongs to source block `source` (until the next entry).

@@ -1,8 +1,10 @@
 #include "vm.h"
 
 #include <cmath>
+#include <limits>
 
 #include "opcodes.h"
+#include "support/text.h"
 #include "stdlib/builtins.h"
 
 namespace ncc::vm {
@@ -10,6 +12,7 @@ namespace ncc::vm {
 namespace {
 
 constexpr size_t kMaxLoops = 64;
+constexpr double kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
 
 inline uint32_t u32_at(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
@@ -25,15 +28,14 @@ bool convert(VarType type, double& v) {
     case VarType::Byte: return integral(-128, 127);
     case VarType::Integer: return integral(-32768, 32767);
     case VarType::Long: return integral(-2147483648.0, 2147483647.0);
-    case VarType::Real: v = static_cast<float>(v); return std::isfinite(v);
-    default: return true;
+    case VarType::Real:
+      if (!(std::fabs(v) <= std::numeric_limits<float>::max())) return false;
+      v = static_cast<float>(v);
+      return true;
+    default: return std::isfinite(v);
   }
 }
 
-std::string number_text(double v) {
-  if (v == 0) v = 0;
-  return fmt::format("{}", v);
-}
 
 }  // namespace
 
@@ -51,7 +53,7 @@ RunStatus Vm::fail(uint32_t pc, DiagId id, const Args&... args) {
 double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
   const VarSpace& s = m_.spaces[space];
   if (!(index >= 0 && index < s.size) || index != std::trunc(index)) {
-    fail(pc, DiagId::DomainError, fmt::format("index {}", number_text(index)), s.name);
+    fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)), s.name);
     ok = false;
     return 0;
   }
@@ -61,12 +63,12 @@ double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
 bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   if (!(index >= 0 && index < s.size) || index != std::trunc(index)) {
-    fail(pc, DiagId::DomainError, fmt::format("index {}", number_text(index)), s.name);
+    fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)), s.name);
     return false;
   }
   double v = value;
   if (!convert(s.type_of(static_cast<uint32_t>(index)), v)) {
-    fail(pc, DiagId::ValueOverflow, number_text(value), fmt::format("{}{}", s.name, number_text(index)));
+    fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, shortest(index)));
     return false;
   }
   vars_[space][static_cast<size_t>(index)] = v;
@@ -137,7 +139,7 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::Pow: {
         double b = pop();
         double r = std::pow(st.back(), b);
-        if (!std::isfinite(r)) return fail(pc, DiagId::DomainError, number_text(st.back()), "a power");
+        if (!std::isfinite(r)) return fail(pc, DiagId::DomainError, shortest(st.back()), "a power");
         st.back() = r;
         break;
       }
@@ -159,7 +161,7 @@ RunStatus Vm::run(uint32_t entry) {
         double r = 0;
         std::string_view why;
         if (!eval_builtin(b, args, r, why))
-          return fail(pc, DiagId::DomainError, number_text(args[0]), fmt::format("{} ({})", builtin_info(b).name, why));
+          return fail(pc, DiagId::DomainError, shortest(args[0]), fmt::format("{} ({})", builtin_info(b).name, why));
         st.push_back(r);
         break;
       }
@@ -178,7 +180,12 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       case Op::Code: codes_.push_back(u16_at(operands)); break;
       case Op::Word: words_.set(operands[0], m_.numbers[u32_at(operands + 1)]); break;
-      case Op::WordPop: words_.set(operands[0], pop()); break;
+      case Op::WordPop: {
+        double v = pop();
+        if (!std::isfinite(v)) return fail(pc, DiagId::DomainError, shortest(v), "word values");
+        words_.set(operands[0], v);
+        break;
+      }
       case Op::Exec: {
         BlockRequest request{codes_.data(), codes_.size(), &words_, m_.source_of(pc)};
         BlockResult result = machine_.execute(request);
@@ -195,6 +202,7 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::Comment: machine_.comment(m_.strings[u32_at(operands)], m_.source_of(pc)); break;
       case Op::Repeat: {
         double count = std::trunc(pop());
+        if (!(count <= kMaxRepeat)) return fail(pc, DiagId::DomainError, shortest(count), "repeat counts");
         if (count < 1) {
           p.pc = u32_at(operands);
           break;

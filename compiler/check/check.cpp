@@ -1,6 +1,7 @@
 #include "check.h"
 
 #include <map>
+#include <set>
 
 namespace ncc {
 
@@ -44,7 +45,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         break;
       }
       case stdlib::Repeat::Feed:
-        if (feed && !rules.per_axis_feed) report_with_note(diags, DiagId::SeveralFeeds, w, *feed, "");
+        if (feed) report_with_note(diags, DiagId::SeveralFeeds, w, *feed, "");
         if (!feed) feed = &w;
         break;
       case stdlib::Repeat::Group:
@@ -101,6 +102,26 @@ void check_block_numbers(const ir::Unit& unit, Diagnostics& diags) {
   }
 }
 
+// Jumps stay within their unit; calls name a unit or main block of the medium (the
+// names lowering gives entry points).
+void check_targets(const ir::Program& program, const ir::Unit& unit, Diagnostics& diags) {
+  std::set<std::string> labels, entries;
+  for (const ir::Block& b : unit.blocks) {
+    if (!b.label.empty()) labels.insert(b.label);
+    if (b.number) labels.insert(fmt::format("N{}", *b.number));
+  }
+  for (const ir::Unit& u : program.units) {
+    entries.insert(u.name);
+    for (const ir::Block& b : u.blocks)
+      if (b.main_block && b.number) entries.insert(fmt::format(":{}", *b.number));
+  }
+  for (const ir::Block& b : unit.blocks)
+    for (const ir::Stmt& s : b.stmts) {
+      if (s.kind == ir::StmtKind::Jump && !labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, s.label);
+      if (s.kind == ir::StmtKind::Call && !entries.count(s.label)) diags.report(DiagId::CallUndefined, s.range, s.label);
+    }
+}
+
 }  // namespace
 
 void check(const ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
@@ -110,6 +131,7 @@ void check(const ir::Program& program, const CheckRules& rules, Diagnostics& dia
       if (diags.limit_reached()) return;
     }
     check_block_numbers(unit, diags);
+    check_targets(program, unit, diags);
   }
 }
 

@@ -11,8 +11,7 @@ namespace ncc {
 
 struct CheckRules {
   const stdlib::DialectTables* tables = nullptr;
-  bool pedantic = false;       // report the recommended word order
-  bool per_axis_feed = false;  // several F words per block
+  bool pedantic = false;  // report the recommended word order
 };
 
 void check(const ir::Program& program, const CheckRules& rules, Diagnostics& diags);

@@ -162,7 +162,9 @@ class Cli {
   }
 
   int run() {
-    if (!load_profile(s_, o_.machine)) return finish(kUsage, stderr);
+    // A bytecode file runs with the profile it holds unless --machine names another;
+    // source without --machine gets the built-in default when it is analysed.
+    if (!o_.machine.empty() && !load_profile(s_, o_.machine)) return finish(kUsage, stderr);
     auto input = read_input(s_, o_.input);
     if (!input) return finish(kUsage, stderr);
     auto [kind, file] = *input;

@@ -62,6 +62,15 @@ std::optional<std::string> read_file(const std::string& path) {
   return buffer.str();
 }
 
+// A source file named by a bytecode file, read only to quote its lines: never a
+// device, a pipe or something huge.
+std::string quotable_file(const std::string& path) {
+  std::error_code ec;
+  constexpr uintmax_t kMaxQuoted = 64 << 20;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxQuoted || ec) return {};
+  return read_file(path).value_or("");
+}
+
 // The module's source files as SourceManager indices (registered on first use). A
 // bytecode file names its sources by path; if one has gone, diagnostics still give
 // file:line:col, without the quoted line.
@@ -71,7 +80,7 @@ std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
     uint32_t found = UINT32_MAX;
     for (uint32_t i = 0; i < s.sources.size(); ++i)
       if (s.sources.file(i).path() == path) found = i;
-    if (found == UINT32_MAX) found = s.sources.add(path, read_file(path).value_or(""));
+    if (found == UINT32_MAX) found = s.sources.add(path, quotable_file(path));
     ids.push_back(found);
   }
   return ids;

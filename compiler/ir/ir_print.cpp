@@ -2,16 +2,15 @@
 // changes only on purpose.
 #include <fmt/format.h>
 
+#include "support/text.h"
+
 #include "ir.h"
+#include "support/diagnostics.h"
 
 namespace ncc::ir {
 
 namespace {
 
-std::string number_text(double v) {
-  if (v == 0) v = 0;  // no "-0"
-  return fmt::format("{}", v);
-}
 
 const char* op_name(ExprOp op) {
   switch (op) {
@@ -61,10 +60,10 @@ std::string print_expr(const Program& p, ExprId id) {
   if (id == kNoExpr) return "<none>";
   const Expr& e = p.exprs[id];
   switch (e.op) {
-    case ExprOp::Number: return number_text(e.number);
+    case ExprOp::Number: return shortest(e.number);
     case ExprOp::Var: {
       const std::string& space = e.space < p.spaces.size() ? p.spaces[e.space].name : "?";
-      if (p.is_constant(e.a)) return space + number_text(p.exprs[e.a].number);
+      if (p.is_constant(e.a)) return space + shortest(p.exprs[e.a].number);
       return fmt::format("{}[{}]", space, print_expr(p, e.a));
     }
     case ExprOp::Neg:
@@ -87,8 +86,8 @@ std::string print(const Program& p, const SourceManager& sources) {
       "axes={}\n",
       pick(c.arc_centre, {"incremental", "absolute"}), pick(c.helix_lead, {"per_radian", "per_revolution"}),
       pick(c.parabola_tangent, {"coordinates", "incremental"}), pick(c.angle_unit, {"deg", "rad", "rev"}),
-      letter(c.dwell_word), number_text(c.dwell_seconds_per_unit), letter(c.peck_word), letter(c.cycle_level_word),
-      letter(c.pitch_change_word), c.thread_allow_j, c.arc_single_quadrant, number_text(c.arc_tolerance), number_text(c.lead_resolution),
+      letter(c.dwell_word), shortest(c.dwell_seconds_per_unit), letter(c.peck_word), letter(c.cycle_level_word),
+      letter(c.pitch_change_word), c.thread_allow_j, c.arc_single_quadrant, shortest(c.arc_tolerance), shortest(c.lead_resolution),
       c.m06_stops_spindle, c.tool_offset_axes, c.axes);
   for (size_t i = 0; i < p.semantics.cycles.size(); ++i) {
     const CyclePattern& cy = p.semantics.cycles[i];
@@ -107,7 +106,7 @@ std::string print(const Program& p, const SourceManager& sources) {
     const char* kind = pick(u.kind, {"program", "subprogram", "macro"});
     std::string file = u.range.file < sources.size() ? sources.file(u.range.file).path() : "?";
     out += fmt::format("unit {} {} @{}:{}", kind, u.name, file, range_text(u.range));
-    if (!u.title.empty()) out += fmt::format(" \"{}\"", u.title);
+    if (!u.title.empty()) out += " \"" + json_escape(u.title) + "\"";
     if (u.ends_information) out += " end_of_information";
     out += "\n";
     for (const Block& b : u.blocks) {
@@ -124,7 +123,9 @@ std::string print(const Program& p, const SourceManager& sources) {
       }
       for (const Stmt& s : b.stmts) {
         switch (s.kind) {
-          case StmtKind::Comment: out += fmt::format("    comment {}\"{}\"\n", s.optional ? "/" : "", s.label); break;
+          case StmtKind::Comment:
+            out += fmt::format("    comment {}\"{}\"\n", s.optional ? "/" : "", json_escape(s.label));
+            break;
           case StmtKind::Machine: {
             out += "    machine";
             for (const Word& w : b.words) {

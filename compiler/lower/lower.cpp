@@ -21,7 +21,8 @@ class Lowering {
   }
 
   vm::Module run() {
-    for (const ir::Unit& unit : p_.units) unit_(unit);
+    for (const ir::Unit& unit : p_.units) lower_unit(unit);
+    resolve_calls();
     return std::move(m_);
   }
 
@@ -151,24 +152,29 @@ class Lowering {
     op(Op::Exec);
   }
 
-  void unit_(const ir::Unit& unit) {
-    labels_.clear();
-    fixups_.clear();
-    std::vector<std::pair<uint32_t, uint32_t>> repeats;  // (Repeat target operand, loop start)
+  // Each block starts with a Step (counted by --max-steps): jumps back land on block
+  // starts, so every loop passes one (the verifier insists).
+  void lower_unit(const ir::Unit& unit) {
+    std::map<std::string, uint32_t> labels;
+    std::vector<std::pair<uint32_t, std::string>> jumps;  // (operand, label)
+    std::vector<uint32_t> repeats;    // Repeat operands whose loop has not ended
+    std::vector<uint32_t> loop_start; // where each open loop's body starts
+    size_t starting_loops = 0;        // loops whose body starts at the next block
     bool entry_added = false;
     for (const ir::Block& b : unit.blocks) {
       uint32_t source = source_block(b);
       m_.lines.push_back({pc(), source});
+      for (; starting_loops > 0; --starting_loops) loop_start.push_back(pc());
       if (!entry_added) {
-        m_.entries.push_back({unit.name, vm::EntryKind::Program, pc(), source});
+        m_.entries.push_back({unit.name, vm::EntryKind::Program, pc()});
         entry_added = true;
       }
       if (b.main_block && b.number)
-        m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc(), source});
-      if (!b.label.empty()) labels_[b.label] = pc();
-      if (b.number) labels_.emplace(fmt::format("N{}", *b.number), pc());
-      uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
+        m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
+      if (!b.label.empty()) labels[b.label] = pc();
+      if (b.number) labels.emplace(fmt::format("N{}", *b.number), pc());
       op(Op::Step);
+      uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
       for (const ir::Stmt& s : b.stmts) {
         switch (s.kind) {
           case ir::StmtKind::Comment: {
@@ -195,32 +201,25 @@ class Lowering {
             break;
           }
           case ir::StmtKind::Jump:
-            if (s.cond != ir::kNoExpr) {
-              expr(s.cond);
-              fixups_.push_back({jump(Op::JumpIf), s.label});
-            } else {
-              fixups_.push_back({jump(Op::Jump), s.label});
-            }
+            if (s.cond != ir::kNoExpr) expr(s.cond);
+            jumps.push_back({jump(s.cond != ir::kNoExpr ? Op::JumpIf : Op::Jump), s.label});
             break;
-          case ir::StmtKind::RepeatBegin: {
+          case ir::StmtKind::RepeatBegin:
+            // The loop body starts at the next block (RepeatBegin ends its block).
             expr(s.value);
-            uint32_t operand = jump(Op::Repeat);
-            repeats.push_back({operand, pc()});
+            repeats.push_back(jump(Op::Repeat));
+            ++starting_loops;
             break;
-          }
-          case ir::StmtKind::RepeatEnd: {
-            auto [operand, start] = repeats.back();
+          case ir::StmtKind::RepeatEnd:
+            jump(Op::EndRepeat, loop_start.back());
+            loop_start.pop_back();
+            patch(repeats.back(), pc());
             repeats.pop_back();
-            jump(Op::EndRepeat, start);
-            patch(operand, pc());
             break;
-          }
           case ir::StmtKind::Call:
-            for (size_t i = 0; i < m_.entries.size(); ++i)
-              if (m_.entries[i].name == s.label) {
-                op(Op::CallEntry);
-                u16(static_cast<uint32_t>(i));
-              }
+            calls_.push_back({pc() + 1, s.label});
+            op(Op::CallEntry);
+            u16(0);
             break;
           case ir::StmtKind::Return: op(Op::Return); break;
         }
@@ -234,13 +233,28 @@ class Lowering {
       s.line = unit.range.line;
       s.col = unit.range.col;
       m_.source_map.blocks.push_back(s);
-      uint32_t source = static_cast<uint32_t>(m_.source_map.blocks.size() - 1);
-      m_.lines.push_back({pc(), source});
-      m_.entries.push_back({unit.name, vm::EntryKind::Program, pc(), source});
+      m_.lines.push_back({pc(), static_cast<uint32_t>(m_.source_map.blocks.size() - 1)});
+      m_.entries.push_back({unit.name, vm::EntryKind::Program, pc()});
+      op(Op::Step);
     }
+    uint32_t end = pc();
     op(Op::End);
-    for (const auto& [at, label] : fixups_)
-      if (auto it = labels_.find(label); it != labels_.end()) patch(at, it->second);
+    // The checks report labels that do not exist; should one slip through, the jump
+    // ends the unit rather than going anywhere else.
+    for (const auto& [at, label] : jumps) {
+      auto it = labels.find(label);
+      patch(at, it != labels.end() ? it->second : end);
+    }
+  }
+
+  // Calls name entry points of any unit, so they are resolved last.
+  void resolve_calls() {
+    for (const auto& [at, name] : calls_) {
+      size_t i = 0;
+      while (i < m_.entries.size() && m_.entries[i].name != name) ++i;
+      m_.code[at] = static_cast<uint8_t>(i & 0xFF);
+      m_.code[at + 1] = static_cast<uint8_t>((i >> 8) & 0xFF);
+    }
   }
 
   const ir::Program& p_;
@@ -249,8 +263,7 @@ class Lowering {
   std::map<uint32_t, uint32_t> files_;
   std::map<uint64_t, uint32_t> numbers_;
   std::map<std::string, uint32_t> strings_;
-  std::map<std::string, uint32_t> labels_;
-  std::vector<std::pair<uint32_t, std::string>> fixups_;
+  std::vector<std::pair<uint32_t, std::string>> calls_;  // (operand, entry name)
 };
 
 }  // namespace

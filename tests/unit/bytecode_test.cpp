@@ -107,42 +107,67 @@ TEST(Bytecode, CorruptionWithAValidChecksumNeverCrashes) {
   EXPECT_GT(accepted, 0u);
 }
 
-// A module with hand-written code, to reach the verifier's rules one by one.
+// A module with hand-written code, to reach the verifier's rules one by one. The
+// entry point is at 0.
 std::string verify_code(std::vector<uint8_t> code, size_t numbers = 1) {
   vm::Module m;
   m.numbers.assign(numbers, 1.0);
   m.code = std::move(code);
   m.source_map.files.push_back("x.nc");
   m.source_map.blocks.push_back({});
-  m.entries.push_back({"%1", vm::EntryKind::Program, 0, 0});
+  m.entries.push_back({"%1", vm::EntryKind::Program, 0});
   return vm::verify(m);
 }
 
-uint8_t op(vm::Op o) { return static_cast<uint8_t>(o); }
+constexpr uint8_t op(vm::Op o) { return static_cast<uint8_t>(o); }
+constexpr uint8_t kStep = op(vm::Op::Step);
 
 TEST(Verifier, AcceptsSoundCode) {
-  EXPECT_EQ(verify_code({op(vm::Op::Const), 0, 0, 0, 0, op(vm::Op::Neg), op(vm::Op::JumpIf), 0, 0, 0, 0, op(vm::Op::End)}), "");
+  using vm::Op;
+  // 0 Step; 1 Const 1.0; 6 Neg; 7 JumpIf 0 (back to the Step); 12 End
+  EXPECT_EQ(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::Neg), op(Op::JumpIf), 0, 0, 0, 0, op(Op::End)}), "");
 }
 
 TEST(Verifier, RejectsEachKindOfUnsoundCode) {
   using vm::Op;
-  EXPECT_NE(verify_code({0xEE}), "");                                       // unknown opcode
-  EXPECT_NE(verify_code({op(Op::Const), 0, 0}), "");                        // cut off
-  EXPECT_NE(verify_code({op(Op::Const), 5, 0, 0, 0, op(Op::End)}), "");     // constant out of range
-  EXPECT_NE(verify_code({op(Op::Add), op(Op::End)}), "");                   // stack underflow
-  EXPECT_NE(verify_code({op(Op::Jump), 3, 0, 0, 0, op(Op::End)}), "");      // jump into an instruction
-  EXPECT_NE(verify_code({op(Op::Jump), 99, 0, 0, 0, op(Op::End)}), "");     // jump outside the code
-  EXPECT_NE(verify_code({op(Op::Nop)}), "");                                // runs off the end
-  EXPECT_NE(verify_code({op(Op::Code), 0, 0, op(Op::End)}), "");            // no such G/M code
-  EXPECT_NE(verify_code({op(Op::Word), 64, 0, 0, 0, 0, op(Op::End)}), "");  // no such word slot
-  EXPECT_NE(verify_code({op(Op::Load), 0, 0, 0, 0, 0, op(Op::End)}), "");   // no such variable space
-  EXPECT_NE(verify_code({op(Op::Call1), 6, op(Op::End)}), "");              // atan2 takes two arguments
+  EXPECT_NE(verify_code({kStep, 0xEE}), "");                                       // unknown opcode
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0}), "");                        // cut off
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 5, 0, 0, 0, op(Op::End)}), "");     // constant out of range
+  EXPECT_NE(verify_code({kStep, op(Op::Add), op(Op::End)}), "");                   // stack underflow
+  EXPECT_NE(verify_code({kStep, op(Op::Jump), 4, 0, 0, 0, op(Op::End)}), "");      // jump into an instruction
+  EXPECT_NE(verify_code({kStep, op(Op::Jump), 99, 0, 0, 0, op(Op::End)}), "");     // jump outside the code
+  EXPECT_NE(verify_code({kStep, op(Op::Nop)}), "");                                // runs off the end
+  EXPECT_NE(verify_code({kStep, op(Op::Code), 0, 0, op(Op::End)}), "");            // no such G/M code
+  EXPECT_NE(verify_code({kStep, op(Op::Word), 64, 0, 0, 0, 0, op(Op::End)}), "");  // no such word slot
+  EXPECT_NE(verify_code({kStep, op(Op::Load), 0, 0, 0, 0, 0, op(Op::End)}), "");   // no such variable space
+  EXPECT_NE(verify_code({kStep, op(Op::Call1), 6, op(Op::End)}), "");              // atan2 takes two arguments
+  EXPECT_NE(verify_code({op(Op::Nop), kStep, op(Op::End)}), "");                   // the entry is not a Step
+  // A loop that passes no Step: --max-steps could not stop it.
+  EXPECT_NE(verify_code({kStep, op(Op::Nop), op(Op::Jump), 1, 0, 0, 0}), "");
+  // A value left on the stack at the end.
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::End)}), "");
   // Paths that meet with different stack depths.
-  EXPECT_NE(verify_code({op(Op::Const), 0, 0, 0, 0, op(Op::JumpIf), 11, 0, 0, 0, op(Op::Const), 0, 0, 0, 0,
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::JumpIf), 16, 0, 0, 0, op(Op::Const), 0, 0, 0, 0,
                          op(Op::End)}),
             "");
   // A stack that grows without bound in a loop.
-  EXPECT_NE(verify_code({op(Op::Const), 0, 0, 0, 0, op(Op::Jump), 0, 0, 0, 0}), "");
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::Jump), 0, 0, 0, 0}), "");
+}
+
+TEST(Verifier, RejectsNumbersAndNamesThatCannotBeTrusted) {
+  vm::Module m;
+  m.numbers = {std::nan("")};
+  m.code = {kStep, op(vm::Op::End)};
+  m.source_map.files.push_back("x.nc");
+  m.entries.push_back({"%1", vm::EntryKind::Program, 0});
+  EXPECT_NE(vm::verify(m), "");
+  m.numbers = {1.0};
+  EXPECT_EQ(vm::verify(m), "");
+  m.source_map.files[0] = "x\033[2J.nc";
+  EXPECT_NE(vm::verify(m), "");
+  m.source_map.files[0] = "x.nc";
+  m.spaces = {{"E", 1u << 23, {}}, {"F", 1u << 23, {}}, {"G", 1, {}}};
+  EXPECT_NE(vm::verify(m), "");
 }
 
 }  // namespace

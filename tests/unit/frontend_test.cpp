@@ -127,6 +127,28 @@ TEST(Tables, BadRowsAreReported) {
   EXPECT_NE(diags.all()[2].message.find("unknown function 'warp.speed'"), std::string::npos);
 }
 
+TEST(Tables, BlockOnlyCodesMustBeRestorable) {
+  Diagnostics diags;
+  std::map<int, stdlib::CodeEntry> codes;
+  auto table = stdlib::parse_table("m.tsv", "M70 before block - coolant.flood \"flood for one block\"\n"
+                                   "M71 before block - spindle.cw \"spindle for one block\"\n", 6, diags);
+  stdlib::read_code_table(table, 'M', {}, codes, diags);
+  EXPECT_EQ(codes.size(), 1u);
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_NE(diags.all()[0].message.find("m.tsv:1: a block-only code cannot switch coolant"), std::string::npos);
+}
+
+TEST(Profile, NumbersMustBeFinite) {
+  SourceManager sources;
+  Diagnostics diags;
+  auto p = stdlib::Profile::parse(sources, "m.toml", "[gost]\narc_tolerance = inf\n[machine]\ninitial_position = { Y = nan }\n", diags);
+  ASSERT_TRUE(p);
+  EXPECT_FALSE(p->number("gost.arc_tolerance", diags));
+  stdlib::load_machine_config(*p, diags);
+  ASSERT_EQ(diags.all().size(), 2u);
+  EXPECT_NE(diags.all()[0].message.find("must be a finite number"), std::string::npos);
+}
+
 TEST(Profile, FallsBackToTheDefaultAndReportsTypos) {
   SourceManager sources;
   Diagnostics diags;
@@ -145,13 +167,13 @@ TEST(Profile, FallsBackToTheDefaultAndReportsTypos) {
 TEST(Profile, MachineDataReplacesTheDefaultCollections) {
   SourceManager sources;
   Diagnostics diags;
-  auto p = stdlib::Profile::parse(sources, "m.toml", "[tools]\n7 = { length = 50.0, radius = 3.0 }\n", diags);
+  auto p = stdlib::Profile::parse(sources, "m.toml", "[offsets]\n7 = { length = 50.0, radius = 3.0 }\n", diags);
   ASSERT_TRUE(p);
   MachineConfig m = stdlib::load_machine_config(*p, diags);
   EXPECT_TRUE(diags.all().empty());
-  ASSERT_EQ(m.tools.size(), 1u);
-  EXPECT_EQ(m.tools.at(7).radius, 3.0);
-  EXPECT_EQ(m.offsets.size(), 3u);  // not given: the default's
+  ASSERT_EQ(m.offsets.size(), 1u);
+  EXPECT_EQ(m.offsets.at(7).radius, 3.0);
+  EXPECT_EQ(m.tools.size(), 3u);  // not given: the default's
 }
 
 }  // namespace

@@ -183,6 +183,23 @@ TEST(Runtime, EndOfProgramResetsAndReports) {
   EXPECT_EQ(r.trace.events[r.trace.events.size() - 2].n, 0);  // back to XY
 }
 
+TEST(Runtime, PecksAreBounded) {
+  Rig r;
+  r.block({"G00"}, {{'Z', 10}});
+  EXPECT_EQ(r.block({"G83"}, {{'Z', -99999}, {'R', 2}, {'Q', 0.001}, {'F', 100}}), BlockResult::Error);
+  ASSERT_EQ(r.issues.list.size(), 1u);
+  EXPECT_EQ(r.issues.list[0].id, DiagId::CyclePecks);
+  EXPECT_TRUE(r.of(EventKind::Linear).empty());
+}
+
+TEST(Runtime, ToolNumbersAreWholeNumbers) {
+  Rig r;
+  EXPECT_EQ(r.block({}, {{'T', 1.5}}), BlockResult::Error);
+  ASSERT_EQ(r.issues.list.size(), 1u);
+  EXPECT_EQ(r.issues.list[0].id, DiagId::DomainError);
+  EXPECT_EQ(r.issues.list[0].word, 'T');
+}
+
 TEST(Runtime, UnusedWordIsAWarning) {
   Rig r;
   r.block({"G01"}, {{'X', 1}, {'I', 3}, {'F', 100}});

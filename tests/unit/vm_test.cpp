@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "collect_issues.h"
+#include "check/check.h"
 #include "lower/lower.h"
 #include "runtime/machine.h"
 #include "vm/vm.h"
@@ -217,6 +218,50 @@ TEST(Vm, ConditionalJumpsMakeALoop) {
   test.stmts.push_back(jump);
   t.move_x(t.block(), t.num(100));
   EXPECT_EQ(t.run().xs, (std::vector<double>{1, 2, 3, 4, 100}));
+}
+
+TEST(Vm, RepeatCountMustBeAWholeNumberInRange) {
+  for (bool nan : {false, true}) {
+    Builder t;
+    ir::Block& b = t.block();
+    b.stmts.push_back({ir::StmtKind::RepeatBegin, b.range});
+    // Computed, as constants are finite: 1e300, and inf - inf.
+    ir::ExprId inf = t.bin(ir::ExprOp::Mul, t.num(1e300), t.num(1e300));
+    b.stmts.back().value = nan ? t.bin(ir::ExprOp::Sub, inf, inf) : t.num(1e300);
+    t.move_x(t.block(), t.num(1));
+    ir::Block& e = t.block();
+    e.stmts.push_back({ir::StmtKind::RepeatEnd, e.range});
+    auto r = t.run();
+    EXPECT_EQ(r.status, vm::RunStatus::Error) << nan;
+    ASSERT_EQ(r.issues.size(), 1u);
+    EXPECT_EQ(r.issues[0].id, DiagId::DomainError);
+  }
+}
+
+TEST(Vm, WordsMustBeFinite) {
+  Builder t;
+  t.move_x(t.block(), t.bin(ir::ExprOp::Mul, t.num(1e300), t.num(1e300)));
+  auto r = t.run();
+  EXPECT_EQ(r.status, vm::RunStatus::Error);
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::DomainError);
+}
+
+TEST(Vm, UndefinedTargetsAreCheckedBeforeLowering) {
+  Builder t;
+  ir::Block& b = t.block();
+  ir::Stmt jump(ir::StmtKind::Jump, b.range);
+  jump.label = "N9";
+  b.stmts.push_back(jump);
+  ir::Stmt call(ir::StmtKind::Call, b.range);
+  call.label = "%9";
+  b.stmts.push_back(call);
+  Diagnostics diags;
+  stdlib::DialectTables tables = stdlib::load_dialect_tables("gost", diags);
+  check(t.p, {&tables}, diags);
+  ASSERT_EQ(diags.all().size(), 2u);
+  EXPECT_EQ(diags.all()[0].id, DiagId::LabelUndefined);
+  EXPECT_EQ(diags.all()[1].id, DiagId::CallUndefined);
 }
 
 TEST(Vm, StepLimitStopsARunawayLoop) {

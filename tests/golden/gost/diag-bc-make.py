@@ -14,7 +14,7 @@ import zlib
 
 HEADER = 16
 # Opcodes (vm/opcodes.h).
-NOP, CONST, NEG, DIV, CALL1, WORD, CALL_ENTRY = 0, 1, 6, 11, 23, 31, 37
+NOP, CONST, NEG, DIV, CALL1, CODE, WORD, WORD_POP, CALL_ENTRY = 0, 1, 6, 11, 23, 30, 31, 32, 37
 SQRT = 7  # stdlib/builtins.h
 
 
@@ -43,8 +43,8 @@ def main():
 
     files = {}
     # (A changed magic is not made: such a file is read as source, see NC1009.)
-    # Format version 2 in bytes 4-5.
-    files["version"] = good[:4] + struct.pack("<H", 2) + good[6:]
+    # A format version from the future (99) in bytes 4-5.
+    files["version"] = good[:4] + struct.pack("<H", 99) + good[6:]
     # One byte of the body flipped, the stored checksum left as it was.
     last = len(good) - 1
     files["checksum"] = good[:last] + bytes([good[last] ^ 0xFF])
@@ -56,16 +56,21 @@ def main():
     # The last four bytes cut off, the checksum recomputed: the last section is short.
     files["section"] = with_crc(good[:-4])
     # A sound file whose code divides by zero (GOST source never computes): block N1's
-    # "Word X k0; Word Y k1" (12 bytes) becomes "Const k1; Const k0; Div; Nop", 10 / 0.
-    words = bytes([WORD, ord("X") - ord("A")]) + struct.pack("<I", 0) + bytes([WORD, ord("Y") - ord("A")]) + struct.pack("<I", 1)
-    divide = bytes([CONST]) + struct.pack("<I", 1) + bytes([CONST]) + struct.pack("<I", 0) + bytes([DIV, NOP])
+    # "Code G01; Word X k0; Word Y k1" (15 bytes) becomes
+    # "Const k1; Const k0; Div; WordPop X; Nop x 2", X = 10 / 0.
+    words = bytes([CODE, 0, 0, WORD, ord("X") - ord("A")]) + struct.pack("<I", 0) + bytes([WORD, ord("Y") - ord("A")]) + struct.pack("<I", 1)
+    divide = (bytes([CONST]) + struct.pack("<I", 1) + bytes([CONST]) + struct.pack("<I", 0) +
+              bytes([DIV, WORD_POP, ord("X") - ord("A"), NOP, NOP]))
     assert good.count(words) == 1 and len(words) == len(divide)
     files["divide"] = with_crc(good.replace(words, divide))
-    # The same 12 bytes as "Const k1; Neg; Call1 sqrt; Nop x 4": the square root of -10.
-    domain = bytes([CONST]) + struct.pack("<I", 1) + bytes([NEG, CALL1, SQRT]) + bytes([NOP] * 4)
+    # The same bytes as "Const k1; Neg; Call1 sqrt; WordPop X; Nop x 5": X = the square
+    # root of -10.
+    domain = bytes([CONST]) + struct.pack("<I", 1) + bytes([NEG, CALL1, SQRT, WORD_POP, ord("X") - ord("A")]) + bytes([NOP] * 5)
+    assert len(domain) == len(words)
     files["domain"] = with_crc(good.replace(words, domain))
-    # ... and as "CallEntry 0; Nop x 9": block N1 calls its own program without end.
-    recurse = bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 9)
+    # ... and as "CallEntry 0; Nop x 12": block N1 calls its own program without end.
+    recurse = bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 12)
+    assert len(recurse) == len(words)
     files["recursion"] = with_crc(good.replace(words, recurse))
 
     for name, data in files.items():

@@ -1,0 +1,27 @@
+#include "text.h"
+
+#include <fmt/format.h>
+
+namespace ncc {
+
+std::string shortest(double v) {
+  if (v == 0) v = 0;
+  return fmt::format("{}", v);
+}
+
+std::string four_decimals(double v) {
+  std::string s = fmt::format("{:.4f}", v);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  if (s == "-0") s = "0";
+  return s;
+}
+
+std::string printable(std::string_view s) {
+  std::string out(s);
+  for (char& c : out)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7F) c = '?';
+  return out;
+}
+
+}  // namespace ncc

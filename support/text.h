@@ -1,0 +1,17 @@
+// How ncc writes numbers and untrusted text, the same way everywhere.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace ncc {
+
+// The shortest text that reads back as the same double; never "-0".
+std::string shortest(double v);
+// At most four decimals, trailing zeros removed, never "-0": traces and messages.
+std::string four_decimals(double v);
+// Text from a file or a bytecode file, safe to print on a terminal: control
+// characters become '?'.
+std::string printable(std::string_view s);
+
+}  // namespace ncc
