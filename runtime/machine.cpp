@@ -53,8 +53,8 @@ void Machine::reset_state() {
   spindle_direction_ = 0;
   cycle_ = {};
   parabola_middle_.reset();
-  Step saved = step_;
-  step_ = Step{};
+  BlockState saved = block_;
+  block_ = BlockState{};
   for (uint16_t index : sem_.power_on) {
     const CodeDesc& code = sem_.codes[index];
     for (const FnCall& call : code.calls) {
@@ -62,12 +62,12 @@ void Machine::reset_state() {
       apply(call, Scope::Modal, false);
     }
   }
-  step_ = saved;
+  block_ = saved;
 }
 
 AxisValues Machine::target_frame() const {
-  if (step_.block_offset == 0) return {};  // G53: the machine reference point
-  return frame_offset(step_.block_offset > 0 ? step_.block_offset : modal_.work_offset);
+  if (block_.block_offset == 0) return {};  // G53: the machine reference point
+  return frame_offset(block_.block_offset > 0 ? block_.block_offset : modal_.work_offset);
 }
 
 AxisValues Machine::frame_offset(int work_offset) const {
@@ -123,7 +123,7 @@ Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
 }
 
 void Machine::emit(Event e) {
-  e.source = step_.request ? step_.request->source : 0;
+  e.source = block_.request ? block_.request->source : 0;
   trace_.event(e);
 }
 
@@ -189,15 +189,15 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::MotionThreadIncreasing:
     case Fn::MotionThreadDecreasing:
     case Fn::MotionDwell:
-      if (call.fn == Fn::MotionDwell) step_.dwell_code = true;
+      if (call.fn == Fn::MotionDwell) block_.dwell_code = true;
       if (parabola_middle_ && call.fn != Fn::MotionParabola) {
         report(DiagId::ParabolaPair, 0, "the motion mode changed");
         parabola_middle_.reset();
       }
       modal_.motion = call.fn;
       break;
-    case Fn::Dwell: step_.dwell = true; break;
-    case Fn::SetPosition: step_.set_position = true; break;
+    case Fn::Dwell: block_.dwell = true; break;
+    case Fn::SetPosition: block_.set_position = true; break;
     case Fn::PathAccelerate: event(EventKind::PathMode, 0); break;
     case Fn::PathDecelerate: event(EventKind::PathMode, 1); break;
     case Fn::PathTapping: event(EventKind::PathMode, 2); break;
@@ -241,11 +241,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::WorkOffset:
       if (call.arg != 0 && !config_.work_offsets.count(call.arg)) {
-        report_code(DiagId::WorkOffsetUnknown, step_.code_name, call.arg);
+        report_code(DiagId::WorkOffsetUnknown, block_.code_name, call.arg);
         break;
       }
       if (scope == Scope::Block) {
-        step_.block_offset = call.arg;
+        block_.block_offset = call.arg;
       } else {
         modal_.work_offset = call.arg;
         if (emit_events) {
@@ -264,10 +264,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::Cycle: modal_.cycle = call.arg; break;
     // Stops come after everything else of the block (Table 8: "after the commands of
     // the block are executed").
-    case Fn::ProgramStop: step_.stop = 1; break;
-    case Fn::ProgramOptionalStop: step_.stop = config_.optional_stop ? 2 : 3; break;
-    case Fn::ProgramEnd: step_.end = true; break;
-    case Fn::ProgramEndInformation: step_.end_information = true; break;
+    case Fn::ProgramStop: block_.stop = 1; break;
+    case Fn::ProgramOptionalStop: block_.stop = config_.optional_stop ? 2 : 3; break;
+    case Fn::ProgramEnd: block_.end = true; break;
+    case Fn::ProgramEndInformation: block_.end_information = true; break;
     case Fn::SpindleCw:
     case Fn::SpindleCcw:
       modal_.spindle = spindle_direction_ = call.fn == Fn::SpindleCw ? 1 : -1;
@@ -372,16 +372,16 @@ void Machine::flush_compensation() {
   // An event when the compensation in effect changes: one per block, with the
   // offset number the block ends with.
   Compensation now = compensation();
-  if (now.side != step_.compensation.side || now.radius != step_.compensation.radius) cutter_comp_event();
-  if (now.length != step_.compensation.length) tool_length_event();
-  step_.compensation = now;
+  if (now.side != block_.compensation.side || now.radius != block_.compensation.radius) cutter_comp_event();
+  if (now.length != block_.compensation.length) tool_length_event();
+  block_.compensation = now;
 }
 
 BlockResult Machine::execute(const BlockRequest& request) {
-  step_ = Step{};
-  step_.request = &request;
-  step_.compensation = compensation();
-  auto failed = [&] { return step_.error && stop_on_error_; };
+  block_ = BlockState{};
+  block_.request = &request;
+  block_.compensation = compensation();
+  auto failed = [&] { return block_.error && stop_on_error_; };
   // 1. Preparatory functions in written order.
   apply_codes(Timing::None);
   // 2. Registers.
@@ -397,39 +397,39 @@ BlockResult Machine::execute(const BlockRequest& request) {
   apply_codes(Timing::After);
   finish();
   if (failed()) return BlockResult::Error;
-  if (step_.end_information) return BlockResult::EndOfInformation;
-  if (step_.end) return BlockResult::ProgramEnd;
+  if (block_.end_information) return BlockResult::EndOfInformation;
+  if (block_.end) return BlockResult::ProgramEnd;
   return BlockResult::Continue;
 }
 
 void Machine::apply_codes(Timing timing) {
-  const BlockRequest& request = *step_.request;
+  const BlockRequest& request = *block_.request;
   for (size_t i = 0; i < request.code_count; ++i) {
     const CodeDesc& code = sem_.codes[request.codes[i]];
     if (code.timing != timing) continue;
-    step_.code = request.codes[i];
-    step_.code_name = code.name;
+    block_.code = request.codes[i];
+    block_.code_name = code.name;
     for (const FnCall& call : code.calls) {
       // A block-only code's group comes back after the block (G53 works differently:
       // it only changes the frame of this block's words).
       FnGroup group = fn_group(call.fn);
       if (code.scope == Scope::Block && group != FnGroup::None && call.fn != Fn::WorkOffset)
-        step_.restore.push_back(current(group));
+        block_.restore.push_back(current(group));
       if (group == FnGroup::Motion) motion_name_ = code.name;
       apply(call, code.scope, true);
     }
   }
-  step_.code = -1;
+  block_.code = -1;
 }
 
 void Machine::action() {
   const bool axes = has_axis_word();
-  if (step_.dwell || step_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word))) {
+  if (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word))) {
     if (axes) report(DiagId::DwellWithMotion, 0);
     dwell();
     return;
   }
-  if (step_.set_position) {
+  if (block_.set_position) {
     set_position();
     return;
   }
@@ -463,14 +463,14 @@ void Machine::action() {
 }
 
 void Machine::finish() {
-  for (const FnCall& call : step_.restore) apply(call, Scope::Modal, true);
+  for (const FnCall& call : block_.restore) apply(call, Scope::Modal, true);
   flush_compensation();
-  if (step_.stop) {
+  if (block_.stop) {
     Event e{EventKind::Stop};
-    e.n = step_.stop - 1;
+    e.n = block_.stop - 1;
     emit(e);
   }
-  if (step_.end || step_.end_information) {
+  if (block_.end || block_.end_information) {
     // Table 8: M02/M30 stop the spindle and feed and switch coolant off, then the NC
     // returns to its initial state (§8), which the trace shows as it changes.
     if (parabola_middle_) report(DiagId::ParabolaPair, 0, "the program ended");
@@ -481,11 +481,11 @@ void Machine::finish() {
     reset_state();
     emit_reset(before, position_offset);
     Event e{EventKind::End};
-    e.n = step_.end_information;
+    e.n = block_.end_information;
     emit(e);
   }
-  if (step_.error) return;
-  uint64_t unused = step_.request->words->present & ~step_.used;
+  if (block_.error) return;
+  uint64_t unused = block_.request->words->present & ~block_.used;
   for (int slot = 0; slot < 26; ++slot)
     if (unused & (uint64_t{1} << slot)) report(DiagId::WordUnused, static_cast<char>('A' + slot), std::string(1, static_cast<char>('A' + slot)));
 }
@@ -512,11 +512,11 @@ void Machine::end_of_unit(uint32_t source) {
   if (!parabola_middle_) return;
   BlockWords none;
   BlockRequest request{nullptr, 0, &none, source};
-  step_ = Step{};
-  step_.request = &request;
+  block_ = BlockState{};
+  block_.request = &request;
   report(DiagId::ParabolaPair, 0, "the program ended");
   parabola_middle_.reset();
-  step_ = Step{};
+  block_ = BlockState{};
 }
 
 void Machine::comment(const std::string& text, uint32_t source) {

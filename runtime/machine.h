@@ -105,7 +105,7 @@ class Machine {
   };
 
   // One block being executed.
-  struct Step {
+  struct BlockState {
     const BlockRequest* request = nullptr;
     uint64_t used = 0;  // words the block's functions read
     bool error = false;
@@ -119,10 +119,10 @@ class Machine {
   };
 
   // Words.
-  bool has(char letter) const { return step_.request->words->has(letter); }
+  bool has(char letter) const { return block_.request->words->has(letter); }
   double word(char letter) {
-    step_.used |= BlockWords::bit(letter);
-    return step_.request->words->value[letter - 'A'];
+    block_.used |= BlockWords::bit(letter);
+    return block_.request->words->value[letter - 'A'];
   }
   std::optional<double> word_if(char letter) {
     if (!letter || !has(letter)) return std::nullopt;
@@ -137,16 +137,16 @@ class Machine {
   // Issues.
   template <typename... Args>
   void report(DiagId id, char word, const Args&... args) {
-    issue({id, diag_message(id, args...), step_.request ? step_.request->source : 0, word, -1});
+    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, word, -1});
   }
   // A problem with the code being applied (located at its word).
   template <typename... Args>
   void report_code(DiagId id, const Args&... args) {
-    issue({id, diag_message(id, args...), step_.request ? step_.request->source : 0, 0, step_.code});
+    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, 0, block_.code});
   }
   void issue(const RuntimeIssue& i) {
     issues_.issue(i);
-    if (diag_info(i.id).severity == Severity::Error) step_.error = true;
+    if (diag_info(i.id).severity == Severity::Error) block_.error = true;
   }
 
   // The block cycle.
@@ -204,7 +204,7 @@ class Machine {
   std::string motion_name_;    // the code that set the motion group, for messages
   Cycle cycle_;
   std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola
-  Step step_;
+  BlockState block_;
 };
 
 }  // namespace ncc

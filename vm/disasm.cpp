@@ -71,8 +71,7 @@ std::string disassemble(const Module& m) {
     std::string operands;
     uint32_t at = pc + 1;
     for (char f : info.format) {
-      uint32_t v = 0;
-      for (int i = 0; i < operand_size(f); ++i) v |= uint32_t(m.code[at + i]) << (8 * i);
+      uint32_t v = read_operand(&m.code[at], operand_size(f));
       at += static_cast<uint32_t>(operand_size(f));
       if (!operands.empty()) operands += ", ";
       switch (f) {

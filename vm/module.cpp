@@ -254,12 +254,6 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
   return !r.failed();
 }
 
-uint32_t operand(const std::vector<uint8_t>& code, size_t at, int size) {
-  uint32_t v = 0;
-  for (int i = 0; i < size; ++i) v |= uint32_t(code[at + i]) << (8 * i);
-  return v;
-}
-
 }  // namespace
 
 uint32_t Module::source_of(uint32_t pc) const {
@@ -453,7 +447,7 @@ std::string verify(const Module& m) {
     size_t at = pc + 1;
     uint8_t space = 0;
     for (char f : info.format) {
-      uint32_t v = operand(code, at, operand_size(f));
+      uint32_t v = read_operand(&code[at], operand_size(f));
       at += static_cast<size_t>(operand_size(f));
       bool ok = true;
       switch (f) {
@@ -513,12 +507,12 @@ std::string verify(const Module& m) {
     uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
     std::vector<uint32_t> successors;
     switch (op) {
-      case Op::Jump: successors = {operand(code, pc + 1, 4)}; break;
+      case Op::Jump: successors = {read_operand(&code[pc + 1], 4)}; break;
       case Op::JumpIf:
       case Op::JumpIfNot:
       case Op::JumpSkip:
       case Op::Repeat:
-      case Op::EndRepeat: successors = {operand(code, pc + 1, 4), next}; break;
+      case Op::EndRepeat: successors = {read_operand(&code[pc + 1], 4), next}; break;
       case Op::Return:
       case Op::End: break;
       default: successors = {next};

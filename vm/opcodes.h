@@ -86,5 +86,11 @@ constexpr int operand_size(char f) {
 }
 // The size of a whole instruction with opcode `op`.
 int instruction_size(Op op);
+// An operand of `size` bytes at `p`, little-endian.
+inline uint32_t read_operand(const uint8_t* p, int size) {
+  uint32_t v = 0;
+  for (int i = 0; i < size; ++i) v |= uint32_t(p[i]) << (8 * i);
+  return v;
+}
 
 }  // namespace ncc::vm

@@ -15,8 +15,8 @@ constexpr size_t kMaxLoops = 64;
 constexpr double kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
 
-inline uint32_t u32_at(const uint8_t* p) { return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24; }
-inline uint16_t u16_at(const uint8_t* p) { return static_cast<uint16_t>(p[0] | p[1] << 8); }
+inline uint32_t u32_at(const uint8_t* p) { return read_operand(p, 4); }
+inline uint16_t u16_at(const uint8_t* p) { return static_cast<uint16_t>(read_operand(p, 2)); }
 
 // Stores keep the value type of the variable (NC-110's typed E parameters).
 bool convert(VarType type, double& v) {

@@ -1,6 +1,6 @@
 #include "format.h"
 
-#include <cmath>
+#include <charconv>
 
 namespace ncc::gost {
 
@@ -27,13 +27,11 @@ std::string_view strip_trailing_zeros(std::string_view s) {
   return s.substr(0, n);
 }
 
-// mantissa / 10^scale, correctly rounded: both are exact doubles for the digit
-// counts a format allows (at most 18 significant digits).
+// digits x 10^-scale, correctly rounded to the nearest double (from_chars).
 double scaled(std::string_view digits, int scale) {
-  digits = strip_leading_zeros(digits);
-  double mantissa = 0;
-  for (char c : digits) mantissa = mantissa * 10 + (c - '0');
-  double value = scale >= 0 ? mantissa / std::pow(10.0, scale) : mantissa * std::pow(10.0, -scale);
+  std::string text = fmt::format("{}e{}", digits.empty() ? "0" : digits, -scale);
+  double value = 0;
+  std::from_chars(text.data(), text.data() + text.size(), value);
   return value;
 }
 

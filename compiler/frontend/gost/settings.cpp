@@ -181,7 +181,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   if (auto codes = p.string_table("gost.unit_codes", diags)) {
     for (const auto& [code, unit] : *codes) {
       int number = -1;
-      if (code.size() == 3 && code[0] == 'G' && std::isdigit(code[1]) && std::isdigit(code[2]))
+      auto digit = [](char ch) { return ch >= '0' && ch <= '9'; };
+      if (code.size() == 3 && code[0] == 'G' && digit(code[1]) && digit(code[2]))
         number = (code[1] - '0') * 10 + (code[2] - '0');
       if (number < 0 || (unit != "mm" && unit != "inch")) {
         ok &= (p.report_value(diags, "gost.unit_codes", "maps codes like G71 to \"mm\" or \"inch\""), false);
