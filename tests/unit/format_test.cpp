@@ -213,6 +213,16 @@ TEST(Decode, DsImpliedRule) {
   EXPECT_DOUBLE_EQ(*p.value, 12.5);
 }
 
+TEST(Decode, LongNumbersRoundCorrectly) {
+  // 18 significant digits: more than a double holds exactly; the nearest double wins.
+  Result r = decode_word("X+099", "123456789.123456789", kDs);
+  ASSERT_TRUE(r.value);
+  EXPECT_EQ(*r.value, std::strtod("123456789.123456789", nullptr));
+  Result implied = decode_word("X+099", "123456789123456789", kImplied);
+  ASSERT_TRUE(implied.value);
+  EXPECT_EQ(*implied.value, std::strtod("123456789.123456789", nullptr));
+}
+
 TEST(Decode, NegativeZeroIsZero) {
   Result r = decode_word("X+053", "-0", kDs);
   ASSERT_TRUE(r.value);
