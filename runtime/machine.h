@@ -4,10 +4,7 @@
 // it and emits trace events.
 #pragma once
 
-#include <Eigen/Core>
-
 #include <array>
-#include <bitset>
 #include <optional>
 #include <string>
 #include <vector>
