@@ -122,6 +122,12 @@ Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
   return e;
 }
 
+void Machine::plane_event() {
+  Event e{EventKind::Plane};
+  e.plane = modal_.plane;
+  emit(e);
+}
+
 void Machine::emit(Event e) {
   e.source = block_.request ? block_.request->source : 0;
   trace_.event(e);
@@ -132,7 +138,7 @@ void Machine::move_to(const AxisValues& t) { machine_ = t; }
 FnCall Machine::current(FnGroup group) const {
   switch (group) {
     case FnGroup::Motion: return {modal_.motion};
-    case FnGroup::Plane: return {modal_.plane == 0 ? Fn::PlaneXY : modal_.plane == 1 ? Fn::PlaneZX : Fn::PlaneYZ};
+    case FnGroup::Plane: return {modal_.plane == kPlanes[1] ? Fn::PlaneZX : modal_.plane == kPlanes[2] ? Fn::PlaneYZ : Fn::PlaneXY};
     case FnGroup::Distance: return {modal_.absolute ? Fn::DistanceAbsolute : Fn::DistanceIncremental};
     case FnGroup::Units: return {modal_.inch ? Fn::UnitsInch : Fn::UnitsMm};
     case FnGroup::FeedMode:
@@ -204,8 +210,8 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PlaneXY:
     case Fn::PlaneZX:
     case Fn::PlaneYZ:
-      modal_.plane = call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2;
-      event(EventKind::Plane, modal_.plane);
+      modal_.plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
+      if (emit_events) plane_event();
       break;
     case Fn::DistanceAbsolute: modal_.absolute = true; break;
     case Fn::DistanceIncremental: modal_.absolute = false; break;
@@ -485,9 +491,9 @@ void Machine::finish() {
     emit(e);
   }
   if (block_.error) return;
-  uint64_t unused = block_.request->words->present & ~block_.used;
-  for (int slot = 0; slot < 26; ++slot)
-    if (unused & (uint64_t{1} << slot)) report(DiagId::WordUnused, static_cast<char>('A' + slot), std::string(1, static_cast<char>('A' + slot)));
+  std::bitset<kWordSlots> unused = block_.request->words->present & ~block_.used;
+  for (int slot = 0; slot < kWordSlots; ++slot)
+    if (unused[slot]) issue({DiagId::WordUnused, diag_message(DiagId::WordUnused, slot_name(slot)), block_.request->source, slot, -1});
 }
 
 void Machine::emit_reset(const Modal& before, const AxisValues& position_offset) {
@@ -497,7 +503,7 @@ void Machine::emit_reset(const Modal& before, const AxisValues& position_offset)
     emit(e);
   };
   if (before.inch != modal_.inch) changed(EventKind::Units, modal_.inch);
-  if (before.plane != modal_.plane) changed(EventKind::Plane, modal_.plane);
+  if (before.plane != modal_.plane) plane_event();
   if (before.feed_mode != modal_.feed_mode) changed(EventKind::FeedMode, modal_.feed_mode);
   if (before.constant_surface != modal_.constant_surface) changed(EventKind::SpindleMode, modal_.constant_surface);
   flush_compensation();
@@ -551,11 +557,10 @@ void Machine::linear(const AxisValues& t) {
 
 void Machine::arc(const AxisValues& t, bool clockwise) {
   if (!need_feed("circular interpolation", t)) return;
-  const int* axes = kPlaneAxes[modal_.plane];
-  const int u = axes[0], v = axes[1], w = axes[2];
+  const int u = modal_.plane.u, v = modal_.plane.v, w = modal_.plane.w;
   const char pu = kParameterOf[u], pv = kParameterOf[v], pw = kParameterOf[w];
   if (!has(pu) && !has(pv)) {
-    report(DiagId::ArcNoCentre, 0, clockwise ? "clockwise" : "counter-clockwise", kPlaneNames[modal_.plane],
+    report(DiagId::ArcNoCentre, 0, clockwise ? "clockwise" : "counter-clockwise", plane_name(modal_.plane),
            fmt::format("{} {}", pu, pv));
     move_to(t);
     return;
@@ -639,7 +644,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     return;
   }
   Event e = motion_event(EventKind::Arc, t);
-  e.n = modal_.plane;
+  e.plane = modal_.plane;
   AxisValues off = frame_offset(modal_.work_offset);
   e.centre[0] = to_program(centre.x() - off[u]);
   e.centre[1] = to_program(centre.y() - off[v]);
@@ -809,7 +814,7 @@ void Machine::set_position() {
 void Machine::cycle_registers() {
   // The cycle registers stay in force while the cycle is active (S-7.5); any block
   // may change them, the cycle runs only in blocks with a dimension word.
-  const char depth_letter = kAxisLetters[kPlaneAxes[modal_.plane][2]];
+  const char depth_letter = kAxisLetters[modal_.plane.w];
   if (has(depth_letter)) cycle_.depth = word(depth_letter);
   if (auto v = word_if(conv_.cycle_level_word)) cycle_.level = v;
   if (auto v = word_if(conv_.dwell_word)) cycle_.dwell = v;
@@ -819,7 +824,7 @@ void Machine::cycle_registers() {
 void Machine::cycle() {
   const CyclePattern& pattern = sem_.cycles[modal_.cycle];
   const std::string name = "canned cycle " + pattern.name;
-  const int d = kPlaneAxes[modal_.plane][2];  // the drilling axis: perpendicular to the plane
+  const int d = modal_.plane.w;  // the drilling axis: perpendicular to the plane
   const char depth_letter = kAxisLetters[d];
   cycle_registers();
   AxisValues hole = target();

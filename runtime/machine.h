@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <bitset>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,18 +17,17 @@
 
 namespace ncc {
 
-// The words of one block by slot ('A'..'Z' = 0..25); `present` marks those written.
+// The words of one block by slot (word_slots.h); `present` marks those written.
 struct BlockWords {
   std::array<double, kWordSlots> value{};
-  uint64_t present = 0;
+  std::bitset<kWordSlots> present;
 
-  bool has(char letter) const { return letter >= 'A' && letter <= 'Z' && (present & bit(letter)); }
+  bool has_slot(int slot) const { return slot >= 0 && slot < kWordSlots && present[slot]; }
   void set(int slot, double v) {
     value[slot] = v;
-    present |= uint64_t{1} << slot;
+    present.set(slot);
   }
-  void clear() { present = 0; }
-  static uint64_t bit(char letter) { return uint64_t{1} << (letter - 'A'); }
+  void clear() { present.reset(); }
 };
 
 struct BlockRequest {
@@ -37,13 +37,13 @@ struct BlockRequest {
   uint32_t source = 0;  // SourceMap::blocks index
 };
 
-// A problem found while running a block. `word` is the address it concerns (0 = the
+// A problem found while running a block. `slot` is the word it concerns (-1 = the
 // whole block); the driver turns it into a located diagnostic.
 struct RuntimeIssue {
   DiagId id;
   std::string message;
   uint32_t source = 0;
-  char word = 0;
+  int slot = -1;
   int code = -1;  // or the G/M code (ProgramSemantics::codes index) it concerns
 };
 
@@ -74,7 +74,7 @@ class Machine {
  private:
   struct Modal {
     Fn motion = Fn::MotionLinear;
-    int plane = 0;  // 0 XY, 1 ZX, 2 YZ
+    Plane plane;
     bool absolute = true;
     bool inch = false;
     int feed_mode = 1;  // 0 inverse time, 1 per minute, 2 per revolution
@@ -104,7 +104,7 @@ class Machine {
   // One block being executed.
   struct BlockState {
     const BlockRequest* request = nullptr;
-    uint64_t used = 0;  // words the block's functions read
+    std::bitset<kWordSlots> used;  // words the block's functions read
     bool error = false;
     bool dwell = false, dwell_code = false, set_position = false, end = false, end_information = false;
     Compensation compensation;  // in effect when the block started (or last reported)
@@ -116,10 +116,12 @@ class Machine {
   };
 
   // Words.
-  bool has(char letter) const { return block_.request->words->has(letter); }
-  double word(char letter) {
-    block_.used |= BlockWords::bit(letter);
-    return block_.request->words->value[letter - 'A'];
+  bool has(char letter) const { return has_slot(letter_slot(letter)); }
+  bool has_slot(int slot) const { return block_.request->words->has_slot(slot); }
+  double word(char letter) { return slot_value(letter_slot(letter)); }
+  double slot_value(int slot) {
+    block_.used.set(slot);
+    return block_.request->words->value[slot];
   }
   std::optional<double> word_if(char letter) {
     if (!letter || !has(letter)) return std::nullopt;
@@ -134,7 +136,7 @@ class Machine {
   // Issues.
   template <typename... Args>
   void report(DiagId id, char word, const Args&... args) {
-    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, word, -1});
+    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, word ? letter_slot(word) : -1, -1});
   }
   // A problem with the code being applied (located at its word).
   template <typename... Args>
@@ -155,6 +157,7 @@ class Machine {
   void action();
   void finish();
   void emit(Event e);
+  void plane_event();
 
   // Coordinates.
   AxisValues frame_offset(int work_offset) const;  // work offset + position offset, machine units

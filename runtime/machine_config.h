@@ -9,16 +9,24 @@
 
 namespace ncc {
 
-constexpr int kAxisCount = 9;  // X Y Z A B C U V W, LinuxCNC's order
+// X Y Z A B C U V W in LinuxCNC's order, then NC-110's further axes P Q D.
+constexpr int kAxisCount = 12;
 using AxisValues = std::array<double, kAxisCount>;
-constexpr std::string_view kAxisLetters = "XYZABCUVW";
+constexpr std::string_view kAxisLetters = "XYZABCUVWPQD";
 int axis_index(char letter);  // -1 if not an axis letter
 
-// The planes 0 XY, 1 ZX, 2 YZ: their in-plane axes (u, v) and the perpendicular axis w,
-// ordered so that u x v = +w (GOST 20999 S-9.2): "clockwise seen from +w" is then the
-// negative sense in (u, v). LinuxCNC orders its arcs' axes the same way.
-constexpr int kPlaneAxes[3][3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
-constexpr const char* kPlaneNames[3] = {"XY", "ZX", "YZ"};
+// A plane of interpolation: its abscissa u, ordinate v and the axis w along u x v
+// (-1 when no axis lies that way), so that "clockwise seen from +w" is the negative
+// sense in (u, v) (GOST 20999 S-9.2, NC-110 §2.8.1.4). LinuxCNC orders its arcs' axes
+// the same way.
+struct Plane {
+  int u = 0, v = 1, w = 2;
+  bool operator==(const Plane&) const = default;
+};
+// G17, G18, G19: XY, ZX, YZ.
+constexpr Plane kPlanes[3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
+// "XY", "ZU": the letters of abscissa and ordinate.
+std::string plane_name(const Plane& p);
 
 // Tools T selects; their length and radius are offsets, numbered by D/H (§3.3.5).
 struct ToolEntry {

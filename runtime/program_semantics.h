@@ -9,12 +9,9 @@
 #include <vector>
 
 #include "functions.h"
+#include "word_slots.h"
 
 namespace ncc {
-
-// Word slots: 'A'..'Z' are 0..25; dialects with other addresses map them onto the
-// free slots above.
-constexpr int kWordSlots = 64;
 
 // One G or M code as the program uses it, e.g. G81 -> cycle(0), M05 -> spindle.stop
 // + coolant.off, after the motion.

@@ -15,6 +15,8 @@ int axis_index(char letter) {
   return i == std::string_view::npos ? -1 : static_cast<int>(i);
 }
 
+std::string plane_name(const Plane& p) { return {kAxisLetters[p.u], kAxisLetters[p.v]}; }
+
 namespace {
 
 constexpr const char* kStopKinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
@@ -93,7 +95,7 @@ class TextSink final : public BufferedSink {
   std::string body(const Event& e) {
     switch (e.kind) {
       case EventKind::Units: return e.n ? "units inch" : "units mm";
-      case EventKind::Plane: return fmt::format("plane {}", kPlaneNames[e.n]);
+      case EventKind::Plane: return "plane " + plane_name(e.plane);
       case EventKind::FeedMode:
         return fmt::format("feed_mode {}", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
       case EventKind::FeedRate: return "feed_rate " + four_decimals(e.a);
@@ -104,12 +106,10 @@ class TextSink final : public BufferedSink {
       case EventKind::SpindleOrient: return "spindle orient " + four_decimals(e.a);
       case EventKind::Rapid: return "rapid " + position(e.pos);
       case EventKind::Linear: return "linear " + position(e.pos);
-      case EventKind::Arc: {
-        const int* axes = kPlaneAxes[e.n];
+      case EventKind::Arc:
         return fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", e.rotation > 0 ? "ccw" : "cw",
-                           kPlaneNames[e.n], position(e.pos), kAxisLetters[axes[0]], four_decimals(e.centre[0]),
-                           kAxisLetters[axes[1]], four_decimals(e.centre[1]), four_decimals(e.a), four_decimals(e.b));
-      }
+                           plane_name(e.plane), position(e.pos), kAxisLetters[e.plane.u], four_decimals(e.centre[0]),
+                           kAxisLetters[e.plane.v], four_decimals(e.centre[1]), four_decimals(e.a), four_decimals(e.b));
       case EventKind::Parabola:
         return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), four_decimals(e.control[0]),
                            four_decimals(e.control[1]), four_decimals(e.control[2]));
@@ -180,7 +180,7 @@ class JsonlSink final : public BufferedSink {
     auto str = [&](const char* key, std::string_view v) { s += fmt::format(R"(,"{}":"{}")", key, v); };
     switch (e.kind) {
       case EventKind::Units: str("units", e.n ? "inch" : "mm"); break;
-      case EventKind::Plane: str("plane", kPlaneNames[e.n]); break;
+      case EventKind::Plane: str("plane", plane_name(e.plane)); break;
       case EventKind::FeedMode:
         str("mode", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
         break;
@@ -196,11 +196,10 @@ class JsonlSink final : public BufferedSink {
       case EventKind::OperatorMove: pos(e, s); break;
       case EventKind::Arc: {
         pos(e, s);
-        const int* axes = kPlaneAxes[e.n];
-        str("plane", kPlaneNames[e.n]);
+        str("plane", plane_name(e.plane));
         str("direction", e.rotation > 0 ? "ccw" : "cw");
-        s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[axes[0]], json_number(e.centre[0]),
-                         kAxisLetters[axes[1]], json_number(e.centre[1]));
+        s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[e.plane.u], json_number(e.centre[0]),
+                         kAxisLetters[e.plane.v], json_number(e.centre[1]));
         num("radius", e.a);
         num("sweep", e.b);
         s += fmt::format(R"(,"rotation":{})", e.rotation);
@@ -254,11 +253,13 @@ class CanonSink final : public BufferedSink {
   void event(const Event& e) override {
     switch (e.kind) {
       case EventKind::Units: line(e.n ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)"); break;
-      case EventKind::Plane: {
-        constexpr const char* planes[] = {"XY", "XZ", "YZ"};
-        line(fmt::format("SELECT_PLANE(CANON_PLANE_{})", planes[e.n]));
+      case EventKind::Plane:
+        // LinuxCNC names the ZX plane XZ and has no others.
+        if (e.plane == kPlanes[0] || e.plane == kPlanes[1] || e.plane == kPlanes[2])
+          line(fmt::format("SELECT_PLANE(CANON_PLANE_{})", e.plane == kPlanes[0] ? "XY" : e.plane == kPlanes[1] ? "XZ" : "YZ"));
+        else
+          line(fmt::format("COMMENT(\"ncc: plane {}\")", plane_name(e.plane)));
         break;
-      }
       case EventKind::FeedMode: line(fmt::format("SET_FEED_MODE(0, {})", e.n == 2 ? 1 : 0)); break;
       case EventKind::FeedRate: line(fmt::format("SET_FEED_RATE({})", canon_number(e.a))); break;
       // LinuxCNC passes the maximum spindle speed for constant surface speed, 1e30
@@ -272,13 +273,11 @@ class CanonSink final : public BufferedSink {
       case EventKind::SpindleOrient: line(fmt::format("ORIENT_SPINDLE(0, {}, 0)", canon_number(e.a))); break;
       case EventKind::Rapid: line(fmt::format("STRAIGHT_TRAVERSE({})", axes_list(e.pos, 0))); break;
       case EventKind::Linear: line(fmt::format("STRAIGHT_FEED({})", axes_list(e.pos, 0))); break;
-      case EventKind::Arc: {
-        const int* a = kPlaneAxes[e.n];
-        line(fmt::format("ARC_FEED({}, {}, {}, {}, {}, {}, {})", canon_number(e.pos[a[0]]), canon_number(e.pos[a[1]]),
-                         canon_number(e.centre[0]), canon_number(e.centre[1]), e.rotation, canon_number(e.pos[a[2]]),
-                         axes_list(e.pos, 3)));
+      case EventKind::Arc:
+        line(fmt::format("ARC_FEED({}, {}, {}, {}, {}, {}, {})", canon_number(e.pos[e.plane.u]),
+                         canon_number(e.pos[e.plane.v]), canon_number(e.centre[0]), canon_number(e.centre[1]), e.rotation,
+                         canon_number(e.plane.w >= 0 ? e.pos[e.plane.w] : 0), axes_list(e.pos, 3)));
         break;
-      }
       case EventKind::Parabola:
         line(fmt::format("PARABOLA_FEED({}, {}, {}, {})", canon_number(e.control[0]), canon_number(e.control[1]),
                          canon_number(e.control[2]), axes_list(e.pos, 0)));
@@ -345,7 +344,7 @@ class CanonSink final : public BufferedSink {
   // LinuxCNC prints X Y Z A B C (and U V W on machines that have them).
   std::string axes_list(const AxisValues& p, int from) const {
     std::string s;
-    int last = nine_ ? kAxisCount : 6;
+    int last = nine_ ? 9 : 6;
     for (int i = from; i < last; ++i) {
       if (!s.empty()) s += ", ";
       s += canon_number(p[i]);

@@ -39,7 +39,7 @@ struct SourceMap {
 
 enum class EventKind : uint8_t {
   Units,             // n: 0 mm, 1 inch
-  Plane,             // n: 0 XY, 1 ZX, 2 YZ
+  Plane,             // plane
   FeedMode,          // n: 0 inverse time, 1 per minute, 2 per revolution
   FeedRate,          // a: rate in program units
   SpindleMode,       // n: 0 rpm, 1 constant surface speed
@@ -49,7 +49,7 @@ enum class EventKind : uint8_t {
   SpindleOrient,     // a: angle
   Rapid,             // pos
   Linear,            // pos
-  Arc,               // pos = end; n = plane; centre = (u, v); rotation; a = radius; b = sweep (degrees)
+  Arc,               // pos = end; plane; centre = (u, v); rotation; a = radius; b = sweep (degrees)
   Parabola,          // pos = end; control = tangent intersection point (X Y Z)
   Thread,            // pos = end; a = pitch; b = pitch change per revolution
   Dwell,             // a: seconds
@@ -79,6 +79,7 @@ struct Event {
   int n = 0;
   double a = 0, b = 0;
   int rotation = 0;
+  Plane plane;
   AxisValues pos{};
   double centre[2] = {0, 0};
   double control[3] = {0, 0, 0};

@@ -237,7 +237,7 @@ bool axis_values(const Profile& p, const std::string& key, AxisValues& out, Diag
   for (const auto& [letter, value] : *table) {
     int axis = letter.size() == 1 ? axis_index(letter[0]) : -1;
     if (axis < 0) {
-      p.report_value(diags, key + "." + letter, "is not an axis (X Y Z A B C U V W)");
+      p.report_value(diags, key + "." + letter, "is not an axis (X Y Z A B C U V W P Q D)");
       continue;
     }
     out[axis] = value;

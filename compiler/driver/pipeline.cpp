@@ -24,7 +24,7 @@ class IssueReporter final : public RuntimeIssues {
       : s_(s), m_(m), file_ids_(std::move(file_ids)), dry_(dry) {}
 
   void issue(const RuntimeIssue& i) override {
-    if (!seen_.insert({static_cast<int>(i.id), i.source, i.word, i.code}).second) return;
+    if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code}).second) return;
     // In a dry run a block the compiler already rejected would only repeat its errors.
     if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
     SourceRange range;
@@ -32,10 +32,10 @@ class IssueReporter final : public RuntimeIssues {
       const SourceBlock& b = m_.source_map.blocks[i.source];
       uint32_t file = b.file < file_ids_.size() ? file_ids_[b.file] : 0;
       range = {file, b.line, b.col, b.end_line, b.end_col};
-      if (i.word || i.code >= 0) {
+      if (i.slot >= 0 || i.code >= 0) {
         for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
           const WordPosition& p = m_.source_map.words[w];
-          if (i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.word - 'A')) {
+          if (i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.slot)) {
             range = {file, p.line, p.col, p.line, p.end_col};
             break;
           }
@@ -50,7 +50,7 @@ class IssueReporter final : public RuntimeIssues {
   const vm::Module& m_;
   std::vector<uint32_t> file_ids_;
   bool dry_;
-  std::set<std::tuple<int, uint32_t, char, int>> seen_;
+  std::set<std::tuple<int, uint32_t, int, int>> seen_;
 };
 
 std::optional<std::string> read_file(const std::string& path) {

@@ -43,8 +43,6 @@ struct Expr {
   SourceRange range;
 };
 
-inline int slot_of(char letter) { return letter >= 'A' && letter <= 'Z' ? letter - 'A' : -1; }
-
 enum class WordKind : uint8_t {
   Parameter,    // a value the machine action reads: X, F, S...
   Code,         // a G or M code: `code` indexes Program::semantics.codes

@@ -138,7 +138,7 @@ TEST(Verifier, RejectsEachKindOfUnsoundCode) {
   EXPECT_NE(verify_code({kStep, op(Op::Jump), 99, 0, 0, 0, op(Op::End)}), "");     // jump outside the code
   EXPECT_NE(verify_code({kStep, op(Op::Nop)}), "");                                // runs off the end
   EXPECT_NE(verify_code({kStep, op(Op::Code), 0, 0, op(Op::End)}), "");            // no such G/M code
-  EXPECT_NE(verify_code({kStep, op(Op::Word), 64, 0, 0, 0, 0, op(Op::End)}), "");  // no such word slot
+  EXPECT_NE(verify_code({kStep, op(Op::Word), kWordSlots, 0, 0, 0, 0, op(Op::End)}), "");  // no such word slot
   EXPECT_NE(verify_code({kStep, op(Op::Load), 0, 0, 0, 0, 0, op(Op::End)}), "");   // no such variable space
   EXPECT_NE(verify_code({kStep, op(Op::Call1), 6, op(Op::End)}), "");              // atan2 takes two arguments
   EXPECT_NE(verify_code({op(Op::Nop), kStep, op(Op::End)}), "");                   // the entry is not a Step

@@ -85,13 +85,13 @@ TEST(Runtime, ArcCentreRadiusAndSweepInEachPlane) {
   r.block({"G02"}, {{'X', 10}, {'Z', 0}, {'I', 0}, {'K', -10}});
   auto arcs = r.of(EventKind::Arc);
   ASSERT_EQ(arcs.size(), 2u);
-  EXPECT_EQ(arcs[0].n, 0);
+  EXPECT_EQ(arcs[0].plane, kPlanes[0]);
   EXPECT_DOUBLE_EQ(arcs[0].centre[0], 0);
   EXPECT_DOUBLE_EQ(arcs[0].centre[1], 0);
   EXPECT_DOUBLE_EQ(arcs[0].a, 10);
   EXPECT_NEAR(arcs[0].b, 90, 1e-12);
   EXPECT_EQ(arcs[0].rotation, 1);
-  EXPECT_EQ(arcs[1].n, 1);
+  EXPECT_EQ(arcs[1].plane, kPlanes[1]);
   EXPECT_NEAR(arcs[1].b, 270, 1e-12);
   EXPECT_EQ(arcs[1].rotation, -1);
   EXPECT_TRUE(r.issues.list.empty());
@@ -197,7 +197,7 @@ TEST(Runtime, ToolNumbersAreWholeNumbers) {
   EXPECT_EQ(r.block({}, {{'T', 1.5}}), BlockResult::Error);
   ASSERT_EQ(r.issues.list.size(), 1u);
   EXPECT_EQ(r.issues.list[0].id, DiagId::DomainError);
-  EXPECT_EQ(r.issues.list[0].word, 'T');
+  EXPECT_EQ(r.issues.list[0].slot, letter_slot('T'));
 }
 
 TEST(Runtime, UnusedWordIsAWarning) {
@@ -205,7 +205,7 @@ TEST(Runtime, UnusedWordIsAWarning) {
   r.block({"G01"}, {{'X', 1}, {'I', 3}, {'F', 100}});
   ASSERT_EQ(r.issues.list.size(), 1u);
   EXPECT_EQ(r.issues.list[0].id, DiagId::WordUnused);
-  EXPECT_EQ(r.issues.list[0].word, 'I');
+  EXPECT_EQ(r.issues.list[0].slot, letter_slot('I'));
 }
 
 }  // namespace

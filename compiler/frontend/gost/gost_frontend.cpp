@@ -469,7 +469,7 @@ antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
   block_.main_block = main;
   ir::Word w;
   w.kind = ir::WordKind::BlockNumber;
-  w.slot = static_cast<uint8_t>(ir::slot_of('N'));
+  w.slot = static_cast<uint8_t>(letter_slot('N'));
   w.address = address;
   w.text = ctx->getText().substr(1);
   w.value = program_.number(*value, r);
@@ -496,7 +496,7 @@ antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
   SourceRange r = range(ctx);
   WrittenNumber n = written_number(ctx->sign(), ctx->number(), letter);
   ir::Word w;
-  w.slot = static_cast<uint8_t>(ir::slot_of(letter));
+  w.slot = static_cast<uint8_t>(letter_slot(letter));
   w.address = std::string(1, letter);
   w.text = ctx->getText().substr(1);
   w.range = r;
@@ -530,7 +530,7 @@ antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
       diags_.report(DiagId::ToolSplitZero, r, "T" + w.text, tool, offset, s_.tool_digits + s_.offset_digits);
     program_.exprs[w.value].number = tool;
     ir::Word d = w;
-    d.slot = static_cast<uint8_t>(ir::slot_of('D'));
+    d.slot = static_cast<uint8_t>(letter_slot('D'));
     d.value = program_.number(offset, r);
     d.address = "D";
     d.text = std::to_string(offset);
