@@ -40,6 +40,8 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
 void Machine::power_on() {
   machine_ = config_.initial_position;
   tool_loaded_ = 0;
+  block_skip_ = config_.block_skip;
+  optional_stop_ = config_.optional_stop;
   reset_state();
 }
 
@@ -271,7 +273,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     // Stops come after everything else of the block (Table 8: "after the commands of
     // the block are executed").
     case Fn::ProgramStop: block_.stop = 1; break;
-    case Fn::ProgramOptionalStop: block_.stop = config_.optional_stop ? 2 : 3; break;
+    case Fn::ProgramOptionalStop: block_.stop = optional_stop_ ? 2 : 3; break;
     case Fn::ProgramEnd: block_.end = true; break;
     case Fn::ProgramEndInformation: block_.end_information = true; break;
     case Fn::SpindleCw:
@@ -527,6 +529,13 @@ void Machine::end_of_unit(uint32_t source) {
 
 void Machine::comment(const std::string& text, uint32_t source) {
   Event e{EventKind::Comment};
+  e.text = text;
+  e.source = source;
+  trace_.event(e);
+}
+
+void Machine::message(const std::string& text, uint32_t source) {
+  Event e{EventKind::Message};
   e.text = text;
   e.source = source;
   trace_.event(e);

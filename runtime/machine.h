@@ -6,13 +6,16 @@
 
 #include <array>
 #include <bitset>
+#include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "machine_config.h"
 #include "program_semantics.h"
 #include "support/diagnostics.h"
+#include "system_vars.h"
 #include "trace.h"
 
 namespace ncc {
@@ -69,7 +72,18 @@ class Machine {
   void end_of_unit(uint32_t source);
   // Operator text of a block (a comment), shown when the block runs.
   void comment(const std::string& text, uint32_t source);
+  // A message the program shows the operator (NC-110 DIS).
+  void message(const std::string& text, uint32_t source);
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
+
+  // The block-skip switch: '/' blocks are skipped while it is on.
+  bool block_skip() const { return block_skip_; }
+  // System variables (system_vars.def), read and written by the program; a bad
+  // value or a read-only variable is reported at `source`.
+  std::optional<double> system(SysRef ref, uint32_t source);
+  bool set_system(SysRef ref, double value, uint32_t source);
+  // Values the last block measured, by index of the result space (NC-110 G72-G74).
+  std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
 
  private:
   struct Modal {
@@ -205,6 +219,14 @@ class Machine {
   Cycle cycle_;
   std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola
   BlockState block_;
+
+  // Switches and system variables.
+  bool block_skip_ = false;
+  bool optional_stop_ = false;
+  double clock_ = 0;                   // seconds of the run so far
+  std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()
+  std::vector<std::pair<uint32_t, double>> results_;
+  std::string system_name(SysRef ref) const;
 };
 
 }  // namespace ncc

@@ -41,6 +41,8 @@ enum class AngleUnit : uint8_t { Degree, Radian, Revolution };
 
 // Word conventions: which address carries what, and how to read it. Addresses are
 // letters; 0 means "none".
+constexpr uint8_t kNoSpace = 255;
+
 struct Conventions {
   ArcCentre arc_centre = ArcCentre::Incremental;
   HelixLead helix_lead = HelixLead::PerRadian;
@@ -59,7 +61,9 @@ struct Conventions {
   double lead_resolution = 0;
   bool m06_stops_spindle = false;
   std::string tool_offset_axes = "Z";
-  std::string axes = "XYZ";  // the machine's axes, in canonical order XYZABCUVW
+  std::string axes = "XYZ";  // the machine's axes, in canonical order XYZABCUVWPQD
+  uint8_t max_call_depth = 0;  // subprogram calls that may be open at once; 0 = the VM's limit
+  uint8_t result_space = kNoSpace;  // the variable space measured values go to
 };
 
 struct ProgramSemantics {
@@ -68,6 +72,7 @@ struct ProgramSemantics {
   std::vector<CyclePattern> cycles;
   std::vector<uint16_t> power_on;  // indices into codes, applied in order
   Conventions conventions;
+  std::vector<std::string> system_names;  // the dialect's name of each SysVar ("TMR"), for messages
 };
 
 }  // namespace ncc

@@ -135,6 +135,7 @@ class TextSink final : public BufferedSink {
       case EventKind::PathMode:
         return e.n == 0 ? "path accelerate" : e.n == 1 ? "path decelerate" : "path tapping";
       case EventKind::Comment: return "comment " + quoted(e.text);
+      case EventKind::Message: return "message " + quoted(e.text);
       case EventKind::Stop: return fmt::format("stop {}", kStopKinds[e.n]);
       case EventKind::OperatorMove: return "operator_move " + position(e.pos);
       case EventKind::End: return e.n ? "end information" : "end program";
@@ -165,7 +166,7 @@ class JsonlSink final : public BufferedSink {
         "units", "plane", "feed_mode", "feed_rate", "spindle_mode", "spindle_speed", "spindle_on", "spindle_stop",
         "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
         "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
-        "spindle_hold", "path", "comment", "stop", "operator_move", "end"};
+        "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end"};
     static_assert(std::size(names) == static_cast<size_t>(EventKind::End) + 1, "one name per event kind");
     return names[static_cast<int>(e.kind)];
   }
@@ -231,7 +232,8 @@ class JsonlSink final : public BufferedSink {
       case EventKind::Override:
       case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
       case EventKind::PathMode: str("mode", e.n == 0 ? "accelerate" : e.n == 1 ? "decelerate" : "tapping"); break;
-      case EventKind::Comment: s += R"(,"text":)" + quoted(e.text); break;
+      case EventKind::Comment:
+      case EventKind::Message: s += R"(,"text":)" + quoted(e.text); break;
       case EventKind::Stop: str("kind", kStopKinds[e.n]); break;
       case EventKind::End: str("kind", e.n ? "information" : "program"); break;
       case EventKind::SpindleStop: break;
@@ -320,6 +322,7 @@ class CanonSink final : public BufferedSink {
         line(e.n ? "ENABLE_SPEED_OVERRIDE(0)" : "DISABLE_SPEED_OVERRIDE(0)");
         break;
       case EventKind::Comment: line(fmt::format("COMMENT({})", quoted(e.text))); break;
+      case EventKind::Message: line(fmt::format("MESSAGE({})", quoted(e.text))); break;
       case EventKind::Stop:
         if (e.n == 3) line("COMMENT(\"ncc: manual retract\")");
         line(e.n == 1 || e.n == 2 ? "OPTIONAL_PROGRAM_STOP()" : "PROGRAM_STOP()");

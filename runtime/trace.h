@@ -65,6 +65,7 @@ enum class EventKind : uint8_t {
   SpindleHold,       // n: 1 on, 0 off
   PathMode,          // n: 0 accelerate, 1 decelerate, 2 tapping
   Comment,           // text
+  Message,           // text: an operator message the program shows (NC-110 DIS)
   Stop,              // n: 0 program stop, 1 optional stop taken, 2 optional stop skipped, 3 manual retract
   OperatorMove,      // pos: where the operator left the tool (manual retract)
   End,               // n: 0 end of program, 1 end of information

@@ -7,16 +7,16 @@
 #include "module.h"
 #include "opcodes.h"
 #include "stdlib/builtins.h"
+#include "runtime/system_vars.h"
 #include "support/diagnostics.h"
 
 namespace ncc::vm {
 
 namespace {
 
+constexpr std::string_view kFormatNames[] = {"bit", "byte", "int16", "int32", "float", "double"};
+constexpr std::string_view kTypeNames[] = {"long_real", "real", "byte", "integer", "long"};
 
-std::string slot_name(uint32_t slot) {
-  return slot < 26 ? std::string(1, static_cast<char>('A' + slot)) : fmt::format("#{}", slot);
-}
 
 std::string source_text(const Module& m, uint32_t source) {
   if (source >= m.source_map.blocks.size()) return "?";
@@ -84,6 +84,15 @@ std::string disassemble(const Module& m) {
         case 'v': operands += m.spaces[v].name; break;
         case 'i': operands += fmt::format("[{}]", v); break;
         case 'b': operands += builtin_info(static_cast<Builtin>(v)).name; break;
+        case 'f': operands += std::string(kFormatNames[v]); break;
+        case 't': operands += std::string(kTypeNames[v]); break;
+        case 'n': operands += fmt::format("{}", v); break;
+        case 'y': {
+          SysRef ref = SysRef::unpack(static_cast<uint16_t>(v));
+          operands += std::string(sys_name(ref.var));
+          if (sys_indices(ref.var) > 1) operands += fmt::format("[{}]", ref.index);
+          break;
+        }
       }
     }
     out += fmt::format("{:5}  {:<10}{}\n", pc, info.name, operands);

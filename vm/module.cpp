@@ -6,6 +6,7 @@
 #include <map>
 
 #include "opcodes.h"
+#include "runtime/system_vars.h"
 #include "stdlib/builtins.h"
 #include "support/bytes.h"
 #include "support/text.h"
@@ -56,6 +57,8 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(c.m06_stops_spindle);
   w.str(c.tool_offset_axes);
   w.str(c.axes);
+  w.u8(c.max_call_depth);
+  w.u8(c.result_space);
   w.u32(static_cast<uint32_t>(s.codes.size()));
   for (const CodeDesc& code : s.codes) {
     w.str(code.name);
@@ -77,6 +80,8 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   }
   w.u32(static_cast<uint32_t>(s.power_on.size()));
   for (uint16_t i : s.power_on) w.u16(i);
+  w.u32(static_cast<uint32_t>(s.system_names.size()));
+  for (const std::string& name : s.system_names) w.str(name);
 }
 
 void write_sources(ByteWriter& w, const SourceMap& m) {
@@ -138,6 +143,8 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.m06_stops_spindle = r.u8();
   c.tool_offset_axes = r.str();
   c.axes = r.str();
+  c.max_call_depth = r.u8();
+  c.result_space = r.u8();
   uint32_t n = 0;
   if (!ok || !count(r, 10, n)) return false;
   s.codes.resize(n);
@@ -164,6 +171,9 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   if (!count(r, 2, n)) return false;
   s.power_on.resize(n);
   for (uint16_t& i : s.power_on) i = r.u16();
+  if (!count(r, 4, n) || n > static_cast<uint32_t>(SysVar::Count)) return false;
+  s.system_names.resize(n);
+  for (std::string& name : s.system_names) name = r.str();
   return !r.failed();
 }
 
@@ -235,11 +245,13 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       e.pc = r.u32();
     }
   } else if (t == kVars) {
-    if (!count(r, 12, n)) return false;
+    if (!count(r, 21, n)) return false;
     m.spaces.resize(n);
     for (VarSpace& s : m.spaces) {
       s.name = r.str();
       s.size = r.u32();
+      s.memory = r.u8();
+      s.limit = r.f64();
       uint32_t ranges = 0;
       if (!count(r, 5, ranges)) return false;
       s.types.resize(ranges);
@@ -300,6 +312,8 @@ std::string write_module(const Module& m) {
   for (const VarSpace& s : m.spaces) {
     vars.str(s.name);
     vars.u32(s.size);
+    vars.u8(s.memory);
+    vars.f64(s.limit);
     vars.u32(static_cast<uint32_t>(s.types.size()));
     for (const VarSpace::Range& r : s.types) {
       vars.u32(r.first);
@@ -402,6 +416,7 @@ std::string verify(const Module& m) {
   // Names reach terminals and messages: no control characters.
   std::vector<const std::string*> names = {&m.dialect, &m.profile_name, &s.dialect};
   for (const CodeDesc& code : s.codes) names.push_back(&code.name);
+  for (const std::string& name : s.system_names) names.push_back(&name);
   for (const CyclePattern& p : s.cycles) names.push_back(&p.name);
   for (const Entry& e : m.entries) names.push_back(&e.name);
   for (const VarSpace& v : m.spaces) names.push_back(&v.name);
@@ -420,8 +435,13 @@ std::string verify(const Module& m) {
   for (uint16_t i : s.power_on)
     if (i >= s.codes.size()) return fmt::format("power-on state names code {} of {}", i, s.codes.size());
   uint64_t variables = 0;
-  for (const VarSpace& space : m.spaces) variables += space.size;
+  for (const VarSpace& space : m.spaces) {
+    variables += space.size;
+    if (!(space.limit >= 0 && std::isfinite(space.limit))) return fmt::format("space {} has a bad limit", space.name);
+  }
   if (variables > kMaxVariables) return fmt::format("the variable spaces hold more than {} values", kMaxVariables);
+  if (c.result_space != kNoSpace && (c.result_space >= m.spaces.size() || m.spaces[c.result_space].memory))
+    return "the space for measured values is not a space of numbered variables";
 
   // Source map.
   const SourceMap& map = m.source_map;
@@ -437,6 +457,7 @@ std::string verify(const Module& m) {
   const std::vector<uint8_t>& code = m.code;
   std::vector<bool> boundary(code.size() + 1, false);
   std::vector<std::pair<uint32_t, uint32_t>> jumps;  // (pc, target)
+  std::vector<uint32_t> range_ends;                   // second targets of CallRange
   for (size_t pc = 0; pc < code.size();) {
     boundary[pc] = true;
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
@@ -446,7 +467,10 @@ std::string verify(const Module& m) {
     if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info.name, pc);
     size_t at = pc + 1;
     uint8_t space = 0;
-    for (char f : info.format) {
+    // Numbered variables go through Load/Store, memories through the others.
+    const bool wants_memory = op != Op::Load && op != Op::LoadX && op != Op::Store && op != Op::StoreX;
+    for (size_t i = 0; i < info.format.size(); ++i) {
+      const char f = info.format[i];
       uint32_t v = read_operand(&code[at], operand_size(f));
       at += static_cast<size_t>(operand_size(f));
       bool ok = true;
@@ -456,13 +480,23 @@ std::string verify(const Module& m) {
         case 'c': ok = v < s.codes.size(); break;
         case 'w': ok = v < kWordSlots; break;
         case 'e': ok = v < m.entries.size(); break;
-        case 'v': ok = v < m.spaces.size(); space = static_cast<uint8_t>(v); break;
+        case 'v':
+          ok = v < m.spaces.size() && m.spaces[v].memory == wants_memory;
+          space = static_cast<uint8_t>(v);
+          break;
         case 'i': ok = v < m.spaces[space].size; break;
         case 'b':
           ok = v < static_cast<uint32_t>(Builtin::Count) &&
                builtin_info(static_cast<Builtin>(v)).arity == (op == Op::Call1 ? 1 : 2);
           break;
-        case 'j': jumps.emplace_back(static_cast<uint32_t>(pc), v); break;
+        case 'f': ok = v < static_cast<uint32_t>(MemFormat::Count); break;
+        case 't': ok = v < static_cast<uint32_t>(VarType::Count); break;
+        case 'n': ok = v > 0; break;
+        case 'y': ok = SysRef::unpack(static_cast<uint16_t>(v)).valid(); break;
+        case 'j':
+          if (op == Op::CallRange && i == 1) range_ends.push_back(v);
+          else jumps.emplace_back(static_cast<uint32_t>(pc), v);
+          break;
       }
       if (!ok) return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
     }
@@ -478,6 +512,9 @@ std::string verify(const Module& m) {
   }
   for (const Entry& e : m.entries)
     if (!at_step(e.pc)) return fmt::format("entry point {} does not start with a Step", printable(e.name));
+  for (uint32_t end : range_ends)
+    if (!at_boundary(end) || code[end] != static_cast<uint8_t>(Op::RangeEnd))
+      return fmt::format("a range ends at {}, which is not a RangeEnd", end);
   for (size_t i = 0; i < m.lines.size(); ++i) {
     if (!at_boundary(m.lines[i].pc)) return "the line table points between instructions";
     if (i > 0 && m.lines[i].pc <= m.lines[i - 1].pc) return "the line table is not in code order";
@@ -502,7 +539,7 @@ std::string verify(const Module& m) {
     if (d < info.pop) return fmt::format("{} at {} pops more values than the stack holds", info.name, pc);
     d = d - info.pop + info.push;
     if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
-    if ((op == Op::Return || op == Op::End) && d != 0)
+    if ((op == Op::Return || op == Op::End || op == Op::CallRange || op == Op::RangeEnd) && d != 0)
       return fmt::format("{} at {} leaves {} values on the stack", info.name, pc, d);
     uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
     std::vector<uint32_t> successors;
@@ -512,7 +549,8 @@ std::string verify(const Module& m) {
       case Op::JumpIfNot:
       case Op::JumpSkip:
       case Op::Repeat:
-      case Op::EndRepeat: successors = {read_operand(&code[pc + 1], 4), next}; break;
+      case Op::EndRepeat:
+      case Op::CallRange: successors = {read_operand(&code[pc + 1], 4), next}; break;
       case Op::Return:
       case Op::End: break;
       default: successors = {next};

@@ -3,14 +3,21 @@
 // Code is a byte string. Each instruction is an opcode byte followed by its
 // operands, little-endian, as its format says:
 //   k  u32  index into the number constants      s  u32  index into the strings
-//   c  u16  index into the program's G/M codes   w  u8   word slot ('A'..'Z' = 0..25)
+//   c  u16  index into the program's codes        w  u8   word slot (runtime/word_slots.h)
 //   j  u32  code offset of an instruction         e  u16  index into the entry points
 //   v  u8   variable space                        i  u32  variable index
-//   b  u8   builtin function (stdlib/builtins.h)
+//   b  u8   builtin function (stdlib/builtins.h)  f  u8   memory format (variables.h)
+//   n  u8   a count                               t  u8   value type (variables.h)
+//   y  u16  system variable: its number << 8 | its index (runtime/system_vars.def)
 // `pop` and `push` are the fixed stack effects the verifier checks.
 //
 // A machine block is built up and then run: CODE and WORD/WORDPOP fill the pending
-// block, EXEC hands it to the motion runtime and clears it.
+// block, EXEC hands it to the motion runtime and clears it. An operator message is
+// built up by SHOW* and shown by MESSAGE.
+//
+// Frames: CALLENTRY calls an entry point, RETURN comes back. CALLRANGE runs the code
+// from one place to a RANGEEND (NC-110 EPP) and comes back after it; a range does
+// not run inside another, and a jump out of it ends it.
 #pragma once
 
 #include <cstdint>
@@ -47,18 +54,33 @@ namespace ncc::vm {
   X(Jump, "j", 0, 0, "go to j")                                                                \
   X(JumpIfNot, "j", 1, 0, "pop; go to j if it is 0")                                           \
   X(JumpIf, "j", 1, 0, "pop; go to j if it is not 0")                                          \
-  X(JumpSkip, "j", 0, 0, "go to j if the block-skip switch is on")                             \
+  X(JumpSkip, "j", 0, 0, "go to j if the block-skip switch of the runtime is on")              \
   X(Step, "", 0, 0, "count one executed block against --max-steps")                            \
   X(Code, "c", 0, 0, "add G/M code c to the pending block")                                    \
   X(Word, "wk", 0, 0, "set word w of the pending block to numbers[k]")                         \
   X(WordPop, "w", 1, 0, "pop the value of word w of the pending block")                        \
   X(Exec, "", 0, 0, "run the pending block on the motion runtime, then clear it")              \
   X(Comment, "s", 0, 0, "show strings[s] to the operator")                                     \
-  X(Repeat, "j", 1, 0, "pop a count; open a repeat loop, or go to j if the count is below 1")  \
+  X(Repeat, "jk", 1, 0, "pop a count 0..numbers[k]; open a repeat loop, or go to j if it is 0") \
   X(EndRepeat, "j", 0, 0, "count down the innermost repeat loop; go to j while it runs")       \
+  X(Unloop, "n", 0, 0, "close the n innermost repeat loops (a jump out of their bodies)")      \
   X(CallEntry, "e", 0, 0, "call entry point e")                                                \
+  X(CallRange, "jj", 0, 0, "run the code from j1 to the RANGEEND at j2, then come back")      \
+  X(RangeEnd, "", 0, 0, "the end of a range: come back if the innermost frame runs it")       \
   X(Return, "", 0, 0, "return from a call")                                                    \
-  X(End, "", 0, 0, "end of the program unit")
+  X(End, "", 0, 0, "end of the program unit")                                                  \
+  X(LoadMem, "vf", 1, 1, "pop an index; push the value of format f there in memory v")        \
+  X(StoreMem, "vf", 2, 0, "pop a value, then an index; store it in format f in memory v")     \
+  X(StoreText, "vs", 1, 0, "pop a byte index; write the bytes of strings[s] there in memory v") \
+  X(CopyText, "vvn", 2, 0, "pop a source, then a target byte index; copy n bytes v2 -> v1")   \
+  X(EqText, "vs", 1, 1, "pop a byte index; 1 if memory v holds the bytes of strings[s] there") \
+  X(EqMem, "vvn", 2, 1, "pop two byte indices; 1 if their n bytes (memories v1, v2) are equal") \
+  X(GetSys, "y", 0, 1, "push system variable y of the runtime")                                \
+  X(SetSys, "y", 1, 0, "pop a value into system variable y of the runtime")                    \
+  X(Show, "s", 0, 0, "append strings[s] to the pending message")                               \
+  X(ShowValue, "t", 1, 0, "pop a value; append it to the pending message as type t shows")     \
+  X(ShowText, "vn", 1, 0, "pop a byte index; append n bytes of memory v to the pending message") \
+  X(Message, "", 0, 0, "show the pending message to the operator, then clear it")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,
@@ -80,8 +102,8 @@ const OpInfo& op_info(Op op);
 constexpr int operand_size(char f) {
   switch (f) {
     case 'k': case 's': case 'j': case 'i': return 4;
-    case 'c': case 'e': return 2;
-    default: return 1;  // w v b
+    case 'c': case 'e': case 'y': return 2;
+    default: return 1;  // w v b f n t
   }
 }
 // The size of a whole instruction with opcode `op`.

@@ -1,5 +1,6 @@
-// Variable spaces a dialect declares (NC-110 E parameters, pp R parameters, Macro B
-// # variables): their size and the value type of each index range.
+// Variable spaces a dialect declares: numbered parameters (NC-110 E, pp R, Macro B #)
+// with a value type per index range, and byte-addressed memories (NC-110's PLC
+// packets SA, SK and the SYVAR area) read and written in several formats.
 #pragma once
 
 #include <cstdint>
@@ -8,16 +9,37 @@
 
 namespace ncc {
 
+// What a store keeps: LongReal any finite double (below `limit` in magnitude when the
+// space sets one), Real a float, Byte 0..255, Integer and Long 16 and 32 bits.
+// Integer types round half away from zero; a value out of range is an error.
 enum class VarType : uint8_t { LongReal, Real, Byte, Integer, Long, Count };
 
+// The formats of a byte-addressed memory (NC-110 §2.10.5, Table 2.7): a bit, a byte,
+// 16 and 32-bit integers, IEEE float and double, little-endian. The index of a
+// reference counts in units of its format.
+enum class MemFormat : uint8_t { Bit, Byte, Integer, Long, Real, LongReal, Count };
+
+constexpr uint32_t mem_size(MemFormat f) {
+  switch (f) {
+    case MemFormat::Bit:
+    case MemFormat::Byte: return 1;
+    case MemFormat::Integer: return 2;
+    case MemFormat::Long:
+    case MemFormat::Real: return 4;
+    default: return 8;
+  }
+}
+
 struct VarSpace {
-  std::string name;  // "E", "R", "#"
-  uint32_t size = 0;
+  std::string name;  // "E", "R", "#", "SA"
+  uint32_t size = 0;  // variables, or bytes of a memory
   struct Range {
     uint32_t first = 0;
     VarType type = VarType::LongReal;
   };
   std::vector<Range> types;  // the type of index i is that of the last range with first <= i
+  bool memory = false;       // byte-addressed: read and written through a MemFormat
+  double limit = 0;          // LongReal values must stay below this magnitude (0 = no limit)
 
   VarType type_of(uint32_t index) const {
     VarType t = VarType::LongReal;
@@ -26,5 +48,8 @@ struct VarSpace {
     return t;
   }
 };
+
+// Converts `v` to what a variable of `type` holds; false if it does not fit.
+bool convert_value(VarType type, double limit, double& v);
 
 }  // namespace ncc

@@ -1,7 +1,10 @@
 #include "vm.h"
 
+#include <bit>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include "opcodes.h"
 #include "support/text.h"
@@ -18,30 +21,40 @@ constexpr size_t kMaxFrames = 64;
 inline uint32_t u32_at(const uint8_t* p) { return read_operand(p, 4); }
 inline uint16_t u16_at(const uint8_t* p) { return static_cast<uint16_t>(read_operand(p, 2)); }
 
-// Stores keep the value type of the variable (NC-110's typed E parameters).
-bool convert(VarType type, double& v) {
-  auto integral = [&](double lo, double hi) {
-    v = std::trunc(v);
-    return v >= lo && v <= hi;
-  };
-  switch (type) {
-    case VarType::Byte: return integral(-128, 127);
-    case VarType::Integer: return integral(-32768, 32767);
-    case VarType::Long: return integral(-2147483648.0, 2147483647.0);
-    case VarType::Real:
-      if (!(std::fabs(v) <= std::numeric_limits<float>::max())) return false;
-      v = static_cast<float>(v);
-      return true;
-    default: return std::isfinite(v);
-  }
+// Memories are little-endian whatever the host is.
+template <typename T>
+T read_le(const uint8_t* p) {
+  using U = std::make_unsigned_t<T>;
+  U v = 0;
+  for (size_t i = 0; i < sizeof(T); ++i) v = static_cast<U>(v | U(p[i]) << (8 * i));
+  return static_cast<T>(v);
 }
 
+template <typename T>
+void write_le(uint8_t* p, T value) {
+  auto v = static_cast<std::make_unsigned_t<T>>(value);
+  for (size_t i = 0; i < sizeof(T); ++i) p[i] = static_cast<uint8_t>(v >> (8 * i));
+}
+
+// How DIS shows a value of each type (NC-110 D20).
+std::string show(VarType type, double v) {
+  switch (type) {
+    case VarType::Byte:
+    case VarType::Integer:
+    case VarType::Long: return fmt::format("{}", static_cast<int64_t>(v));
+    case VarType::Real: return fmt::format("{:.7g}", v == 0 ? 0.0 : v);
+    default: return fmt::format("{:.10g}", v == 0 ? 0.0 : v);
+  }
+}
 
 }  // namespace
 
 Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions options)
     : m_(module), machine_(machine), issues_(issues), options_(options) {
-  for (const VarSpace& s : m_.spaces) vars_.emplace_back(s.size, 0.0);
+  for (const VarSpace& s : m_.spaces) {
+    vars_.emplace_back(s.memory ? 0 : s.size, 0.0);
+    memories_.emplace_back(s.memory ? s.size : 0, uint8_t{0});
+  }
 }
 
 template <typename... Args>
@@ -67,12 +80,86 @@ bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
     return false;
   }
   double v = value;
-  if (!convert(s.type_of(static_cast<uint32_t>(index)), v)) {
+  if (!convert_value(s.type_of(static_cast<uint32_t>(index)), s.limit, v)) {
     fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, shortest(index)));
     return false;
   }
   vars_[space][static_cast<size_t>(index)] = v;
   return true;
+}
+
+uint8_t* Vm::bytes(uint8_t space, double index, uint32_t count, uint32_t pc) {
+  const VarSpace& s = m_.spaces[space];
+  if (!(index >= 0 && index + count <= s.size) || index != std::trunc(index)) {
+    fail(pc, DiagId::MemoryRange, s.name, shortest(index), count, s.size);
+    return nullptr;
+  }
+  return memories_[space].data() + static_cast<size_t>(index);
+}
+
+bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out) {
+  if (f == MemFormat::Bit) {
+    const uint8_t* b = bytes(space, index >= 0 ? std::floor(index / 8) : index, 1, pc);
+    if (!b || index != std::trunc(index)) return false;
+    out = (*b >> (static_cast<uint64_t>(index) % 8)) & 1;
+    return true;
+  }
+  const uint8_t* p = bytes(space, index * mem_size(f), mem_size(f), pc);
+  if (!p) return false;
+  switch (f) {
+    case MemFormat::Byte: out = *p; break;
+    case MemFormat::Integer: out = read_le<int16_t>(p); break;
+    case MemFormat::Long: out = read_le<int32_t>(p); break;
+    case MemFormat::Real: out = std::bit_cast<float>(read_le<uint32_t>(p)); break;
+    default: out = std::bit_cast<double>(read_le<uint64_t>(p)); break;
+  }
+  return true;
+}
+
+bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc) {
+  const VarSpace& s = m_.spaces[space];
+  double v = value;
+  static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real,
+                                       VarType::LongReal};
+  bool fits = f == MemFormat::Bit ? (v == 0 || v == 1) : convert_value(kTypes[static_cast<int>(f)], 0, v);
+  if (!fits) {
+    static constexpr const char* kNames[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
+    fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
+    return false;
+  }
+  if (f == MemFormat::Bit) {
+    uint8_t* b = bytes(space, index >= 0 ? std::floor(index / 8) : index, 1, pc);
+    if (!b || index != std::trunc(index)) return false;
+    uint8_t bit = static_cast<uint8_t>(1u << (static_cast<uint64_t>(index) % 8));
+    *b = v != 0 ? (*b | bit) : (*b & ~bit);
+    return true;
+  }
+  uint8_t* p = bytes(space, index * mem_size(f), mem_size(f), pc);
+  if (!p) return false;
+  switch (f) {
+    case MemFormat::Byte: *p = static_cast<uint8_t>(v); break;
+    case MemFormat::Integer: write_le(p, static_cast<int16_t>(v)); break;
+    case MemFormat::Long: write_le(p, static_cast<int32_t>(v)); break;
+    case MemFormat::Real: write_le(p, std::bit_cast<uint32_t>(static_cast<float>(v))); break;
+    default: write_le(p, std::bit_cast<uint64_t>(v)); break;
+  }
+  return true;
+}
+
+size_t Vm::calls() const {
+  size_t n = 0;
+  for (const Frame& f : process_.frames) n += !f.range;
+  return n;
+}
+
+// A jump that leaves the range being run ends it (NC-110 §2.13.2.3).
+void Vm::jump_to(uint32_t target) {
+  Process& p = process_;
+  while (!p.frames.empty() && p.frames.back().range && (target < p.frames.back().start || target > p.frames.back().end)) {
+    p.loops.resize(p.frames.back().loops);
+    p.frames.pop_back();
+  }
+  p.pc = target;
 }
 
 RunStatus Vm::run(uint32_t entry) {
@@ -165,15 +252,15 @@ RunStatus Vm::run(uint32_t entry) {
         st.push_back(r);
         break;
       }
-      case Op::Jump: p.pc = u32_at(operands); break;
+      case Op::Jump: jump_to(u32_at(operands)); break;
       case Op::JumpIfNot:
-        if (pop() == 0) p.pc = u32_at(operands);
+        if (pop() == 0) jump_to(u32_at(operands));
         break;
       case Op::JumpIf:
-        if (pop() != 0) p.pc = u32_at(operands);
+        if (pop() != 0) jump_to(u32_at(operands));
         break;
       case Op::JumpSkip:
-        if (options_.block_skip) p.pc = u32_at(operands);
+        if (machine_.block_skip()) p.pc = u32_at(operands);
         break;
       case Op::Step:
         if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
@@ -191,6 +278,9 @@ RunStatus Vm::run(uint32_t entry) {
         BlockResult result = machine_.execute(request);
         codes_.clear();
         words_.clear();
+        // Measured values the block stores (NC-110 G72-G74).
+        for (auto [index, value] : machine_.take_results())
+          if (!store(m_.semantics.conventions.result_space, index, value, pc)) return RunStatus::Error;
         switch (result) {
           case BlockResult::Continue: break;
           case BlockResult::ProgramEnd: return RunStatus::ProgramEnd;
@@ -201,8 +291,10 @@ RunStatus Vm::run(uint32_t entry) {
       }
       case Op::Comment: machine_.comment(m_.strings[u32_at(operands)], m_.source_of(pc)); break;
       case Op::Repeat: {
-        double count = std::trunc(pop());
-        if (!(count <= kMaxRepeat)) return fail(pc, DiagId::DomainError, shortest(count), "repeat counts");
+        double count = pop();
+        double limit = std::min(m_.numbers[u32_at(operands + 4)], kMaxRepeat);
+        if (!(count >= 0 && count <= limit) || count != std::trunc(count))
+          return fail(pc, DiagId::RepeatCount, shortest(count), shortest(limit));
         if (count < 1) {
           p.pc = u32_at(operands);
           break;
@@ -217,12 +309,38 @@ RunStatus Vm::run(uint32_t entry) {
         if (--p.loops.back().remaining > 0) p.pc = u32_at(operands);
         else p.loops.pop_back();
         break;
-      case Op::CallEntry:
-        if (p.frames.size() >= kMaxFrames) return fail(pc, DiagId::CallDepth, kMaxFrames);
+      case Op::Unloop: {
+        size_t floor = p.frames.empty() ? 0 : p.frames.back().loops;
+        if (p.loops.size() < floor + operands[0])
+          return fail(pc, DiagId::BytecodeInvalid, "program", "a jump out of more repeat loops than are open");
+        p.loops.resize(p.loops.size() - operands[0]);
+        break;
+      }
+      case Op::CallEntry: {
+        uint32_t limit = m_.semantics.conventions.max_call_depth;
+        if (p.frames.size() >= kMaxFrames || (limit && calls() >= limit))
+          return fail(pc, DiagId::CallDepth, limit ? limit : kMaxFrames);
         p.frames.push_back({p.pc, p.loops.size()});
         p.pc = m_.entries[u16_at(operands)].pc;
         break;
+      }
+      case Op::CallRange:
+        for (const Frame& f : p.frames)
+          if (f.range) return fail(pc, DiagId::RangeNested);
+        if (p.frames.size() >= kMaxFrames) return fail(pc, DiagId::CallDepth, kMaxFrames);
+        p.frames.push_back({p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4)});
+        p.pc = u32_at(operands);
+        break;
+      case Op::RangeEnd:
+        if (!p.frames.empty() && p.frames.back().range && p.frames.back().end == pc) {
+          p.loops.resize(p.frames.back().loops);
+          p.pc = p.frames.back().return_pc;
+          p.frames.pop_back();
+        }
+        break;
       case Op::Return:
+        // A range the subprogram was running ends with it.
+        while (!p.frames.empty() && p.frames.back().range) p.frames.pop_back();
         if (p.frames.empty()) {
           p.pc = pc;
           return RunStatus::UnitEnded;
@@ -230,6 +348,68 @@ RunStatus Vm::run(uint32_t entry) {
         p.loops.resize(p.frames.back().loops);
         p.pc = p.frames.back().return_pc;
         p.frames.pop_back();
+        break;
+      case Op::LoadMem: {
+        double v = 0;
+        if (!load_mem(operands[0], static_cast<MemFormat>(operands[1]), pop(), pc, v)) return RunStatus::Error;
+        st.push_back(v);
+        break;
+      }
+      case Op::StoreMem: {
+        double value = pop();
+        if (!store_mem(operands[0], static_cast<MemFormat>(operands[1]), pop(), value, pc)) return RunStatus::Error;
+        break;
+      }
+      case Op::StoreText: {
+        const std::string& text = m_.strings[u32_at(operands + 1)];
+        uint8_t* b = bytes(operands[0], pop(), static_cast<uint32_t>(text.size()), pc);
+        if (!b) return RunStatus::Error;
+        std::memcpy(b, text.data(), text.size());
+        break;
+      }
+      case Op::CopyText: {
+        const uint8_t n = operands[2];
+        const uint8_t* from = bytes(operands[1], pop(), n, pc);
+        uint8_t* to = from ? bytes(operands[0], pop(), n, pc) : nullptr;
+        if (!to) return RunStatus::Error;
+        std::memmove(to, from, n);
+        break;
+      }
+      case Op::EqText: {
+        const std::string& text = m_.strings[u32_at(operands + 1)];
+        const uint8_t* b = bytes(operands[0], pop(), static_cast<uint32_t>(text.size()), pc);
+        if (!b) return RunStatus::Error;
+        st.push_back(std::memcmp(b, text.data(), text.size()) == 0);
+        break;
+      }
+      case Op::EqMem: {
+        const uint8_t n = operands[2];
+        const uint8_t* b = bytes(operands[1], pop(), n, pc);
+        const uint8_t* a = b ? bytes(operands[0], pop(), n, pc) : nullptr;
+        if (!a) return RunStatus::Error;
+        st.push_back(std::memcmp(a, b, n) == 0);
+        break;
+      }
+      case Op::GetSys: {
+        auto v = machine_.system(SysRef::unpack(u16_at(operands)), m_.source_of(pc));
+        if (!v) return RunStatus::Error;
+        st.push_back(*v);
+        break;
+      }
+      case Op::SetSys:
+        if (!machine_.set_system(SysRef::unpack(u16_at(operands)), pop(), m_.source_of(pc))) return RunStatus::Error;
+        break;
+      case Op::Show: message_ += m_.strings[u32_at(operands)]; break;
+      case Op::ShowValue: message_ += show(static_cast<VarType>(operands[0]), pop()); break;
+      case Op::ShowText: {
+        const uint8_t* b = bytes(operands[0], pop(), operands[1], pc);
+        if (!b) return RunStatus::Error;
+        message_.append(reinterpret_cast<const char*>(b), operands[1]);
+        break;
+      }
+      case Op::Message:
+        machine_.message(message_, m_.source_of(pc));
+        message_.clear();
         break;
       case Op::End:
         p.pc = pc;

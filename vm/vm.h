@@ -12,7 +12,6 @@ namespace ncc::vm {
 
 struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
-  bool block_skip = false;
 };
 
 enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error };
@@ -31,6 +30,8 @@ class Vm {
   struct Frame {
     uint32_t return_pc;
     size_t loops;  // repeat loops open when the call was made
+    bool range = false;
+    uint32_t start = 0, end = 0;  // a range: its first instruction and its RangeEnd
   };
   struct Loop {
     int64_t remaining;
@@ -47,6 +48,12 @@ class Vm {
   RunStatus fail(uint32_t pc, DiagId id, const Args&... args);
   double load(uint8_t space, double index, uint32_t pc, bool& ok);
   bool store(uint8_t space, double index, double value, uint32_t pc);
+  // A run of `count` bytes of memory `space` at byte `index`, or nullptr (reported).
+  uint8_t* bytes(uint8_t space, double index, uint32_t count, uint32_t pc);
+  bool load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out);
+  bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
+  void jump_to(uint32_t target);
+  size_t calls() const;
 
   const Module& m_;
   Machine& machine_;
@@ -54,9 +61,11 @@ class Vm {
   VmOptions options_;
   uint64_t steps_ = 0;
   std::vector<std::vector<double>> vars_;
+  std::vector<std::vector<uint8_t>> memories_;  // of the memory spaces (empty for the others)
   Process process_;
   std::vector<uint16_t> codes_;  // the pending block
   BlockWords words_;
+  std::string message_;          // the pending operator message
 };
 
 }  // namespace ncc::vm

@@ -109,7 +109,6 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   Machine machine(m.semantics, config, trace, reporter);
   machine.set_stop_on_error(!dry);
   vm::VmOptions options;
-  options.block_skip = config.block_skip;
   options.max_steps = settings.max_steps.value_or(m.source_map.blocks.size() + kDefaultExtraSteps);
   vm::Vm vm(m, machine, reporter, options);
   machine.power_on();

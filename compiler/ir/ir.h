@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "runtime/program_semantics.h"
+#include "runtime/system_vars.h"
 #include "stdlib/builtins.h"
 #include "support/source.h"
 #include "vm/variables.h"
@@ -30,17 +31,26 @@ enum class ExprOp : uint8_t {
   Neg, Not,
   Add, Sub, Mul, Div, Mod, Pow,
   Eq, Ne, Lt, Le, Gt, Ge, And, Or, Xor,
-  Call,  // builtin(a[, b])
+  Call,    // builtin(a[, b])
+  Mem,     // the value of `format` at index a of memory `space`
+  Sys,     // system variable `sys` (SysRef::packed)
+  Text,    // `count` bytes at byte a of memory `space`: not a number
+  String,  // Program::texts[text]: not a number
+  TextEq,  // 1 if Text a holds the bytes of Text or String b
 };
 
 struct Expr {
   ExprOp op = ExprOp::Number;
   Builtin builtin = Builtin::Sin;  // Call
-  uint16_t space = 0;              // Var: index into Program::spaces
+  uint16_t space = 0;              // Var, Mem, Text: index into Program::spaces
   double number = 0;               // Number
   ExprId a = kNoExpr;
   ExprId b = kNoExpr;
   SourceRange range;
+  MemFormat format = MemFormat::Byte;  // Mem
+  uint16_t sys = 0;                    // Sys
+  uint32_t text = 0;                   // String: index into Program::texts
+  uint8_t count = 0;                   // Text: bytes
 };
 
 enum class WordKind : uint8_t {
@@ -70,6 +80,14 @@ enum class StmtKind : uint8_t {
   RepeatEnd,
   Call,         // call unit/file `label`, `count` times
   Return,
+  CallRange,    // run the blocks from label `label` to label `end_label`, then go on
+  Display,      // show `items` to the operator, one after the other
+};
+
+// One item of a Display: a value shown as its type shows it, a String or a Text.
+struct DisplayItem {
+  ExprId value = kNoExpr;
+  VarType type = VarType::LongReal;
 };
 
 struct Stmt {
@@ -83,6 +101,9 @@ struct Stmt {
   ExprId cond = kNoExpr;    // Jump condition
   std::string label;        // Jump target label; Call target; Comment text
   bool optional = false;    // Comment after a mid-block '/': dropped when block skip is on
+  double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
+  std::string end_label;    // CallRange
+  std::vector<DisplayItem> items;  // Display
 };
 
 struct Block {
@@ -114,6 +135,7 @@ struct Program {
   ProgramSemantics semantics;
   std::vector<VarSpace> spaces;
   std::vector<Expr> exprs;
+  std::vector<std::string> texts;  // string constants
   std::vector<Unit> units;
 
   ExprId add(Expr e) {

@@ -68,6 +68,18 @@ std::string print_expr(const Program& p, ExprId id) {
     }
     case ExprOp::Neg:
     case ExprOp::Not: return fmt::format("({} {})", op_name(e.op), print_expr(p, e.a));
+    case ExprOp::Mem: {
+      constexpr const char* formats[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
+      return fmt::format("{}[{}].{}", p.spaces[e.space].name, print_expr(p, e.a), formats[static_cast<int>(e.format)]);
+    }
+    case ExprOp::Text: return fmt::format("{}[{}].{}CH", p.spaces[e.space].name, print_expr(p, e.a), e.count);
+    case ExprOp::Sys: {
+      SysRef ref = SysRef::unpack(e.sys);
+      std::string name(sys_name(ref.var));
+      return sys_indices(ref.var) > 1 ? fmt::format("{}[{}]", name, ref.index) : name;
+    }
+    case ExprOp::String: return "\"" + json_escape(p.texts[e.text]) + "\"";
+    case ExprOp::TextEq: return fmt::format("(text== {} {})", print_expr(p, e.a), print_expr(p, e.b));
     case ExprOp::Call:
       if (builtin_info(e.builtin).arity == 2)
         return fmt::format("({} {} {})", builtin_info(e.builtin).name, print_expr(p, e.a), print_expr(p, e.b));
@@ -100,7 +112,7 @@ std::string print(const Program& p, const SourceManager& sources) {
   out += "power_on";
   for (uint16_t i : p.semantics.power_on) out += fmt::format(" {}", p.semantics.codes[i].name);
   out += "\n";
-  for (const VarSpace& s : p.spaces) out += fmt::format("space {} size={}\n", s.name, s.size);
+  for (const VarSpace& s : p.spaces) out += fmt::format("space {} size={}{}\n", s.name, s.size, s.memory ? " memory" : "");
 
   for (const Unit& u : p.units) {
     const char* kind = pick(u.kind, {"program", "subprogram", "macro"});
@@ -152,6 +164,13 @@ std::string print(const Program& p, const SourceManager& sources) {
           case StmtKind::RepeatEnd: out += "    end_repeat\n"; break;
           case StmtKind::Call: out += fmt::format("    call {} x{}\n", s.label, print_expr(p, s.value)); break;
           case StmtKind::Return: out += "    return\n"; break;
+          case StmtKind::CallRange: out += fmt::format("    call_range {} {}\n", s.label, s.end_label); break;
+          case StmtKind::Display: {
+            out += "    display";
+            for (const DisplayItem& item : s.items) out += " " + print_expr(p, item.value);
+            out += "\n";
+            break;
+          }
         }
       }
     }

@@ -2,6 +2,7 @@
 
 #include <bit>
 #include <map>
+#include <set>
 
 #include "vm/opcodes.h"
 
@@ -10,6 +11,8 @@ namespace ncc {
 namespace {
 
 using vm::Op;
+
+constexpr double kMaxRepeatCount = 2147483647;
 
 class Lowering {
  public:
@@ -115,6 +118,35 @@ class Lowering {
         op(builtin_info(e.builtin).arity == 2 ? Op::Call2 : Op::Call1);
         u8(static_cast<uint32_t>(e.builtin));
         return;
+      case ir::ExprOp::Mem:
+        expr(e.a);
+        op(Op::LoadMem);
+        u8(e.space);
+        u8(static_cast<uint32_t>(e.format));
+        return;
+      case ir::ExprOp::Sys:
+        op(Op::GetSys);
+        u16(e.sys);
+        return;
+      case ir::ExprOp::TextEq: {
+        const ir::Expr& a = p_.exprs[e.a];
+        const ir::Expr& b = p_.exprs[e.b];
+        expr(a.a);
+        if (b.op == ir::ExprOp::String) {
+          op(Op::EqText);
+          u8(a.space);
+          u32(string(p_.texts[b.text]));
+        } else {
+          expr(b.a);
+          op(Op::EqMem);
+          u8(a.space);
+          u8(b.space);
+          u8(a.count);
+        }
+        return;
+      }
+      case ir::ExprOp::Text:
+      case ir::ExprOp::String: return;  // not numbers: only parts of the above
       default: break;
     }
     expr(e.a);
@@ -152,6 +184,74 @@ class Lowering {
     op(Op::Exec);
   }
 
+  void assign(const ir::Stmt& s) {
+    const ir::Expr& target = p_.exprs[s.target];
+    switch (target.op) {
+      case ir::ExprOp::Var:
+        if (p_.is_constant(target.a)) {
+          expr(s.value);
+          op(Op::Store);
+          u8(target.space);
+          u32(static_cast<uint32_t>(p_.exprs[target.a].number));
+        } else {
+          expr(target.a);
+          expr(s.value);
+          op(Op::StoreX);
+          u8(target.space);
+        }
+        return;
+      case ir::ExprOp::Mem:
+        expr(target.a);
+        expr(s.value);
+        op(Op::StoreMem);
+        u8(target.space);
+        u8(static_cast<uint32_t>(target.format));
+        return;
+      case ir::ExprOp::Sys:
+        expr(s.value);
+        op(Op::SetSys);
+        u16(target.sys);
+        return;
+      case ir::ExprOp::Text: {
+        const ir::Expr& value = p_.exprs[s.value];
+        expr(target.a);
+        if (value.op == ir::ExprOp::String) {
+          op(Op::StoreText);
+          u8(target.space);
+          u32(string(p_.texts[value.text]));
+        } else {
+          expr(value.a);
+          op(Op::CopyText);
+          u8(target.space);
+          u8(value.space);
+          u8(target.count);
+        }
+        return;
+      }
+      default: return;  // the front end makes no other targets
+    }
+  }
+
+  void display(const ir::Stmt& s) {
+    for (const ir::DisplayItem& item : s.items) {
+      const ir::Expr& e = p_.exprs[item.value];
+      if (e.op == ir::ExprOp::String) {
+        op(Op::Show);
+        u32(string(p_.texts[e.text]));
+      } else if (e.op == ir::ExprOp::Text) {
+        expr(e.a);
+        op(Op::ShowText);
+        u8(e.space);
+        u8(e.count);
+      } else {
+        expr(item.value);
+        op(Op::ShowValue);
+        u8(static_cast<uint32_t>(item.type));
+      }
+    }
+    op(Op::Message);
+  }
+
   // Each block starts with a Step (counted by --max-steps): jumps back land on block
   // starts, so every loop passes one (the verifier insists).
   void lower_unit(const ir::Unit& unit) {
@@ -161,6 +261,22 @@ class Lowering {
     std::vector<uint32_t> loop_start; // where each open loop's body starts
     size_t starting_loops = 0;        // loops whose body starts at the next block
     bool entry_added = false;
+    // The repeat loops open at each label (a jump out of loops closes them), and the
+    // labels that end a range (a RangeEnd follows their block).
+    std::map<std::string, size_t> label_depth;
+    std::set<std::string> range_ends;
+    size_t depth = 0;
+    for (const ir::Block& b : unit.blocks) {
+      if (!b.label.empty()) label_depth.emplace(b.label, depth);
+      if (b.number) label_depth.emplace(fmt::format("N{}", *b.number), depth);
+      for (const ir::Stmt& s : b.stmts) {
+        if (s.kind == ir::StmtKind::RepeatBegin) ++depth;
+        if (s.kind == ir::StmtKind::RepeatEnd && depth > 0) --depth;
+        if (s.kind == ir::StmtKind::CallRange) range_ends.insert(s.end_label);
+      }
+    }
+    std::vector<std::pair<uint32_t, std::string>> ranges;  // (CallRange operands, start label)
+    depth = 0;
     for (const ir::Block& b : unit.blocks) {
       uint32_t source = source_block(b);
       m_.lines.push_back({pc(), source});
@@ -185,36 +301,49 @@ class Lowering {
             break;
           }
           case ir::StmtKind::Machine: machine(b); break;
-          case ir::StmtKind::Assign: {
-            const ir::Expr& target = p_.exprs[s.target];
-            if (p_.is_constant(target.a)) {
-              expr(s.value);
-              op(Op::Store);
-              u8(target.space);
-              u32(static_cast<uint32_t>(p_.exprs[target.a].number));
-            } else {
-              expr(target.a);
-              expr(s.value);
-              op(Op::StoreX);
-              u8(target.space);
+          case ir::StmtKind::Assign: assign(s); break;
+          case ir::StmtKind::Display: display(s); break;
+          case ir::StmtKind::Jump: {
+            // A jump out of repeat loops closes them; the checks reject jumps into one.
+            auto it = label_depth.find(s.label);
+            size_t out = it != label_depth.end() && it->second < depth ? depth - it->second : 0;
+            if (!out) {
+              if (s.cond != ir::kNoExpr) expr(s.cond);
+              jumps.push_back({jump(s.cond != ir::kNoExpr ? Op::JumpIf : Op::Jump), s.label});
+              break;
             }
+            uint32_t not_taken = 0;
+            if (s.cond != ir::kNoExpr) {
+              expr(s.cond);
+              not_taken = jump(Op::JumpIfNot);
+            }
+            op(Op::Unloop);
+            u8(static_cast<uint32_t>(out));
+            jumps.push_back({jump(Op::Jump), s.label});
+            if (not_taken) patch(not_taken, pc());
             break;
           }
-          case ir::StmtKind::Jump:
-            if (s.cond != ir::kNoExpr) expr(s.cond);
-            jumps.push_back({jump(s.cond != ir::kNoExpr ? Op::JumpIf : Op::Jump), s.label});
-            break;
           case ir::StmtKind::RepeatBegin:
             // The loop body starts at the next block (RepeatBegin ends its block).
             expr(s.value);
             repeats.push_back(jump(Op::Repeat));
+            u32(number(s.limit ? s.limit : kMaxRepeatCount));
             ++starting_loops;
+            ++depth;
             break;
           case ir::StmtKind::RepeatEnd:
             jump(Op::EndRepeat, loop_start.back());
             loop_start.pop_back();
             patch(repeats.back(), pc());
             repeats.pop_back();
+            --depth;
+            break;
+          case ir::StmtKind::CallRange:
+            ranges.push_back({pc() + 1, s.label});
+            range_ends_at_.push_back({pc() + 5, s.end_label});
+            op(Op::CallRange);
+            u32(0);
+            u32(0);
             break;
           case ir::StmtKind::Call:
             calls_.push_back({pc() + 1, s.label});
@@ -225,6 +354,10 @@ class Lowering {
         }
       }
       if (skip) patch(skip, pc());
+      if (!b.label.empty() && range_ends.count(b.label)) {
+        labels_end_[b.label] = pc();
+        op(Op::RangeEnd);
+      }
     }
     if (!entry_added) {
       // An empty program still gets its entry point, so it can be run (and end).
@@ -238,13 +371,30 @@ class Lowering {
       op(Op::Step);
     }
     uint32_t end = pc();
-    op(Op::End);
+    // A subprogram returns at its end (NC-110 §2.13.2.2); a program ends there.
+    op(unit.kind == ir::UnitKind::Program ? Op::End : Op::Return);
     // The checks report labels that do not exist; should one slip through, the jump
     // ends the unit rather than going anywhere else.
     for (const auto& [at, label] : jumps) {
       auto it = labels.find(label);
       patch(at, it != labels.end() ? it->second : end);
     }
+    // A range whose labels do not exist (the checks report it) runs nothing.
+    uint32_t nothing = pc();
+    if (!ranges.empty()) {
+      op(Op::RangeEnd);
+      op(Op::End);
+    }
+    for (const auto& [at, label] : ranges) {
+      auto it = labels.find(label);
+      patch(at, it != labels.end() ? it->second : nothing);
+    }
+    for (const auto& [at, label] : range_ends_at_) {
+      auto it = labels_end_.find(label);
+      patch(at, it != labels_end_.end() ? it->second : nothing);
+    }
+    range_ends_at_.clear();
+    labels_end_.clear();
   }
 
   // Calls name entry points of any unit, so they are resolved last.
@@ -264,6 +414,8 @@ class Lowering {
   std::map<uint64_t, uint32_t> numbers_;
   std::map<std::string, uint32_t> strings_;
   std::vector<std::pair<uint32_t, std::string>> calls_;  // (operand, entry name)
+  std::vector<std::pair<uint32_t, std::string>> range_ends_at_;  // (CallRange end operand, end label)
+  std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd
 };
 
 }  // namespace

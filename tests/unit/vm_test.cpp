@@ -28,6 +28,9 @@ struct Builder {
     p.units.back().name = "%1";
     VarSpace e{"E", 40, {{0, VarType::Byte}, {10, VarType::Integer}, {20, VarType::Long}, {25, VarType::Real}, {30, VarType::LongReal}}};
     p.spaces.push_back(e);
+    VarSpace memory{"M", 16, {}};
+    memory.memory = true;
+    p.spaces.push_back(memory);
   }
   ir::Block& block() {
     ir::Block& b = p.units.back().blocks.emplace_back();
@@ -40,6 +43,37 @@ struct Builder {
   ir::ExprId bin(ir::ExprOp op, ir::ExprId a, ir::ExprId b) { return p.add({op, Builtin::Sin, 0, 0, a, b, {}}); }
   ir::ExprId call(Builtin f, ir::ExprId a, ir::ExprId b = ir::kNoExpr) {
     return p.add({ir::ExprOp::Call, f, 0, 0, a, b, {}});
+  }
+  ir::ExprId mem(MemFormat f, double index) {
+    ir::Expr e{ir::ExprOp::Mem, Builtin::Sin, 1, 0, num(index), ir::kNoExpr, {}};
+    e.format = f;
+    return p.add(e);
+  }
+  ir::ExprId text(double index, uint8_t count) {
+    ir::Expr e{ir::ExprOp::Text, Builtin::Sin, 1, 0, num(index), ir::kNoExpr, {}};
+    e.count = count;
+    return p.add(e);
+  }
+  ir::ExprId string(std::string s) {
+    p.texts.push_back(std::move(s));
+    ir::Expr e{ir::ExprOp::String, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, {}};
+    e.text = static_cast<uint32_t>(p.texts.size() - 1);
+    return p.add(e);
+  }
+  ir::ExprId sys(SysVar v, uint8_t index = 0) {
+    ir::Expr e{ir::ExprOp::Sys, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, {}};
+    e.sys = SysRef{v, index}.packed();
+    return p.add(e);
+  }
+  void jump(ir::Block& b, std::string label, ir::ExprId cond = ir::kNoExpr) {
+    ir::Stmt s(ir::StmtKind::Jump, b.range);
+    s.label = std::move(label);
+    s.cond = cond;
+    b.stmts.push_back(s);
+  }
+  void stmt(ir::Block& b, ir::StmtKind kind, ir::ExprId value = ir::kNoExpr) {
+    b.stmts.push_back({kind, b.range});
+    b.stmts.back().value = value;
   }
   void assign(ir::Block& b, ir::ExprId target, ir::ExprId value) {
     ir::Stmt s(ir::StmtKind::Assign, b.range);
@@ -58,11 +92,12 @@ struct Builder {
 
   struct Result {
     std::vector<double> xs;
+    std::vector<std::string> messages;
     std::vector<RuntimeIssue> issues;
     vm::RunStatus status;
   };
 
-  Result run(vm::VmOptions options = {}) {
+  Result run(vm::VmOptions options = {}, bool block_skip = false) {
     Diagnostics diags;
     auto profile = stdlib::Profile::parse(sources, "", "", diags);
     vm::Module m = lower(p, sources, *profile);
@@ -75,13 +110,16 @@ struct Builder {
     CollectSink trace;
     CollectIssues issues;
     MachineConfig config;
+    config.block_skip = block_skip;
     Machine machine(loaded->semantics, config, trace, issues);
     machine.power_on();
     vm::Vm vm(*loaded, machine, issues, options);
     Result r;
     r.status = vm.run(0);
-    for (const Event& e : trace.events)
+    for (const Event& e : trace.events) {
       if (e.kind == EventKind::Rapid) r.xs.push_back(e.pos[0]);
+      if (e.kind == EventKind::Message) r.messages.push_back(e.text);
+    }
     r.issues = issues.list;
     return r;
   }
@@ -137,7 +175,7 @@ TEST(Vm, DomainErrors) {
 TEST(Vm, TypedVariables) {
   Builder t;
   ir::Block& b = t.block();
-  t.assign(b, t.var(1), t.num(3.7));    // byte: truncated to 3
+  t.assign(b, t.var(1), t.num(3.5));    // byte: rounded half away from zero to 4
   t.assign(b, t.var(26), t.num(1000.1));  // real (float)
   t.assign(b, t.var(31), t.num(0.1));   // long real
   t.move_x(t.block(), t.var(1));
@@ -146,7 +184,7 @@ TEST(Vm, TypedVariables) {
   t.move_x(t.block(), t.var_at(t.bin(ir::ExprOp::Add, t.num(30), t.num(1))));
   auto r = t.run();
   ASSERT_EQ(r.xs.size(), 4u);
-  EXPECT_EQ(r.xs[0], 3);
+  EXPECT_EQ(r.xs[0], 4);
   EXPECT_NEAR(r.xs[1], static_cast<double>(1000.1f), 1e-9);  // positions live on a nanometre grid
   EXPECT_GT(std::fabs(r.xs[1] - 1000.1), 1e-5);
   EXPECT_EQ(r.xs[2], 0.1);
@@ -234,7 +272,7 @@ TEST(Vm, RepeatCountMustBeAWholeNumberInRange) {
     auto r = t.run();
     EXPECT_EQ(r.status, vm::RunStatus::Error) << nan;
     ASSERT_EQ(r.issues.size(), 1u);
-    EXPECT_EQ(r.issues[0].id, DiagId::DomainError);
+    EXPECT_EQ(r.issues[0].id, DiagId::RepeatCount);
   }
 }
 
@@ -288,12 +326,178 @@ TEST(Vm, BlockSkipDropsSkippableBlocksAndOptionalWords) {
     t.move_x(skippable, t.num(2));
     ir::Block& partly = t.block();
     t.move_x(partly, t.num(3), true);  // X after a mid-block '/'
-    vm::VmOptions options;
-    options.block_skip = skip;
-    auto r = t.run(options);
+    auto r = t.run({}, skip);
     // With the switch on the last block keeps G00 but loses X: no motion.
     EXPECT_EQ(r.xs, (skip ? std::vector<double>{1} : std::vector<double>{1, 2, 3}));
   }
+}
+
+TEST(Vm, MemoryFormatsAreLittleEndianAtIndexTimesSize) {
+  Builder t;
+  ir::Block& b = t.block();
+  t.assign(b, t.mem(MemFormat::Integer, 1), t.num(-2));       // bytes 2-3: FE FF
+  t.assign(b, t.mem(MemFormat::Bit, 33), t.num(1));           // byte 4, bit 1
+  t.assign(b, t.mem(MemFormat::Real, 2), t.num(0.5));         // bytes 8-11
+  t.move_x(t.block(), t.mem(MemFormat::Byte, 2));             // 0xFE
+  t.move_x(t.block(), t.mem(MemFormat::Byte, 4));             // 2
+  t.move_x(t.block(), t.mem(MemFormat::Long, 0));             // bytes 0-3: 0xFFFE0000
+  t.move_x(t.block(), t.mem(MemFormat::Real, 2));
+  t.move_x(t.block(), t.mem(MemFormat::Bit, 33));
+  auto r = t.run();
+  ASSERT_TRUE(r.issues.empty()) << r.issues[0].message;
+  EXPECT_EQ(r.xs, (std::vector<double>{254, 2, -131072, 0.5, 1}));
+}
+
+TEST(Vm, MemoryStoresCheckTheFormatAndTheSize) {
+  for (auto [format, index, value, id] :
+       {std::tuple{MemFormat::Bit, 0.0, 2.0, DiagId::ValueOverflow}, {MemFormat::Byte, 0.0, 256.0, DiagId::ValueOverflow},
+        {MemFormat::LongReal, 2.0, 1.0, DiagId::MemoryRange}, {MemFormat::Integer, 8.0, 1.0, DiagId::MemoryRange}}) {
+    Builder t;
+    t.assign(t.block(), t.mem(format, index), t.num(value));
+    auto r = t.run();
+    EXPECT_EQ(r.status, vm::RunStatus::Error);
+    ASSERT_EQ(r.issues.size(), 1u);
+    EXPECT_EQ(r.issues[0].id, id);
+  }
+}
+
+TEST(Vm, TextIsStoredComparedCopiedAndShown) {
+  Builder t;
+  ir::Block& b = t.block();
+  t.assign(b, t.text(7, 3), t.string("RIF"));
+  t.assign(b, t.text(0, 3), t.text(7, 3));
+  ir::Block& equal = t.block();
+  t.jump(equal, "L1", t.p.add({ir::ExprOp::TextEq, Builtin::Sin, 0, 0, t.text(0, 3), t.string("RIF"), {}}));
+  t.move_x(t.block(), t.num(9));  // skipped
+  ir::Block& l1 = t.block();
+  l1.label = "L1";
+  ir::Stmt show(ir::StmtKind::Display, l1.range);
+  show.items = {{t.string("K="), VarType::LongReal}, {t.text(7, 3), VarType::LongReal}, {t.num(0.5), VarType::LongReal},
+                {t.num(3), VarType::Byte}};
+  l1.stmts.push_back(show);
+  t.move_x(t.block(), t.p.add({ir::ExprOp::TextEq, Builtin::Sin, 0, 0, t.text(0, 3), t.text(1, 3), {}}));
+  auto r = t.run();
+  ASSERT_TRUE(r.issues.empty()) << r.issues[0].message;
+  EXPECT_EQ(r.messages, (std::vector<std::string>{"K=RIF0.53"}));
+  EXPECT_EQ(r.xs, (std::vector<double>{0}));
+}
+
+TEST(Vm, RangeCallRunsBothEndsThenComesBack) {
+  // X1; call 2..3; X4; stop; "2" X2; "3" X3
+  Builder t;
+  t.move_x(t.block(), t.num(1));
+  ir::Block& call = t.block();
+  call.stmts.push_back({ir::StmtKind::CallRange, call.range});
+  call.stmts.back().label = "2";
+  call.stmts.back().end_label = "3";
+  t.move_x(t.block(), t.num(4));
+  t.jump(t.block(), "END");
+  ir::Block& two = t.block();
+  two.label = "2";
+  t.move_x(two, t.num(2));
+  ir::Block& three = t.block();
+  three.label = "3";
+  t.move_x(three, t.num(3));
+  t.block().label = "END";
+  EXPECT_EQ(t.run().xs, (std::vector<double>{1, 2, 3, 4}));
+}
+
+TEST(Vm, RangesDoNotNestAndAJumpOutEndsThem) {
+  Builder t;
+  ir::Block& call = t.block();
+  call.stmts.push_back({ir::StmtKind::CallRange, call.range});
+  call.stmts.back().label = "A";
+  call.stmts.back().end_label = "B";
+  t.move_x(t.block(), t.num(5));
+  t.jump(t.block(), "END");
+  ir::Block& a = t.block();
+  a.label = "A";
+  t.move_x(a, t.num(1));
+  t.jump(t.block(), "OUT");  // leaves the range: it ends, nothing comes back
+  ir::Block& b = t.block();
+  b.label = "B";
+  ir::Block& out = t.block();
+  out.label = "OUT";
+  t.move_x(out, t.num(2));
+  ir::Block& again = t.block();
+  again.stmts.push_back({ir::StmtKind::CallRange, again.range});
+  again.stmts.back().label = "OUT";
+  again.stmts.back().end_label = "NEST";
+  ir::Block& nest = t.block();
+  nest.label = "NEST";
+  nest.stmts.push_back({ir::StmtKind::CallRange, nest.range});
+  nest.stmts.back().label = "OUT";
+  nest.stmts.back().end_label = "OUT";
+  t.block().label = "END";
+  auto r = t.run();
+  EXPECT_EQ(r.xs, (std::vector<double>{1, 2, 2}));
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::RangeNested);
+}
+
+TEST(Vm, AJumpOutOfRepeatLoopsClosesThem) {
+  // repeat 3 { repeat 2 { E30 += 1; if E30 == 2 goto OUT } }; OUT: X = E30; repeat 2 { X = 7 }
+  Builder t;
+  t.stmt(t.block(), ir::StmtKind::RepeatBegin, t.num(3));
+  t.stmt(t.block(), ir::StmtKind::RepeatBegin, t.num(2));
+  ir::Block& body = t.block();
+  t.assign(body, t.var(30), t.bin(ir::ExprOp::Add, t.var(30), t.num(1)));
+  t.jump(body, "OUT", t.bin(ir::ExprOp::Eq, t.var(30), t.num(2)));
+  t.stmt(t.block(), ir::StmtKind::RepeatEnd);
+  t.stmt(t.block(), ir::StmtKind::RepeatEnd);
+  ir::Block& out = t.block();
+  out.label = "OUT";
+  t.move_x(out, t.var(30));
+  t.stmt(t.block(), ir::StmtKind::RepeatBegin, t.num(2));
+  t.move_x(t.block(), t.num(7));
+  t.stmt(t.block(), ir::StmtKind::RepeatEnd);
+  auto r = t.run();
+  EXPECT_TRUE(r.issues.empty());
+  EXPECT_EQ(r.xs, (std::vector<double>{2, 7, 7}));
+}
+
+TEST(Vm, RepeatCountLimitOfTheDialect) {
+  Builder t;
+  ir::Block& b = t.block();
+  t.stmt(b, ir::StmtKind::RepeatBegin, t.num(100));
+  b.stmts.back().limit = 99;
+  t.move_x(t.block(), t.num(1));
+  t.stmt(t.block(), ir::StmtKind::RepeatEnd);
+  auto r = t.run();
+  EXPECT_EQ(r.status, vm::RunStatus::Error);
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::RepeatCount);
+}
+
+TEST(Vm, SystemVariablesReachTheRuntime) {
+  // USB = 0 skips the '/' block; the dwell time is stored and read back.
+  Builder t;
+  ir::Block& b = t.block();
+  t.assign(b, t.sys(SysVar::BlockEnable), t.num(0));
+  t.assign(b, t.sys(SysVar::DwellTime), t.num(2.5));
+  ir::Block& skipped = t.block();
+  skipped.skippable = true;
+  t.move_x(skipped, t.num(1));
+  t.move_x(t.block(), t.sys(SysVar::DwellTime));
+  t.assign(t.block(), t.sys(SysVar::Timer, 0), t.num(1));  // the clock is read-only
+  auto r = t.run();
+  EXPECT_EQ(r.xs, (std::vector<double>{2.5}));
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::SystemValue);
+}
+
+TEST(Vm, CallDepthLimitOfTheDialect) {
+  Builder t;
+  t.p.semantics.conventions.max_call_depth = 1;
+  ir::Block& b = t.block();
+  t.move_x(b, t.num(1));
+  ir::Stmt call(ir::StmtKind::Call, b.range);
+  call.label = "%1";
+  b.stmts.push_back(call);  // calls itself: the second call is one too many
+  auto r = t.run();
+  EXPECT_EQ(r.xs, (std::vector<double>{1, 1}));
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::CallDepth);
 }
 
 }  // namespace

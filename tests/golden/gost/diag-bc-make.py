@@ -14,7 +14,7 @@ import zlib
 
 HEADER = 16
 # Opcodes (vm/opcodes.h).
-NOP, CONST, NEG, DIV, CALL1, CODE, WORD, WORD_POP, CALL_ENTRY = 0, 1, 6, 11, 23, 30, 31, 32, 37
+NOP, CONST, NEG, DIV, CALL1, CODE, WORD, WORD_POP, CALL_ENTRY = 0, 1, 6, 11, 23, 30, 31, 32, 38
 SQRT = 7  # stdlib/builtins.h
 
 
