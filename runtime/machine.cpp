@@ -390,6 +390,8 @@ BlockResult Machine::execute(const BlockRequest& request) {
   block_.request = &request;
   block_.compensation = compensation();
   auto failed = [&] { return block_.error && stop_on_error_; };
+  if (request.dynamic_codes) check_dynamic_codes();
+  if (failed()) return BlockResult::Error;
   // 1. Preparatory functions in written order.
   apply_codes(Timing::None);
   // 2. Registers.
@@ -408,6 +410,18 @@ BlockResult Machine::execute(const BlockRequest& request) {
   if (block_.end_information) return BlockResult::EndOfInformation;
   if (block_.end) return BlockResult::ProgramEnd;
   return BlockResult::Continue;
+}
+
+void Machine::check_dynamic_codes() {
+  const BlockRequest& r = *block_.request;
+  for (size_t i = 0; i < r.code_count; ++i)
+    for (size_t j = i + 1; j < r.code_count; ++j)
+      for (const auto& [a, b] : sem_.incompatible)
+        if (a == r.codes[i] && b == r.codes[j]) {
+          block_.code = r.codes[j];
+          report_code(DiagId::CodesIncompatible, sem_.codes[a].name, sem_.codes[b].name);
+        }
+  block_.code = -1;
 }
 
 void Machine::apply_codes(Timing timing) {

@@ -38,6 +38,7 @@ struct BlockRequest {
   size_t code_count = 0;
   const BlockWords* words = nullptr;
   uint32_t source = 0;  // SourceMap::blocks index
+  bool dynamic_codes = false;  // some codes were chosen at run time: check they may share the block
 };
 
 // A problem found while running a block. `slot` is the word it concerns (-1 = the
@@ -167,6 +168,7 @@ class Machine {
   FnCall current(FnGroup group) const;  // the function a modal group holds now
   void apply(FnCall call, Scope scope, bool emit);
   void apply_codes(Timing timing);  // the block's codes with this timing, in written order
+  void check_dynamic_codes();
   void registers();
   void action();
   void finish();

@@ -38,6 +38,12 @@ enum class ArcCentre : uint8_t { Incremental, Absolute };
 enum class HelixLead : uint8_t { PerRadian, PerRevolution };
 enum class ParabolaTangent : uint8_t { Coordinates, Incremental };
 enum class AngleUnit : uint8_t { Degree, Radian, Revolution };
+// Which words give an arc's centre: I J K along X Y Z (GOST 20999), or I the
+// abscissa and J the ordinate of the plane, K the helix pitch (NC-110).
+enum class CentreWords : uint8_t { PerAxis, Plane };
+// The drilling axis of a canned cycle: the plane's normal, or the axis of the depth
+// word (NC-110 §2.8.9).
+enum class CycleAxis : uint8_t { PlaneNormal, DepthWord };
 
 // Word conventions: which address carries what, and how to read it. Addresses are
 // letters; 0 means "none".
@@ -64,6 +70,26 @@ struct Conventions {
   std::string axes = "XYZ";  // the machine's axes, in canonical order XYZABCUVWPQD
   uint8_t max_call_depth = 0;  // subprogram calls that may be open at once; 0 = the VM's limit
   uint8_t result_space = kNoSpace;  // the variable space measured values go to
+  CentreWords centre_words = CentreWords::PerAxis;
+  char radius_word = 0;             // an arc by its radius: R+ up to 180 degrees, R- beyond
+  bool dwell_timer = false;         // dwells last the dwell-time variable (NC-110 TMR), not a word
+  CycleAxis cycle_axis = CycleAxis::PlaneNormal;
+  bool cycle_two_levels = false;    // R, then R' (its second value): approach and return levels
+  bool cycle_defines_only = false;  // a cycle's own block stores it; the blocks after it drill
+  bool cycle_needs_cancel = false;  // a new cycle needs the active one cancelled first
+  char peck_factor_word = 0;        // G83: the factor on the peck, down to
+  char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
+  char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)
+  bool corrector_in_tool_word = false;  // T tool.corrector: the corrector takes effect at M06
+  bool mirror_toggles = false;      // a mirror code on a mirrored axis turns it back
+};
+
+// A code a program selects at run time by its number (NC-110 `GE1`).
+struct NumberedCode {
+  uint8_t slot = 0;  // the letter's word slot
+  uint16_t number = 0;
+  uint16_t code = 0;  // index into codes
+  bool operator==(const NumberedCode&) const = default;
 };
 
 struct ProgramSemantics {
@@ -73,6 +99,8 @@ struct ProgramSemantics {
   std::vector<uint16_t> power_on;  // indices into codes, applied in order
   Conventions conventions;
   std::vector<std::string> system_names;  // the dialect's name of each SysVar ("TMR"), for messages
+  std::vector<NumberedCode> numbered;     // the codes a program may select at run time
+  std::vector<std::pair<uint16_t, uint16_t>> incompatible;  // codes that must not share a block
 };
 
 }  // namespace ncc

@@ -8,9 +8,10 @@ namespace {
 struct SysInfo {
   std::string_view name;
   uint32_t indices;
+  uint32_t writable;
 };
 constexpr std::array<SysInfo, static_cast<size_t>(SysVar::Count)> kSystemVars = {{
-#define SYS(id, name, indices, doc) {name, indices},
+#define SYS(id, name, indices, writable, doc) {name, indices, writable},
 #include "system_vars.def"
 #undef SYS
 }};
@@ -18,6 +19,7 @@ constexpr std::array<SysInfo, static_cast<size_t>(SysVar::Count)> kSystemVars = 
 
 std::string_view sys_name(SysVar v) { return kSystemVars[static_cast<size_t>(v)].name; }
 uint32_t sys_indices(SysVar v) { return kSystemVars[static_cast<size_t>(v)].indices; }
+bool sys_writable(SysRef ref) { return ref.index >= kSystemVars[static_cast<size_t>(ref.var)].writable; }
 
 std::optional<SysVar> sys_by_name(std::string_view name) {
   for (size_t i = 0; i < kSystemVars.size(); ++i)

@@ -8,7 +8,7 @@
 namespace ncc {
 
 enum class SysVar : uint8_t {
-#define SYS(id, name, indices, doc) id,
+#define SYS(id, name, indices, writable, doc) id,
 #include "system_vars.def"
 #undef SYS
   Count
@@ -26,5 +26,8 @@ struct SysRef {
   static SysRef unpack(uint16_t v) { return {static_cast<SysVar>(v >> 8), static_cast<uint8_t>(v & 0xFF)}; }
   bool valid() const { return var < SysVar::Count && index < sys_indices(var); }
 };
+
+// Whether a program may write it (the clock TIM0 and the remaining paths it may not).
+bool sys_writable(SysRef ref);
 
 }  // namespace ncc

@@ -10,6 +10,7 @@ namespace {
 constexpr std::array<BuiltinInfo, static_cast<size_t>(Builtin::Count)> kBuiltins = {{
     {"sin", 1}, {"cos", 1}, {"tan", 1}, {"asin", 1}, {"acos", 1}, {"atan", 1}, {"atan2", 2}, {"sqrt", 1},
     {"abs", 1}, {"trunc", 1}, {"round", 1}, {"floor", 1}, {"ceil", 1}, {"exp", 1}, {"ln", 1},
+    {"gtl_line", 2}, {"gtl_point", 2}, {"gtl_circle", 2},
 }};
 constexpr double kDeg = std::numbers::pi / 180.0;
 }  // namespace
@@ -70,6 +71,22 @@ bool eval_builtin(Builtin b, const double* a, double& out, std::string_view& why
       }
       out = std::log(a[0]);
       break;
+    case Builtin::GtlLine:
+    case Builtin::GtlPoint:
+    case Builtin::GtlCircle: {
+      // Element numbers are positive whole numbers; the fields are 1..3 (a point has 2).
+      int fields = b == Builtin::GtlPoint ? 2 : 3;
+      if (!(a[0] >= 1 && a[0] == std::trunc(a[0]))) {
+        why = "element numbers (1, 2, ...)";
+        return false;
+      }
+      if (!(a[1] >= 1 && a[1] <= fields && a[1] == std::trunc(a[1]))) {
+        why = fields == 2 ? "fields 1 and 2 of a point" : "fields 1, 2 and 3";
+        return false;
+      }
+      why = "undefined";
+      return false;
+    }
     case Builtin::Count: return false;
   }
   if (!std::isfinite(out)) {

@@ -11,6 +11,9 @@ namespace ncc {
 
 enum class Builtin : uint8_t {
   Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Trunc, Round, Floor, Ceil, Exp, Ln,
+  // NC-110 FEL, FEP, FEC (§2.12): field b of GTL line, point or circle a. No element
+  // is defined before ncc supports GTL geometry, so they report it undefined.
+  GtlLine, GtlPoint, GtlCircle,
   Count
 };
 
@@ -22,7 +25,8 @@ struct BuiltinInfo {
 const BuiltinInfo& builtin_info(Builtin b);
 std::optional<Builtin> builtin_by_name(std::string_view name);
 
-// Evaluates b on args; on a domain error returns false and names the rule in `why`.
+// Evaluates b on args; on a domain error returns false and names the rule in `why`
+// ("undefined" for a GTL element that is not defined).
 bool eval_builtin(Builtin b, const double* args, double& out, std::string_view& why);
 
 }  // namespace ncc

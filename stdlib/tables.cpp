@@ -73,9 +73,72 @@ std::vector<std::string> split(std::string_view s, char sep) {
   return out;
 }
 
+void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagnostics& diags) {
+  // letter class repeat order [range params] meaning
+  for (const TableRow& row : table.rows) {
+    const auto& c = row.cells;
+    AddressEntry a;
+    a.letter = c[0].size() == 1 ? c[0][0] : 0;
+    bool ok = (a.letter >= 'A' && a.letter <= 'Z') || (a.letter >= 'a' && a.letter <= 'z');
+    ok = ok && pick(c[1],
+                    {{"dimension", WordClass::Dimension},
+                     {"angular", WordClass::Angular},
+                     {"interpolation", WordClass::Interpolation},
+                     {"feed", WordClass::Feed},
+                     {"nondimension", WordClass::NonDimension},
+                     {"undefined", WordClass::Undefined},
+                     {"element", WordClass::Element},
+                     {"factor", WordClass::Factor}},
+                    a.word_class);
+    std::string_view repeat = c[2];
+    if (repeat.starts_with("several(") && repeat.ends_with(")")) {
+      auto n = parse_int(repeat.substr(8, repeat.size() - 9));
+      ok = ok && n && *n > 0;
+      a.max_count = n.value_or(0);
+      repeat = "several";
+    }
+    ok = ok && pick(repeat,
+                    {{"once", Repeat::Once}, {"group", Repeat::Group}, {"several", Repeat::Several},
+                     {"feed", Repeat::Feed}, {"twice", Repeat::Twice}},
+                    a.repeat);
+    auto order = parse_int(c[3]);
+    ok = ok && order && (c.size() == 5 || c.size() == 7);
+    if (ok && c.size() == 7) {
+      if (c[4] != "-") {
+        size_t dots = c[4].find("..");
+        std::string lo = c[4].substr(0, dots), hi = dots == std::string::npos ? "" : c[4].substr(dots + 2);
+        double min = 0, max = 0;
+        auto number = [](const std::string& text, double& v) {
+          auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+          return ec == std::errc() && p == text.data() + text.size();
+        };
+        ok = dots != std::string::npos && number(lo, min) && number(hi, max) && min <= max;
+        a.ranged = true;
+        a.min = min;
+        a.max = max;
+        size_t point = hi.find('.');
+        a.decimals = point == std::string::npos ? 0 : static_cast<int>(hi.size() - point - 1);
+      }
+      if (c[5] != "-")
+        for (const std::string& cls : split(c[5], ',')) {
+          ok = ok && (cls == "BY" || cls == "IN" || cls == "LI" || cls == "RE" || cls == "LR");
+          a.params.push_back(cls);
+        }
+    }
+    if (!ok || !order) {
+      report(diags, table, row.line, "malformed address row");
+      continue;
+    }
+    a.order = *order;
+    a.meaning = c.back();
+    out[a.letter] = a;
+  }
+}
+
 }  // namespace
 
-Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags) {
+Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags, size_t max_columns) {
+  if (max_columns < columns) max_columns = columns;
   Table table{std::move(name), {}};
   uint32_t line_no = 0;
   size_t pos = 0;
@@ -89,8 +152,11 @@ Table parse_table(std::string name, std::string_view text, size_t columns, Diagn
     if (!split_row(line, row.cells, error)) {
       report(diags, table, line_no, error);
     } else if (!row.cells.empty()) {
-      if (row.cells.size() != columns)
-        report(diags, table, line_no, fmt::format("expected {} columns, found {}", columns, row.cells.size()));
+      if (row.cells.size() < columns || row.cells.size() > max_columns)
+        report(diags, table, line_no,
+               columns == max_columns ? fmt::format("expected {} columns, found {}", columns, row.cells.size())
+                                      : fmt::format("expected {} to {} columns, found {}", columns, max_columns,
+                                                    row.cells.size()));
       else
         table.rows.push_back(std::move(row));
     }
@@ -99,14 +165,15 @@ Table parse_table(std::string name, std::string_view text, size_t columns, Diagn
   return table;
 }
 
-std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags) {
+std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags,
+                                size_t max_columns) {
   std::string path = fmt::format("dialects/{}/{}", dialect, file);
   auto text = embedded_file(path);
   if (!text) {
     diags.report(DiagId::TableSyntax, {}, fmt::format("missing table {}", path));
     return std::nullopt;
   }
-  return parse_table(path, *text, columns, diags);
+  return parse_table(path, *text, columns, diags, max_columns);
 }
 
 bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cycles, std::vector<FnCall>& out,
@@ -136,10 +203,10 @@ bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cyc
         return false;
       }
       call.arg = static_cast<uint16_t>(i);
-    } else if (*fn == Fn::WorkOffset) {
+    } else if (*fn == Fn::WorkOffset || *fn == Fn::SpindleRangeForce) {
       auto n = parse_int(arg);
       if (!n || *n < 0 || *n > 99) {
-        error = fmt::format("offset number '{}' must be 0..99", arg);
+        error = fmt::format("'{}' needs a number 0..99, not '{}'", name, arg);
         return false;
       }
       call.arg = static_cast<uint16_t>(*n);
@@ -205,34 +272,7 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
 
 DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) {
   DialectTables t;
-  if (auto table = load_table(dialect, "addresses.tsv", 5, diags)) {
-    for (const TableRow& row : table->rows) {
-      const auto& c = row.cells;
-      AddressEntry a;
-      a.letter = c[0].size() == 1 ? c[0][0] : 0;
-      bool ok = a.letter >= 'A' && a.letter <= 'Z';
-      ok = ok && pick(c[1],
-                      {{"dimension", WordClass::Dimension},
-                       {"angular", WordClass::Angular},
-                       {"interpolation", WordClass::Interpolation},
-                       {"feed", WordClass::Feed},
-                       {"nondimension", WordClass::NonDimension},
-                       {"undefined", WordClass::Undefined}},
-                      a.word_class);
-      ok = ok && pick(c[2],
-                      {{"once", Repeat::Once}, {"group", Repeat::Group}, {"several", Repeat::Several},
-                       {"feed", Repeat::Feed}},
-                      a.repeat);
-      auto order = parse_int(c[3]);
-      if (!ok || !order) {
-        report(diags, *table, row.line, "malformed address row");
-        continue;
-      }
-      a.order = *order;
-      a.meaning = c[4];
-      t.addresses[a.letter] = a;
-    }
-  }
+  if (auto table = load_table(dialect, "addresses.tsv", 5, diags, 7)) read_addresses(*table, t.addresses, diags);
   if (auto table = load_table(dialect, "cycles.tsv", 6, diags)) {
     for (const TableRow& row : table->rows) {
       const auto& c = row.cells;
@@ -259,6 +299,30 @@ DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) 
       for (size_t col = 1; col < 3; ++col)
         for (const std::string& token : split(row.cells[col], ' '))
           if (!token.empty()) list.push_back(token);
+    }
+  }
+  // The compatibility matrix: a pair is incompatible if either row says so, or if
+  // both codes are of one group.
+  if (embedded_file(fmt::format("dialects/{}/congruence.tsv", dialect))) {
+    if (auto table = load_table(dialect, "congruence.tsv", 2, diags)) {
+      auto g_number = [&](const std::string& cell, uint32_t line) -> std::optional<int> {
+        auto n = cell.size() > 1 && cell[0] == 'G' ? parse_int(std::string_view(cell).substr(1)) : std::nullopt;
+        if (!n || !t.g_codes.count(*n)) report(diags, *table, line, fmt::format("'{}' is not a G code of the table", cell));
+        return n && t.g_codes.count(*n) ? n : std::nullopt;
+      };
+      for (const TableRow& row : table->rows) {
+        auto a = g_number(row.cells[0], row.line);
+        for (const std::string& cell : split(row.cells[1], ' ')) {
+          auto b = cell.empty() ? std::nullopt : g_number(cell, row.line);
+          if (a && b) {
+            t.incompatible.insert({*a, *b});
+            t.incompatible.insert({*b, *a});
+          }
+        }
+      }
+      for (const auto& [a, ea] : t.g_codes)
+        for (const auto& [b, eb] : t.g_codes)
+          if (ea.group != "-" && ea.group == eb.group) t.incompatible.insert({a, b});
     }
   }
   if (auto table = load_table(dialect, "citations.tsv", 2, diags)) {

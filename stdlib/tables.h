@@ -5,6 +5,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,20 +25,31 @@ struct Table {
   std::vector<TableRow> rows;
 };
 
-// Parses `text`; rows whose cell count differs from `columns` are reported.
-Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags);
+// Parses `text`; rows whose cell count is not within [columns, max_columns] are
+// reported (max_columns 0: exactly `columns`).
+Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags, size_t max_columns = 0);
 
 // Loads stdlib/dialects/<dialect>/<file> from the embedded data.
-std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags);
+std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags,
+                                size_t max_columns = 0);
+// The embedded file, if there is one.
+std::optional<std::string_view> embedded_file(std::string_view path);
 
-enum class WordClass : uint8_t { Dimension, Angular, Interpolation, Feed, NonDimension, Undefined };
-enum class Repeat : uint8_t { Once, Group, Several, Feed };
+enum class WordClass : uint8_t { Dimension, Angular, Interpolation, Feed, NonDimension, Undefined, Element, Factor };
+enum class Repeat : uint8_t { Once, Group, Several, Feed, Twice };
 
 struct AddressEntry {
   char letter = 0;
   WordClass word_class = WordClass::Undefined;
   Repeat repeat = Repeat::Once;
+  int max_count = 0;  // Several: at most this many in a block (0: no limit)
   int order = 0;
+  // The constants the address takes (when `ranged`), with the decimals of the
+  // format, and the E parameter classes that may stand for the value (NC-110).
+  bool ranged = false;
+  double min = 0, max = 0;
+  int decimals = 0;
+  std::vector<std::string> params;
   std::string meaning;
 };
 
@@ -53,6 +65,9 @@ struct CodeEntry {
 
 struct DialectTables {
   std::map<char, AddressEntry> addresses;
+  // G codes that must not share a block (a compatibility matrix, NC-110 Table 2.4):
+  // pairs of G numbers, both orders. Empty when the dialect has no matrix.
+  std::set<std::pair<int, int>> incompatible;
   std::map<int, CodeEntry> g_codes;
   std::map<int, CodeEntry> m_codes;
   std::vector<CyclePattern> cycles;

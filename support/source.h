@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,7 +40,8 @@ class SourceFile {
   std::vector<uint32_t> line_starts_;
 };
 
-// Owns every file a compilation or a run reads, so diagnostics can quote them.
+// Owns every file a compilation or a run reads, so diagnostics can quote them. Files
+// stay where they are as more are added (a front end reads the programs a program calls).
 class SourceManager {
  public:
   uint32_t add(std::string path, std::string text);
@@ -47,7 +49,7 @@ class SourceManager {
   size_t size() const { return files_.size(); }
 
  private:
-  std::vector<SourceFile> files_;
+  std::deque<SourceFile> files_;
 };
 
 }  // namespace ncc

@@ -59,6 +59,18 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.str(c.axes);
   w.u8(c.max_call_depth);
   w.u8(c.result_space);
+  w.u8(static_cast<uint8_t>(c.centre_words));
+  w.u8(static_cast<uint8_t>(c.radius_word));
+  w.u8(c.dwell_timer);
+  w.u8(static_cast<uint8_t>(c.cycle_axis));
+  w.u8(c.cycle_two_levels);
+  w.u8(c.cycle_defines_only);
+  w.u8(c.cycle_needs_cancel);
+  w.u8(static_cast<uint8_t>(c.peck_factor_word));
+  w.u8(static_cast<uint8_t>(c.peck_minimum_word));
+  w.u8(static_cast<uint8_t>(c.tap_pitch_word));
+  w.u8(c.corrector_in_tool_word);
+  w.u8(c.mirror_toggles);
   w.u32(static_cast<uint32_t>(s.codes.size()));
   for (const CodeDesc& code : s.codes) {
     w.str(code.name);
@@ -82,6 +94,17 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   for (uint16_t i : s.power_on) w.u16(i);
   w.u32(static_cast<uint32_t>(s.system_names.size()));
   for (const std::string& name : s.system_names) w.str(name);
+  w.u32(static_cast<uint32_t>(s.numbered.size()));
+  for (const NumberedCode& c : s.numbered) {
+    w.u8(c.slot);
+    w.u16(c.number);
+    w.u16(c.code);
+  }
+  w.u32(static_cast<uint32_t>(s.incompatible.size()));
+  for (auto [a, b] : s.incompatible) {
+    w.u16(a);
+    w.u16(b);
+  }
 }
 
 void write_sources(ByteWriter& w, const SourceMap& m) {
@@ -145,6 +168,18 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.axes = r.str();
   c.max_call_depth = r.u8();
   c.result_space = r.u8();
+  ok = ok && enum_value(r, CentreWords::Plane, c.centre_words);
+  c.radius_word = static_cast<char>(r.u8());
+  c.dwell_timer = r.u8();
+  ok = ok && enum_value(r, CycleAxis::DepthWord, c.cycle_axis);
+  c.cycle_two_levels = r.u8();
+  c.cycle_defines_only = r.u8();
+  c.cycle_needs_cancel = r.u8();
+  c.peck_factor_word = static_cast<char>(r.u8());
+  c.peck_minimum_word = static_cast<char>(r.u8());
+  c.tap_pitch_word = static_cast<char>(r.u8());
+  c.corrector_in_tool_word = r.u8();
+  c.mirror_toggles = r.u8();
   uint32_t n = 0;
   if (!ok || !count(r, 10, n)) return false;
   s.codes.resize(n);
@@ -174,6 +209,19 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   if (!count(r, 4, n) || n > static_cast<uint32_t>(SysVar::Count)) return false;
   s.system_names.resize(n);
   for (std::string& name : s.system_names) name = r.str();
+  if (!count(r, 5, n)) return false;
+  s.numbered.resize(n);
+  for (NumberedCode& c : s.numbered) {
+    c.slot = r.u8();
+    c.number = r.u16();
+    c.code = r.u16();
+  }
+  if (!count(r, 4, n)) return false;
+  s.incompatible.resize(n);
+  for (auto& [a, b] : s.incompatible) {
+    a = r.u16();
+    b = r.u16();
+  }
   return !r.failed();
 }
 
@@ -403,7 +451,8 @@ std::string verify(const Module& m) {
   auto letter_ok = [](char c) { return c == 0 || (c >= 'A' && c <= 'Z'); };
   const Conventions& c = s.conventions;
   if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
-      !letter_ok(c.pitch_change_word))
+      !letter_ok(c.pitch_change_word) || !letter_ok(c.radius_word) || !letter_ok(c.peck_factor_word) ||
+      !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word))
     return "a convention names an address that is not a letter";
   for (const std::string* axes : {&c.axes, &c.tool_offset_axes})
     for (size_t i = 0; i < axes->size(); ++i)
@@ -434,6 +483,10 @@ std::string verify(const Module& m) {
     }
   for (uint16_t i : s.power_on)
     if (i >= s.codes.size()) return fmt::format("power-on state names code {} of {}", i, s.codes.size());
+  for (const NumberedCode& n : s.numbered)
+    if (n.code >= s.codes.size() || n.slot >= kWordSlots) return "a numbered code names a code that does not exist";
+  for (auto [a, b] : s.incompatible)
+    if (a >= s.codes.size() || b >= s.codes.size()) return "the compatibility matrix names a code that does not exist";
   uint64_t variables = 0;
   for (const VarSpace& space : m.spaces) {
     variables += space.size;

@@ -57,6 +57,7 @@ namespace ncc::vm {
   X(JumpSkip, "j", 0, 0, "go to j if the block-skip switch of the runtime is on")              \
   X(Step, "", 0, 0, "count one executed block against --max-steps")                            \
   X(Code, "c", 0, 0, "add G/M code c to the pending block")                                    \
+  X(CodeOf, "w", 1, 0, "pop a number; add the code of letter slot w with that number")         \
   X(Word, "wk", 0, 0, "set word w of the pending block to numbers[k]")                         \
   X(WordPop, "w", 1, 0, "pop the value of word w of the pending block")                        \
   X(Exec, "", 0, 0, "run the pending block on the motion runtime, then clear it")              \

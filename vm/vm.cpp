@@ -1,5 +1,6 @@
 #include "vm.h"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -247,8 +248,14 @@ RunStatus Vm::run(uint32_t entry) {
         for (int i = arity - 1; i >= 0; --i) args[i] = pop();
         double r = 0;
         std::string_view why;
-        if (!eval_builtin(b, args, r, why))
-          return fail(pc, DiagId::DomainError, shortest(args[0]), fmt::format("{} ({})", builtin_info(b).name, why));
+        if (!eval_builtin(b, args, r, why)) {
+          if (why == "undefined")
+            return fail(pc, DiagId::GtlElementUndefined, b == Builtin::GtlLine ? 'l' : b == Builtin::GtlPoint ? 'p' : 'c',
+                        shortest(args[0]));
+          // The GTL functions' second argument is the field.
+          bool field = b >= Builtin::GtlLine && !why.starts_with("element");
+          return fail(pc, DiagId::DomainError, shortest(args[field ? 1 : 0]), fmt::format("{} ({})", builtin_info(b).name, why));
+        }
         st.push_back(r);
         break;
       }
@@ -266,6 +273,17 @@ RunStatus Vm::run(uint32_t entry) {
         if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
         break;
       case Op::Code: codes_.push_back(u16_at(operands)); break;
+      case Op::CodeOf: {
+        double v = pop();
+        const auto& numbered = m_.semantics.numbered;
+        auto it = std::find_if(numbered.begin(), numbered.end(), [&](const NumberedCode& c) {
+          return c.slot == operands[0] && c.number == v;
+        });
+        if (it == numbered.end()) return fail(pc, DiagId::CodeUnknown, slot_name(operands[0]), shortest(v));
+        codes_.push_back(it->code);
+        dynamic_codes_ = true;
+        break;
+      }
       case Op::Word: words_.set(operands[0], m_.numbers[u32_at(operands + 1)]); break;
       case Op::WordPop: {
         double v = pop();
@@ -274,10 +292,11 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       }
       case Op::Exec: {
-        BlockRequest request{codes_.data(), codes_.size(), &words_, m_.source_of(pc)};
+        BlockRequest request{codes_.data(), codes_.size(), &words_, m_.source_of(pc), dynamic_codes_};
         BlockResult result = machine_.execute(request);
         codes_.clear();
         words_.clear();
+        dynamic_codes_ = false;
         // Measured values the block stores (NC-110 G72-G74).
         for (auto [index, value] : machine_.take_results())
           if (!store(m_.semantics.conventions.result_space, index, value, pc)) return RunStatus::Error;

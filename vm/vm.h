@@ -66,6 +66,7 @@ class Vm {
   std::vector<uint16_t> codes_;  // the pending block
   BlockWords words_;
   std::string message_;          // the pending operator message
+  bool dynamic_codes_ = false;   // the pending block has codes chosen at run time
 };
 
 }  // namespace ncc::vm

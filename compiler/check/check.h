@@ -11,7 +11,10 @@ namespace ncc {
 
 struct CheckRules {
   const stdlib::DialectTables* tables = nullptr;
-  bool pedantic = false;  // report the recommended word order
+  bool pedantic = false;            // report the recommended word order
+  bool block_number_order = true;   // block numbers rise and are not used twice
+  bool unique_labels = false;       // a label names one block of its unit
+  uint32_t max_repeat_depth = 0;    // repeat loops that may nest (0: no limit)
 };
 
 void check(const ir::Program& program, const CheckRules& rules, Diagnostics& diags);

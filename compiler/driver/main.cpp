@@ -28,8 +28,9 @@ struct Command {
   std::string_view options;  // the command's own options, for --help
 };
 
-constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost (default gost)
+constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110 (default gost)
   --machine FILE            machine profile (TOML, docs/profile.md); default: built in
+  --lib DIR                 program library: where called programs are found (NC-110 CLS)
   --diagnostics-format F    text | json | sarif (default text)
   --error-limit N           stop after N errors (default 100, 0 = no limit)
   --color WHEN              auto | always | never (default auto)
@@ -76,6 +77,7 @@ struct Options {
   std::string output;
   std::string dialect = "gost";
   std::string machine;
+  std::string library;
   std::string trace = "-";
   TraceFormat trace_format = TraceFormat::Text;
   DiagFormat diag_format = DiagFormat::Text;
@@ -110,6 +112,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(o.dialect)) return "--dialect needs a name";
     } else if (a == "--machine") {
       if (!value(o.machine)) return "--machine needs a file";
+    } else if (a == "--lib") {
+      if (!value(o.library)) return "--lib needs a directory";
     } else if (a == "--diagnostics-format") {
       if (!value(text)) return "--diagnostics-format needs text, json or sarif";
       if (text == "text") o.diag_format = DiagFormat::Text;
@@ -158,6 +162,7 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
 class Cli {
  public:
   explicit Cli(Options o) : o_(std::move(o)), s_(o_.error_limit) {
+    s_.library = o_.library;
     color_ = o_.color == "always" || (o_.color == "auto" && isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"));
   }
 

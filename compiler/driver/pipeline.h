@@ -19,6 +19,7 @@ struct Session {
   SourceManager sources;
   Diagnostics diags;
   std::optional<stdlib::Profile> profile;
+  std::string library;  // --lib: where called programs are found
 
   explicit Session(uint32_t error_limit = 100) : diags(error_limit) {}
 };

@@ -11,16 +11,25 @@
 
 namespace ncc {
 
+struct ReadOptions {
+  std::string library;  // where called programs are looked for ("" = the dialect's default)
+};
+
 class Frontend {
  public:
   virtual ~Frontend() = default;
-  // Reads one source file into IR; every problem found on the way is reported.
-  virtual ir::Program read(const SourceManager& sources, uint32_t file, Diagnostics& diags) = 0;
+  // Reads one source file into IR, and the files it calls; every problem found on
+  // the way is reported.
+  virtual ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) = 0;
   // What the dialect-independent checks need to know about this dialect.
   virtual const CheckRules& rules() const = 0;
 };
 
 std::vector<std::string_view> dialect_names();
+
+// The power-on state from a dialect's table: "G00" names a G code, anything else a
+// canonical function ("spindle.stop").
+void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens);
 // Builds the front end of `dialect` configured by `profile`; nullptr when the
 // dialect is unknown or its profile settings are invalid (reported).
 std::unique_ptr<Frontend> make_frontend(std::string_view dialect, const stdlib::Profile& profile, Diagnostics& diags);

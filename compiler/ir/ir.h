@@ -60,6 +60,9 @@ enum class WordKind : uint8_t {
   Ignored,      // kept for printing only (a word the checks rejected)
 };
 
+// A Code word whose code is found at run time from its value (NC-110 `GE1`).
+constexpr int32_t kDynamicCode = -2;
+
 struct Word {
   WordKind kind = WordKind::Parameter;
   uint8_t slot = 0;
@@ -112,6 +115,7 @@ struct Block {
   bool main_block = false;         // ':' (GOST 20999 §2.6)
   bool skippable = false;          // '/' before the block: skipped when block skip is on
   bool has_errors = false;
+  char sync = 0;                   // NC-110 '#': wait for the motion before; '&': do not
   std::string label;
   std::vector<Word> words;
   std::vector<std::string> comments;

@@ -2,6 +2,8 @@
 // changes only on purpose.
 #include <fmt/format.h>
 
+#include <algorithm>
+
 #include "support/text.h"
 
 #include "ir.h"
@@ -128,6 +130,10 @@ std::string print(const Program& p, const SourceManager& sources) {
       if (b.has_errors) out += " has_errors";
       if (!b.label.empty()) out += fmt::format(" label=\"{}\"", b.label);
       out += "\n";
+      // Text the dialect does not show the operator (an NC-110 ';' block).
+      bool shown = std::any_of(b.stmts.begin(), b.stmts.end(), [](const Stmt& s) { return s.kind == StmtKind::Comment; });
+      if (!shown)
+        for (const std::string& c : b.comments) out += fmt::format("    note \"{}\"\n", json_escape(c));
       if (!b.words.empty()) {
         out += "    words";
         for (const Word& w : b.words) out += fmt::format(" {}{}{}", w.optional ? "/" : "", w.address, w.text);

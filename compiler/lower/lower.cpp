@@ -168,6 +168,10 @@ class Lowering {
       if (w.kind == ir::WordKind::Code && w.code >= 0) {
         op(Op::Code);
         u16(static_cast<uint32_t>(w.code));
+      } else if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) {
+        expr(w.value);
+        op(Op::CodeOf);
+        u8(w.slot);
       } else if (w.kind == ir::WordKind::Parameter) {
         if (p_.is_constant(w.value)) {
           op(Op::Word);

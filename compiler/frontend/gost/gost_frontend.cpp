@@ -575,7 +575,7 @@ class GostFrontend final : public Frontend {
     rules_.pedantic = settings_.decode.mode == Mode::Pedantic;
   }
 
-  ir::Program read(const SourceManager& sources, uint32_t file, Diagnostics& diags) override {
+  ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions&) override {
     ir::Program program;
     program.dialect = "gost";
     program.files.push_back(file);
@@ -584,33 +584,14 @@ class GostFrontend final : public Frontend {
     program.semantics.cycles = settings_.tables.cycles;
     Reader reader(settings_, program, sources.file(file), file, diags);
     reader.run();
-    set_power_on(program);
+    // §8: the functions set at power-on and after M02/M30 for the control type.
+    set_power_on(program, settings_.tables, settings_.tables.power_on.at(settings_.control_type));
     return program;
   }
 
   const CheckRules& rules() const override { return rules_; }
 
  private:
-  // §8: the functions set at power-on and after M02/M30 for the control type.
-  void set_power_on(ir::Program& program) const {
-    auto& codes = program.semantics.codes;
-    for (const std::string& token : settings_.tables.power_on.at(settings_.control_type)) {
-      CodeDesc desc;
-      if (token.size() > 1 && token[0] == 'G') {
-        auto it = settings_.tables.g_codes.find(std::stoi(token.substr(1)));
-        if (it == settings_.tables.g_codes.end()) continue;
-        desc = it->second.desc;
-      } else {
-        desc.name = token;
-        std::string error;
-        stdlib::parse_functions(token, settings_.tables.cycles, desc.calls, error);
-      }
-      uint16_t index = 0;
-      while (index < codes.size() && !(codes[index].name == desc.name && codes[index].calls == desc.calls)) ++index;
-      if (index == codes.size()) codes.push_back(desc);
-      program.semantics.power_on.push_back(index);
-    }
-  }
 
   Settings settings_;
   CheckRules rules_;

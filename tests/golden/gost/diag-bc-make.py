@@ -7,14 +7,17 @@ of every byte after the 16-byte header, little-endian at offset 12; then the
 sections, each a 4-byte tag, a u32 size and its bytes.
 """
 import os
+import re
 import struct
 import subprocess
 import sys
 import zlib
 
 HEADER = 16
-# Opcodes (vm/opcodes.h).
-NOP, CONST, NEG, DIV, CALL1, CODE, WORD, WORD_POP, CALL_ENTRY = 0, 1, 6, 11, 23, 30, 31, 32, 38
+# Opcodes, numbered in the order vm/opcodes.h lists them.
+OPCODES = re.findall(r"^  X\((\w+),", open(os.path.join(os.path.dirname(__file__), "../../../vm/opcodes.h")).read(), re.M)
+NOP, CONST, NEG, DIV, CALL1, CODE, WORD, WORD_POP, CALL_ENTRY = (
+    OPCODES.index(name) for name in ("Nop", "Const", "Neg", "Div", "Call1", "Code", "Word", "WordPop", "CallEntry"))
 SQRT = 7  # stdlib/builtins.h
 
 

@@ -1,0 +1,546 @@
+// NC-110 three-letter codes (§2.13): `(CODE,operand,...)`. The grammar keeps each
+// operand as its pieces; its meaning comes from the code's signature
+// (three_letter_codes.tsv) and the position, so they are read here.
+#include <algorithm>
+#include <charconv>
+
+#include "reader.h"
+#include "support/text.h"
+
+namespace ncc::nc110 {
+
+namespace {
+
+constexpr size_t kMaxAxisOperands = 6;  // §2.13.1: "up to 6 axes"
+
+std::string kind_name(OperandKind k) {
+  switch (k) {
+    case OperandKind::Origin: return "an origin number 0..99";
+    case OperandKind::Axis: return "an axis letter";
+    case OperandKind::Dim: return "an axis and its value";
+    case OperandKind::Pair: return "an axis and two values";
+    case OperandKind::Angle: return "an angle";
+    case OperandKind::Factor: return "a scale factor";
+    case OperandKind::Count: return "a count 0..99";
+    case OperandKind::Program: return "a program name";
+    case OperandKind::Label: return "a label";
+    case OperandKind::Comparand: return "a value to compare";
+    case OperandKind::Item: return "a text or a value";
+    case OperandKind::Seconds: return "a time 0..32 s";
+    case OperandKind::Zone: return "a zone number 1..3";
+    case OperandKind::Turning: return "the letter T";
+    case OperandKind::Condition: return "end conditions 0..3";
+  }
+  return "?";
+}
+
+bool is_letter(const std::string& s) { return s.size() == 1 && std::isalpha(static_cast<unsigned char>(s[0])); }
+
+}  // namespace
+
+struct Reader::Piece {
+  size_t type;
+  std::string text;
+  SourceRange range;
+  bool blank_before;
+};
+
+struct Reader::Operand {
+  OperandKind kind = OperandKind::Origin;
+  SourceRange range;
+  std::string text;
+  ir::ExprId value = ir::kNoExpr;   // a number, an E parameter, a memory or system value, a text
+  ir::ExprId second = ir::kNoExpr;  // the upper value of a pair
+  std::string first_text, second_text;  // an axis value as written: "-300"
+  char axis = 0;
+  std::string name, device;         // a label or a program
+  bool is_text = false;             // value is a String or a Text
+  uint32_t chars = 0;               // of a Text
+  VarType type = VarType::LongReal; // how DIS shows the value
+};
+
+std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces, OperandKind kind,
+                                                const std::string& code) {
+  Operand op;
+  op.kind = kind;
+  op.range = {file_, line_no_, pieces.front().range.col, line_no_, pieces.back().range.end_col};
+  op.text = std::string(line_.substr(op.range.col - 1, op.range.end_col - op.range.col));
+  size_t at = 0;
+  auto fail = [&](const std::string& why) -> std::optional<Operand> {
+    diags_.report(DiagId::OperandKind, op.range, op.text, kind_name(kind), code, why);
+    block_.has_errors = true;
+    return std::nullopt;
+  };
+  auto type = [&](size_t i) { return i < pieces.size() ? pieces[i].type : antlr4::Token::EOF; };
+  auto adjacent = [&](size_t i) { return i < pieces.size() && !pieces[i].blank_before; };
+  // A Cyrillic look-alike of a Latin letter gets its own message.
+  for (const Piece& p : pieces)
+    if (p.type == Nc110Lexer::LETTER && static_cast<unsigned char>(p.text[0]) >= 0x80 && kind != OperandKind::Label &&
+        kind != OperandKind::Comparand && kind != OperandKind::Item) {
+      diags_.report(DiagId::CharInvalid, p.range, fmt::format("'{}' (Cyrillic)", p.text));
+      block_.has_errors = true;
+      return std::nullopt;
+    }
+  // [sign] digits [. digits] | . digits
+  auto number = [&](std::string& written, bool signs = true) -> std::optional<double> {
+    size_t i = at;
+    std::string text;
+    if (signs && (type(i) == Nc110Lexer::PLUS || type(i) == Nc110Lexer::MINUS)) text += pieces[i++].text;
+    bool digits = false;
+    if (type(i) == Nc110Lexer::DIGITS && (i == at || adjacent(i))) text += pieces[i++].text, digits = true;
+    if (type(i) == Nc110Lexer::DOT && (i == at || adjacent(i))) {
+      text += pieces[i++].text;
+      if (type(i) == Nc110Lexer::DIGITS && adjacent(i)) text += pieces[i++].text, digits = true;
+    }
+    if (!digits) return std::nullopt;
+    at = i;
+    written = text;
+    std::string clean = text;
+    if (clean[0] == '+') clean.erase(0, 1);
+    if (clean.back() == '.') clean.pop_back();
+    size_t dot = clean.find('.');
+    if (dot != std::string::npos && (dot == 0 || !std::isdigit(static_cast<unsigned char>(clean[dot - 1]))))
+      clean = clean.substr(0, dot) + "0" + clean.substr(dot);
+    double v = 0;
+    std::from_chars(clean.data(), clean.data() + clean.size(), v);
+    return v;
+  };
+  // E<digits>, adjacent.
+  auto parameter_at = [&]() -> std::optional<uint32_t> {
+    if (type(at) != Nc110Lexer::LETTER || pieces[at].text != "E" || type(at + 1) != Nc110Lexer::DIGITS || !adjacent(at + 1))
+      return std::nullopt;
+    SourceRange r{file_, line_no_, pieces[at].range.col, line_no_, pieces[at + 1].range.end_col};
+    auto index = parameter("E" + pieces[at + 1].text, r);
+    at += 2;
+    return index;
+  };
+  // A constant of a range, or an E parameter of one of `classes`.
+  auto value = [&](double lo, double hi, bool whole, std::vector<std::string> classes) -> bool {
+    if (auto e = parameter_at()) {
+      if (!check_class(*e, classes, op.range, code)) return false;
+      op.value = parameter_expr(*e, op.range);
+      op.type = parameter_type(*e);
+      return true;
+    }
+    if (block_.has_errors && type(at) == Nc110Lexer::LETTER && pieces[at].text == "E") return false;
+    std::string written;
+    auto v = number(written);
+    if (!v) {
+      if (type(at) == Nc110Lexer::LETTER && pieces[at].text == "O" && pieces.size() == 1)
+        fail("the letter O where the digit 0 is meant");
+      else
+        fail("not a number");
+      return false;
+    }
+    if (whole && *v != std::trunc(*v)) return fail("it must be a whole number"), false;
+    if (*v < lo || *v > hi) return fail(fmt::format("it must lie between {} and {}", shortest(lo), shortest(hi))), false;
+    op.value = program_.number(*v, op.range);
+    return true;
+  };
+  // An axis word: letter, then a value, an E parameter or nothing (zero).
+  auto axis_word = [&](char& axis, ir::ExprId& out, std::string& shown) -> bool {
+    if (type(at) != Nc110Lexer::LETTER || !is_letter(pieces[at].text)) return fail("an axis letter comes first"), false;
+    axis = pieces[at].text[0];
+    if (s_.conventions.axes.find(axis) == std::string::npos)
+      return fail(fmt::format("{} is not an axis of this machine ({})", axis, s_.conventions.axes)), false;
+    ++at;
+    if (at < pieces.size() && pieces[at].text == "E" && adjacent(at)) {
+      shown = "E" + (at + 1 < pieces.size() ? pieces[at + 1].text : "");
+      auto e = parameter_at();
+      if (!e || !check_class(*e, {"RE", "LR"}, op.range, code)) return false;
+      out = parameter_expr(*e, op.range);
+      return true;
+    }
+    std::string written;
+    size_t start = at;
+    auto v = adjacent(at) ? number(written) : std::nullopt;
+    if (!v) {
+      at = start;
+      out = program_.number(0, op.range);
+      return true;
+    }
+    shown = written;
+    auto c = constant(axis, written[0] == '-' || written[0] == '+' ? written.substr(1) : written, written[0] == '-',
+                      op.range, std::string(1, axis) + written);
+    if (!c) return false;
+    out = program_.number(*c, op.range);
+    return true;
+  };
+  auto letters_and_digits = [&](bool& ok) {
+    std::string s;
+    ok = true;
+    for (size_t i = at; i < pieces.size(); ++i) {
+      if (pieces[i].type != Nc110Lexer::LETTER && pieces[i].type != Nc110Lexer::DIGITS) break;
+      if (i > at && !adjacent(i)) ok = false;
+      s += pieces[i].text;
+      at = i + 1;
+    }
+    return s;
+  };
+
+  switch (kind) {
+    case OperandKind::Origin:
+      if (!value(0, 99, true, {"IN"})) return std::nullopt;
+      break;
+    case OperandKind::Count:
+      if (!value(0, 99, true, {"BY"})) return std::nullopt;
+      break;
+    case OperandKind::Zone:
+      if (!value(1, 3, true, {"BY"})) return std::nullopt;
+      break;
+    case OperandKind::Condition:
+      if (!value(0, 3, true, {"BY"})) return std::nullopt;
+      break;
+    case OperandKind::Angle:
+      if (!value(-99999.9999, 99999.9999, false, {"RE"})) return std::nullopt;
+      break;
+    case OperandKind::Factor:
+      if (!value(0.0001, 99999.9999, false, {"RE"})) return std::nullopt;
+      break;
+    case OperandKind::Seconds:
+      if (!value(0, 32, false, {"LR"})) return std::nullopt;
+      break;
+    case OperandKind::Axis:
+    case OperandKind::Turning: {
+      if (pieces.size() != 1 || !is_letter(pieces[0].text)) return fail("one letter");
+      char letter = pieces[0].text[0];
+      if (kind == OperandKind::Turning && letter != 'T') return fail("only T (turning) may stand here");
+      if (kind == OperandKind::Axis && s_.conventions.axes.find(letter) == std::string::npos)
+        return fail(fmt::format("{} is not an axis of this machine ({})", letter, s_.conventions.axes));
+      op.axis = letter;
+      at = 1;
+      break;
+    }
+    case OperandKind::Dim:
+      if (!axis_word(op.axis, op.value, op.first_text)) return std::nullopt;
+      break;
+    case OperandKind::Pair: {
+      char second = 0;
+      if (!axis_word(op.axis, op.value, op.first_text) || !axis_word(second, op.second, op.second_text))
+        return std::nullopt;
+      if (second != op.axis) return fail(fmt::format("both values belong to one axis: {} and {}", op.axis, second));
+      break;
+    }
+    case OperandKind::Label: {
+      bool ok = false;
+      op.name = letters_and_digits(ok);
+      size_t count = 0;
+      bool valid = ok && !op.name.empty();
+      for (size_t i = 0; i < op.name.size(); ++i) {
+        unsigned char c = static_cast<unsigned char>(op.name[i]);
+        if ((c & 0xC0) != 0x80) ++count;
+        valid = valid && !(c >= 'a' && c <= 'z');
+      }
+      if (!valid || count > 6) return fail("a label is 1 to 6 capital letters and digits, unquoted");
+      break;
+    }
+    case OperandKind::Program: {
+      // NAME[/DEVice]: 1-6 capitals and digits, a letter first; a device of 2-3 (§2.13.2.2).
+      bool ok = false;
+      op.name = letters_and_digits(ok);
+      auto good = [](const std::string& s, size_t lo, size_t hi) {
+        if (s.size() < lo || s.size() > hi || !(s[0] >= 'A' && s[0] <= 'Z')) return false;
+        return std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
+      };
+      if (!ok || !good(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits, a letter first");
+      if (type(at) == Nc110Lexer::SLASH) {
+        ++at;
+        op.device = letters_and_digits(ok);
+        if (!ok || !good(op.device, 2, 3)) return fail("a device name is 2 or 3 capitals and digits, a letter first");
+      }
+      break;
+    }
+    case OperandKind::Comparand:
+    case OperandKind::Item: {
+      if (pieces.size() == 1 && pieces[0].type == Nc110Lexer::STRING) {
+        std::string s = pieces[0].text.substr(1, pieces[0].text.size() - 2);
+        op.is_text = true;
+        op.chars = static_cast<uint32_t>(s.size());
+        op.value = string_expr(s, op.range);
+        at = 1;
+        break;
+      }
+      if (auto e = parameter_at()) {
+        op.value = parameter_expr(*e, op.range);
+        op.type = parameter_type(*e);
+        break;
+      }
+      if (type(0) == Nc110Lexer::LETTER) {
+        bool ok = false;
+        std::string name;
+        size_t i = 0;
+        while (i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER) name += pieces[i++].text;
+        bool memory = std::any_of(s_.memories.begin(), s_.memories.end(),
+                                  [&](const Memory& m) { return name.starts_with(m.name); });
+        if (memory) {
+          auto ref = memory_ref(op.text, op.range);
+          if (!ref) return std::nullopt;
+          op.value = memory_expr(*ref, op.range);
+          op.is_text = ref->chars > 0;
+          op.chars = ref->chars;
+          static constexpr VarType kShow[] = {VarType::Byte,    VarType::Byte, VarType::Integer,
+                                              VarType::Long,    VarType::Real, VarType::LongReal};
+          op.type = kShow[static_cast<int>(ref->format)];
+          at = pieces.size();
+          break;
+        }
+        std::string written = letters_and_digits(ok);
+        size_t digits = written.find_first_of("0123456789");
+        std::optional<uint32_t> n;
+        if (digits != std::string::npos) {
+          if (written.find_first_not_of("0123456789", digits) != std::string::npos || written.size() - digits > 6)
+            return fail("not a value");
+          n = static_cast<uint32_t>(std::stoul(written.substr(digits)));
+        }
+        if (!ok) return fail("not a value");
+        auto ref = system_ref(written.substr(0, digits), n, op.range, false);
+        if (!ref) return std::nullopt;
+        op.value = system_expr(*ref, op.range);
+        break;
+      }
+      std::string written;
+      auto v = number(written);
+      if (!v) return fail("not a value");
+      op.value = program_.number(*v, op.range);
+      break;
+    }
+  }
+  if (at < pieces.size())
+    return fail(fmt::format("'{}' is left over", line_.substr(pieces[at].range.col - 1, op.range.end_col - pieces[at].range.col)));
+  return op;
+}
+
+void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
+  leading(ctx->leading(), true);
+  SourceRange code_range = ctx->code()->LETTER().empty() ? range(ctx->LPAREN()) : range(ctx->code());
+  std::string code;
+  bool adjacent = true;
+  auto letters = ctx->code()->LETTER();
+  for (size_t i = 0; i < letters.size(); ++i) {
+    code += letters[i]->getText();
+    if (i > 0 && letters[i]->getSymbol()->getStartIndex() != letters[i - 1]->getSymbol()->getStopIndex() + 1)
+      adjacent = false;
+  }
+  auto it = s_.codes.find(code);
+  if (it == s_.codes.end() || !adjacent) {
+    for (auto* l : letters)
+      if (static_cast<unsigned char>(l->getText()[0]) >= 0x80) {
+        diags_.report(DiagId::CharInvalid, range(l), fmt::format("'{}' (Cyrillic)", l->getText()));
+        block_.has_errors = true;
+        return;
+      }
+    diags_.report(DiagId::TlcUnknown, code_range, code.empty() ? std::string("") : code);
+    block_.has_errors = true;
+    return;
+  }
+  const CodeSignature& sig = it->second;
+  if (sig.action == Action::Unsupported) {
+    diags_.report(DiagId::Unsupported, code_range, fmt::format("({})", code), sig.meaning);
+    block_.has_errors = true;
+    return;
+  }
+
+  // The operands' pieces.
+  std::vector<std::vector<Piece>> operands;
+  std::vector<SourceRange> commas;
+  for (size_t i = 0; i < ctx->COMMA().size(); ++i) commas.push_back(range(ctx->COMMA(i)));
+  for (auto* o : ctx->operand()) {
+    std::vector<Piece>& pieces = operands.emplace_back();
+    size_t previous_end = SIZE_MAX;
+    for (auto* p : o->piece()) {
+      antlr4::Token* t = p->getStart();
+      pieces.push_back({t->getType(), text(t, t), range(t, t), previous_end != t->getStartIndex()});
+      previous_end = t->getStopIndex() + 1;
+    }
+  }
+
+  // Match them to the signature: fixed items first, the repeated one takes the rest.
+  std::vector<Operand> matched;
+  size_t next = 0;
+  bool group_decided = false, group_present = false;
+  size_t axis_operands = 0;
+  auto describe_missing = [&](const OperandItem& item) { return kind_name(item.kind); };
+  for (const OperandItem& item : sig.operands) {
+    if (item.in_group && !group_decided) {
+      group_decided = true;
+      group_present = next < operands.size();
+    }
+    if (item.in_group && !group_present) continue;
+    size_t taken = 0;
+    while (next < operands.size() && (taken == 0 || item.repeat == '*' || item.repeat == '+')) {
+      if (operands[next].empty()) {
+        SourceRange at = next < commas.size() ? commas[next] : code_range;
+        diags_.report(DiagId::OperandMissing, at, code, "no empty operand");
+        block_.has_errors = true;
+        return;
+      }
+      auto op = operand(operands[next], item.kind, code);
+      ++next;
+      ++taken;
+      if (!op) return;
+      matched.push_back(std::move(*op));
+      if (item.repeat == '*' || item.repeat == '+') ++axis_operands;
+    }
+    if (taken == 0 && (item.repeat == '1' || item.repeat == '+')) {
+      diags_.report(DiagId::OperandMissing, range(ctx->RPAREN()), code, describe_missing(item));
+      block_.has_errors = true;
+      return;
+    }
+  }
+  if (next < operands.size()) {
+    const auto& pieces = operands[next];
+    SourceRange at = pieces.empty() ? commas[next - 1]
+                                    : SourceRange{file_, line_no_, pieces.front().range.col, line_no_,
+                                                  pieces.back().range.end_col};
+    diags_.report(DiagId::OperandExtra, at, code, std::string(line_.substr(at.col - 1, at.end_col - at.col)));
+    block_.has_errors = true;
+    return;
+  }
+  // Axes: each once, at most six (§2.13.1).
+  std::map<char, const Operand*> axes;
+  for (const Operand& op : matched) {
+    if (!op.axis || op.kind == OperandKind::Turning) continue;
+    if (!axes.emplace(op.axis, &op).second) {
+      diags_.report(DiagId::AxisTwice, op.range, op.axis, code);
+      block_.has_errors = true;
+      return;
+    }
+  }
+  if (axis_operands > kMaxAxisOperands && sig.action == Action::Function && !matched.empty() && matched.back().axis) {
+    diags_.report(DiagId::TooManyWords, code_range, axis_operands, "axis", kMaxAxisOperands);
+    block_.has_errors = true;
+    return;
+  }
+  code_action(sig, matched, code_range);
+}
+
+void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& ops, SourceRange code_range) {
+  ir::Stmt s(ir::StmtKind::Machine, block_.range);
+  auto fail = [&](DiagId id, SourceRange r, auto... args) {
+    diags_.report(id, r, args...);
+    block_.has_errors = true;
+  };
+  switch (sig.action) {
+    case Action::Function: {
+      // The code, then its operands as words: an axis list at the axes' slots, axis
+      // values there too (a pair's second one at the second slots), the rest at the
+      // operand slots in order (word_slots.h).
+      auto [it, fresh] = tlc_codes_.emplace(sig.code, static_cast<int32_t>(program_.semantics.codes.size()));
+      if (fresh) program_.semantics.codes.push_back({sig.code, Scope::Modal, Timing::None, {{sig.fn}}});
+      add_word(0, 0, program_.number(0, code_range), "", code_range, ir::WordKind::Code, it->second);
+      block_.words.back().address = sig.code;
+      int operand_number = 0;
+      for (size_t i = 0; i < ops.size(); ++i) {
+        const Operand& op = ops[i];
+        const OperandItem& item = sig.operands[std::min(i, sig.operands.size() - 1)];
+        bool listed_axis = op.kind == OperandKind::Axis && item.repeat != '1';
+        if (op.kind == OperandKind::Dim || op.kind == OperandKind::Pair || listed_axis) {
+          add_word(op.axis, letter_slot(op.axis), listed_axis ? program_.number(0, op.range) : op.value, op.first_text,
+                   op.range);
+          if (op.kind == OperandKind::Pair) add_word(op.axis, second_slot(op.axis), op.second, op.second_text, op.range);
+          continue;
+        }
+        // An axis in a fixed place (DPI, BSP): its number; T of CTL: 1.
+        ir::ExprId value = op.kind == OperandKind::Axis    ? program_.number(axis_index(op.axis), op.range)
+                           : op.kind == OperandKind::Turning ? program_.number(1, op.range)
+                                                             : op.value;
+        add_word('#', operand_slot(operand_number++), value, "=" + op.text, op.range);
+      }
+      if (sig.code == "DSA" && ops.size() == 3 && ops[1].axis == ops[2].axis)
+        return fail(DiagId::AxisTwice, ops[2].range, ops[2].axis, sig.code);
+      if (sig.code == "DPI" && ops.size() == 2 && ops[0].axis == ops[1].axis)
+        return fail(DiagId::AxisTwice, ops[1].range, ops[1].axis, sig.code);
+      break;
+    }
+    case Action::Repeat:
+      s = ir::Stmt(ir::StmtKind::RepeatBegin, block_.range);
+      s.value = ops[0].value;
+      s.limit = 99;  // §2.13.2.1
+      break;
+    case Action::EndRepeat: s = ir::Stmt(ir::StmtKind::RepeatEnd, block_.range); break;
+    case Action::Call: {
+      s = ir::Stmt(ir::StmtKind::Call, ops[0].range);
+      std::string device = ops[0].device.empty() ? s_.default_device : ops[0].device;
+      s.label = device + "/" + ops[0].name;
+      s.value = program_.number(1, ops[0].range);
+      calls_.push_back({ops[0].name, device, s.label, ops[0].range});
+      break;
+    }
+    case Action::CallRange:
+      s = ir::Stmt(ir::StmtKind::CallRange, ops[0].range);
+      s.label = ops[0].name;
+      s.end_label = ops[1].name;
+      break;
+    case Action::Jump:
+      s = ir::Stmt(ir::StmtKind::Jump, ops[0].range);
+      s.label = ops[0].name;
+      break;
+    case Action::JumpIf: {
+      const Operand& a = ops[0];
+      const Operand& b = ops[1];
+      s = ir::Stmt(ir::StmtKind::Jump, ops[2].range);
+      s.label = ops[2].name;
+      const std::string& c = sig.comparison;
+      if (a.is_text || b.is_text) {
+        // Texts compare for equality only, a text reference with a text (decision 11).
+        if (!a.is_text || !b.is_text)
+          return fail(DiagId::TextMismatch, (a.is_text ? b : a).range, fmt::format("({}) compares a text with a number", sig.code));
+        if (c != "eq" && c != "ne")
+          return fail(DiagId::TextMismatch, code_range, fmt::format("({}) cannot compare texts: BEQ and BNE can", sig.code));
+        const Operand& memory = program_.exprs[a.value].op == ir::ExprOp::Text ? a : b;
+        const Operand& other = &memory == &a ? b : a;
+        if (program_.exprs[memory.value].op != ir::ExprOp::Text)
+          return fail(DiagId::TextMismatch, code_range, "two texts in quotes are always the same or always not");
+        ir::ExprId right = other.value;
+        if (program_.exprs[other.value].op == ir::ExprOp::String) {
+          std::string t = program_.texts[program_.exprs[other.value].text];
+          if (t.size() != memory.chars) {
+            diags_.report(DiagId::TextPadded, other.range, t, t.size(), memory.text, 
+                          t.size() < memory.chars ? "blanks are added" : "the rest is not compared");
+            t.resize(memory.chars, ' ');
+            right = string_expr(t, other.range);
+          }
+        } else if (other.chars != memory.chars) {
+          return fail(DiagId::TextMismatch, other.range,
+                      fmt::format("{} and {} hold texts of different lengths", memory.text, other.text));
+        }
+        s.cond = program_.add({ir::ExprOp::TextEq, Builtin::Sin, 0, 0, memory.value, right, code_range});
+        if (c == "ne") s.cond = program_.add({ir::ExprOp::Not, Builtin::Sin, 0, 0, s.cond, ir::kNoExpr, code_range});
+        break;
+      }
+      ir::ExprOp op = c == "gt" ? ir::ExprOp::Gt : c == "lt" ? ir::ExprOp::Lt : c == "eq" ? ir::ExprOp::Eq
+                    : c == "ne" ? ir::ExprOp::Ne : c == "ge" ? ir::ExprOp::Ge : ir::ExprOp::Le;
+      s.cond = program_.add({op, Builtin::Sin, 0, 0, a.value, b.value, code_range});
+      break;
+    }
+    case Action::Display: {
+      // Items one after the other; a value alone shows as NAME=value (§2.13.6.1,
+      // decision 20); a text has at most 32 characters.
+      s = ir::Stmt(ir::StmtKind::Display, block_.range);
+      for (size_t i = 0; i < ops.size(); ++i) {
+        const Operand& op = ops[i];
+        const ir::Expr& e = program_.exprs[op.value];
+        if (e.op == ir::ExprOp::String) {
+          std::string t = program_.texts[e.text];
+          size_t chars = 0;
+          for (unsigned char ch : t) chars += (ch & 0xC0) != 0x80;
+          if (chars > 32) return fail(DiagId::TextTooLong, op.range, t, chars, "(DIS)", 32);
+          s.items.push_back({op.value, op.type});
+          continue;
+        }
+        if (e.op == ir::ExprOp::Number) {
+          s.items.push_back({string_expr(op.text, op.range), op.type});  // as written
+          continue;
+        }
+        if (i == 0 || program_.exprs[ops[i - 1].value].op != ir::ExprOp::String)
+          s.items.push_back({string_expr(op.text + "=", op.range), op.type});
+        s.items.push_back({op.value, op.type});
+      }
+      break;
+    }
+    case Action::Unsupported: return;
+  }
+  block_.stmts.push_back(s);
+}
+
+}  // namespace ncc::nc110

@@ -1,0 +1,148 @@
+// NC-110 front end: the main program and the programs it calls with (CLS), each a
+// file of blocks (reader.h), into one IR program.
+#include "nc110_frontend.h"
+
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "reader.h"
+
+namespace ncc::nc110 {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr uintmax_t kMaxFileSize = 256 << 20;
+
+std::optional<std::string> read_program(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) > kMaxFileSize || ec) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (!in && !in.eof()) return std::nullopt;
+  return buffer.str();
+}
+
+class Nc110Frontend final : public Frontend {
+ public:
+  explicit Nc110Frontend(Settings settings) : s_(std::move(settings)) {
+    rules_.tables = &s_.tables;
+    rules_.max_repeat_depth = 3;    // §2.13.2.1: up to two RPT inside another
+    rules_.unique_labels = true;    // decision 14
+    rules_.block_number_order = false;  // N numbers may repeat and go down (decision 7)
+  }
+
+  ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
+    ir::Program program;
+    program.dialect = program.semantics.dialect = "nc110";
+    program.files.push_back(file);
+    program.semantics.conventions = s_.conventions;
+    program.semantics.cycles = s_.tables.cycles;
+    declare_spaces(program);
+    program.semantics.system_names.resize(static_cast<size_t>(SysVar::Count));
+    for (const auto& [name, entry] : s_.system)
+      if (entry.var) program.semantics.system_names[static_cast<size_t>(*entry.var)] = name;
+
+    // The main program, then every program it calls, each read once (§2.13.2.2).
+    fs::path main_path = sources.file(file).path();
+    std::deque<CallSite> pending;
+    auto read_unit = [&](uint32_t f, ir::UnitKind kind, std::string name) {
+      ir::Unit unit;
+      unit.kind = kind;
+      unit.name = std::move(name);
+      unit.range = SourceRange::point(f, 1, 1);
+      Reader reader(s_, program, sources.file(f), f, diags);
+      reader.run(unit);
+      program.units.push_back(std::move(unit));
+      for (const CallSite& c : reader.calls()) pending.push_back(c);
+    };
+    read_unit(file, ir::UnitKind::Program, main_path.stem().string());
+    std::set<std::string> done;
+    while (!pending.empty() && !diags.limit_reached()) {
+      CallSite call = pending.front();
+      pending.pop_front();
+      if (!done.insert(call.entry).second) continue;
+      fs::path root = !options.library.empty() ? fs::path(options.library)
+                      : !s_.library.empty()     ? fs::path(s_.library)
+                                                : main_path.parent_path();
+      // <library>/<device>/<name>, with or without .nc (decision 8).
+      std::vector<fs::path> candidates = {root / call.device / call.name, root / call.device / (call.name + ".nc")};
+      std::optional<std::string> text;
+      fs::path found;
+      for (const fs::path& candidate : candidates)
+        if ((text = read_program(candidate))) {
+          found = candidate;
+          break;
+        }
+      if (!text) {
+        diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
+        continue;
+      }
+      uint32_t f = sources.add(found.string(), std::move(*text));
+      program.files.push_back(f);
+      read_unit(f, ir::UnitKind::Subprogram, call.entry);
+    }
+
+    set_power_on(program, s_.tables, s_.power_on);
+    add_dynamic_codes(program);
+    return program;
+  }
+
+  const CheckRules& rules() const override { return rules_; }
+
+ private:
+  // E0..E(n-1) typed by Table 2.8, then the byte memories SA, SK, SYVAR.
+  void declare_spaces(ir::Program& program) const {
+    VarSpace e{"E", s_.e_count, {}};
+    for (const ParameterClass& c : s_.classes) {
+      e.types.push_back({c.first, c.type});
+      if (c.limit) e.limit = c.limit;
+    }
+    program.spaces.push_back(e);
+    for (const Memory& m : s_.memories) {
+      VarSpace space{m.name, m.bytes, {}};
+      space.memory = true;
+      program.spaces.push_back(space);
+    }
+  }
+
+  // A G or M code given by an E parameter is found at run time: the program then
+  // carries every code of that letter, and the compatibility matrix.
+  void add_dynamic_codes(ir::Program& program) const {
+    std::set<char> letters;
+    for (const ir::Unit& u : program.units)
+      for (const ir::Block& b : u.blocks)
+        for (const ir::Word& w : b.words)
+          if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) letters.insert(w.address[0]);
+    auto& sem = program.semantics;
+    std::map<int, uint16_t> g_index;
+    for (char letter : letters)
+      for (const auto& [number, entry] : letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes) {
+        uint16_t index = 0;
+        while (index < sem.codes.size() && sem.codes[index].name != entry.desc.name) ++index;
+        if (index == sem.codes.size()) sem.codes.push_back(entry.desc);
+        sem.numbered.push_back({static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
+        if (letter == 'G') g_index[number] = index;
+      }
+    for (const auto& [a, b] : s_.tables.incompatible)
+      if (g_index.count(a) && g_index.count(b)) sem.incompatible.push_back({g_index[a], g_index[b]});
+  }
+
+  Settings s_;
+  CheckRules rules_;
+};
+
+}  // namespace
+
+std::unique_ptr<Frontend> make_nc110_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
+  auto settings = load_settings(profile, diags);
+  if (!settings) return nullptr;
+  return std::make_unique<Nc110Frontend>(std::move(*settings));
+}
+
+}  // namespace ncc::nc110

@@ -1,0 +1,9 @@
+#pragma once
+
+#include "frontend/frontend.h"
+
+namespace ncc::nc110 {
+
+std::unique_ptr<Frontend> make_nc110_frontend(const stdlib::Profile& profile, Diagnostics& diags);
+
+}  // namespace ncc::nc110

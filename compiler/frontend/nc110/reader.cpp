@@ -1,0 +1,620 @@
+// The NC-110 reader: lines, the leading fields and ISO blocks (§2.4-§2.8).
+#include "reader.h"
+#include "support/text.h"
+
+#include <charconv>
+
+namespace ncc::nc110 {
+
+namespace {
+
+constexpr size_t kMaxBlockLength = 128;  // characters (§2.4.4)
+constexpr std::string_view kLowerCase = "abcdlmoprstuvw";  // Table 2.1
+constexpr std::string_view kGtlLetters = "oplcadms";
+constexpr std::string_view kCompensationLetters = "buvw";
+
+bool blank(char c) { return c == ' ' || c == '\t'; }
+
+// The Latin letter a Cyrillic one looks like, or 0.
+char latin_twin(uint32_t cp) {
+  static constexpr std::pair<uint32_t, char> kTwins[] = {
+      {0x410, 'A'}, {0x412, 'B'}, {0x415, 'E'}, {0x41A, 'K'}, {0x41C, 'M'}, {0x41D, 'H'}, {0x41E, 'O'},
+      {0x420, 'P'}, {0x421, 'C'}, {0x422, 'T'}, {0x425, 'X'}, {0x430, 'a'}, {0x435, 'e'}, {0x43E, 'o'},
+      {0x440, 'p'}, {0x441, 'c'}, {0x443, 'y'}, {0x445, 'x'}};
+  for (auto [c, l] : kTwins)
+    if (c == cp) return l;
+  return 0;
+}
+
+// Decodes one UTF-8 character at `at`; 0 bytes if it is not one.
+uint32_t decode_utf8(std::string_view s, size_t at, size_t& length) {
+  unsigned char c = static_cast<unsigned char>(s[at]);
+  length = 1;
+  if (c < 0x80) return c;
+  size_t n = c >= 0xF0 && c < 0xF5 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 ? 2 : 0;
+  if (!n || at + n > s.size()) {
+    length = 0;
+    return 0;
+  }
+  uint32_t cp = c & (0x7F >> n);
+  for (size_t i = 1; i < n; ++i) {
+    unsigned char cc = static_cast<unsigned char>(s[at + i]);
+    if ((cc & 0xC0) != 0x80) {
+      length = 0;
+      return 0;
+    }
+    cp = (cp << 6) | (cc & 0x3F);
+  }
+  length = n;
+  return cp;
+}
+
+// Where the leading fields end (§2.4.4): '/', "label", N number, '#' or '&', in any
+// order here; the parser checks their order.
+size_t skip_leading(std::string_view line, size_t i) {
+  while (i < line.size()) {
+    char c = line[i];
+    if (blank(c) || c == '/' || c == '#' || c == '&') {
+      ++i;
+    } else if (c == '"') {
+      size_t close = line.find('"', i + 1);
+      i = close == std::string_view::npos ? line.size() : close + 1;
+    } else if (c == 'N') {
+      size_t j = i + 1;
+      while (j < line.size() && blank(line[j])) ++j;
+      if (j == line.size() || line[j] < '0' || line[j] > '9') break;
+      while (j < line.size() && line[j] >= '0' && line[j] <= '9') ++j;
+      i = j;
+    } else {
+      break;
+    }
+  }
+  return i;
+}
+
+bool has_equals(std::string_view s) {
+  bool quoted = false;
+  for (char c : s) {
+    if (c == '"') quoted = !quoted;
+    if (c == '=' && !quoted) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+// Syntax errors at their byte column, with the messages the NC-110 calls for.
+class Reader::Listener final : public antlr4::BaseErrorListener {
+ public:
+  explicit Listener(Reader& r) : r_(r) {}
+
+  void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t, size_t position, const std::string&,
+                   std::exception_ptr) override {
+    r_.block_.has_errors = true;
+    if (!token || token->getType() == antlr4::Token::EOF) {
+      size_t at = token ? token->getStartIndex() : position;
+      uint32_t col = r_.byte_col(at);
+      r_.diags_.report(DiagId::SyntaxError, {r_.file_, r_.line_no_, col, r_.line_no_, col + 1}, "end of the block");
+      return;
+    }
+    SourceRange range = r_.range(token, token);
+    std::string text = r_.text(token, token);
+    switch (token->getType()) {
+      case Nc110Lexer::OPEN_STRING: r_.diags_.report(DiagId::StringUnterminated, range); return;
+      case Nc110Lexer::CYRILLIC: {
+        size_t length = 0;
+        uint32_t cp = decode_utf8(text, 0, length);
+        if (char twin = latin_twin(cp)) {
+          r_.diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", text, cp), twin);
+          return;
+        }
+        r_.diags_.report(DiagId::CharInvalid, range, fmt::format("'{}' (U+{:04X})", text, cp));
+        return;
+      }
+      case Nc110Lexer::INVALID:
+        if (text == ";") {
+          r_.diags_.report(DiagId::CommentInline, range);
+        } else {
+          unsigned char c = text.empty() ? 0 : static_cast<unsigned char>(text[0]);
+          r_.diags_.report(DiagId::CharInvalid, range,
+                           c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
+                           : c < 0x80          ? fmt::format("control character 0x{:02X}", c)
+                                               : fmt::format("byte 0x{:02X}", c));
+        }
+        return;
+      case Nc110Lexer::EQUALS:
+        r_.diags_.report(DiagId::OneInstruction, range, "a second '=' starts another assignment");
+        return;
+      default: r_.diags_.report(DiagId::SyntaxError, range, fmt::format("'{}'", text));
+    }
+  }
+
+ private:
+  Reader& r_;
+};
+
+Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
+               Diagnostics& diags)
+    : s_(settings), program_(program), source_(source), file_(file), diags_(diags) {
+  listener_ = std::make_unique<Listener>(*this);
+  lexer_.removeErrorListeners();
+  parser_.removeErrorListeners();
+  parser_.addErrorListener(listener_.get());
+  parser_.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+}
+
+Reader::~Reader() = default;
+
+uint32_t Reader::byte_col(size_t code_point) const {
+  size_t i = std::min(code_point, byte_of_.size() - 1);
+  return byte_of_[i] + 1;
+}
+
+SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
+  uint32_t begin = byte_col(first->getStartIndex());
+  uint32_t end = last->getType() == antlr4::Token::EOF ? begin + 1 : byte_col(last->getStopIndex() + 1);
+  if (end <= begin) end = begin + 1;
+  return {file_, line_no_, begin, line_no_, end};
+}
+
+std::string Reader::text(antlr4::Token* first, antlr4::Token* last) const {
+  size_t begin = byte_col(first->getStartIndex()) - 1;
+  size_t end = byte_col(last->getStopIndex() + 1) - 1;
+  return end > begin ? std::string(line_.substr(begin, end - begin)) : std::string();
+}
+
+void Reader::run(ir::Unit& unit) {
+  unit_ = &unit;
+  uint32_t first = 0, last = 0;  // the first and last lines with something on them
+  for (uint32_t n = 1; n <= source_.line_count(); ++n) {
+    std::string_view l = source_.line(n);
+    if (l.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+    if (!first) first = n;
+    last = n;
+  }
+  for (uint32_t n = first; n && n <= last && !diags_.limit_reached(); ++n) {
+    std::string_view l = source_.line(n);
+    while (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    size_t begin = l.find_first_not_of(" \t");
+    if (begin == std::string_view::npos) continue;  // a blank line is not a block
+    // '%', the ISO tape mark, alone on the first or the last line (§2.4.1, decision 28).
+    if (l.substr(begin) == "%" && (n == first || n == last)) continue;
+    read_line(l, n);
+  }
+}
+
+void Reader::read_line(std::string_view line, uint32_t line_no) {
+  line_ = line;
+  line_no_ = line_no;
+  block_ = ir::Block{};
+  block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+
+  // Code points for ANTLR; a byte that is not UTF-8 becomes U+0001 (INVALID), and
+  // every character keeps its byte column.
+  std::string decoded;
+  byte_of_.clear();
+  for (size_t i = 0; i < line.size();) {
+    size_t length = 0;
+    decode_utf8(line, i, length);
+    byte_of_.push_back(static_cast<uint32_t>(i));
+    if (length == 0) {
+      decoded += '\x01';
+      length = 1;
+    } else {
+      decoded.append(line.substr(i, length));
+    }
+    i += length;
+  }
+  byte_of_.push_back(static_cast<uint32_t>(line.size()));
+  uint32_t errors = diags_.error_count();
+  if (byte_of_.size() - 1 > kMaxBlockLength) {
+    uint32_t col = byte_of_[kMaxBlockLength] + 1;
+    diags_.report(DiagId::BlockTooLong, {file_, line_no, col, line_no, static_cast<uint32_t>(line.size() + 1)},
+                  byte_of_.size() - 1, kMaxBlockLength);
+  }
+
+  size_t first = line.find_first_not_of(" \t");
+  if (line[first] == ';') {
+    // A comment block (§2.5): not shown, not executed; kept for the reader of the IR.
+    block_.comments.emplace_back(line.substr(first + 1));
+    unit_->blocks.push_back(std::move(block_));
+    return;
+  }
+  size_t body = skip_leading(line, first);
+  Kind kind = body < line.size() && line[body] == '(' ? Kind::Code
+              : has_equals(line.substr(body))          ? Kind::Assign
+                                                       : Kind::Iso;
+
+  input_.load(decoded);
+  lexer_.setInputStream(&input_);
+  size_t mode = kind == Kind::Iso ? size_t{Nc110Lexer::DEFAULT_MODE} : kind == Kind::Assign ? size_t{Nc110Lexer::ASSIGN} : size_t{Nc110Lexer::TLC};
+  lexer_.setMode(mode);
+  tokens_.setTokenSource(&lexer_);
+  parser_.setTokenStream(&tokens_);
+  switch (kind) {
+    case Kind::Iso: iso_block(parser_.isoBlock()); break;
+    case Kind::Assign: assign_block(parser_.assignBlock()); break;
+    case Kind::Code: code_block(parser_.tlcBlock()); break;
+  }
+  block_.has_errors = block_.has_errors || diags_.error_count() != errors;
+  bool empty = block_.words.empty() && block_.stmts.empty() && block_.label.empty() && !block_.number &&
+               !block_.skippable && !block_.has_errors;
+  if (!empty) unit_->blocks.push_back(std::move(block_));
+}
+
+// ---- The leading fields ------------------------------------------------------------
+
+void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
+  // 1 '/', 2 the label, 3 the block number, 4 '#' or '&' (§2.4.4, §2.16).
+  int stage = 0;
+  for (auto* field : ctx->field()) {
+    antlr4::Token* t = field->getStart();
+    SourceRange r = range(t, t);
+    auto out_of_order = [&](const char* message) {
+      diags_.report(DiagId::LeadingFieldOrder, r, message);
+      block_.has_errors = true;
+    };
+    switch (t->getType()) {
+      case Nc110Lexer::SLASH:
+        if (stage > 0 || r.col != line_.find_first_not_of(" \t") + 1) {
+          out_of_order("the block skip '/' must be the first character of the block");
+          break;
+        }
+        stage = 1;
+        block_.skippable = true;
+        break;
+      case Nc110Lexer::STRING: {
+        if (stage >= 2) {
+          out_of_order(stage == 2 ? "a block has one label" : "the label must come before the block number and '#'/'&'");
+          break;
+        }
+        stage = 2;
+        std::string label = text(t, t);
+        label = label.substr(1, label.size() - 2);
+        // 1..6 capitals, digits or Cyrillic capitals (§2.4.4, decision 3).
+        size_t count = 0;
+        std::string bad;
+        for (size_t i = 0; i < label.size();) {
+          size_t length = 0;
+          uint32_t cp = decode_utf8(label, i, length);
+          if (!length) length = 1;
+          bool ok = (cp >= 'A' && cp <= 'Z') || (cp >= '0' && cp <= '9') || (cp >= 0x410 && cp <= 0x42F) || cp == 0x401;
+          if (!ok && bad.empty()) bad = label.substr(i, length);
+          ++count;
+          i += length;
+        }
+        if (count == 0 || count > 6 || !bad.empty()) {
+          std::string why = count == 0 ? "is empty"
+                            : count > 6 ? fmt::format("has {} characters; a label has at most 6", count)
+                                        : fmt::format("holds '{}': a label is made of capital letters and digits", bad);
+          diags_.report(DiagId::LabelInvalid, r, fmt::format("\"{}\"", label), why);
+          block_.has_errors = true;
+          break;
+        }
+        block_.label = label;
+        break;
+      }
+      case Nc110Lexer::OPEN_STRING:
+        diags_.report(DiagId::StringUnterminated, r);
+        block_.has_errors = true;
+        stage = std::max(stage, 2);
+        break;
+      case Nc110Lexer::BLOCK_NUMBER: {
+        if (stage >= 3) {
+          out_of_order(stage == 3 ? "a block has one block number" : "the block number must come before '#' and '&'");
+          break;
+        }
+        stage = 3;
+        std::string digits;
+        for (char c : text(t, t))
+          if (c >= '0' && c <= '9') digits += c;
+        std::string shown = "N" + digits;
+        if (digits.size() > 4) {
+          diags_.report(DiagId::TooManyDigits, r, shown, digits.size(), "N4", 4);
+          block_.has_errors = true;
+          break;
+        }
+        block_.number = static_cast<uint32_t>(std::stoul(digits));
+        ir::Word w;
+        w.kind = ir::WordKind::BlockNumber;
+        w.slot = static_cast<uint8_t>(letter_slot('N'));
+        w.address = "N";
+        w.text = digits;
+        w.value = program_.number(*block_.number, r);
+        w.range = r;
+        block_.words.push_back(std::move(w));
+        break;
+      }
+      default:  // '#', '&'
+        if (stage == 4) {
+          out_of_order("'#' and '&' exclude each other, and stand once");
+          break;
+        }
+        stage = 4;
+        block_.sync = t->getType() == Nc110Lexer::HASH ? '#' : '&';
+        if (!has_body) {
+          diags_.report(DiagId::LeadingFieldOrder, r,
+                        fmt::format("'{}' must be followed by the instruction it synchronises", block_.sync));
+          block_.has_errors = true;
+        }
+        break;
+    }
+  }
+}
+
+// ---- ISO blocks --------------------------------------------------------------------
+
+int32_t Reader::code_index(char letter, int number) {
+  const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
+  auto it = table.find(number);
+  if (it == table.end()) return -1;
+  int key = (letter == 'G' ? 0 : 1000) + number;
+  if (auto found = code_map_.find(key); found != code_map_.end()) return found->second;
+  program_.semantics.codes.push_back(it->second.desc);
+  int32_t index = static_cast<int32_t>(program_.semantics.codes.size() - 1);
+  code_map_[key] = index;
+  return index;
+}
+
+void Reader::add_word(char letter, int slot, ir::ExprId value, std::string text, SourceRange r, ir::WordKind kind,
+                      int32_t code) {
+  ir::Word w;
+  w.kind = kind;
+  w.slot = static_cast<uint8_t>(slot);
+  // An operand of a three-letter code is shown by its slot: #1, X' (word_slots.h).
+  w.address = letter == '#' || slot == second_slot(letter) ? slot_name(slot) : std::string(1, letter);
+  w.text = std::move(text);
+  w.value = value;
+  w.code = code;
+  w.range = r;
+  block_.words.push_back(std::move(w));
+}
+
+std::optional<double> Reader::constant(char letter, std::string_view written, bool negative, SourceRange r,
+                                       const std::string& shown) {
+  double v = 0;
+  std::string digits(written);
+  if (!digits.empty() && digits.back() == '.') digits.pop_back();
+  if (!digits.empty() && digits.front() == '.') digits.insert(digits.begin(), '0');
+  std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (negative) v = -v;
+  auto entry = s_.tables.addresses.find(letter);
+  if (entry == s_.tables.addresses.end() || !entry->second.ranged) return v;
+  const stdlib::AddressEntry& a = entry->second;
+  // The format's digits (§1.2.6): significant decimals, then the range (§2.7).
+  size_t point = written.find('.');
+  std::string_view fraction = point == std::string_view::npos ? std::string_view() : written.substr(point + 1);
+  while (!fraction.empty() && fraction.back() == '0') fraction.remove_suffix(1);
+  if (static_cast<int>(fraction.size()) > a.decimals) {
+    if (a.decimals == 0) diags_.report(DiagId::WholeNumber, r, shown);
+    else diags_.report(DiagId::FractionDigits, r, shown, fraction.size(), fmt::format("{}.{}", letter, a.decimals), a.decimals);
+    return std::nullopt;
+  }
+  if (v < a.min || v > a.max) {
+    diags_.report(DiagId::ValueRange, r, shown, std::string(1, letter), shortest(a.min), shortest(a.max));
+    return std::nullopt;
+  }
+  return v;
+}
+
+void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
+  leading(ctx->leading(), !ctx->isoWord().empty());
+  bool operand_seen = false;
+  for (auto* w : ctx->isoWord()) {
+    if (auto* a = dynamic_cast<Nc110Parser::AddressWordContext*>(w)) address_word(a, operand_seen);
+    else if (auto* t = dynamic_cast<Nc110Parser::ToolWordContext*>(w)) tool_word(t), operand_seen = true;
+    else if (auto* e = dynamic_cast<Nc110Parser::ResultWordContext*>(w)) result_word(e), operand_seen = true;
+  }
+  check_iso_block();
+  bool action = false;
+  for (const ir::Word& w : block_.words) action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
+  if (action) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
+}
+
+void Reader::address_word(Nc110Parser::AddressWordContext* ctx, bool& operand_seen) {
+  const std::string letter_text = ctx->LETTER()->getText();
+  const char letter = letter_text[0];
+  SourceRange r = range(ctx);
+  auto* v = ctx->wordValue();
+  const std::string written = v ? text(v->getStart(), v->getStop()) : std::string();
+  const std::string shown = letter + written;
+  auto fail = [&](DiagId id, auto... args) {
+    diags_.report(id, r, args...);
+    block_.has_errors = true;
+  };
+  if (letter >= 'a' && letter <= 'z') {
+    if (kLowerCase.find(letter) == std::string_view::npos)
+      return fail(DiagId::AddressUnknown, fmt::format("lower-case '{}'", letter));
+    if (kGtlLetters.find(letter) != std::string_view::npos)
+      return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "GTL geometry (§2.11)");
+    if (kCompensationLetters.find(letter) != std::string_view::npos)
+      return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "cutter radius compensation (§2.8.7, §2.9)");
+  }
+  if (letter == 'N') return fail(DiagId::LeadingFieldOrder, "the block number N comes first in the block, with its digits");
+  if (letter == 'E') return fail(DiagId::ValueMissing, "E (an E parameter needs its number)");
+  auto entry = s_.tables.addresses.find(letter);
+  if (entry == s_.tables.addresses.end() || entry->second.word_class == stdlib::WordClass::Undefined)
+    return fail(DiagId::AddressUnknown, fmt::format("'{}'", letter));
+  const stdlib::AddressEntry& a = entry->second;
+
+  if (letter == 'G') {
+    // §2.8: after the block number, before any operand; two digits at most.
+    if (operand_seen) {
+      const ir::Word* last = nullptr;
+      for (const ir::Word& w : block_.words)
+        if (w.kind != ir::WordKind::BlockNumber) last = &w;
+      fail(DiagId::GAfterOperand, shown, last ? last->address + last->text : std::string("an operand"));
+    }
+  } else {
+    operand_seen = true;
+  }
+  const bool negative = v && v->sign() && v->sign()->MINUS();
+  if (v && v->EREF()) {
+    if (v->sign()) return fail(DiagId::SignedParameter, shown);
+    auto index = parameter(v->EREF()->getText(), r);
+    if (!index) return;
+    std::vector<std::string> allowed = a.params;
+    if (!check_class(*index, allowed, r, std::string(1, letter))) return;
+    ir::ExprId value = parameter_expr(*index, r);
+    if (letter == 'G' || letter == 'M') {
+      // A code given at run time (§2.4.5: "G programmed implicitly by an E parameter").
+      add_word(letter, letter_slot(letter), value, written, r, ir::WordKind::Code, ir::kDynamicCode);
+      return;
+    }
+    int slot = letter_slot(letter);
+    if (letter == 'R')
+      for (const ir::Word& w : block_.words)
+        if (w.address == "R") slot = second_slot('R');
+    add_word(letter, slot, value, written, r);
+    return;
+  }
+  // A constant, or nothing: zero for G, the axes, I J K and R (§2.4.3, decision 4).
+  bool zero_allowed = letter == 'G' || a.word_class == stdlib::WordClass::Dimension || letter == 'I' || letter == 'J' ||
+                      letter == 'K';
+  if (!v && !zero_allowed) return fail(DiagId::ValueMissing, shown);
+  std::string number_text = v ? v->NUMBER()->getText() : "0";
+  if (letter == 'G' || letter == 'M') {
+    if (v && v->sign()) return fail(DiagId::SignNotAllowed, shown, "a code has no sign");
+    std::string_view digits = number_text;
+    if (digits.find('.') != std::string_view::npos) return fail(DiagId::WholeNumber, shown);
+    if (digits.size() > 2) return fail(DiagId::TooManyDigits, shown, digits.size(), std::string(1, letter) + "2", 2);
+    int number = std::stoi(std::string(digits));
+    int32_t code = code_index(letter, number);
+    if (code < 0) return fail(letter == 'G' ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, fmt::format("{}{:02}", letter, number));
+    add_word(letter, letter_slot(letter), program_.number(number, r), v ? written : "", r, ir::WordKind::Code, code);
+    return;
+  }
+  auto value = constant(letter, number_text, negative, r, shown);
+  if (!value) {
+    block_.has_errors = true;
+    return;
+  }
+  int slot = letter_slot(letter);
+  if (letter == 'R')
+    for (const ir::Word& w : block_.words)
+      if (w.address == "R") slot = second_slot('R');
+  add_word(letter, slot, program_.number(*value, r), written, r);
+}
+
+void Reader::tool_word(Nc110Parser::ToolWordContext* ctx) {
+  // T tool.corrector: two integers, each a constant or an IN parameter (§2.7.7,
+  // Table 2.9 `TE14.E15`); T6 is corrector 0 (decision 11).
+  SourceRange r = range(ctx);
+  auto* v = ctx->toolValue();
+  if (!v) {
+    diags_.report(DiagId::ValueMissing, r, "T");
+    block_.has_errors = true;
+    return;
+  }
+  std::string written = text(v->getStart(), v->getStop());
+  std::string shown = "T" + written;
+  // The parts: numbers as written, or E parameters.
+  std::vector<std::pair<antlr4::Token*, std::string>> parts;
+  for (auto* child : v->children) {
+    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
+    if (!t || t->getSymbol()->getType() == Nc110Lexer::DOT) continue;
+    parts.push_back({t->getSymbol(), t->getText()});
+  }
+  std::vector<std::pair<std::string, ir::ExprId>> values;  // written, value
+  for (auto& [token, part] : parts) {
+    if (token->getType() == Nc110Lexer::EREF) {
+      auto index = parameter(part, r);
+      if (!index || !check_class(*index, {"IN"}, r, "T")) return;
+      values.push_back({part, parameter_expr(*index, r)});
+      continue;
+    }
+    // A number: "1.5" holds both, "1." or ".5" one of them.
+    size_t point = part.find('.');
+    std::string before = part.substr(0, point);
+    std::string after = point == std::string::npos ? "" : part.substr(point + 1);
+    if (!before.empty()) values.push_back({before, ir::kNoExpr});
+    if (!after.empty() || (point != std::string::npos && before.empty())) values.push_back({after, ir::kNoExpr});
+  }
+  if (values.empty() || values.size() > 2) {
+    diags_.report(DiagId::SyntaxError, r, fmt::format("'{}': T takes tool.corrector", shown));
+    block_.has_errors = true;
+    return;
+  }
+  for (auto& [part, value] : values) {
+    if (value != ir::kNoExpr) continue;
+    if (part.size() > 4 || part.empty()) {
+      diags_.report(DiagId::TooManyDigits, r, shown, part.size(), "T4.4", 4);
+      block_.has_errors = true;
+      return;
+    }
+    value = program_.number(std::stoi(part), r);
+  }
+  add_word('T', letter_slot('T'), values[0].second, values[0].first, r);
+  add_word('T', second_slot('T'), values.size() > 1 ? values[1].second : program_.number(0, r),
+           values.size() > 1 ? values[1].first : "0", r);
+}
+
+void Reader::result_word(Nc110Parser::ResultWordContext* ctx) {
+  // `G72 Z200 X50 E32`: the first E parameter the results go to (§1.2.33).
+  SourceRange r = range(ctx);
+  auto index = parameter(ctx->EREF()->getText(), r);
+  if (!index) {
+    block_.has_errors = true;
+    return;
+  }
+  std::string written = ctx->EREF()->getText();
+  written.erase(std::remove_if(written.begin(), written.end(), blank), written.end());
+  add_word('E', letter_slot('E'), program_.number(*index, r), written.substr(1), r);
+}
+
+void Reader::check_iso_block() {
+  // What the measuring cycles need, and what only they may have (§2.8.12).
+  const ir::Word* measure = nullptr;
+  const ir::Word* result = nullptr;
+  const ir::Word* radius = nullptr;
+  int axes = 0;
+  for (const ir::Word& w : block_.words) {
+    if (w.kind == ir::WordKind::Code && w.code >= 0) {
+      for (const FnCall& call : program_.semantics.codes[w.code].calls)
+        if (call.fn == Fn::MeasurePoint || call.fn == Fn::MeasureHole || call.fn == Fn::MeasureDeviation) measure = &w;
+    }
+    if (w.kind != ir::WordKind::Parameter) continue;
+    if (w.address == "E") result = &w;
+    if (w.address == "r") radius = &w;
+    if (w.address.size() == 1 && s_.conventions.axes.find(w.address[0]) != std::string::npos) ++axes;
+    else if (w.address.size() == 1 && kAxisLetters.find(w.address[0]) != std::string_view::npos &&
+             s_.conventions.axes.find(w.address[0]) == std::string::npos)
+      diags_.report(DiagId::AddressUnknown, w.range, fmt::format("axis {} (this machine's axes are {})", w.address,
+                                                                 s_.conventions.axes));
+  }
+  auto fail = [&](SourceRange r, const std::string& message) {
+    diags_.report(DiagId::ResultWord, r, message);
+    block_.has_errors = true;
+  };
+  const bool hole = measure && measure->address == "G" && program_.semantics.codes[measure->code].name == "G73";
+  if (result && !measure) fail(result->range, "an E parameter alone names where G72, G73 or G74 store what they measure");
+  if (measure && !result)
+    fail(measure->range, fmt::format("{} needs the E parameter its results go to, e.g. E40",
+                                     program_.semantics.codes[measure->code].name));
+  if (radius && !hole) {
+    diags_.report(DiagId::Unsupported, radius->range, fmt::format("'r{}' outside G73", radius->text),
+                  "cutter radius compensation (§2.8.7)");
+    block_.has_errors = true;
+  }
+  if (hole && !radius) fail(measure->range, "G73 needs the nominal radius of the hole in r");
+  if (measure && result) {
+    const std::string name = program_.semantics.codes[measure->code].name;
+    if (!hole && (axes < 1 || axes > 3))
+      fail(measure->range, fmt::format("{} measures 1 to 3 axes; this block has {}", name, axes));
+    uint32_t count = hole ? 3 : static_cast<uint32_t>(std::max(axes, 1));
+    uint32_t first = static_cast<uint32_t>(program_.exprs[result->value].number);
+    uint32_t last = first + count - 1;
+    if (last >= s_.e_count) {
+      diags_.report(DiagId::ParameterRange, result->range, fmt::format("E{}", last), s_.e_count - 1);
+      block_.has_errors = true;
+    }
+    for (uint32_t e = first; e <= last && e < s_.e_count; ++e)
+      if (!check_class(e, {"LR"}, result->range, fmt::format("the result of {}", name))) break;
+  }
+  if (axes > 8) {
+    diags_.report(DiagId::TooManyWords, block_.range, axes, "axis", 8);
+    block_.has_errors = true;
+  }
+}
+
+}  // namespace ncc::nc110

@@ -1,0 +1,122 @@
+// The NC-110 reader: one file, block by block, into an IR unit. Each line is told
+// apart first (§2.5), then lexed in the mode of its block type and parsed by the
+// ANTLR grammar (grammar/Nc110*.g4); the visitor code here turns the parse tree
+// into IR and reports what the grammar cannot say (reader.cpp: leading fields and
+// ISO blocks; expressions.cpp: assignments; codes.cpp: three-letter codes).
+#pragma once
+
+#include <antlr4-runtime.h>
+
+#include "Nc110Lexer.h"
+#include "Nc110Parser.h"
+#include "ir/ir.h"
+#include "settings.h"
+
+namespace ncc::nc110 {
+
+// A CLS of the file: the program it calls, for the front end to find and read.
+struct CallSite {
+  std::string name;    // P800
+  std::string device;  // MP2, or the default
+  std::string entry;   // the unit's name: MP2/P800
+  SourceRange range;
+};
+
+using ncc_nc110::Nc110Lexer;
+using ncc_nc110::Nc110Parser;
+
+class Reader {
+ public:
+  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags);
+  ~Reader();
+
+  // Reads the whole file into `unit`.
+  void run(ir::Unit& unit);
+  const std::vector<CallSite>& calls() const { return calls_; }
+
+ private:
+  enum class Kind { Iso, Assign, Code };
+
+  // Lines and tokens.
+  void read_line(std::string_view line, uint32_t line_no);
+  SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
+  SourceRange range(antlr4::ParserRuleContext* ctx) const { return range(ctx->getStart(), ctx->getStop()); }
+  SourceRange range(antlr4::tree::TerminalNode* t) const { return range(t->getSymbol(), t->getSymbol()); }
+  uint32_t byte_col(size_t code_point) const;
+  std::string text(antlr4::Token* first, antlr4::Token* last) const;  // the source between them
+
+  // reader.cpp: the leading fields and ISO blocks.
+  void leading(Nc110Parser::LeadingContext* ctx, bool has_body);
+  void iso_block(Nc110Parser::IsoBlockContext* ctx);
+  void address_word(Nc110Parser::AddressWordContext* ctx, bool& operand_seen);
+  void tool_word(Nc110Parser::ToolWordContext* ctx);
+  void result_word(Nc110Parser::ResultWordContext* ctx);
+  void check_iso_block();
+  int32_t code_index(char letter, int number);
+  // A constant of `letter`'s range and format; nullopt (reported) if it is not one.
+  std::optional<double> constant(char letter, std::string_view written, bool negative, SourceRange r,
+                                 const std::string& shown);
+  void add_word(char letter, int slot, ir::ExprId value, std::string text, SourceRange r,
+                ir::WordKind kind = ir::WordKind::Parameter, int32_t code = -1);
+
+  // expressions.cpp: assignments, expressions and references.
+  void assign_block(Nc110Parser::AssignBlockContext* ctx);
+  ir::ExprId expr(Nc110Parser::ExprContext* ctx);
+  ir::ExprId term(Nc110Parser::TermContext* ctx);
+  ir::ExprId factor(Nc110Parser::FactorContext* ctx);
+  ir::ExprId primary(Nc110Parser::PrimaryContext* ctx);
+
+  // An E parameter: `E 35` -> 35, checked against the machine's count.
+  std::optional<uint32_t> parameter(std::string_view text, SourceRange r);
+  ir::ExprId parameter_expr(uint32_t index, SourceRange r);
+  // Reports unless E`index` is of one of `classes`; `what` names the place.
+  bool check_class(uint32_t index, const std::vector<std::string>& classes, SourceRange r, const std::string& what);
+  // SA12, SYVAR1.2CH: the memory, its format (or n characters) and index.
+  struct MemoryRef {
+    const Memory* memory = nullptr;
+    MemFormat format = MemFormat::Byte;
+    uint32_t chars = 0;  // a text of this many characters (CH)
+    uint32_t index = 0;
+    std::string text;
+  };
+  std::optional<MemoryRef> memory_ref(std::string_view text, SourceRange r);
+  ir::ExprId memory_expr(const MemoryRef& ref, SourceRange r);
+  // A system variable by name and number, to read or (writing) to write.
+  std::optional<SysRef> system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r, bool writing,
+                                   const SystemName** entry = nullptr);
+  ir::ExprId system_expr(SysRef ref, SourceRange r);
+  ir::ExprId string_expr(std::string text, SourceRange r);
+  // The value type DIS shows an E parameter with.
+  VarType parameter_type(uint32_t index) const { return s_.class_of(index).type; }
+
+  // codes.cpp: three-letter codes.
+  void code_block(Nc110Parser::TlcBlockContext* ctx);
+  struct Piece;
+  struct Operand;
+  std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind, const std::string& code);
+  void code_action(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);
+
+  const Settings& s_;
+  ir::Program& program_;
+  const SourceFile& source_;
+  uint32_t file_;
+  Diagnostics& diags_;
+
+  antlr4::ANTLRInputStream input_;
+  Nc110Lexer lexer_{&input_};
+  antlr4::CommonTokenStream tokens_{&lexer_};
+  Nc110Parser parser_{&tokens_};
+  class Listener;
+  std::unique_ptr<Listener> listener_;
+
+  std::string_view line_;
+  uint32_t line_no_ = 0;
+  std::vector<uint32_t> byte_of_;  // the byte offset of each code point of the line, and the end
+  ir::Unit* unit_ = nullptr;
+  ir::Block block_;
+  std::map<int, int32_t> code_map_;  // letter * 1000 + number -> index into semantics.codes
+  std::map<std::string, int32_t> tlc_codes_;  // three-letter code -> index into semantics.codes
+  std::vector<CallSite> calls_;
+};
+
+}  // namespace ncc::nc110

@@ -1,0 +1,82 @@
+// The NC-110 dialect as data: the tables of stdlib/dialects/nc110/ and the [nc110]
+// settings of the machine profile (docs/profile.md), validated.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/program_semantics.h"
+#include "runtime/system_vars.h"
+#include "stdlib/profile.h"
+#include "stdlib/tables.h"
+#include "vm/variables.h"
+
+namespace ncc::nc110 {
+
+// What an operand of a three-letter code is (three_letter_codes.tsv).
+enum class OperandKind : uint8_t {
+  Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition
+};
+
+struct OperandItem {
+  OperandKind kind = OperandKind::Origin;
+  char repeat = '1';  // '1' once, '?' optional, '*' any number, '+' at least one
+  bool in_group = false;  // inside the signature's optional [...] group
+};
+
+// What a three-letter code does: call a runtime function with its operands, or a
+// statement of the program's flow.
+enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Unsupported };
+
+struct CodeSignature {
+  std::string code;
+  std::vector<OperandItem> operands;
+  Action action = Action::Function;
+  Fn fn = Fn::Count;        // Function
+  std::string comparison;   // JumpIf: gt lt eq ne ge le
+  std::string meaning;
+};
+
+struct SystemName {
+  std::string name;                     // TMR
+  std::optional<SysVar> var;            // none: a keyboard code
+  uint32_t first = 0, last = 0;         // the numbers a numbered one takes (TIM0..TIM6)
+  bool numbered = false;
+  std::string value;                    // BY IN LI RE LR flag expr -
+};
+
+struct ParameterClass {
+  std::string name;  // BY
+  uint32_t first = 0;
+  VarType type = VarType::LongReal;
+  double limit = 0;
+};
+
+struct Memory {
+  std::string name;  // SA
+  MemFormat format = MemFormat::Byte;
+  uint32_t bytes = 0;
+};
+
+struct Settings {
+  stdlib::DialectTables tables;
+  std::map<std::string, CodeSignature> codes;
+  std::map<std::string, SystemName> system;
+  std::vector<ParameterClass> classes;  // by first index
+  std::vector<Memory> memories;
+  uint32_t e_count = 1000;
+  std::string library;                  // the program library directory ("" = the program's)
+  std::string default_device = "MP0";
+  std::vector<std::string> power_on;    // G codes and functions at power-on and reset
+  Conventions conventions;
+
+  const ParameterClass& class_of(uint32_t e) const;
+};
+
+// Reads the tables and the profile's [nc110] settings; problems are reported at their
+// place. Returns nothing if the dialect cannot be used.
+std::optional<Settings> load_settings(const stdlib::Profile& profile, Diagnostics& diags);
+
+}  // namespace ncc::nc110
