@@ -1,5 +1,7 @@
 #include "check.h"
 
+#include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -15,6 +17,8 @@ const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rule
   return it == table.end() ? nullptr : &it->second;
 }
 
+int code_number(const ir::Program& p, const ir::Word& w) { return static_cast<int>(p.exprs[w.value].number); }
+
 void report_with_note(Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
                       const std::string& a, const std::string& b = {}, const std::string& c = {}) {
   if (Diagnostic* d = diags.report(id, second.range, a, b, c))
@@ -23,12 +27,16 @@ void report_with_note(Diagnostics& diags, DiagId id, const ir::Word& second, con
 
 void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block& block, Diagnostics& diags) {
   std::map<std::string, const ir::Word*> once;    // address -> first word
+  std::map<std::string, int> counts;              // address -> words so far
   std::map<std::string, const ir::Word*> groups;  // G group -> first code
   std::map<std::string, const ir::Word*> sets;    // M conflict set -> first code
+  std::vector<const ir::Word*> g_codes;           // for a compatibility matrix
   const ir::Word* feed = nullptr;
   const ir::Word* previous = nullptr;  // for the word order
+  const bool matrix = !rules.tables->incompatible.empty();
   for (const ir::Word& w : block.words) {
     if (w.kind == ir::WordKind::Ignored || w.value == ir::kNoExpr) continue;
+    if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) continue;  // known at run time
     char letter = w.address.size() == 1 ? w.address[0] : 0;
     auto addr = rules.tables->addresses.find(letter);
     if (addr == rules.tables->addresses.end()) continue;
@@ -39,9 +47,11 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
     }
     previous = &w;
     switch (addr->second.repeat) {
-      case stdlib::Repeat::Once: {
+      case stdlib::Repeat::Once:
+      case stdlib::Repeat::Twice: {
         auto [it, fresh] = once.emplace(w.address, &w);
-        if (!fresh) report_with_note(diags, DiagId::WordRepeated, w, *it->second, w.address);
+        int allowed = addr->second.repeat == stdlib::Repeat::Twice ? 2 : 1;
+        if (++counts[w.address] == allowed + 1) report_with_note(diags, DiagId::WordRepeated, w, *it->second, w.address);
         break;
       }
       case stdlib::Repeat::Feed:
@@ -56,12 +66,22 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
           diags.report(w.address == "G" ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, w.range, word_text(w));
           break;
         }
-        if (addr->second.repeat == stdlib::Repeat::Group) {
+        if (addr->second.repeat == stdlib::Repeat::Group && matrix) {
+          // A compatibility matrix says which codes may share a block (NC-110 Table 2.4).
+          for (const ir::Word* other : g_codes)
+            if (rules.tables->incompatible.count({code_number(p, *other), code_number(p, w)})) {
+              report_with_note(diags, DiagId::CodesIncompatible, w, *other, word_text(*other), word_text(w));
+              break;
+            }
+          g_codes.push_back(&w);
+        } else if (addr->second.repeat == stdlib::Repeat::Group) {
           // Block-only codes without a group letter count as their own group (§2.5).
           std::string group = entry->group == "-" ? entry->desc.name : entry->group;
           auto [it, fresh] = groups.emplace(group, &w);
           if (!fresh) report_with_note(diags, DiagId::GroupConflict, w, *it->second, word_text(*it->second), word_text(w), group);
         } else {
+          if (addr->second.max_count && ++counts[w.address] == addr->second.max_count + 1)
+            diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
           std::vector<std::string> my_sets = entry->conflict_sets;
           if (my_sets.empty()) my_sets.push_back(entry->desc.name);  // the same code twice
           for (const std::string& set : my_sets) {
@@ -103,11 +123,19 @@ void check_block_numbers(const ir::Unit& unit, Diagnostics& diags) {
 }
 
 // Jumps stay within their unit; calls name a unit or main block of the medium (the
-// names lowering gives entry points).
-void check_targets(const ir::Program& program, const ir::Unit& unit, Diagnostics& diags) {
+// names lowering gives entry points). A call the front end could not resolve it has
+// reported already.
+void check_targets(const ir::Program& program, const ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
   std::set<std::string> labels, entries;
+  std::map<std::string, const ir::Block*> defined;
   for (const ir::Block& b : unit.blocks) {
-    if (!b.label.empty()) labels.insert(b.label);
+    if (!b.label.empty()) {
+      labels.insert(b.label);
+      auto [it, fresh] = defined.emplace(b.label, &b);
+      if (!fresh && rules.unique_labels)
+        if (Diagnostic* d = diags.report(DiagId::LabelDuplicate, b.range, b.label))
+          d->notes.push_back({it->second->range, "first defined here"});
+    }
     if (b.number) labels.insert(fmt::format("N{}", *b.number));
   }
   for (const ir::Unit& u : program.units) {
@@ -118,8 +146,116 @@ void check_targets(const ir::Program& program, const ir::Unit& unit, Diagnostics
   for (const ir::Block& b : unit.blocks)
     for (const ir::Stmt& s : b.stmts) {
       if (s.kind == ir::StmtKind::Jump && !labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, s.label);
-      if (s.kind == ir::StmtKind::Call && !entries.count(s.label)) diags.report(DiagId::CallUndefined, s.range, s.label);
+      if (s.kind == ir::StmtKind::CallRange)
+        for (const std::string* l : {&s.label, &s.end_label})
+          if (!labels.count(*l)) diags.report(DiagId::LabelUndefined, s.range, *l);
+      if (s.kind == ir::StmtKind::Call && !entries.count(s.label) && !b.has_errors)
+        diags.report(DiagId::CallUndefined, s.range, s.label);
     }
+}
+
+// Repeat loops: balanced, not too deep, never entered by a jump; block ranges
+// whole, in order, and not inside another range (NC-110 §2.13.2).
+void check_structure(const ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
+  const size_t n = unit.blocks.size();
+  std::vector<std::vector<size_t>> before(n), after(n);  // the loops open at each block
+  std::vector<size_t> open;
+  std::vector<const ir::Stmt*> open_stmt;
+  size_t next_loop = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const ir::Block& b = unit.blocks[i];
+    before[i] = open;
+    for (const ir::Stmt& s : b.stmts) {
+      bool begin = s.kind == ir::StmtKind::RepeatBegin, end = s.kind == ir::StmtKind::RepeatEnd;
+      if ((begin || end) && b.skippable)
+        diags.report(DiagId::RepeatUnbalanced, b.range, "a repeat loop cannot begin or end in a block that may be skipped ('/')");
+      if (begin) {
+        open.push_back(next_loop++);
+        open_stmt.push_back(&s);
+        if (rules.max_repeat_depth && open.size() == rules.max_repeat_depth + 1)
+          diags.report(DiagId::RepeatDepth, s.range, open.size(), rules.max_repeat_depth);
+      } else if (end) {
+        if (open.empty()) {
+          diags.report(DiagId::RepeatUnbalanced, s.range, "the end of a repeat loop that did not begin");
+        } else {
+          open.pop_back();
+          open_stmt.pop_back();
+        }
+      }
+    }
+    after[i] = open;
+  }
+  for (const ir::Stmt* s : open_stmt) diags.report(DiagId::RepeatUnbalanced, s->range, "a repeat loop that does not end");
+
+  std::map<std::string, size_t> at;
+  for (size_t i = 0; i < n; ++i) {
+    if (!unit.blocks[i].label.empty()) at.emplace(unit.blocks[i].label, i);
+    if (unit.blocks[i].number) at.emplace(fmt::format("N{}", *unit.blocks[i].number), i);
+  }
+  auto inside = [](const std::vector<size_t>& inner, const std::vector<size_t>& outer) {
+    return inner.size() <= outer.size() && std::equal(inner.begin(), inner.end(), outer.begin());
+  };
+  std::vector<std::pair<size_t, size_t>> ranges;
+  for (size_t i = 0; i < n; ++i)
+    for (const ir::Stmt& s : unit.blocks[i].stmts) {
+      if (s.kind == ir::StmtKind::Jump)
+        if (auto it = at.find(s.label); it != at.end() && !inside(before[it->second], before[i]))
+          diags.report(DiagId::JumpIntoRepeat, s.range, s.label, "the jump");
+      if (s.kind != ir::StmtKind::CallRange) continue;
+      auto from = at.find(s.label), to = at.find(s.end_label);
+      if (from == at.end() || to == at.end()) continue;
+      std::string name = fmt::format("{} to {}", s.label, s.end_label);
+      if (to->second < from->second) {
+        diags.report(DiagId::RangeInvalid, s.range, name, "its last block comes before its first");
+      } else if (before[from->second] != after[to->second]) {
+        diags.report(DiagId::RangeInvalid, s.range, name, "it cuts a repeat loop: a range holds whole loops");
+      } else {
+        ranges.push_back({from->second, to->second});
+      }
+      if (!inside(before[from->second], before[i]))
+        diags.report(DiagId::JumpIntoRepeat, s.range, s.label, "the range call");
+    }
+  for (size_t i = 0; i < n; ++i)
+    for (const ir::Stmt& s : unit.blocks[i].stmts)
+      if (s.kind == ir::StmtKind::CallRange)
+        for (auto [first, last] : ranges)
+          if (i >= first && i <= last) {
+            diags.report(DiagId::RangeInvalid, s.range, fmt::format("{} to {}", s.label, s.end_label),
+                         fmt::format("it stands inside the range {} to {}, and ranges do not nest",
+                                     unit.blocks[first].label, unit.blocks[last].label));
+            break;
+          }
+}
+
+// Calls: at most the dialect's depth open at once, and none that would never end.
+void check_calls(const ir::Program& program, Diagnostics& diags) {
+  const uint32_t limit = program.semantics.conventions.max_call_depth;
+  std::map<std::string, const ir::Unit*> units;
+  for (const ir::Unit& u : program.units) units.emplace(u.name, &u);
+  std::set<const ir::Stmt*> reported;
+  std::vector<const ir::Unit*> path;
+  std::function<void(const ir::Unit&)> visit = [&](const ir::Unit& unit) {
+    path.push_back(&unit);
+    for (const ir::Block& b : unit.blocks)
+      for (const ir::Stmt& s : b.stmts) {
+        if (s.kind != ir::StmtKind::Call) continue;
+        auto it = units.find(s.label);
+        if (it == units.end() || reported.count(&s)) continue;
+        if (std::find(path.begin(), path.end(), it->second) != path.end()) {
+          reported.insert(&s);
+          diags.report(DiagId::CallRecursive, s.range, s.label, unit.name);
+        } else if (limit && path.size() > limit) {
+          reported.insert(&s);
+          std::string chain;
+          for (const ir::Unit* u : path) chain += u->name + " -> ";
+          diags.report(DiagId::CallTooDeep, s.range, s.label, path.size(), limit, chain + s.label);
+        } else {
+          visit(*it->second);
+        }
+      }
+    path.pop_back();
+  };
+  if (!program.units.empty()) visit(program.units.front());
 }
 
 }  // namespace
@@ -130,9 +266,11 @@ void check(const ir::Program& program, const CheckRules& rules, Diagnostics& dia
       check_block(program, rules, block, diags);
       if (diags.limit_reached()) return;
     }
-    check_block_numbers(unit, diags);
-    check_targets(program, unit, diags);
+    if (rules.block_number_order) check_block_numbers(unit, diags);
+    check_targets(program, unit, rules, diags);
+    check_structure(unit, rules, diags);
   }
+  check_calls(program, diags);
 }
 
 }  // namespace ncc
