@@ -1,7 +1,11 @@
 // The motion runtime: modal state, coordinate systems and the block cycle
 // (GOST 20999 S-12; the same shape serves every dialect). The VM hands it one block
 // at a time as canonical functions plus word values; it computes the motion, checks
-// it and emits trace events.
+// it and emits trace events. Its parts: machine.cpp (the block cycle and modal
+// functions), machine_frame.cpp (origins, transforms, limits and protected zones),
+// machine_motion.cpp (moves, arcs, threads, splines, dwells, time),
+// machine_cycles.cpp (canned and measuring cycles), machine_system.cpp (system
+// variables).
 #pragma once
 
 #include <array>
@@ -85,6 +89,8 @@ class Machine {
   bool set_system(SysRef ref, double value, uint32_t source);
   // Values the last block measured, by index of the result space (NC-110 G72-G74).
   std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
+  // Seconds of motion and dwell so far.
+  double clock() const { return clock_; }
 
  private:
   struct Modal {
@@ -101,8 +107,25 @@ class Machine {
     int spindle = 0;  // 1 cw, -1 ccw, 0 stopped, 2 oriented
     bool mist = false, flood = false;
     int clamp = -1;  // -1 unknown
+    int rotary_clamp = -1;
     bool override_enabled = true;
     bool spindle_hold = false;
+    int dynamics = -1;  // -1 none, 0 corner slow-down (G27), 1 continuous (G28), 2 point to point (G29)
+    bool gtl = false;
+    int spindle_range = 0;  // 0 none forced, -1 automatic, 1..n forced
+  };
+
+  // Program coordinates to machine coordinates: per axis an origin (a work offset
+  // and a shift: G92, NC-110 UOT/UIO), then scale, mirror and a rotation in the
+  // plane about the origin (NC-110 §2.13.1).
+  struct Frame {
+    std::array<int, kAxisCount> base{};  // the work offset (origin) of each axis
+    AxisValues shift{};                  // mm, degrees
+    AxisValues scale;
+    std::array<bool, kAxisCount> mirror{};
+    double rotation = 0;  // degrees, counter-clockwise in the plane
+    Frame() { scale.fill(1); }
+    bool transformed() const;
   };
 
   // The compensation in effect: side, radius, signed length.
@@ -113,7 +136,30 @@ class Machine {
   };
 
   struct Cycle {
-    std::optional<double> depth, level, dwell, peck;  // program units as written
+    std::optional<double> depth, level, dwell, peck;  // program units as written (GOST)
+    // NC-110: the drilling axis and its levels, program coordinates.
+    int axis = -1;
+    std::optional<double> r1, r2, bottom;
+    std::optional<double> step, factor, minimum;  // G83 I K J
+    std::optional<double> pitch;                  // G84 K (spindle encoder)
+    bool defined_here = false;                    // the cycle's own block
+  };
+
+  // A protected zone (NC-110 DSA): an open rectangle in two axes, machine coordinates.
+  struct Zone {
+    bool defined = false, active = false;
+    int axis[2] = {0, 1};
+    double lo[2] = {0, 0}, hi[2] = {0, 0};
+  };
+
+  // The spline between BSP and ESP (NC-110 G06): its plane, end conditions and points.
+  struct Spline {
+    bool active = false;
+    int u = 0, v = 1, ends = 0;
+    bool lead_in = false;           // the lead-in move has been made
+    AxisValues lead_in_from{};      // where the lead-in started (its direction is the entry tangent)
+    std::vector<AxisValues> points; // machine coordinates: Q0 (the lead-in's end), then the G06 points
+    std::vector<uint32_t> sources;  // the block of each point
   };
 
   // One block being executed.
@@ -122,12 +168,15 @@ class Machine {
     std::bitset<kWordSlots> used;  // words the block's functions read
     bool error = false;
     bool dwell = false, dwell_code = false, set_position = false, end = false, end_information = false;
+    bool dwell_end = false, machine_frame = false, spindle_sync = false, decelerate = false;
+    Fn measure = Fn::Count;     // a measuring cycle of this block
     Compensation compensation;  // in effect when the block started (or last reported)
     int stop = 0;       // 1 program stop, 2 optional stop taken, 3 skipped
     int code = -1;      // the code being applied, for messages about it
     std::string code_name;
     int block_offset = -1;  // a block-only preset offset (G53): the frame of this block's targets
     std::vector<FnCall> restore;  // modal functions to restore after a block-only code
+    bool moved = false;           // the block made a feed move
   };
 
   // Words.
@@ -142,10 +191,18 @@ class Machine {
     if (!letter || !has(letter)) return std::nullopt;
     return word(letter);
   }
+  std::optional<double> slot_if(int slot) {
+    if (!has_slot(slot)) return std::nullopt;
+    return slot_value(slot);
+  }
   double length_units(double v) const { return modal_.inch ? v * 25.4 : v; }
   double to_program(double mm) const { return modal_.inch ? mm / 25.4 : mm; }
   double angle_degrees(double v) const;
   std::optional<int> whole_number(char letter, const char* what);  // T, D, H
+  bool is_linear(int axis) const { return config_.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear; }
+  // A written axis value in machine units (mm, degrees), and back.
+  double axis_units(int axis, double v) const;
+  double program_axis(int axis, double v) const;
   AxisValues in_program_units(AxisValues v) const;
 
   // Issues.
@@ -153,53 +210,83 @@ class Machine {
   void report(DiagId id, char word, const Args&... args) {
     issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, word ? letter_slot(word) : -1, -1});
   }
+  template <typename... Args>
+  void report_slot(DiagId id, int slot, const Args&... args) {
+    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, slot, -1});
+  }
   // A problem with the code being applied (located at its word).
   template <typename... Args>
   void report_code(DiagId id, const Args&... args) {
-    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, 0, block_.code});
+    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, -1, block_.code});
   }
   void issue(const RuntimeIssue& i) {
     issues_.issue(i);
     if (diag_info(i.id).severity == Severity::Error) block_.error = true;
   }
 
-  // The block cycle.
+  // The block cycle (machine.cpp).
   void reset_state();
   FnCall current(FnGroup group) const;  // the function a modal group holds now
   void apply(FnCall call, Scope scope, bool emit);
   void apply_codes(Timing timing);  // the block's codes with this timing, in written order
   void check_dynamic_codes();
   void registers();
+  void check_profile_rules();
   void action();
   void finish();
   void emit(Event e);
   void plane_event();
+  void path_event(int mode);
+  void tool_length_event();
+  void cutter_comp_event();
+  Compensation compensation() const;
+  void flush_compensation();
+  void emit_reset(const Modal& before, const AxisValues& position_offset);
 
-  // Coordinates.
-  AxisValues frame_offset(int work_offset) const;  // work offset + position offset, machine units
-  AxisValues target_frame() const;                  // the frame this block's words are in (G53: none)
+  // Coordinates (machine_frame.cpp).
+  double offset_value(int offset, int axis) const;  // machine units
+  double origin(int axis) const;                    // of the active frame
+  AxisValues origins() const;
+  AxisValues frame_offset(int work_offset) const;   // GOST: work offset + position offset
+  AxisValues target_frame() const;                  // the frame this block's words are in
+  AxisValues to_machine(const AxisValues& program) const;  // apply the frame
+  AxisValues to_frame(const AxisValues& machine) const;    // undo it: program coordinates
   AxisValues target();                              // of this block's axis words, machine units
+  AxisValues program_target();                      // the same, program coordinates
   bool has_axis_word() const;
+  bool frame_function(FnCall call);                 // the NC-110 three-letter functions
+  void origin_event();
+  void transform_event();
+  bool path_allowed(const std::vector<AxisValues>& path);  // limits and protected zones
+  void set_position();
+
+  // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
   Event motion_event(EventKind kind, const AxisValues& machine_target) const;
-
-  // Motions.
   void rapid(const AxisValues& t);
   bool need_feed(const char* what, const AxisValues& t);
   void linear(const AxisValues& t);
   void arc(const AxisValues& t, bool clockwise);
   void parabola(const AxisValues& t);
   void thread(const AxisValues& t);
+  void thread_variable(const AxisValues& t);
+  void spline_point(const AxisValues& t);
+  void spline_finish(const AxisValues& lead_out_end);
   void dwell();
+  void dwell_seconds(double seconds);
+  double timer_dwell();  // the dwell time variable in seconds, reported if out of range
   std::string dwell_address() const;
-  void set_position();
+  double spindle_rpm() const;
+  void advance_clock(double seconds) { clock_ += seconds; }
+  double feed_time(double length_mm);  // at the block's feed
+
+  // Cycles (machine_cycles.cpp).
   void cycle();
   void cycle_registers();
-  void tool_length_event();
-  void cutter_comp_event();
-  Compensation compensation() const;
-  void flush_compensation();
-  void emit_reset(const Modal& before, const AxisValues& position_offset);
+  void nc110_cycle_registers(bool definition);
+  void nc110_cycle();
+  void tap_feed(const AxisValues& t, bool out);
+  void measure();
 
   const ProgramSemantics& sem_;
   const Conventions& conv_;
@@ -209,11 +296,14 @@ class Machine {
   bool stop_on_error_ = true;
 
   Modal modal_;
+  Frame frame_;
+  std::map<int, WorkOffset> offsets_;  // the work offsets (NC-110 RQO changes them)
   AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
   AxisValues position_offset_{};  // G92
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
   double speed_ = 0;
   int tool_selected_ = 0;
+  int corrector_selected_ = 0;
   int tool_loaded_ = 0;
   int offset_number_ = 0;
   int spindle_direction_ = 0;  // the last direction set (canned cycles restart the spindle in it)
@@ -222,6 +312,17 @@ class Machine {
   std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola
   BlockState block_;
 
+  // NC-110 state.
+  std::array<AxisValues, 2> limits_{};  // DLO: lower and upper, machine coordinates
+  std::array<bool, kAxisCount> limited_{};
+  std::array<Zone, 3> zones_;
+  AxisValues tolerance_{};              // DTL; 0 = the machine's
+  bool turning_ = false;                // CTL
+  uint32_t locked_ = 0;                 // M10/M12: axes that must not move
+  bool profile_running_ = false;        // a G27/G28 profile is running: no M, S or T
+  Spline spline_;
+  size_t next_contact_ = 0;             // the simulated probe's next contact
+
   // Switches and system variables.
   bool block_skip_ = false;
   bool optional_stop_ = false;
@@ -229,6 +330,7 @@ class Machine {
   std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()
   std::vector<std::pair<uint32_t, double>> results_;
   std::string system_name(SysRef ref) const;
+  double system_value(SysVar v) { return system(SysRef{v, 0}, 0).value_or(0); }
 };
 
 }  // namespace ncc

@@ -4,8 +4,10 @@
 #include <array>
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ncc {
 
@@ -28,7 +30,8 @@ constexpr Plane kPlanes[3] = {{0, 1, 2}, {2, 0, 1}, {1, 2, 0}};
 // "XY", "ZU": the letters of abscissa and ordinate.
 std::string plane_name(const Plane& p);
 
-// Tools T selects; their length and radius are offsets, numbered by D/H (§3.3.5).
+// Tools T selects; their length and radius are offsets, numbered by D/H (§3.3.5), or
+// the correctors of NC-110's T tool.corrector.
 struct ToolEntry {
   std::string description;
 };
@@ -36,16 +39,69 @@ struct ToolEntry {
 struct OffsetEntry {
   double length = 0;
   double radius = 0;
+  char axis = 0;  // the axis the length applies to (0: the dialect's)
+};
+
+// A work offset (GOST G54..G59) or an NC-110 origin (0..99): values of the axes it
+// declares, in mm, or in inches when `inch`.
+struct WorkOffset {
+  AxisValues values{};
+  uint32_t axes = 0;  // bit i: axis i is declared
+  bool inch = false;
+};
+
+enum class AxisKind : uint8_t { Linear, Rotary, Indexing };
+
+struct AxisConfig {
+  AxisKind kind = AxisKind::Linear;  // A B C are rotary unless the profile says otherwise
+  double index_step = 1;    // Indexing: degrees per index (the program counts indexes)
+  bool endless = false;     // Rotary: no end; positions show 0..360 and the sign of a target picks the way
+  bool diameter = false;    // a lathe's cross axis programmed as a diameter
+  double rapid = 10000;     // mm/min, degrees/min
+  double lower = -1e9, upper = 1e9;  // travel limits, machine coordinates
+  double tolerance = 0.01;  // in-position tolerance (NC-110 DTL 0)
+  double drive_error = 1;   // the largest tolerance a program may set (NC-110 DTL)
+};
+
+// The simulated probe of the measuring cycles (NC-110 G72-G74): what each probing
+// touches, in the order the program probes. A point gives the contact's coordinates
+// on some axes (the others touch at the nominal point); a circle the hole G73 finds;
+// `none` no contact. When the list runs out, contact is at the nominal point.
+struct ProbeContact {
+  enum class Kind : uint8_t { Point, Circle, None } kind = Kind::Point;
+  AxisValues point{};
+  uint32_t axes = 0;  // Point: the axes given
+  double centre[2] = {0, 0};  // Circle: in the plane's axes
+  double radius = 0;
+};
+
+struct ProbeConfig {
+  double approach = 10;  // mm before the nominal point the probe starts feeding (Qa)
+  double safety = 12;    // mm past it the probe gives up (Qs)
+  double feed = 1000;    // mm/min (Vm)
+  std::vector<ProbeContact> contacts;
 };
 
 struct MachineConfig {
   std::string name = "default";
-  std::map<int, AxisValues> work_offsets;  // 1..6 for G54..G59 (GOST "preset offsets")
+  std::map<int, WorkOffset> work_offsets;  // GOST G54..G59 = 1..6; NC-110 origins 0..99
   std::map<int, ToolEntry> tools;
-  std::map<int, OffsetEntry> offsets;      // D/H offset numbers
+  std::map<int, OffsetEntry> offsets;      // D/H offset numbers, NC-110 correctors
+  std::array<AxisConfig, kAxisCount> axes = default_axes();
   AxisValues initial_position{};
   bool block_skip = false;                 // run-time switches
   bool optional_stop = false;
+  bool spindle_encoder = true;             // threading and rigid tapping need one
+  double max_rpm = 0;                      // constant cutting speed stays below (0: no limit)
+  double tap_min_travel = 0;               // mm a floating tap needs to speed up and slow down
+  std::optional<Plane> turning_plane;      // NC-110 (CTL,T): the turning configuration's plane
+  ProbeConfig probe;
+
+  static std::array<AxisConfig, kAxisCount> default_axes() {
+    std::array<AxisConfig, kAxisCount> a{};
+    for (int i : {3, 4, 5}) a[i].kind = AxisKind::Rotary;
+    return a;
+  }
 };
 
 }  // namespace ncc

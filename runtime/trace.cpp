@@ -20,6 +20,30 @@ std::string plane_name(const Plane& p) { return {kAxisLetters[p.u], kAxisLetters
 namespace {
 
 constexpr const char* kStopKinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
+constexpr const char* kPathModes[] = {"accelerate", "decelerate", "tapping", "spindle_sync",
+                                      "corner_slowdown", "continuous", "point_to_point"};
+constexpr const char* kClamps[] = {"off", "on", "rotary_off", "rotary_on"};
+
+// "X Z" for the axes of a mask.
+std::string axis_list(int mask) {
+  std::string s;
+  for (int i = 0; i < kAxisCount; ++i)
+    if (mask & (1 << i)) s += kAxisLetters[i];
+  return s;
+}
+
+std::string event_name(EventKind kind) {
+  constexpr const char* names[] = {
+      "units", "plane", "feed_mode", "feed_rate", "spindle_mode", "spindle_speed", "spindle_on", "spindle_stop",
+      "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
+      "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
+      "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
+      "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::PartChange) + 1, "one name per event kind");
+  return names[static_cast<int>(kind)];
+}
+
+std::string spindle_range(int n) { return n == 0 ? "none" : n < 0 ? "auto" : std::to_string(n); }
 
 std::string canon_number(double v) { return fmt::format("{:.4f}", v); }
 
@@ -116,8 +140,11 @@ class TextSink final : public BufferedSink {
       case EventKind::Thread: {
         std::string s = fmt::format("thread {} pitch {}", position(e.pos), four_decimals(e.a));
         if (e.b != 0) s += " change " + four_decimals(e.b);
+        if (e.c != 0) s += " phase " + four_decimals(e.c);
         return s;
       }
+      case EventKind::Spline:
+        return fmt::format("spline {} control {} control {}", position(e.pos), position(e.control), position(e.control2));
       case EventKind::Dwell: return "dwell " + four_decimals(e.a);
       case EventKind::SelectTool: return fmt::format("tool_select {}", e.n);
       case EventKind::ChangeTool: return fmt::format("tool_change {}", e.n);
@@ -129,16 +156,47 @@ class TextSink final : public BufferedSink {
         return e.n == 0 ? std::string("work_offset none") : fmt::format("work_offset {} {}", e.n, position(e.pos));
       case EventKind::PositionOffset: return "position_offset " + position(e.pos);
       case EventKind::Coolant: return e.n == 0 ? "coolant off" : e.n == 1 ? "coolant mist" : "coolant flood";
-      case EventKind::Clamp: return e.n ? "clamp on" : "clamp off";
+      case EventKind::Clamp: return fmt::format("clamp {}", kClamps[e.n]);
       case EventKind::Override: return e.n ? "override enabled" : "override disabled";
       case EventKind::SpindleHold: return e.n ? "spindle_hold on" : "spindle_hold off";
-      case EventKind::PathMode:
-        return e.n == 0 ? "path accelerate" : e.n == 1 ? "path decelerate" : "path tapping";
+      case EventKind::PathMode: return fmt::format("path {}", kPathModes[e.n]);
       case EventKind::Comment: return "comment " + quoted(e.text);
       case EventKind::Message: return "message " + quoted(e.text);
       case EventKind::Stop: return fmt::format("stop {}", kStopKinds[e.n]);
       case EventKind::OperatorMove: return "operator_move " + position(e.pos);
       case EventKind::End: return e.n ? "end information" : "end program";
+      case EventKind::Origin: return "origin " + position(e.pos);
+      case EventKind::Transform: {
+        std::string s;
+        if (e.a != 0) s += " rotation " + four_decimals(e.a);
+        if (e.n) s += " mirror " + axis_list(e.n);
+        std::string scale;
+        for (int i = 0; i < kAxisCount; ++i)
+          if (e.pos[i] != 1) scale += fmt::format(" {}{}", kAxisLetters[i], four_decimals(e.pos[i]));
+        if (!scale.empty()) s += " scale" + scale;
+        return "transform" + (s.empty() ? std::string(" none") : s);
+      }
+      case EventKind::Tolerance:
+      case EventKind::Limits: {
+        std::string s = e.kind == EventKind::Tolerance ? "tolerance" : "limits";
+        for (int i = 0; i < kAxisCount; ++i) {
+          if (!(e.n & (1 << i))) continue;
+          s += fmt::format(" {}{}", kAxisLetters[i], four_decimals(e.pos[i]));
+          if (e.kind == EventKind::Limits) s += ".." + four_decimals(e.control[i]);
+        }
+        return s;
+      }
+      case EventKind::Zone: {
+        std::string s = fmt::format("zone {} {}", e.rotation, e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
+        if (e.n == 2)
+          for (int a : {e.plane.u, e.plane.v})
+            s += fmt::format(" {}{}..{}", kAxisLetters[a], four_decimals(e.pos[a]), four_decimals(e.control[a]));
+        return s;
+      }
+      case EventKind::Configuration: return e.n ? "configuration turning" : "configuration milling";
+      case EventKind::Probe: return fmt::format("probe {} {}", position(e.pos), e.n ? "contact" : "no_contact");
+      case EventKind::SpindleRange: return "spindle_range " + spindle_range(e.n);
+      case EventKind::PartChange: return "part_change";
     }
     return "?";
   }
@@ -155,22 +213,12 @@ class JsonlSink final : public BufferedSink {
     std::string s = fmt::format(R"({{"seq":{},"file":{},"line":{},"col":{})", ++seq_,
                                 quoted(b.file < map_.files.size() ? map_.files[b.file] : ""), b.line, b.col);
     if (b.has_number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', b.number);
-    s += R"(,"event":")" + name(e) + '"';
+    s += R"(,"event":")" + event_name(e.kind) + '"';
     fields(e, s);
     line(s + "}");
   }
 
  private:
-  static std::string name(const Event& e) {
-    constexpr const char* names[] = {
-        "units", "plane", "feed_mode", "feed_rate", "spindle_mode", "spindle_speed", "spindle_on", "spindle_stop",
-        "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
-        "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
-        "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end"};
-    static_assert(std::size(names) == static_cast<size_t>(EventKind::End) + 1, "one name per event kind");
-    return names[static_cast<int>(e.kind)];
-  }
-
   void pos(const Event& e, std::string& s) const {
     for (int i = 0; i < kAxisCount; ++i)
       if (i < 3 || has_axis(kAxisLetters[i])) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
@@ -215,7 +263,56 @@ class JsonlSink final : public BufferedSink {
         pos(e, s);
         num("pitch", e.a);
         num("pitch_change", e.b);
+        if (e.c != 0) num("phase", e.c);
         break;
+      case EventKind::Spline: {
+        pos(e, s);
+        auto point = [&](const char* key, const AxisValues& p) {
+          std::string inner;
+          for (int i = 0; i < kAxisCount; ++i)
+            if (i < 3 || has_axis(kAxisLetters[i]))
+              inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(p[i]));
+          s += fmt::format(R"(,"{}":{{{}}})", key, inner);
+        };
+        point("control1", e.control);
+        point("control2", e.control2);
+        break;
+      }
+      case EventKind::Origin: pos(e, s); break;
+      case EventKind::Transform: {
+        num("rotation", e.a);
+        str("mirror", axis_list(e.n));
+        std::string inner;
+        for (int i = 0; i < kAxisCount; ++i)
+          if (i < 3 || has_axis(kAxisLetters[i]))
+            inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(e.pos[i]));
+        s += fmt::format(R"(,"scale":{{{}}})", inner);
+        break;
+      }
+      case EventKind::Tolerance:
+      case EventKind::Limits:
+        for (int i = 0; i < kAxisCount; ++i) {
+          if (!(e.n & (1 << i))) continue;
+          if (e.kind == EventKind::Tolerance)
+            s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
+          else
+            s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[i], json_number(e.pos[i]), json_number(e.control[i]));
+        }
+        break;
+      case EventKind::Zone:
+        s += fmt::format(R"(,"zone":{})", e.rotation);
+        str("state", e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
+        if (e.n == 2)
+          for (int a : {e.plane.u, e.plane.v})
+            s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[a], json_number(e.pos[a]), json_number(e.control[a]));
+        break;
+      case EventKind::Configuration: str("configuration", e.n ? "turning" : "milling"); break;
+      case EventKind::Probe:
+        pos(e, s);
+        s += fmt::format(R"(,"contact":{})", e.n ? "true" : "false");
+        break;
+      case EventKind::SpindleRange: str("range", spindle_range(e.n)); break;
+      case EventKind::PartChange: break;
       case EventKind::Dwell: num("seconds", e.a); break;
       case EventKind::SelectTool:
       case EventKind::ChangeTool: s += fmt::format(R"(,"tool":{})", e.n); break;
@@ -228,10 +325,10 @@ class JsonlSink final : public BufferedSink {
         pos(e, s);
         break;
       case EventKind::Coolant: str("coolant", e.n == 0 ? "off" : e.n == 1 ? "mist" : "flood"); break;
-      case EventKind::Clamp:
+      case EventKind::Clamp: str("clamp", kClamps[e.n]); break;
       case EventKind::Override:
       case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
-      case EventKind::PathMode: str("mode", e.n == 0 ? "accelerate" : e.n == 1 ? "decelerate" : "tapping"); break;
+      case EventKind::PathMode: str("mode", kPathModes[e.n]); break;
       case EventKind::Comment:
       case EventKind::Message: s += R"(,"text":)" + quoted(e.text); break;
       case EventKind::Stop: str("kind", kStopKinds[e.n]); break;
@@ -328,17 +425,27 @@ class CanonSink final : public BufferedSink {
         line(e.n == 1 || e.n == 2 ? "OPTIONAL_PROGRAM_STOP()" : "PROGRAM_STOP()");
         break;
       case EventKind::End: line("PROGRAM_END()"); break;
-      case EventKind::Clamp: line(e.n ? "COMMENT(\"ncc: clamp on\")" : "COMMENT(\"ncc: clamp off\")"); break;
+      case EventKind::Clamp: line(fmt::format("COMMENT(\"ncc: clamp {}\")", kClamps[e.n])); break;
       case EventKind::SpindleHold:
         line(e.n ? "COMMENT(\"ncc: spindle hold on\")" : "COMMENT(\"ncc: spindle hold off\")");
         break;
-      case EventKind::PathMode: {
-        constexpr const char* modes[] = {"accelerate", "decelerate", "tapping"};
-        line(fmt::format("COMMENT(\"ncc: path {}\")", modes[e.n]));
-        break;
-      }
+      case EventKind::PathMode: line(fmt::format("COMMENT(\"ncc: path {}\")", kPathModes[e.n])); break;
       case EventKind::OperatorMove:
         line(fmt::format("COMMENT(\"ncc: operator move to {}\")", axes_list(e.pos, 0)));
+        break;
+      case EventKind::Spline:
+        line(fmt::format("CUBIC_FEED({}, {}, {})", axes_list(e.control, 0), axes_list(e.control2, 0), axes_list(e.pos, 0)));
+        break;
+      case EventKind::Probe: line(fmt::format("STRAIGHT_PROBE({})", axes_list(e.pos, 0))); break;
+      case EventKind::Origin: line(fmt::format("SET_G5X_OFFSET(0, {})", axes_list(e.pos, 0))); break;
+      case EventKind::Transform:
+      case EventKind::Tolerance:
+      case EventKind::Limits:
+      case EventKind::Zone:
+      case EventKind::Configuration:
+      case EventKind::SpindleRange:
+      case EventKind::PartChange:
+        line(fmt::format("COMMENT(\"ncc: {}\")", event_name(e.kind)));
         break;
     }
   }

@@ -50,8 +50,8 @@ enum class EventKind : uint8_t {
   Rapid,             // pos
   Linear,            // pos
   Arc,               // pos = end; plane; centre = (u, v); rotation; a = radius; b = sweep (degrees)
-  Parabola,          // pos = end; control = tangent intersection point (X Y Z)
-  Thread,            // pos = end; a = pitch; b = pitch change per revolution
+  Parabola,          // pos = end; control = tangent intersection point
+  Thread,            // pos = end; a = pitch; b = pitch change per revolution; c = start angle (NC-110 R)
   Dwell,             // a: seconds
   SelectTool,        // n
   ChangeTool,        // n
@@ -60,15 +60,27 @@ enum class EventKind : uint8_t {
   WorkOffset,        // n: 0 none, 1..; pos: offset values
   PositionOffset,    // pos: the G92 offset values
   Coolant,           // n: 0 off, 1 mist on, 2 flood on
-  Clamp,             // n: 1 clamp, 0 unclamp
+  Clamp,             // n: 1 clamp, 0 unclamp, 3 clamp the rotary axes, 2 unclamp them
   Override,          // n: 1 enabled, 0 disabled
   SpindleHold,       // n: 1 on, 0 off
-  PathMode,          // n: 0 accelerate, 1 decelerate, 2 tapping
+  PathMode,          // n: 0 accelerate, 1 decelerate, 2 tapping, 3 spindle sync, 4 corner slow-down,
+                     //    5 continuous, 6 point to point
   Comment,           // text
   Message,           // text: an operator message the program shows (NC-110 DIS)
   Stop,              // n: 0 program stop, 1 optional stop taken, 2 optional stop skipped, 3 manual retract
   OperatorMove,      // pos: where the operator left the tool (manual retract)
   End,               // n: 0 end of program, 1 end of information
+  // NC-110.
+  Origin,            // pos: the program zero in machine coordinates
+  Transform,         // a: rotation (degrees); n: mirrored axes (bit per axis); pos: scale per axis
+  Tolerance,         // n: the axes set (bit per axis); pos: their in-position tolerance
+  Limits,            // n: the axes limited (bit per axis); pos: lower, control: upper limits
+  Zone,              // rotation: zone number; n: 0 off, 1 on, 2 defined; plane: its axes; pos: lower, control: upper
+  Configuration,     // n: 0 milling, 1 turning
+  Probe,             // pos: where the probe stopped; n: 1 contact, 0 none
+  Spline,            // pos = end; control, control2: the cubic Bezier control points of the span
+  SpindleRange,      // n: 0 none forced, -1 automatic, 1.. forced
+  PartChange,
 };
 
 struct Event {
@@ -78,12 +90,13 @@ struct Event {
   EventKind kind = EventKind::Comment;
   uint32_t source = 0;  // SourceMap::blocks index
   int n = 0;
-  double a = 0, b = 0;
+  double a = 0, b = 0, c = 0;
   int rotation = 0;
   Plane plane;
   AxisValues pos{};
   double centre[2] = {0, 0};
-  double control[3] = {0, 0, 0};
+  AxisValues control{};
+  AxisValues control2{};
   std::string text;
 };
 

@@ -2,6 +2,7 @@
 
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -197,6 +198,19 @@ std::optional<std::map<std::string, std::string>> Profile::string_table(std::str
   return out;
 }
 
+size_t Profile::array_size(std::string_view key, Diagnostics& diags) const {
+  Lookup l = find(key);
+  if (!l.node) return 0;
+  if (const toml::array* a = l.node->as_array()) return a->size();
+  report_value(diags, key, "must be an array");
+  return 0;
+}
+
+bool Profile::is_string(std::string_view key) const {
+  Lookup l = find(key);
+  return l.node && l.node->is_string();
+}
+
 std::vector<std::string> Profile::keys(std::string_view table) const {
   used_.emplace(table);
   Lookup l = find(table);
@@ -231,18 +245,28 @@ void Profile::report_unused(Diagnostics& diags) const {
 
 namespace {
 
-bool axis_values(const Profile& p, const std::string& key, AxisValues& out, Diagnostics& diags) {
-  auto table = p.number_table(key, diags);
-  if (!table) return false;
-  for (const auto& [letter, value] : *table) {
+// {X = 1, Y = 2}: the axes given and their values; `extra` keys may stand beside them.
+bool axis_values(const Profile& p, const std::string& key, AxisValues& out, Diagnostics& diags, uint32_t* given = nullptr,
+                 std::initializer_list<std::string_view> extra = {}) {
+  std::vector<std::string> keys = p.keys(key);
+  bool ok = true;
+  for (const std::string& letter : keys) {
+    if (std::find(extra.begin(), extra.end(), letter) != extra.end()) continue;
     int axis = letter.size() == 1 ? axis_index(letter[0]) : -1;
     if (axis < 0) {
       p.report_value(diags, key + "." + letter, "is not an axis (X Y Z A B C U V W P Q D)");
+      ok = false;
       continue;
     }
-    out[axis] = value;
+    auto v = p.number(key + "." + letter, diags);
+    if (!v) {
+      ok = false;
+      continue;
+    }
+    out[axis] = *v;
+    if (given) *given |= 1u << axis;
   }
-  return true;
+  return ok;
 }
 
 std::optional<int> table_number(const Profile& p, const std::string& table, const std::string& key,
@@ -256,6 +280,90 @@ std::optional<int> table_number(const Profile& p, const std::string& table, cons
   return static_cast<int>(n);
 }
 
+std::optional<Plane> plane_of(const std::string& text) {
+  int u = text.size() == 2 ? axis_index(text[0]) : -1;
+  int v = text.size() == 2 ? axis_index(text[1]) : -1;
+  if (u < 0 || v < 0 || u == v) return std::nullopt;
+  for (const Plane& p : kPlanes)
+    if (p.u == u && p.v == v) return p;
+  return Plane{u, v, -1};
+}
+
+void read_axes(const Profile& p, MachineConfig& m, Diagnostics& diags) {
+  for (const std::string& letter : p.keys("axes")) {
+    std::string base = "axes." + letter;
+    int i = letter.size() == 1 ? axis_index(letter[0]) : -1;
+    if (i < 0) {
+      p.report_value(diags, base, "is not an axis (X Y Z A B C U V W P Q D)");
+      continue;
+    }
+    AxisConfig& a = m.axes[static_cast<size_t>(i)];
+    if (auto v = p.string(base + ".kind", diags)) {
+      if (*v == "linear") a.kind = AxisKind::Linear;
+      else if (*v == "rotary") a.kind = AxisKind::Rotary;
+      else if (*v == "indexing") a.kind = AxisKind::Indexing;
+      else p.report_value(diags, base + ".kind", "must be linear, rotary or indexing");
+    }
+    auto positive = [&](const char* key, double& out) {
+      if (auto v = p.number(base + "." + key, diags)) {
+        if (*v > 0) out = *v;
+        else p.report_value(diags, base + "." + key, "must be greater than zero");
+      }
+    };
+    positive("step", a.index_step);
+    positive("rapid", a.rapid);
+    positive("tolerance", a.tolerance);
+    positive("drive_error", a.drive_error);
+    if (auto v = p.boolean(base + ".endless", diags)) a.endless = *v;
+    if (auto v = p.boolean(base + ".diameter", diags)) a.diameter = *v;
+    if (auto v = p.numbers(base + ".limits", diags)) {
+      if (v->size() == 2 && (*v)[0] < (*v)[1]) {
+        a.lower = (*v)[0];
+        a.upper = (*v)[1];
+      } else {
+        p.report_value(diags, base + ".limits", "must be [lower, upper] with lower < upper");
+      }
+    }
+  }
+}
+
+void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
+  ProbeConfig& probe = m.probe;
+  auto positive = [&](const char* key, double& out) {
+    if (auto v = p.number(std::string("probe.") + key, diags)) {
+      if (*v > 0) out = *v;
+      else p.report_value(diags, std::string("probe.") + key, "must be greater than zero");
+    }
+  };
+  positive("approach", probe.approach);
+  positive("safety", probe.safety);
+  positive("feed", probe.feed);
+  size_t n = p.array_size("probe.contacts", diags);
+  for (size_t i = 0; i < n; ++i) {
+    std::string key = fmt::format("probe.contacts[{}]", i);
+    ProbeContact c;
+    if (p.is_string(key)) {
+      auto v = p.string(key, diags);
+      if (v && *v == "none") c.kind = ProbeContact::Kind::None;
+      else p.report_value(diags, key, "must be \"none\" or a table such as { X = 10.02 }");
+    } else if (!p.keys(key + ".centre").empty() || p.number(key + ".radius", diags)) {
+      c.kind = ProbeContact::Kind::Circle;
+      AxisValues centre{};
+      uint32_t given = 0;
+      axis_values(p, key + ".centre", centre, diags, &given);
+      int k = 0;
+      for (int a = 0; a < kAxisCount && k < 2; ++a)
+        if (given & (1u << a)) c.centre[k++] = centre[a];
+      if (k != 2) p.report_value(diags, key + ".centre", "must give the centre's two coordinates, e.g. { X = 1, Y = 2 }");
+      if (auto r = p.number(key + ".radius", diags); r && *r > 0) c.radius = *r;
+      else p.report_value(diags, key + ".radius", "must be greater than zero");
+    } else {
+      axis_values(p, key, c.point, diags, &c.axes);
+    }
+    probe.contacts.push_back(c);
+  }
+}
+
 }  // namespace
 
 MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
@@ -263,11 +371,30 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   if (auto v = p.string("machine.name", diags)) m.name = *v;
   if (auto v = p.boolean("machine.block_skip", diags)) m.block_skip = *v;
   if (auto v = p.boolean("machine.optional_stop", diags)) m.optional_stop = *v;
+  if (auto v = p.boolean("machine.spindle_encoder", diags)) m.spindle_encoder = *v;
+  if (auto v = p.number("machine.max_rpm", diags)) {
+    if (*v >= 0) m.max_rpm = *v;
+    else p.report_value(diags, "machine.max_rpm", "must not be negative");
+  }
+  if (auto v = p.number("machine.tap_min_travel", diags)) {
+    if (*v >= 0) m.tap_min_travel = *v;
+    else p.report_value(diags, "machine.tap_min_travel", "must not be negative");
+  }
+  if (auto v = p.string("machine.turning_plane", diags); v && !v->empty()) {
+    m.turning_plane = plane_of(*v);
+    if (!m.turning_plane) p.report_value(diags, "machine.turning_plane", "must name two different axes, e.g. \"ZX\"");
+  }
   axis_values(p, "machine.initial_position", m.initial_position, diags);
   for (const std::string& key : p.keys("work_offsets")) {
     auto n = table_number(p, "work_offsets", key, diags);
-    AxisValues values{};
-    if (n && axis_values(p, "work_offsets." + key, values, diags)) m.work_offsets[*n] = values;
+    std::string base = "work_offsets." + key;
+    WorkOffset w;
+    if (!n || !axis_values(p, base, w.values, diags, &w.axes, {"unit"})) continue;
+    if (auto unit = p.string(base + ".unit", diags)) {
+      if (*unit == "inch" || *unit == "mm") w.inch = *unit == "inch";
+      else p.report_value(diags, base + ".unit", "must be mm or inch");
+    }
+    m.work_offsets[*n] = w;
   }
   for (const std::string& key : p.keys("tools")) {
     auto n = table_number(p, "tools", key, diags);
@@ -286,8 +413,14 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
       if (*v >= 0) o.radius = *v;
       else p.report_value(diags, base + ".radius", "must not be negative");
     }
+    if (auto v = p.string(base + ".axis", diags)) {
+      if (v->size() == 1 && axis_index((*v)[0]) >= 0) o.axis = (*v)[0];
+      else p.report_value(diags, base + ".axis", "must be one axis letter");
+    }
     m.offsets[*n] = o;
   }
+  read_axes(p, m, diags);
+  read_probe(p, m, diags);
   return m;
 }
 

@@ -41,6 +41,9 @@ class Profile {
   std::optional<std::map<std::string, std::string>> string_table(std::string_view key, Diagnostics& diags) const;
   // The keys of a collection table, from the user's profile if it has the table.
   std::vector<std::string> keys(std::string_view table) const;
+  // The length of an array ("probe.contacts"); its items are "probe.contacts[0]"...
+  size_t array_size(std::string_view key, Diagnostics& diags) const;
+  bool is_string(std::string_view key) const;
 
   // Reports keys of the user's profile that no reader looked up (likely typos).
   void report_unused(Diagnostics& diags) const;

@@ -610,6 +610,23 @@ void Reader::check_iso_block() {
     }
     for (uint32_t e = first; e <= last && e < s_.e_count; ++e)
       if (!check_class(e, {"LR"}, result->range, fmt::format("the result of {}", name))) break;
+    // Where each axis' value goes: E<first> for the axis written first (§1.2.33:
+    // `G 72 Z200 X50 E32` stores Z in E32, X in E33), at the axis' second slot.
+    if (!hole) {
+      uint32_t next = first;
+      std::vector<ir::Word> destinations;
+      for (const ir::Word& w : block_.words)
+        if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 &&
+            s_.conventions.axes.find(w.address[0]) != std::string::npos && w.slot == letter_slot(w.address[0])) {
+          ir::Word d = w;
+          d.slot = static_cast<uint8_t>(second_slot(w.address[0]));
+          d.address = slot_name(d.slot);
+          d.text = fmt::format("E{}", next);
+          d.value = program_.number(next++, w.range);
+          destinations.push_back(d);
+        }
+      for (ir::Word& d : destinations) block_.words.push_back(std::move(d));
+    }
   }
   if (axes > 8) {
     diags_.report(DiagId::TooManyWords, block_.range, axes, "axis", 8);

@@ -1,0 +1,478 @@
+// Canned cycles (GOST 20999 Table 6; NC-110 §2.8.9) and the NC-110 measuring cycles
+// G72-G74 (§2.8.12) against a simulated probe.
+#include <cmath>
+
+#include "machine.h"
+#include "support/text.h"
+
+namespace ncc {
+
+namespace {
+
+constexpr int kMaxPecks = 10000;  // per hole
+constexpr double kUnloadClearance = 1;  // mm: G83 goes back to 1 mm above the last bottom (§2.8.9.2)
+
+}  // namespace
+
+// ---- GOST 20999 ---------------------------------------------------------------------
+
+void Machine::cycle_registers() {
+  // The cycle registers stay in force while the cycle is active (S-7.5); any block
+  // may change them, the cycle runs only in blocks with a dimension word.
+  const char depth_letter = kAxisLetters[modal_.plane.w];
+  if (has(depth_letter)) cycle_.depth = word(depth_letter);
+  if (auto v = word_if(conv_.cycle_level_word)) cycle_.level = v;
+  if (auto v = word_if(conv_.dwell_word)) cycle_.dwell = v;
+  if (auto v = word_if(conv_.peck_word)) cycle_.peck = v;
+}
+
+void Machine::cycle() {
+  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
+  const std::string name = "canned cycle " + pattern.name;
+  const int d = modal_.plane.w;  // the drilling axis: perpendicular to the plane
+  const char depth_letter = kAxisLetters[d];
+  cycle_registers();
+  AxisValues hole = target();
+  hole[d] = machine_[d];
+  bool ok = true;
+  if (!cycle_.depth) {
+    report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, depth_letter));
+    ok = false;
+  }
+  if (!cycle_.level) {
+    report(DiagId::CycleNoRLevel, 0, pattern.name);
+    ok = false;
+  }
+  if (ok && pattern.in == CyclePattern::In::Peck) {
+    if (!cycle_.peck) {
+      report(DiagId::CycleNoPeck, 0, pattern.name, conv_.peck_word ? std::string(1, conv_.peck_word) : "Q");
+      ok = false;
+    } else if (*cycle_.peck <= 0) {
+      report(DiagId::PeckNotPositive, conv_.peck_word, four_decimals(*cycle_.peck), pattern.name);
+      ok = false;
+    }
+  }
+  if (ok && pattern.dwell && !cycle_.dwell) {
+    report(DiagId::CycleNoDwell, 0, pattern.name, dwell_address());
+    ok = false;
+  } else if (ok && pattern.dwell && *cycle_.dwell < 0) {
+    report(DiagId::DwellNegative, conv_.dwell_word, four_decimals(*cycle_.dwell));
+    ok = false;
+  }
+  if (ok && pattern.in == CyclePattern::In::SpindleFeed && spindle_direction_ == 0) {
+    report(DiagId::CycleNoSpindle, 0, pattern.name);
+    ok = false;
+  }
+  if (!ok || !need_feed(name.c_str(), hole)) {
+    move_to(hole);
+    return;
+  }
+  // G90: R and the depth are coordinates; G91: R is measured from the initial level
+  // and the depth from R.
+  const double start = machine_[d];
+  AxisValues off = target_frame();
+  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
+  const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
+  // The tool never travels between holes on the work side of R: a start below R
+  // first goes up to R, and R is then the initial level it returns to.
+  const bool below_level = (bottom < level) ? start < level : start > level;
+  const double initial = below_level ? level : start;
+  auto at = [&](double z) {
+    AxisValues p = hole;
+    p[d] = z;
+    return p;
+  };
+  if (below_level) {
+    AxisValues up = machine_;
+    up[d] = level;
+    rapid(up);
+  }
+  // Moves of zero length (already at the hole, R equal to the initial level) are
+  // not made.
+  if (hole != machine_) rapid(at(machine_[d]));
+  if (level != machine_[d]) rapid(at(level));
+  if (pattern.in == CyclePattern::In::SpindleFeed && modal_.spindle != spindle_direction_)
+    apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+  if (pattern.in == CyclePattern::In::Peck) {
+    // Pecks of Q, each followed by a rapid withdrawal to R and a rapid return to the
+    // depth reached.
+    double pecks = std::ceil(std::fabs(bottom - level) / length_units(*cycle_.peck));
+    if (pecks > kMaxPecks) {
+      report(DiagId::CyclePecks, conv_.peck_word, pattern.name, four_decimals(pecks), four_decimals(*cycle_.peck),
+             kMaxPecks);
+      return;
+    }
+    const double step = length_units(*cycle_.peck) * (bottom < level ? -1 : 1);
+    double reached = level;
+    while (true) {
+      double next = reached + step;
+      if ((step < 0 && next <= bottom) || (step > 0 && next >= bottom)) next = bottom;
+      linear(at(next));
+      if (next == bottom) break;
+      rapid(at(level));
+      rapid(at(next));
+      reached = next;
+    }
+  } else {
+    linear(at(bottom));
+  }
+  if (pattern.dwell) dwell_seconds(*cycle_.dwell * conv_.dwell_seconds_per_unit);
+  const int direction = spindle_direction_;
+  if (pattern.bottom == CyclePattern::Bottom::Reverse)
+    apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
+  if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
+  switch (pattern.out) {
+    case CyclePattern::Out::Rapid: rapid(at(initial)); break;
+    case CyclePattern::Out::Feed: linear(at(initial)); break;
+    case CyclePattern::Out::Manual: {
+      // The operator retracts by hand: the run stops; on resume the tool is at the
+      // initial level (S-7.5).
+      Event stop{EventKind::Stop};
+      stop.n = 3;
+      emit(stop);
+      emit(motion_event(EventKind::OperatorMove, at(initial)));
+      move_to(at(initial));
+      break;
+    }
+  }
+  if (pattern.bottom == CyclePattern::Bottom::Reverse)
+    apply({direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+}
+
+// ---- NC-110 -------------------------------------------------------------------------
+
+void Machine::nc110_cycle_registers(bool definition) {
+  // R words: R1 then R2; one R is both (§2.8.9.4). Levels become program coordinates
+  // where they are written: G91 measures R from the axis' position, the depth from R1.
+  const int d = cycle_.axis;
+  const double here = to_frame(machine_)[d];
+  const bool absolute = modal_.absolute;
+  auto level = [&](double v) { return absolute ? axis_units(d, v) : here + axis_units(d, v); };
+  if (auto r1 = word_if('R')) {
+    cycle_.r1 = level(*r1);
+    cycle_.r2 = has_slot(second_slot('R')) ? level(slot_value(second_slot('R'))) : *cycle_.r1;
+  } else if (definition) {
+    cycle_.r1 = cycle_.r2 = here;  // no R: the level the tool is at (decision 13)
+  }
+  if (has(kAxisLetters[d])) {
+    double v = axis_units(d, word(kAxisLetters[d]));
+    cycle_.bottom = absolute ? v : *cycle_.r1 + v;
+  }
+  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
+  if (pattern.in == CyclePattern::In::Peck) {
+    if (auto v = word_if(conv_.peck_word)) cycle_.step = length_units(*v);
+    if (auto v = word_if(conv_.peck_factor_word)) cycle_.factor = *v;
+    if (auto v = word_if(conv_.peck_minimum_word)) cycle_.minimum = length_units(*v);
+  }
+  if (pattern.bottom == CyclePattern::Bottom::Reverse)
+    if (auto v = word_if(conv_.tap_pitch_word)) cycle_.pitch = length_units(*v);
+}
+
+void Machine::nc110_cycle() {
+  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
+  const std::string name = pattern.name;
+  std::vector<int> written;
+  for (char c : conv_.axes)
+    if (has(c)) written.push_back(axis_index(c));
+
+  // The cycle's block stores it; the depth word's letter names the drilling axis
+  // (§2.8.9 note 1).
+  if (cycle_.defined_here) {
+    cycle_.defined_here = false;
+    if (written.size() != 1) {
+      report(DiagId::CycleDefinition, 0,
+             written.empty() ? fmt::format("{} needs the hole's depth: an axis word whose letter names the drilling axis", name)
+                             : fmt::format("the block of {} holds the depth and no other axis: the holes' positions come in the blocks after it", name));
+      modal_.cycle = -1;
+      return;
+    }
+    cycle_.axis = written[0];
+    nc110_cycle_registers(true);
+    const char letter = kAxisLetters[cycle_.axis];
+    if (*cycle_.bottom >= *cycle_.r1) {
+      report(DiagId::CycleDefinition, letter,
+             fmt::format("the hole's bottom {}{} is not below R1 {}: {} drills from R1 towards minus {}", letter,
+                         four_decimals(program_axis(cycle_.axis, *cycle_.bottom)),
+                         four_decimals(program_axis(cycle_.axis, *cycle_.r1)), name, letter));
+      modal_.cycle = -1;
+      return;
+    }
+    if (*cycle_.r2 < *cycle_.r1)
+      report(DiagId::CycleDefinition, 0, fmt::format("R2 {} lies below R1 {}: the tool returns above the work",
+                                                     four_decimals(program_axis(cycle_.axis, *cycle_.r2)),
+                                                     four_decimals(program_axis(cycle_.axis, *cycle_.r1))));
+    if (pattern.in == CyclePattern::In::Peck) {
+      if (!cycle_.step || *cycle_.step <= 0)
+        report(DiagId::CycleNoPeck, 0, name, std::string(1, conv_.peck_word) + " (greater than 0)");
+      if (cycle_.factor && *cycle_.factor <= 0) report(DiagId::PeckNotPositive, conv_.peck_factor_word, shortest(*cycle_.factor), name);
+      if (cycle_.minimum && *cycle_.minimum < 0) report(DiagId::PeckNotPositive, conv_.peck_minimum_word, shortest(*cycle_.minimum), name);
+    }
+    if (cycle_.pitch && !config_.spindle_encoder) report(DiagId::ThreadEncoder, conv_.tap_pitch_word, name + " with K");
+    return;
+  }
+
+  const int d = cycle_.axis;
+  nc110_cycle_registers(false);
+  bool hole = false;
+  for (int a : written) hole = hole || a != d;
+  if (!hole) return;  // new levels only
+
+  // Per hole (§2.8.9.4): the position at the height the tool is at, R1, the hole, back.
+  AxisValues p = program_target();
+  p[d] = to_frame(machine_)[d];
+  auto at = [&](double level) {
+    AxisValues q = p;
+    q[d] = level;
+    return to_machine(q);
+  };
+  AxisValues position = to_machine(p);
+  if (position != machine_) rapid(position);
+  if (at(*cycle_.r1) != machine_) rapid(at(*cycle_.r1));
+  if (!need_feed(("canned cycle " + name).c_str(), machine_)) return;
+  if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1) {
+    // The spindle starts in the direction it last turned (Table 2.6).
+    if (spindle_direction_ == 0) report(DiagId::CycleNoSpindle, 0, name);
+    else apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+  }
+  const int direction = spindle_direction_;
+  const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
+  if (tapping && std::fabs(*cycle_.bottom - *cycle_.r1) < config_.tap_min_travel)
+    report(DiagId::TapTravel, 0, name, four_decimals(to_program(std::fabs(*cycle_.bottom - *cycle_.r1))),
+           four_decimals(to_program(config_.tap_min_travel)));
+
+  if (pattern.in == CyclePattern::In::Peck) {
+    const double step = cycle_.step.value_or(0);
+    if (step <= 0) return;
+    if (cycle_.factor || cycle_.minimum) {
+      // With K or J: each peck goes back to R1 to unload chips and returns to 1 mm
+      // above the depth reached; the peck shrinks by K down to J (§2.8.9.2, decision 21).
+      const double clearance = kUnloadClearance;
+      double from = *cycle_.r1, peck = step;
+      for (int n = 0;; ++n) {
+        if (n == kMaxPecks) {
+          report(DiagId::CyclePecks, conv_.peck_word, name, kMaxPecks, four_decimals(to_program(step)), kMaxPecks);
+          return;
+        }
+        if (at(from) != machine_) rapid(at(from));
+        double reached = std::max(from - peck, *cycle_.bottom);
+        linear(at(reached));
+        if (reached <= *cycle_.bottom) break;
+        rapid(at(*cycle_.r1));
+        from = reached + clearance;
+        double next = peck * cycle_.factor.value_or(1);
+        peck = next >= cycle_.minimum.value_or(0) ? next : *cycle_.minimum;
+        if (peck <= clearance) {
+          report(DiagId::CycleNoProgress, conv_.peck_word, name, four_decimals(to_program(peck)));
+          return;
+        }
+      }
+    } else {
+      // Without K and J: pecks of I with a dwell between them to break the chip.
+      double reached = *cycle_.r1;
+      for (int n = 0; reached > *cycle_.bottom; ++n) {
+        if (n == kMaxPecks) {
+          report(DiagId::CyclePecks, conv_.peck_word, name, kMaxPecks, four_decimals(to_program(step)), kMaxPecks);
+          return;
+        }
+        reached = std::max(reached - step, *cycle_.bottom);
+        linear(at(reached));
+        if (reached > *cycle_.bottom) dwell_seconds(timer_dwell());
+      }
+    }
+  } else if (tapping) {
+    tap_feed(at(*cycle_.bottom), false);
+  } else {
+    linear(at(*cycle_.bottom));
+  }
+  if (pattern.dwell) dwell_seconds(timer_dwell());
+  if (tapping) apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
+  if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
+  if (pattern.out == CyclePattern::Out::Feed) {
+    if (tapping) tap_feed(at(*cycle_.r1), true);
+    else linear(at(*cycle_.r1));
+    if (*cycle_.r2 != *cycle_.r1) rapid(at(*cycle_.r2));
+  } else {
+    rapid(at(*cycle_.r2));
+  }
+  if (tapping) apply({direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+}
+
+void Machine::tap_feed(const AxisValues& t, bool out) {
+  // G84: with a spindle encoder and K, a move synchronised with the spindle at the
+  // pitch K; else at F. The way out runs at RMS percent of the speed (§2.10.3).
+  double percent = system_value(SysVar::TapReturn);
+  if (out && percent == 0) {
+    report(DiagId::SystemValue, 0, system_name({SysVar::TapReturn, 0}), 0, "the tap would not come out");
+    return move_to(t);
+  }
+  if (cycle_.pitch) {
+    double rpm = spindle_rpm();
+    if (!config_.spindle_encoder) report(DiagId::ThreadEncoder, 0, "tapping with K");
+    if (rpm <= 0) report(DiagId::ThreadNoSpindle, 0);
+    if (!path_allowed({machine_, t})) return move_to(t);
+    const double scale = out ? percent / 100 : 1;
+    if (out && scale != 1) {
+      Event e{EventKind::SpindleSpeed};
+      e.a = speed_ * scale;
+      emit(e);
+    }
+    if (rpm > 0) advance_clock(60 * std::fabs(t[cycle_.axis] - machine_[cycle_.axis]) / (*cycle_.pitch * rpm * scale));
+    Event e = motion_event(EventKind::Thread, t);
+    e.a = to_program(*cycle_.pitch);
+    emit(e);
+    move_to(t);
+    if (out && scale != 1) {
+      Event back{EventKind::SpindleSpeed};
+      back.a = speed_;
+      emit(back);
+    }
+    return;
+  }
+  if (!out || percent == 100 || !feed_) return linear(t);
+  double programmed = *feed_;
+  feed_ = programmed * percent / 100;
+  Event e{EventKind::FeedRate};
+  e.a = *feed_;
+  emit(e);
+  linear(t);
+  feed_ = programmed;
+  e.a = programmed;
+  emit(e);
+}
+
+// ---- Measuring cycles (NC-110 §2.8.12, §2.13.9) -------------------------------------
+
+void Machine::measure() {
+  const Fn fn = block_.measure;
+  const std::string name = fn == Fn::MeasurePoint ? "G72" : fn == Fn::MeasureHole ? "G73" : "G74";
+  const ProbeConfig& probe = config_.probe;
+  const AxisValues start = machine_;
+  const uint32_t first = static_cast<uint32_t>(word('E'));
+  // The next contact of the simulated probe, or the nominal one when the list has ended.
+  const ProbeContact* contact = next_contact_ < probe.contacts.size() ? &probe.contacts[next_contact_] : nullptr;
+  ++next_contact_;
+  auto probe_move = [&](const AxisValues& to, bool touched) {
+    double length = 0;
+    for (int i = 0; i < kAxisCount; ++i) length += (to[i] - machine_[i]) * (to[i] - machine_[i]);
+    advance_clock(60 * std::sqrt(length) / probe.feed);
+    Event e = motion_event(EventKind::Probe, to);
+    e.n = touched;
+    emit(e);
+    machine_ = to;
+  };
+  auto no_contact = [&](const AxisValues& from, const AxisValues& to) {
+    probe_move(to, false);
+    rapid(start);
+    auto where = [&](const AxisValues& p) {
+      std::string s;
+      AxisValues q = in_program_units(p);
+      AxisValues off = in_program_units(origins());
+      for (char letter : conv_.axes)
+        if (int i = axis_index(letter); p[i] != start[i] || i < 3)
+          s += fmt::format("{}{}{}", s.empty() ? "" : " ", letter, four_decimals(q[i] - off[i]));
+      return s;
+    };
+    report(DiagId::ProbeNoContact, 0, name, where(from), where(to));
+  };
+  const double radius = [&] {
+    auto it = config_.offsets.find(offset_number_);
+    return it == config_.offsets.end() || fn == Fn::MeasureDeviation ? 0.0 : it->second.radius;
+  }();
+
+  if (fn == Fn::MeasureHole) {
+    // G73 r: three probes from the centre at 0, 120 and 240 degrees in the plane.
+    const int u = modal_.plane.u, v = modal_.plane.v;
+    const double nominal = length_units(word('r'));
+    if (contact && contact->kind == ProbeContact::Kind::Point) {
+      report(DiagId::ProbeNoContact, 0, name, "the next probe contact is a point", "G73 needs a circle");
+      return;
+    }
+    double cx = start[u], cy = start[v], r = nominal;
+    if (contact && contact->kind == ProbeContact::Kind::Circle) {
+      cx = contact->centre[0];
+      cy = contact->centre[1];
+      r = contact->radius;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const double a = k * 2 * std::numbers::pi / 3;
+      const double dx = std::cos(a), dy = std::sin(a);
+      AxisValues from = start, safety = start;
+      from[u] += (nominal - probe.approach) * dx;
+      from[v] += (nominal - probe.approach) * dy;
+      safety[u] += (nominal + probe.safety) * dx;
+      safety[v] += (nominal + probe.safety) * dy;
+      rapid(from);
+      // Where the ray from the start meets the hole's wall; the probe's centre stops
+      // its radius before the wall, within the stroke from Qa before the nominal
+      // radius to Qs past it.
+      double reach = nominal - radius;
+      if (contact) {
+        double ox = start[u] - cx, oy = start[v] - cy;
+        double b = ox * dx + oy * dy, c = ox * ox + oy * oy - r * r;
+        double disc = b * b - c;
+        reach = disc >= 0 ? -b + std::sqrt(disc) - radius : -1;
+        if (contact->kind == ProbeContact::Kind::None || reach < nominal - probe.approach ||
+            reach > nominal + probe.safety)
+          return no_contact(from, safety);
+      }
+      AxisValues touch = start;
+      touch[u] += reach * dx;
+      touch[v] += reach * dy;
+      probe_move(touch, true);
+      rapid(start);
+    }
+    const AxisValues off = origins();
+    results_.push_back({first, program_axis(u, cx - off[u])});
+    results_.push_back({first + 1, program_axis(v, cy - off[v])});
+    results_.push_back({first + 2, to_program(r)});
+    return;
+  }
+
+  // G72, G74: towards the nominal point P, from Qa before it to Qs past it.
+  const AxisValues nominal = target();
+  double distance = 0;
+  for (int i = 0; i < kAxisCount; ++i) distance += (nominal[i] - start[i]) * (nominal[i] - start[i]);
+  distance = std::sqrt(distance);
+  if (distance < 1e-6) {
+    report(DiagId::ProbeNoContact, 0, name, "the nominal point is where the probe is", "nowhere to probe");
+    return;
+  }
+  if (contact && contact->kind == ProbeContact::Kind::Circle) {
+    report(DiagId::ProbeNoContact, 0, name, "the next probe contact is a circle", "G72 and G74 need a point");
+    return;
+  }
+  AxisValues dir{};
+  for (int i = 0; i < kAxisCount; ++i) dir[i] = (nominal[i] - start[i]) / distance;
+  auto along = [&](double s) {
+    AxisValues p = start;
+    for (int i = 0; i < kAxisCount; ++i) p[i] += dir[i] * s;
+    return p;
+  };
+  const double from_s = std::max(0.0, distance - probe.approach);
+  const double safety_s = distance + probe.safety;
+  // The contact: the surface point; the probe's centre stops its radius before it.
+  AxisValues surface = nominal;
+  if (contact && contact->kind == ProbeContact::Kind::Point)
+    for (int i = 0; i < kAxisCount; ++i)
+      if (contact->axes & (1u << i)) surface[i] = contact->point[i];
+  double contact_s = 0;
+  for (int i = 0; i < kAxisCount; ++i) contact_s += (surface[i] - start[i]) * dir[i];
+  contact_s -= radius;
+  if (from_s > 0) rapid(along(from_s));
+  if ((contact && contact->kind == ProbeContact::Kind::None) || contact_s < from_s || contact_s > safety_s)
+    return no_contact(along(from_s), along(safety_s));
+  probe_move(along(contact_s), true);
+  rapid(start);
+  // The values in the order the axes were written (the front end says where each goes).
+  const AxisValues off = origins();
+  for (char letter : conv_.axes) {
+    int a = axis_index(letter);
+    auto index = slot_if(second_slot(letter));
+    if (!index || !has(letter)) continue;
+    double measured = program_axis(a, surface[a] - off[a]);
+    double value = fn == Fn::MeasurePoint ? measured : program_axis(a, nominal[a] - off[a]) - measured;
+    results_.push_back({static_cast<uint32_t>(*index), value});
+  }
+}
+
+}  // namespace ncc

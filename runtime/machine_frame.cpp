@@ -1,0 +1,479 @@
+// Coordinates: work offsets and origins, the NC-110 transforms (scale, mirror,
+// rotation), the three-letter functions that set them, and the working limits and
+// protected zones every move is checked against before it starts.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "machine.h"
+#include "support/text.h"
+
+namespace ncc {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180;
+
+// Programmed positions live on a nanometre grid, so that increments add up exactly
+// as decimals do (0.1 + 0.2 is 0.3) and traces stay bit-for-bit stable.
+double snap(double v) { return std::round(v * 1e9) / 1e9; }
+
+}  // namespace
+
+bool Machine::Frame::transformed() const {
+  if (rotation != 0) return true;
+  for (int i = 0; i < kAxisCount; ++i)
+    if (mirror[i] || scale[i] != 1) return true;
+  return false;
+}
+
+double Machine::offset_value(int offset, int axis) const {
+  auto it = offsets_.find(offset);
+  if (it == offsets_.end()) return 0;
+  double v = it->second.values[axis];
+  return it->second.inch && is_linear(axis) ? v * 25.4 : v;
+}
+
+double Machine::origin(int axis) const { return offset_value(frame_.base[axis], axis) + frame_.shift[axis]; }
+
+AxisValues Machine::origins() const {
+  AxisValues o{};
+  for (int i = 0; i < kAxisCount; ++i) o[i] = origin(i);
+  return o;
+}
+
+AxisValues Machine::frame_offset(int work_offset) const {
+  AxisValues off{};
+  for (int i = 0; i < kAxisCount; ++i) off[i] = offset_value(work_offset, i) + frame_.shift[i];
+  return off;
+}
+
+AxisValues Machine::target_frame() const {
+  if (block_.machine_frame || block_.block_offset == 0) return {};  // G79, G53: the machine's zero
+  if (block_.block_offset > 0) return frame_offset(block_.block_offset);
+  return origins();
+}
+
+AxisValues Machine::to_machine(const AxisValues& p) const {
+  AxisValues q = p;
+  // G79 and G53 blocks are not transformed (NC-110 §2.13.1.5: "not rotated").
+  if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
+    for (int i = 0; i < kAxisCount; ++i) q[i] *= frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i];
+    const int u = modal_.plane.u, v = modal_.plane.v;
+    if (frame_.rotation != 0) {
+      const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
+      const double x = q[u], y = q[v];
+      q[u] = x * c - y * s;
+      q[v] = x * s + y * c;
+    }
+  }
+  AxisValues off = target_frame();
+  for (int i = 0; i < kAxisCount; ++i) q[i] += off[i];
+  return q;
+}
+
+AxisValues Machine::to_frame(const AxisValues& m) const {
+  AxisValues off = target_frame();
+  AxisValues q{};
+  for (int i = 0; i < kAxisCount; ++i) q[i] = m[i] - off[i];
+  if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
+    const int u = modal_.plane.u, v = modal_.plane.v;
+    if (frame_.rotation != 0) {
+      const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
+      const double x = q[u], y = q[v];
+      q[u] = x * c + y * s;
+      q[v] = -x * s + y * c;
+    }
+    for (int i = 0; i < kAxisCount; ++i) q[i] /= frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i];
+  }
+  return q;
+}
+
+bool Machine::has_axis_word() const {
+  for (char axis : conv_.axes)
+    if (has(axis)) return true;
+  return false;
+}
+
+AxisValues Machine::program_target() {
+  // The words replace (G90, G79) or add to (G91) the current position in program
+  // coordinates; an axis not written stays (NC-110 decision 5). Blocks 2 of a
+  // three-point parabola measure from the intermediate point (GOST Appendix 5).
+  const AxisValues base = to_frame(parabola_middle_ ? *parabola_middle_ : machine_);
+  AxisValues p = base;
+  const bool absolute = modal_.absolute || block_.machine_frame;
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    double written = word(letter);
+    if (config_.axes[static_cast<size_t>(i)].kind == AxisKind::Indexing &&
+        (written != std::trunc(written) || std::fabs(written) > 99999)) {
+      report(DiagId::IndexValue, letter, fmt::format("{}{}", letter, four_decimals(written)));
+      continue;
+    }
+    double v = axis_units(i, written);
+    p[i] = absolute ? v : base[i] + v;
+  }
+  return p;
+}
+
+AxisValues Machine::target() {
+  const AxisValues& from = parabola_middle_ ? *parabola_middle_ : machine_;
+  if (frame_.transformed() && !block_.machine_frame && block_.block_offset < 0) {
+    AxisValues t = to_machine(program_target());
+    for (double& v : t) v = snap(v);
+    return t;
+  }
+  // Untransformed: unwritten axes stay exactly where they are.
+  AxisValues p = program_target();
+  AxisValues off = target_frame();
+  AxisValues t = from;
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    const AxisConfig& a = config_.axes[static_cast<size_t>(i)];
+    double v = snap(p[i] + off[i]);
+    // An endless rotary axis goes the way the target's sign says; 0 the short way
+    // (NC-110 §2.8.4, decision 18).
+    if (a.endless && a.kind == AxisKind::Rotary && (modal_.absolute || block_.machine_frame)) {
+      double written = angle_degrees(word(letter));
+      double at = std::fmod(from[i], 360.0);
+      if (at < 0) at += 360;
+      double to = std::fmod(std::fabs(written), 360.0);
+      double ahead = std::fmod(to - at + 360.0, 360.0);
+      double delta = written > 0 ? ahead : written < 0 ? (ahead == 0 ? 0 : ahead - 360) : (ahead <= 180 ? ahead : ahead - 360);
+      v = snap(from[i] + delta);
+    }
+    t[i] = v;
+  }
+  return t;
+}
+
+void Machine::origin_event() {
+  Event e{EventKind::Origin};
+  e.pos = in_program_units(origins());
+  emit(e);
+}
+
+void Machine::transform_event() {
+  Event e{EventKind::Transform};
+  e.a = frame_.rotation;
+  for (int i = 0; i < kAxisCount; ++i) {
+    e.pos[i] = frame_.scale[i];
+    if (frame_.mirror[i]) e.n |= 1 << i;
+  }
+  emit(e);
+}
+
+void Machine::set_position() {
+  // The named axes take the programmed values as their current coordinates; nothing
+  // moves (Table 5). Incremental values add to the current coordinates.
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    double v = axis_units(i, word(letter));
+    double work = offset_value(modal_.work_offset, i);
+    double current = machine_[i] - work - frame_.shift[i];
+    double wanted = modal_.absolute ? v : current + v;
+    frame_.shift[i] = machine_[i] - work - wanted;
+  }
+  position_offset_ = frame_.shift;
+  Event e{EventKind::PositionOffset};
+  e.pos = in_program_units(position_offset_);
+  emit(e);
+}
+
+// ---- The three-letter functions (NC-110 §2.13) ---------------------------------------
+
+bool Machine::frame_function(FnCall call) {
+  // The operands: #1, #2... at the operand slots; axes at their letters' slots.
+  auto operand = [&](int i) { return slot_if(operand_slot(i)); };
+  auto whole = [&](int i, double lo, double hi, const char* what) -> std::optional<int> {
+    auto v = operand(i);
+    if (!v) return std::nullopt;
+    if (*v < lo || *v > hi || *v != std::trunc(*v)) {
+      report_slot(DiagId::OperandValue, operand_slot(i), what, shortest(*v),
+                  fmt::format("a whole number from {} to {}", shortest(lo), shortest(hi)));
+      return std::nullopt;
+    }
+    return static_cast<int>(*v);
+  };
+  std::vector<int> listed;  // the axes the block names, in canonical order
+  for (char letter : conv_.axes)
+    if (has(letter)) listed.push_back(axis_index(letter));
+  auto value = [&](int axis) { return axis_units(axis, word(kAxisLetters[axis])); };
+  const std::string code = block_.code_name;
+
+  switch (call.fn) {
+    case Fn::OriginSelect:
+    case Fn::OriginTemporary:
+    case Fn::OriginRequalify: {
+      auto n = whole(0, 0, 99, "the origin");
+      if (!n) break;
+      auto record = offsets_.find(*n);
+      if (*n != 0 && record == offsets_.end()) {
+        report_code(DiagId::WorkOffsetUnknown, code, *n);
+        break;
+      }
+      // (UAO,n) without axes: every axis origin n declares (§2.13.1.1).
+      if (listed.empty())
+        for (int i = 0; i < kAxisCount; ++i)
+          if (conv_.axes.find(kAxisLetters[i]) != std::string::npos &&
+              (record == offsets_.end() || (record->second.axes & (1u << i))))
+            listed.push_back(i);
+      bool ok = true;
+      for (int a : listed)
+        if (record != offsets_.end() && !(record->second.axes & (1u << a))) {
+          std::string declared;
+          for (int i = 0; i < kAxisCount; ++i)
+            if (record->second.axes & (1u << i)) declared += kAxisLetters[i];
+          report(DiagId::OriginAxis, kAxisLetters[a], *n, std::string(1, kAxisLetters[a]), declared.empty() ? "none" : declared);
+          ok = false;
+        }
+      if (!ok) break;
+      bool moved = false;
+      for (int a : listed) {
+        if (call.fn == Fn::OriginRequalify) {
+          // §2.13.1.7: the correction goes into the origins table, in its unit.
+          double v = value(a);
+          offsets_[*n].values[a] += offsets_[*n].inch && is_linear(a) ? v / 25.4 : v;
+          offsets_[*n].axes |= 1u << a;
+          moved = moved || frame_.base[a] == *n;
+          continue;
+        }
+        frame_.base[a] = *n;
+        frame_.shift[a] = call.fn == Fn::OriginTemporary ? value(a) : 0;
+        moved = true;
+      }
+      if (moved) origin_event();
+      break;
+    }
+    case Fn::OriginIncremental:
+      // Cumulative: the current origin moves by the values (decision 1).
+      for (int a : listed) frame_.shift[a] += value(a);
+      origin_event();
+      break;
+    case Fn::Mirror:
+      if (listed.empty()) frame_.mirror.fill(false);
+      for (int a : listed) {
+        word(kAxisLetters[a]);
+        frame_.mirror[a] = conv_.mirror_toggles ? !frame_.mirror[a] : true;
+      }
+      transform_event();
+      break;
+    case Fn::Rotation:
+      if (auto v = operand(0)) frame_.rotation = *v;
+      transform_event();
+      break;
+    case Fn::Scale: {
+      auto factor = operand(0);
+      if (factor && !(*factor > 0)) {
+        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "it must be greater than 0");
+        break;
+      }
+      // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on all; (SCF): 1.
+      for (int i = 0; i < kAxisCount; ++i) frame_.scale[i] = factor && listed.empty() ? *factor : 1;
+      for (int a : listed) {
+        word(kAxisLetters[a]);
+        frame_.scale[a] = *factor;
+      }
+      transform_event();
+      break;
+    }
+    case Fn::PlaneSelect: {
+      auto u = operand(0), v = operand(1);
+      if (!u || !v) break;
+      if (modal_.comp || modal_.gtl || modal_.cycle >= 0) {
+        report_code(DiagId::PlaneState, modal_.comp ? "cutter radius compensation" : modal_.gtl ? "a GTL profile" : "a canned cycle");
+        break;
+      }
+      // The normal: the axis along abscissa x ordinate, of the X/U, Y/V, Z/W family.
+      auto family = [](int axis) { return axis < 3 ? axis : axis >= 6 && axis < 9 ? axis - 6 : -1; };
+      int fu = family(static_cast<int>(*u)), fv = family(static_cast<int>(*v));
+      int w = fu >= 0 && fv >= 0 && fu != fv ? 3 - fu - fv : -1;
+      if (w >= 0 && (fu + 1) % 3 != fv) w = -1;  // a left-handed pair has no axis along +normal
+      modal_.plane = Plane{static_cast<int>(*u), static_cast<int>(*v), w};
+      plane_event();
+      break;
+    }
+    case Fn::Tolerance: {
+      if (modal_.comp || modal_.gtl) {
+        report_code(DiagId::PlaneState, modal_.comp ? "cutter radius compensation" : "a GTL profile");
+        break;
+      }
+      Event e{EventKind::Tolerance};
+      for (int a : listed) {
+        double v = value(a);
+        const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
+        if (v < 0 || v > cfg.drive_error) {
+          report(DiagId::ToleranceValue, kAxisLetters[a], four_decimals(program_axis(a, v)), std::string(1, kAxisLetters[a]),
+                 four_decimals(program_axis(a, cfg.drive_error)));
+          continue;
+        }
+        tolerance_[a] = v;
+        e.n |= 1 << a;
+        e.pos[a] = program_axis(a, v == 0 ? cfg.tolerance : v);
+      }
+      emit(e);
+      break;
+    }
+    case Fn::Limits: {
+      // From the current origin, lower and upper in either order; a limit beyond the
+      // machine's travel is the machine's (§2.13.5.3).
+      Event e{EventKind::Limits};
+      for (int a : listed) {
+        double x = value(a) + origin(a);
+        double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + origin(a);
+        const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
+        limits_[0][a] = std::max(std::min(x, y), cfg.lower);
+        limits_[1][a] = std::min(std::max(x, y), cfg.upper);
+        limited_[a] = true;
+        e.n |= 1 << a;
+        e.pos[a] = program_axis(a, limits_[0][a] - origin(a));
+        e.control[a] = program_axis(a, limits_[1][a] - origin(a));
+      }
+      emit(e);
+      break;
+    }
+    case Fn::ZoneDefine: {
+      auto n = whole(0, 1, 3, "the zone");
+      if (!n || listed.size() != 2) break;
+      Zone& z = zones_[static_cast<size_t>(*n - 1)];
+      z.defined = true;
+      Event e{EventKind::Zone};
+      e.rotation = *n;
+      e.n = 2;
+      e.plane = Plane{listed[0], listed[1], -1};
+      for (int k = 0; k < 2; ++k) {
+        int a = listed[k];
+        double x = value(a) + origin(a);
+        double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + origin(a);
+        z.axis[k] = a;
+        z.lo[k] = std::min(x, y);
+        z.hi[k] = std::max(x, y);
+        e.pos[a] = program_axis(a, z.lo[k] - origin(a));
+        e.control[a] = program_axis(a, z.hi[k] - origin(a));
+      }
+      emit(e);
+      break;
+    }
+    case Fn::ZoneOn:
+    case Fn::ZoneOff: {
+      auto n = whole(0, 1, 3, "the zone");
+      if (!n) break;
+      Zone& z = zones_[static_cast<size_t>(*n - 1)];
+      if (call.fn == Fn::ZoneOn && !z.defined) {
+        report_slot(DiagId::ZoneUndefined, operand_slot(0), *n);
+        break;
+      }
+      z.active = call.fn == Fn::ZoneOn;
+      Event e{EventKind::Zone};
+      e.rotation = *n;
+      e.n = z.active;
+      emit(e);
+      break;
+    }
+    case Fn::Configuration: {
+      // (CTL,T): the turning configuration the machine has; (CTL): milling.
+      bool turning = operand(0).has_value();
+      if (turning && !config_.turning_plane) {
+        report_code(DiagId::ConfigurationMissing);
+        break;
+      }
+      turning_ = turning;
+      Event e{EventKind::Configuration};
+      e.n = turning;
+      emit(e);
+      Plane plane = turning ? *config_.turning_plane : kPlanes[0];
+      if (plane != modal_.plane) {
+        modal_.plane = plane;
+        plane_event();
+      }
+      break;
+    }
+    case Fn::DwellSeconds:
+      if (auto t = operand(0)) {
+        if (*t < 0 || *t > 32) report_slot(DiagId::DwellTime, operand_slot(0), shortest(*t), "must lie between 0 and 32 s");
+        else dwell_seconds(*t);
+      }
+      break;
+    case Fn::SplineBegin: {
+      auto u = operand(0), v = operand(1);
+      auto ends = whole(2, 0, 3, "the end conditions");
+      if (!u || !v || !ends) break;
+      if (spline_.active) {
+        report_code(DiagId::SplineStructure, "a spline is already open: end it with (ESP)");
+        break;
+      }
+      if (static_cast<int>(*u) != modal_.plane.u || static_cast<int>(*v) != modal_.plane.v) {
+        report_code(DiagId::SplineStructure,
+                    fmt::format("the spline's axes {}{} must be those of the plane {}", kAxisLetters[static_cast<int>(*u)],
+                                kAxisLetters[static_cast<int>(*v)], plane_name(modal_.plane)));
+        break;
+      }
+      spline_ = Spline{};
+      spline_.active = true;
+      spline_.u = static_cast<int>(*u);
+      spline_.v = static_cast<int>(*v);
+      spline_.ends = *ends;
+      break;
+    }
+    case Fn::SplineEnd:
+      if (!spline_.active) report_code(DiagId::SplineStructure, "(ESP) without (BSP)");
+      else if (spline_.lead_in && !spline_.points.empty())
+        report_code(DiagId::SplineStructure, "the spline has no lead-out: a G00 or G01 block with G40 comes before (ESP)");
+      spline_ = Spline{};
+      break;
+    default: return false;
+  }
+  return true;
+}
+
+// ---- Working limits and protected zones (NC-110 §2.13.5.3, §2.13.5.5) --------------
+
+bool Machine::path_allowed(const std::vector<AxisValues>& path) {
+  bool limits = std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; });
+  bool zones = std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; });
+  if (!limits && !zones) return true;
+  for (const AxisValues& p : path)
+    for (int a = 0; a < kAxisCount && limits; ++a)
+      if (limited_[a] && (p[a] < limits_[0][a] - 1e-9 || p[a] > limits_[1][a] + 1e-9)) {
+        report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]), four_decimals(program_axis(a, limits_[0][a] - origin(a))),
+               four_decimals(program_axis(a, limits_[1][a] - origin(a))), four_decimals(program_axis(a, p[a] - origin(a))));
+        return false;
+      }
+  for (size_t z = 0; z < zones_.size() && zones; ++z) {
+    const Zone& zone = zones_[z];
+    if (!zone.active) continue;
+    // A segment enters the open rectangle if some part of it lies strictly inside
+    // (clipping the segment to each axis' open interval); touching an edge does not.
+    for (size_t i = 0; i + 1 < path.size(); ++i) {
+      double t0 = 0, t1 = 1;
+      bool outside = false;
+      for (int k = 0; k < 2 && !outside; ++k) {
+        double a = path[i][zone.axis[k]], b = path[i + 1][zone.axis[k]];
+        double d = b - a;
+        if (std::fabs(d) < 1e-12) {
+          outside = !(a > zone.lo[k] && a < zone.hi[k]);
+          continue;
+        }
+        double ta = (zone.lo[k] - a) / d, tb = (zone.hi[k] - a) / d;
+        t0 = std::max(t0, std::min(ta, tb));
+        t1 = std::min(t1, std::max(ta, tb));
+      }
+      if (!outside && t1 - t0 > 1e-12) {
+        std::string box;
+        for (int k = 0; k < 2; ++k) {
+          int a = zone.axis[k];
+          box += fmt::format("{}{}{}..{}", k ? " " : "", kAxisLetters[a], four_decimals(program_axis(a, zone.lo[k] - origin(a))),
+                             four_decimals(program_axis(a, zone.hi[k] - origin(a))));
+        }
+        report(DiagId::ZoneEntered, 0, z + 1, box);
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace ncc
