@@ -361,8 +361,9 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::PartChange: event(EventKind::PartChange); break;
     default:
-      // The three-letter functions (origins, transforms, limits, zones...).
-      if (!frame_function(call)) break;
+      // The three-letter functions (origins, transforms, limits, zones...): their
+      // axis words are operands, not a move.
+      if (frame_function(call)) block_.operands = true;
       break;
   }
 }
@@ -440,7 +441,7 @@ void Machine::check_profile_rules() {
   const BlockRequest& r = *block_.request;
   std::string words;
   for (size_t i = 0; i < r.code_count; ++i)
-    if (!sem_.codes[r.codes[i]].name.empty() && sem_.codes[r.codes[i]].name[0] == 'M') words += sem_.codes[r.codes[i]].name + " ";
+    if (sem_.codes[r.codes[i]].timing != Timing::None) words += sem_.codes[r.codes[i]].name + " ";  // M codes
   for (char letter : {'S', 'T'})
     if (has(letter)) words += std::string(1, letter) + " ";
   if (!words.empty()) {
@@ -510,6 +511,7 @@ void Machine::apply_codes(Timing timing) {
 }
 
 void Machine::action() {
+  if (block_.operands) return;
   const bool axes = has_axis_word();
   if (block_.measure != Fn::Count) {
     measure();
@@ -589,7 +591,7 @@ void Machine::finish() {
   flush_compensation();
   // A continuous profile runs until a G00 move, a G09 or G04 block or G29 (§2.8.5).
   if (block_.moved && (modal_.dynamics == 0 || modal_.dynamics == 1)) profile_running_ = true;
-  if (block_.decelerate || block_.dwell_end) profile_running_ = false;
+  if (block_.rapid_moved || block_.decelerate || block_.dwell_end) profile_running_ = false;
   if (block_.stop) {
     Event e{EventKind::Stop};
     e.n = block_.stop - 1;

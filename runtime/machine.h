@@ -177,6 +177,8 @@ class Machine {
     int block_offset = -1;  // a block-only preset offset (G53): the frame of this block's targets
     std::vector<FnCall> restore;  // modal functions to restore after a block-only code
     bool moved = false;           // the block made a feed move
+    bool rapid_moved = false;     // ... a rapid move
+    bool operands = false;        // a three-letter function took the block's words
   };
 
   // Words.

@@ -32,7 +32,7 @@ double wrap(double a) {
 }  // namespace
 
 void Machine::move_to(const AxisValues& t) {
-  if (t != machine_) block_.moved = block_.moved || modal_.motion != Fn::MotionRapid;
+  if (t != machine_) (modal_.motion == Fn::MotionRapid ? block_.rapid_moved : block_.moved) = true;
   machine_ = t;
 }
 

@@ -401,11 +401,22 @@ class Lowering {
     labels_end_.clear();
   }
 
-  // Calls name entry points of any unit, so they are resolved last.
+  // Calls name entry points of any unit, so they are resolved last. A call the checks
+  // reported as unresolved goes to an entry that returns at once.
   void resolve_calls() {
+    size_t missing = SIZE_MAX;
     for (const auto& [at, name] : calls_) {
       size_t i = 0;
       while (i < m_.entries.size() && m_.entries[i].name != name) ++i;
+      if (i == m_.entries.size()) {
+        if (missing == SIZE_MAX) {
+          missing = m_.entries.size();
+          m_.entries.push_back({"?", vm::EntryKind::Subprogram, pc()});
+          op(Op::Step);
+          op(Op::Return);
+        }
+        i = missing;
+      }
       m_.code[at] = static_cast<uint8_t>(i & 0xFF);
       m_.code[at + 1] = static_cast<uint8_t>((i >> 8) & 0xFF);
     }

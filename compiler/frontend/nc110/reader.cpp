@@ -90,6 +90,9 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
 
   void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t, size_t position, const std::string&,
                    std::exception_ptr) override {
+    // The first error of a block is the one to fix; the parser's recovery after it
+    // would only report what follows from it.
+    if (r_.block_.has_errors) return;
     r_.block_.has_errors = true;
     if (!token || token->getType() == antlr4::Token::EOF) {
       size_t at = token ? token->getStartIndex() : position;
@@ -231,10 +234,27 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   lexer_.setMode(mode);
   tokens_.setTokenSource(&lexer_);
   parser_.setTokenStream(&tokens_);
+  // A block the grammar rejects keeps its label and number; its body is not read on
+  // (the syntax error says what is wrong with it).
   switch (kind) {
-    case Kind::Iso: iso_block(parser_.isoBlock()); break;
-    case Kind::Assign: assign_block(parser_.assignBlock()); break;
-    case Kind::Code: code_block(parser_.tlcBlock()); break;
+    case Kind::Iso: {
+      auto* ctx = parser_.isoBlock();
+      if (block_.has_errors) leading(ctx->leading(), true);
+      else iso_block(ctx);
+      break;
+    }
+    case Kind::Assign: {
+      auto* ctx = parser_.assignBlock();
+      if (block_.has_errors) leading(ctx->leading(), true);
+      else assign_block(ctx);
+      break;
+    }
+    case Kind::Code: {
+      auto* ctx = parser_.tlcBlock();
+      if (block_.has_errors) leading(ctx->leading(), true);
+      else code_block(ctx);
+      break;
+    }
   }
   block_.has_errors = block_.has_errors || diags_.error_count() != errors;
   bool empty = block_.words.empty() && block_.stmts.empty() && block_.label.empty() && !block_.number &&
