@@ -438,6 +438,7 @@ void Machine::flush_compensation() {
 // inside it, only after a G00 move, a G09 or G04 block, or before any feed move.
 void Machine::check_profile_rules() {
   if (!profile_running_ || (modal_.dynamics != 0 && modal_.dynamics != 1)) return;
+  if (modal_.motion == Fn::MotionRapid && has_axis_word()) return;  // a G00 move ends the profile
   const BlockRequest& r = *block_.request;
   std::string words;
   for (size_t i = 0; i < r.code_count; ++i)

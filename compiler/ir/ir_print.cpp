@@ -150,7 +150,9 @@ std::string print(const Program& p, const SourceManager& sources) {
               if (w.kind != WordKind::Code && w.kind != WordKind::Parameter) continue;
               out += ' ';
               if (w.optional) out += '/';
-              if (w.kind == WordKind::Code)
+              if (w.kind == WordKind::Code && w.code == kDynamicCode)
+                out += fmt::format("{}={}", w.address, print_expr(p, w.value));  // the code comes at run time
+              else if (w.kind == WordKind::Code)
                 out += w.code >= 0 ? p.semantics.codes[w.code].name : w.address + w.text + "{undefined}";
               else
                 out += fmt::format("{}={}", w.address, print_expr(p, w.value));

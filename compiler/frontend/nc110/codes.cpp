@@ -463,7 +463,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       std::string device = ops[0].device.empty() ? s_.default_device : ops[0].device;
       s.label = device + "/" + ops[0].name;
       s.value = program_.number(1, ops[0].range);
-      calls_.push_back({ops[0].name, device, s.label, ops[0].range});
+      calls_.push_back({ops[0].name, device, s.label, ops[0].range, program_.units.size(), unit_->blocks.size()});
       break;
     }
     case Action::CallRange:

@@ -81,6 +81,7 @@ class Nc110Frontend final : public Frontend {
         }
       if (!text) {
         diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
+        program.units[call.unit].blocks[call.block].has_errors = true;
         continue;
       }
       uint32_t f = sources.add(found.string(), std::move(*text));

@@ -20,6 +20,7 @@ struct CallSite {
   std::string device;  // MP2, or the default
   std::string entry;   // the unit's name: MP2/P800
   SourceRange range;
+  size_t unit = 0, block = 0;  // where the call stands
 };
 
 using ncc_nc110::Nc110Lexer;
