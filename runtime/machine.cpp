@@ -1,6 +1,7 @@
 // The block cycle and the modal functions.
 #include "machine.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "support/text.h"
@@ -22,13 +23,15 @@ void Machine::power_on() {
 }
 
 void Machine::reset_state() {
+  // NC-110: the corrector of the tool in the spindle stays in force (§2.7.8, M30).
+  const int length = conv_.corrector_in_tool_word ? modal_.length : 0;
   modal_ = Modal{};
+  modal_.length = length;
   frame_ = Frame{};
   position_offset_ = {};
   feed_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
-  // NC-110: the corrector of the tool in the spindle stays in force (§2.7.8, M30).
   if (!conv_.corrector_in_tool_word) offset_number_ = 0;
   spindle_direction_ = 0;
   cycle_ = {};
@@ -441,8 +444,15 @@ void Machine::check_profile_rules() {
   if (modal_.motion == Fn::MotionRapid && has_axis_word()) return;  // a G00 move ends the profile
   const BlockRequest& r = *block_.request;
   std::string words;
-  for (size_t i = 0; i < r.code_count; ++i)
-    if (sem_.codes[r.codes[i]].timing != Timing::None) words += sem_.codes[r.codes[i]].name + " ";  // M codes
+  for (size_t i = 0; i < r.code_count; ++i) {
+    const CodeDesc& code = sem_.codes[r.codes[i]];
+    // M codes; a program stop or end ends the profile too.
+    bool stops = std::any_of(code.calls.begin(), code.calls.end(), [](FnCall c) {
+      return c.fn == Fn::ProgramStop || c.fn == Fn::ProgramOptionalStop || c.fn == Fn::ProgramEnd ||
+             c.fn == Fn::ProgramEndInformation;
+    });
+    if (code.timing != Timing::None && !stops) words += code.name + " ";
+  }
   for (char letter : {'S', 'T'})
     if (has(letter)) words += std::string(1, letter) + " ";
   if (!words.empty()) {

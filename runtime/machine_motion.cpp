@@ -510,7 +510,7 @@ void Machine::spline_finish(const AxisValues& lead_out_end) {
     const AxisValues& from = spline_.points[i];
     const AxisValues& to = spline_.points[i + 1];
     // Each span's events and problems belong to its G06 block.
-    BlockRequest span{nullptr, 0, lead_out->words, spline_.sources[i]};
+    BlockRequest span{nullptr, 0, lead_out->words, spline_.sources[i + 1]};
     block_.request = &span;
     std::vector<AxisValues> path;
     for (int k = 0; k <= 32; ++k) {

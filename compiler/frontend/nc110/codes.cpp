@@ -293,9 +293,14 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
           n = static_cast<uint32_t>(std::stoul(written.substr(digits)));
         }
         if (!ok) return fail("not a value");
-        auto ref = system_ref(written.substr(0, digits), n, op.range, false);
+        const SystemName* entry = nullptr;
+        auto ref = system_ref(written.substr(0, digits), n, op.range, false, &entry);
         if (!ref) return std::nullopt;
         op.value = system_expr(*ref, op.range);
+        // Shown as its class: the flags and RMS as integers, TIM and TOT as reals (§2.10).
+        op.type = entry->value == "flag" || entry->value == "BY" ? VarType::Byte
+                  : entry->value == "RE" || entry->value == "expr" ? VarType::Real
+                                                                   : VarType::LongReal;
         break;
       }
       std::string written;
