@@ -16,8 +16,15 @@ constexpr DialectEntry kDialects[] = {
 };
 }  // namespace
 
-void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens) {
+int32_t program_code(ir::Program& program, const CodeDesc& desc) {
   auto& codes = program.semantics.codes;
+  for (size_t i = 0; i < codes.size(); ++i)
+    if (codes[i].name == desc.name && codes[i].calls == desc.calls) return static_cast<int32_t>(i);
+  codes.push_back(desc);
+  return static_cast<int32_t>(codes.size() - 1);
+}
+
+void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens) {
   for (const std::string& token : tokens) {
     CodeDesc desc;
     if (token.size() > 1 && token[0] == 'G') {
@@ -29,10 +36,7 @@ void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, con
       std::string error;
       stdlib::parse_functions(token, tables.cycles, desc.calls, error);
     }
-    uint16_t index = 0;
-    while (index < codes.size() && !(codes[index].name == desc.name && codes[index].calls == desc.calls)) ++index;
-    if (index == codes.size()) codes.push_back(desc);
-    program.semantics.power_on.push_back(index);
+    program.semantics.power_on.push_back(static_cast<uint16_t>(program_code(program, desc)));
   }
 }
 

@@ -27,6 +27,9 @@ class Frontend {
 
 std::vector<std::string_view> dialect_names();
 
+// The index of a code in the program's code table, adding it on first use.
+int32_t program_code(ir::Program& program, const CodeDesc& desc);
+
 // The power-on state from a dialect's table: "G00" names a G code, anything else a
 // canonical function ("spindle.stop").
 void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens);

@@ -150,7 +150,6 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   bool seen_element_ = false;   // something other than a leading '/' was read
   bool optional_rest_ = false;  // a '/' inside the block made the rest optional
   size_t optional_comments_from_ = SIZE_MAX;  // comments from this index on are optional too
-  std::map<int, int32_t> code_map_;
 };
 
 SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
@@ -481,13 +480,7 @@ antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
 int32_t Reader::code_index(char letter, int number) {
   const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
   auto it = table.find(number);
-  if (it == table.end()) return -1;
-  int key = (letter == 'G' ? 0 : 1000) + number;
-  if (auto found = code_map_.find(key); found != code_map_.end()) return found->second;
-  program_.semantics.codes.push_back(it->second.desc);
-  int32_t index = static_cast<int32_t>(program_.semantics.codes.size() - 1);
-  code_map_[key] = index;
-  return index;
+  return it == table.end() ? -1 : program_code(program_, it->second.desc);
 }
 
 antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {

@@ -430,9 +430,8 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       // The code, then its operands as words: an axis list at the axes' slots, axis
       // values there too (a pair's second one at the second slots), the rest at the
       // operand slots in order (word_slots.h).
-      auto [it, fresh] = tlc_codes_.emplace(sig.code, static_cast<int32_t>(program_.semantics.codes.size()));
-      if (fresh) program_.semantics.codes.push_back({sig.code, Scope::Modal, Timing::None, {{sig.fn}}});
-      add_word(0, 0, program_.number(0, code_range), "", code_range, ir::WordKind::Code, it->second);
+      add_word(0, 0, program_.number(0, code_range), "", code_range, ir::WordKind::Code,
+               program_code(program_, {sig.code, Scope::Modal, Timing::None, {{sig.fn}}}));
       block_.words.back().address = sig.code;
       int operand_number = 0;
       for (size_t i = 0; i < ops.size(); ++i) {

@@ -124,9 +124,7 @@ class Nc110Frontend final : public Frontend {
     std::map<int, uint16_t> g_index;
     for (char letter : letters)
       for (const auto& [number, entry] : letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes) {
-        uint16_t index = 0;
-        while (index < sem.codes.size() && sem.codes[index].name != entry.desc.name) ++index;
-        if (index == sem.codes.size()) sem.codes.push_back(entry.desc);
+        auto index = static_cast<uint16_t>(program_code(program, entry.desc));
         sem.numbered.push_back({static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
         if (letter == 'G') g_index[number] = index;
       }

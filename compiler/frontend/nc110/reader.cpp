@@ -367,13 +367,7 @@ void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
 int32_t Reader::code_index(char letter, int number) {
   const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
   auto it = table.find(number);
-  if (it == table.end()) return -1;
-  int key = (letter == 'G' ? 0 : 1000) + number;
-  if (auto found = code_map_.find(key); found != code_map_.end()) return found->second;
-  program_.semantics.codes.push_back(it->second.desc);
-  int32_t index = static_cast<int32_t>(program_.semantics.codes.size() - 1);
-  code_map_[key] = index;
-  return index;
+  return it == table.end() ? -1 : program_code(program_, it->second.desc);
 }
 
 void Reader::add_word(char letter, int slot, ir::ExprId value, std::string text, SourceRange r, ir::WordKind kind,

@@ -10,6 +10,7 @@
 #include "Nc110Lexer.h"
 #include "Nc110Parser.h"
 #include "ir/ir.h"
+#include "frontend/frontend.h"
 #include "settings.h"
 
 namespace ncc::nc110 {
@@ -115,8 +116,6 @@ class Reader {
   std::vector<uint32_t> byte_of_;  // the byte offset of each code point of the line, and the end
   ir::Unit* unit_ = nullptr;
   ir::Block block_;
-  std::map<int, int32_t> code_map_;  // letter * 1000 + number -> index into semantics.codes
-  std::map<std::string, int32_t> tlc_codes_;  // three-letter code -> index into semantics.codes
   std::vector<CallSite> calls_;
 };
 
