@@ -22,12 +22,13 @@ BLOCK_NUMBER : 'N' [ \t]* [0-9]+ ;
 
 // An E parameter as a value (`XE32`, `GE1`) or alone (the result of G72-G74).
 EREF         : 'E' [ \t]* [0-9]+ ;
-TADDR        : 'T' ;                      // tool.corrector, two integers (§2.7.7)
+// Tool and corrector, each digits or an E parameter (§2.7.7, Table 2.9): T1.1, T6,
+// T.5, TE14.E15, T1.E15. The front end splits it.
+TOOL         : 'T' [ \t]* ([0-9]+ | 'E' [ \t]* [0-9]+)? ('.' ([0-9]+ | 'E' [ \t]* [0-9]+)?)? ;
 LETTER       : [A-Za-z] ;
 NUMBER       : [0-9]+ ('.' [0-9]*)? | '.' [0-9]+ ;
 PLUS         : '+' ;
 MINUS        : '-' ;
-DOT          : '.' ;                      // T's point before an E parameter: TE14.E15
 BLANK        : [ \t]+ -> channel(HIDDEN) ;
 // Cyrillic look-alikes of Latin letters are common in copied programs (`Е30`).
 CYRILLIC     : [\u0400-\u04FF] ;
@@ -80,8 +81,9 @@ T_INVALID      : . -> type(INVALID) ;
 mode OPERANDS;
 
 O_LETTER       : [A-Za-z\u0400-\u04FF] -> type(LETTER) ;
+O_STAR         : [*=] -> type(STAR) ;          // an expression: not an operand
 DIGITS         : [0-9]+ ;
-O_DOT          : '.' -> type(DOT) ;
+DOT            : '.' ;
 O_PLUS         : '+' -> type(PLUS) ;
 O_MINUS        : '-' -> type(MINUS) ;
 O_SLASH        : '/' -> type(SLASH) ;

@@ -16,19 +16,13 @@ field       : SLASH | STRING | OPEN_STRING | BLOCK_NUMBER | HASH | AMP ;
 
 // ---- ISO block ---------------------------------------------------------------------
 isoBlock    : leading isoWord* EOF ;
-isoWord     : TADDR toolValue?          # toolWord
+isoWord     : TOOL                      # toolWord
             | LETTER wordValue?         # addressWord
             | EREF                      # resultWord
             ;
 // A constant or one E parameter; nothing means zero (`G Z80 X80`, `I J`).
 wordValue   : sign? NUMBER
             | sign? EREF
-            ;
-// Tool and corrector, each a number or an E parameter: T1.1, T6, TE14.E15, T1.E15.
-toolValue   : NUMBER
-            | EREF
-            | EREF DOT? (EREF | NUMBER)
-            | NUMBER EREF
             ;
 sign        : PLUS | MINUS ;
 
@@ -52,4 +46,4 @@ primary     : NUMBER                                     # numberPrimary
 tlcBlock    : leading LPAREN code (COMMA operand)* RPAREN EOF ;
 code        : LETTER* ;
 operand     : piece* ;
-piece       : LETTER | DIGITS | DOT | PLUS | MINUS | SLASH | STRING | OPEN_STRING ;
+piece       : LETTER | DIGITS | DOT | PLUS | MINUS | SLASH | STAR | STRING ;

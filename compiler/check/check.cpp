@@ -125,7 +125,7 @@ void check_block_numbers(const ir::Unit& unit, Diagnostics& diags) {
 // Jumps stay within their unit; calls name a unit or main block of the medium (the
 // names lowering gives entry points). A call the front end could not resolve it has
 // reported already.
-void check_targets(const ir::Program& program, const ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
+void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
   std::set<std::string> labels, entries;
   std::map<std::string, const ir::Block*> defined;
   for (const ir::Block& b : unit.blocks) {
@@ -143,7 +143,8 @@ void check_targets(const ir::Program& program, const ir::Unit& unit, const Check
     for (const ir::Block& b : u.blocks)
       if (b.main_block && b.number) entries.insert(fmt::format(":{}", *b.number));
   }
-  for (const ir::Block& b : unit.blocks)
+  for (ir::Block& b : unit.blocks) {
+    uint32_t errors = diags.error_count();
     for (const ir::Stmt& s : b.stmts) {
       if (s.kind == ir::StmtKind::Jump && !labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, s.label);
       if (s.kind == ir::StmtKind::CallRange)
@@ -152,6 +153,8 @@ void check_targets(const ir::Program& program, const ir::Unit& unit, const Check
       if (s.kind == ir::StmtKind::Call && !entries.count(s.label) && !b.has_errors)
         diags.report(DiagId::CallUndefined, s.range, s.label);
     }
+    if (diags.error_count() != errors) b.has_errors = true;
+  }
 }
 
 // Repeat loops: balanced, not too deep, never entered by a jump; block ranges
@@ -260,10 +263,13 @@ void check_calls(const ir::Program& program, Diagnostics& diags) {
 
 }  // namespace
 
-void check(const ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
-  for (const ir::Unit& unit : program.units) {
-    for (const ir::Block& block : unit.blocks) {
+void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
+  // A block with an error is marked: the dry run would only repeat it.
+  for (ir::Unit& unit : program.units) {
+    for (ir::Block& block : unit.blocks) {
+      uint32_t errors = diags.error_count();
       check_block(program, rules, block, diags);
+      if (diags.error_count() != errors) block.has_errors = true;
       if (diags.limit_reached()) return;
     }
     if (rules.block_number_order) check_block_numbers(unit, diags);

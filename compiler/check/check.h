@@ -17,6 +17,7 @@ struct CheckRules {
   uint32_t max_repeat_depth = 0;    // repeat loops that may nest (0: no limit)
 };
 
-void check(const ir::Program& program, const CheckRules& rules, Diagnostics& diags);
+// Reports every problem and marks the blocks that have one.
+void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags);
 
 }  // namespace ncc

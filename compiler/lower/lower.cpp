@@ -336,6 +336,7 @@ class Lowering {
             ++depth;
             break;
           case ir::StmtKind::RepeatEnd:
+            if (loop_start.empty()) break;  // without its repeat: the checks report it
             jump(Op::EndRepeat, loop_start.back());
             loop_start.pop_back();
             patch(repeats.back(), pc());
@@ -375,6 +376,7 @@ class Lowering {
       op(Op::Step);
     }
     uint32_t end = pc();
+    for (uint32_t at : repeats) patch(at, end);  // repeats without their end (the checks report them)
     // A subprogram returns at its end (NC-110 §2.13.2.2); a program ends there.
     op(unit.kind == ir::UnitKind::Program ? Op::End : Op::Return);
     // The checks report labels that do not exist; should one slip through, the jump

@@ -413,11 +413,11 @@ std::optional<double> Reader::constant(char letter, std::string_view written, bo
 
 void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
   leading(ctx->leading(), !ctx->isoWord().empty());
-  bool operand_seen = false;
+  last_operand_.clear();
   for (auto* w : ctx->isoWord()) {
-    if (auto* a = dynamic_cast<Nc110Parser::AddressWordContext*>(w)) address_word(a, operand_seen);
-    else if (auto* t = dynamic_cast<Nc110Parser::ToolWordContext*>(w)) tool_word(t), operand_seen = true;
-    else if (auto* e = dynamic_cast<Nc110Parser::ResultWordContext*>(w)) result_word(e), operand_seen = true;
+    if (auto* a = dynamic_cast<Nc110Parser::AddressWordContext*>(w)) address_word(a);
+    else if (auto* t = dynamic_cast<Nc110Parser::ToolWordContext*>(w)) tool_word(t);
+    else if (auto* e = dynamic_cast<Nc110Parser::ResultWordContext*>(w)) result_word(e);
   }
   check_iso_block();
   bool action = false;
@@ -425,7 +425,7 @@ void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
   if (action) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
 }
 
-void Reader::address_word(Nc110Parser::AddressWordContext* ctx, bool& operand_seen) {
+void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
   const std::string letter_text = ctx->LETTER()->getText();
   const char letter = letter_text[0];
   SourceRange r = range(ctx);
@@ -451,17 +451,9 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx, bool& operand_se
     return fail(DiagId::AddressUnknown, fmt::format("'{}'", letter));
   const stdlib::AddressEntry& a = entry->second;
 
-  if (letter == 'G') {
-    // §2.8: after the block number, before any operand; two digits at most.
-    if (operand_seen) {
-      const ir::Word* last = nullptr;
-      for (const ir::Word& w : block_.words)
-        if (w.kind != ir::WordKind::BlockNumber) last = &w;
-      fail(DiagId::GAfterOperand, shown, last ? last->address + last->text : std::string("an operand"));
-    }
-  } else {
-    operand_seen = true;
-  }
+  // §2.8: the G words after the block number, before any operand.
+  if (letter == 'G' && !last_operand_.empty()) fail(DiagId::GAfterOperand, shown, last_operand_);
+  if (letter != 'G') last_operand_ = shown;
   const bool negative = v && v->sign() && v->sign()->MINUS();
   if (v && v->EREF()) {
     if (v->sign()) return fail(DiagId::SignedParameter, shown);
@@ -512,55 +504,37 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx, bool& operand_se
 
 void Reader::tool_word(Nc110Parser::ToolWordContext* ctx) {
   // T tool.corrector: two integers, each a constant or an IN parameter (§2.7.7,
-  // Table 2.9 `TE14.E15`); T6 is corrector 0 (decision 11).
+  // Table 2.9 `TE14.E15`); T6 is corrector 0, T.5 tool 0 (decision 11).
   SourceRange r = range(ctx);
-  auto* v = ctx->toolValue();
-  if (!v) {
+  std::string written;
+  for (char c : ctx->TOOL()->getText().substr(1))
+    if (!blank(c)) written += c;
+  const std::string shown = "T" + written;
+  if (written.empty() || written == ".") {
     diags_.report(DiagId::ValueMissing, r, "T");
     block_.has_errors = true;
     return;
   }
-  std::string written = text(v->getStart(), v->getStop());
-  std::string shown = "T" + written;
-  // The parts: numbers as written, or E parameters.
-  std::vector<std::pair<antlr4::Token*, std::string>> parts;
-  for (auto* child : v->children) {
-    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
-    if (!t || t->getSymbol()->getType() == Nc110Lexer::DOT) continue;
-    parts.push_back({t->getSymbol(), t->getText()});
-  }
-  std::vector<std::pair<std::string, ir::ExprId>> values;  // written, value
-  for (auto& [token, part] : parts) {
-    if (token->getType() == Nc110Lexer::EREF) {
+  size_t point = written.find('.');
+  std::string parts[2] = {written.substr(0, point), point == std::string::npos ? "" : written.substr(point + 1)};
+  ir::ExprId values[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::string& part = parts[i];
+    if (!part.empty() && part[0] == 'E') {
       auto index = parameter(part, r);
       if (!index || !check_class(*index, {"IN"}, r, "T")) return;
-      values.push_back({part, parameter_expr(*index, r)});
-      continue;
-    }
-    // A number: "1.5" holds both, "1." or ".5" one of them.
-    size_t point = part.find('.');
-    std::string before = part.substr(0, point);
-    std::string after = point == std::string::npos ? "" : part.substr(point + 1);
-    if (!before.empty()) values.push_back({before, ir::kNoExpr});
-    if (!after.empty() || (point != std::string::npos && before.empty())) values.push_back({after, ir::kNoExpr});
-  }
-  if (values.empty() || values.size() > 2) {
-    diags_.report(DiagId::SyntaxError, r, fmt::format("'{}': T takes tool.corrector", shown));
-    block_.has_errors = true;
-    return;
-  }
-  for (auto& [part, value] : values) {
-    if (value != ir::kNoExpr) continue;
-    if (part.size() > 4 || part.empty()) {
+      values[i] = parameter_expr(*index, r);
+    } else if (part.size() > 4) {
       diags_.report(DiagId::TooManyDigits, r, shown, part.size(), "T4.4", 4);
       block_.has_errors = true;
       return;
+    } else {
+      values[i] = program_.number(part.empty() ? 0 : std::stoi(part), r);
     }
-    value = program_.number(std::stoi(part), r);
   }
-  add_word('T', letter_slot('T'), values[0].second, values[0].first, r);
-  add_word('T', second_slot('T'), values.size() > 1 ? values[1].second : program_.number(0, r),
-           values.size() > 1 ? values[1].first : "0", r);
+  last_operand_ = shown;
+  add_word('T', letter_slot('T'), values[0], parts[0].empty() ? "0" : parts[0], r);
+  add_word('T', second_slot('T'), values[1], parts[1].empty() ? "0" : parts[1], r);
 }
 
 void Reader::result_word(Nc110Parser::ResultWordContext* ctx) {
@@ -573,6 +547,7 @@ void Reader::result_word(Nc110Parser::ResultWordContext* ctx) {
   }
   std::string written = ctx->EREF()->getText();
   written.erase(std::remove_if(written.begin(), written.end(), blank), written.end());
+  last_operand_ = written;
   add_word('E', letter_slot('E'), program_.number(*index, r), written.substr(1), r);
 }
 

@@ -50,7 +50,7 @@ class Reader {
   // reader.cpp: the leading fields and ISO blocks.
   void leading(Nc110Parser::LeadingContext* ctx, bool has_body);
   void iso_block(Nc110Parser::IsoBlockContext* ctx);
-  void address_word(Nc110Parser::AddressWordContext* ctx, bool& operand_seen);
+  void address_word(Nc110Parser::AddressWordContext* ctx);
   void tool_word(Nc110Parser::ToolWordContext* ctx);
   void result_word(Nc110Parser::ResultWordContext* ctx);
   void check_iso_block();
@@ -116,6 +116,7 @@ class Reader {
   std::vector<uint32_t> byte_of_;  // the byte offset of each code point of the line, and the end
   ir::Unit* unit_ = nullptr;
   ir::Block block_;
+  std::string last_operand_;  // the last word of the block that is not a G word, as written
   std::vector<CallSite> calls_;
 };
 
