@@ -90,6 +90,12 @@ O_SLASH        : '/' -> type(SLASH) ;
 O_STRING       : '"' ~["\r\n]* '"' -> type(STRING) ;
 O_OPEN_STRING  : '"' ~["\r\n]* -> type(OPEN_STRING) ;
 O_COMMA        : ',' -> type(COMMA) ;
-O_RPAREN       : ')' -> type(RPAREN), popMode ;
+O_RPAREN       : ')' -> type(RPAREN), mode(AFTER_CODE) ;
 O_BLANK        : [ \t]+ -> channel(HIDDEN) ;
 O_INVALID      : . -> type(INVALID) ;
+
+// After the code's ')': the block has ended; anything here is a second instruction.
+mode AFTER_CODE;
+
+TRAILING       : ~[ \t\r\n] ~[\r\n]* ;
+AC_BLANK       : [ \t]+ -> channel(HIDDEN) ;

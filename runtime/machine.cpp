@@ -396,7 +396,7 @@ void Machine::registers() {
     if (conv_.corrector_in_tool_word) {
       double corrector = slot_if(second_slot('T')).value_or(0);
       if (corrector != 0 && !config_.offsets.count(static_cast<int>(corrector)))
-        report_slot(DiagId::OffsetUnknown, second_slot('T'), shortest(corrector));
+        report_slot(DiagId::OffsetUnknown, second_slot('T'), "corrector", shortest(corrector));
       else
         corrector_selected_ = static_cast<int>(corrector);
     }
@@ -406,7 +406,7 @@ void Machine::registers() {
     auto number = whole_number(letter, "offset numbers");
     if (!number) continue;
     if (*number != 0 && !config_.offsets.count(*number)) {
-      report(DiagId::OffsetUnknown, letter, *number);
+      report(DiagId::OffsetUnknown, letter, "offset number", *number);
       continue;
     }
     offset_number_ = *number;  // takes effect at once on an active compensation
@@ -544,7 +544,11 @@ void Machine::action() {
     if (block_.dwell_end) dwell_seconds(timer_dwell());
     return;
   }
-  if (!axes) {
+  // NC-110 §2.8.1.4: an arc with its centre and no axis word is a full circle.
+  const bool circle = conv_.centre_words == CentreWords::Plane &&
+                      (modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw) &&
+                      (has('I') || has('J'));
+  if (!axes && !circle) {
     if (parabola_middle_) {
       report(DiagId::ParabolaPair, 0, "this block has no dimension word");
       parabola_middle_.reset();
@@ -632,7 +636,7 @@ void Machine::finish() {
   if (block_.error) return;
   std::bitset<kWordSlots> unused = block_.request->words->present & ~block_.used;
   for (int slot = 0; slot < kWordSlots; ++slot)
-    if (unused[slot]) report_slot(DiagId::WordUnused, slot, slot_name(slot));
+    if (unused[slot]) report_slot(DiagId::WordUnused, slot, slot_text(slot));
 }
 
 void Machine::emit_reset(const Modal& before, const AxisValues& position_offset) {

@@ -287,6 +287,8 @@ class Machine {
   void cycle_registers();
   void nc110_cycle_registers(bool definition);
   void nc110_cycle();
+  bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
+  bool nc110_levels_ok(const CyclePattern& pattern);
   void tap_feed(const AxisValues& t, bool out);
   void measure();
 

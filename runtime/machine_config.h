@@ -69,10 +69,9 @@ struct AxisConfig {
 // `none` no contact. When the list runs out, contact is at the nominal point.
 struct ProbeContact {
   enum class Kind : uint8_t { Point, Circle, None } kind = Kind::Point;
-  AxisValues point{};
-  uint32_t axes = 0;  // Point: the axes given
-  double centre[2] = {0, 0};  // Circle: in the plane's axes
-  double radius = 0;
+  AxisValues point{};  // Point: the surface point; Circle: the hole's centre
+  uint32_t axes = 0;   // the axes given (a circle's centre gives two)
+  double radius = 0;   // Circle
 };
 
 struct ProbeConfig {

@@ -48,7 +48,8 @@ void Machine::cycle() {
       report(DiagId::CycleNoPeck, 0, pattern.name, conv_.peck_word ? std::string(1, conv_.peck_word) : "Q");
       ok = false;
     } else if (*cycle_.peck <= 0) {
-      report(DiagId::PeckNotPositive, conv_.peck_word, four_decimals(*cycle_.peck), pattern.name);
+      report(DiagId::PeckNotPositive, conv_.peck_word, "peck increment", four_decimals(*cycle_.peck),
+             "greater than zero", pattern.name);
       ok = false;
     }
   }
@@ -168,46 +169,110 @@ void Machine::nc110_cycle_registers(bool definition) {
     if (auto v = word_if(conv_.tap_pitch_word)) cycle_.pitch = length_units(*v);
 }
 
+namespace {
+
+// G83's pecks (NC-110 §2.8.9.2, decisions 21 and 53), program coordinates along the
+// drilling axis. Without K and J each peck of I goes on from the depth reached; with
+// them the tool unloads the chips at R1 after each peck, comes back to `clearance`
+// above the depth reached, and the peck changes by the factor K down to J.
+struct Pecks {
+  double r1 = 0, bottom = 0, step = 0, clearance = 0;
+  std::optional<double> factor, minimum;
+
+  bool unloading() const { return factor || minimum; }
+  // A whole count up, not misled by rounding (25.999 / 0.001 is not 26000).
+  static double up(double x) { return std::ceil(x - 1e-9 * std::max(1.0, x)); }
+  double next(double peck) const {
+    double n = peck * factor.value_or(1);
+    return n >= minimum.value_or(0) ? n : *minimum;
+  }
+  // How many pecks reach the bottom; nullopt when a peck (`stuck`) would not get
+  // deeper than the clearance it comes back (the hole would never end).
+  std::optional<double> count(double& stuck) const {
+    if (!unloading()) return up((r1 - bottom) / step);
+    double from = r1, peck = step;
+    for (double n = 1;; ++n) {
+      double reached = from - peck;
+      if (reached <= bottom) return n;
+      double following = next(peck);
+      if (following <= clearance) {
+        stuck = following;
+        return std::nullopt;
+      }
+      // A steady peck gains peck - clearance each time: the rest by division.
+      if (following == peck) return n + up((reached - bottom) / (peck - clearance));
+      from = reached + clearance;
+      peck = following;
+    }
+  }
+};
+
+}  // namespace
+
+bool Machine::nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written) {
+  const std::string& name = pattern.name;
+  if (written.size() != 1) {
+    report(DiagId::CycleDefinition, 0,
+           written.empty() ? fmt::format("{} needs the hole's depth: an axis word whose letter names the drilling axis", name)
+                           : fmt::format("the block of {} holds the depth and no other axis: the holes' positions come in the blocks after it", name));
+    return false;
+  }
+  cycle_.axis = written[0];
+  nc110_cycle_registers(true);
+  if (!nc110_levels_ok(pattern)) return false;
+  if (pattern.in == CyclePattern::In::Peck) {
+    if (!cycle_.step) {
+      report(DiagId::CycleNoPeck, 0, name, std::string(1, conv_.peck_word));
+      return false;
+    }
+    auto wrong = [&](char letter, const char* what, double v, const char* must) {
+      report(DiagId::PeckNotPositive, letter, fmt::format("the {} {}", what, letter), shortest(v), must, name);
+      return false;
+    };
+    if (*cycle_.step <= 0) return wrong(conv_.peck_word, "peck increment", to_program(*cycle_.step), "greater than zero");
+    if (cycle_.factor && *cycle_.factor <= 0)
+      return wrong(conv_.peck_factor_word, "peck factor", *cycle_.factor, "greater than zero");
+    if (cycle_.minimum && *cycle_.minimum < 0)
+      return wrong(conv_.peck_minimum_word, "minimum peck", to_program(*cycle_.minimum), "zero or more");
+  }
+  if (cycle_.pitch && !config_.spindle_encoder) {
+    report(DiagId::ThreadEncoder, conv_.tap_pitch_word, name + " with K");
+    return false;
+  }
+  return true;
+}
+
+bool Machine::nc110_levels_ok(const CyclePattern& pattern) {
+  const int d = cycle_.axis;
+  const char letter = kAxisLetters[d];
+  if (*cycle_.bottom >= *cycle_.r1) {
+    report(DiagId::CycleDefinition, letter,
+           fmt::format("the hole's bottom {}{} is not below R1 {}: {} drills from R1 towards minus {}", letter,
+                       four_decimals(program_axis(d, *cycle_.bottom)), four_decimals(program_axis(d, *cycle_.r1)),
+                       pattern.name, letter));
+    return false;
+  }
+  if (*cycle_.r2 < *cycle_.r1) {
+    report_slot(DiagId::CycleDefinition, second_slot('R'),
+                fmt::format("R2 {} lies below R1 {}: R2, the level the tool returns to, must not lie below R1",
+                            four_decimals(program_axis(d, *cycle_.r2)), four_decimals(program_axis(d, *cycle_.r1))));
+    return false;
+  }
+  return true;
+}
+
 void Machine::nc110_cycle() {
   const CyclePattern& pattern = sem_.cycles[modal_.cycle];
-  const std::string name = pattern.name;
+  const std::string& name = pattern.name;
   std::vector<int> written;
   for (char c : conv_.axes)
     if (has(c)) written.push_back(axis_index(c));
 
   // The cycle's block stores it; the depth word's letter names the drilling axis
-  // (§2.8.9 note 1).
+  // (§2.8.9 note 1). A definition with an error leaves no cycle active.
   if (cycle_.defined_here) {
     cycle_.defined_here = false;
-    if (written.size() != 1) {
-      report(DiagId::CycleDefinition, 0,
-             written.empty() ? fmt::format("{} needs the hole's depth: an axis word whose letter names the drilling axis", name)
-                             : fmt::format("the block of {} holds the depth and no other axis: the holes' positions come in the blocks after it", name));
-      modal_.cycle = -1;
-      return;
-    }
-    cycle_.axis = written[0];
-    nc110_cycle_registers(true);
-    const char letter = kAxisLetters[cycle_.axis];
-    if (*cycle_.bottom >= *cycle_.r1) {
-      report(DiagId::CycleDefinition, letter,
-             fmt::format("the hole's bottom {}{} is not below R1 {}: {} drills from R1 towards minus {}", letter,
-                         four_decimals(program_axis(cycle_.axis, *cycle_.bottom)),
-                         four_decimals(program_axis(cycle_.axis, *cycle_.r1)), name, letter));
-      modal_.cycle = -1;
-      return;
-    }
-    if (*cycle_.r2 < *cycle_.r1)
-      report(DiagId::CycleDefinition, 0, fmt::format("R2 {} lies below R1 {}: the tool returns above the work",
-                                                     four_decimals(program_axis(cycle_.axis, *cycle_.r2)),
-                                                     four_decimals(program_axis(cycle_.axis, *cycle_.r1))));
-    if (pattern.in == CyclePattern::In::Peck) {
-      if (!cycle_.step || *cycle_.step <= 0)
-        report(DiagId::CycleNoPeck, 0, name, std::string(1, conv_.peck_word) + " (greater than 0)");
-      if (cycle_.factor && *cycle_.factor <= 0) report(DiagId::PeckNotPositive, conv_.peck_factor_word, shortest(*cycle_.factor), name);
-      if (cycle_.minimum && *cycle_.minimum < 0) report(DiagId::PeckNotPositive, conv_.peck_minimum_word, shortest(*cycle_.minimum), name);
-    }
-    if (cycle_.pitch && !config_.spindle_encoder) report(DiagId::ThreadEncoder, conv_.tap_pitch_word, name + " with K");
+    if (!nc110_cycle_definition(pattern, written)) modal_.cycle = -1;
     return;
   }
 
@@ -225,59 +290,73 @@ void Machine::nc110_cycle() {
     q[d] = level;
     return to_machine(q);
   };
-  AxisValues position = to_machine(p);
+  const AxisValues position = to_machine(p);
+  const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
+  // The 1 mm G83 comes back is the machine's, whatever the scale (decision 53).
+  Pecks pecks{*cycle_.r1, *cycle_.bottom, cycle_.step.value_or(0),
+              kUnloadClearance / (frame_.transformed() ? frame_.scale[d] : 1.0), cycle_.factor, cycle_.minimum};
+  // Everything the hole needs is checked before the tool moves: a refused hole is
+  // not drilled, and the tool is taken to be over it.
+  auto refuse = [&] { move_to(position); };
+  if (!nc110_levels_ok(pattern)) return refuse();
+  if (!(tapping && cycle_.pitch) && !need_feed(("canned cycle " + name).c_str(), machine_)) return refuse();
+  if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1 && spindle_direction_ == 0) {
+    report(DiagId::CycleNoSpindle, 0, name);
+    return refuse();
+  }
+  if (tapping) {
+    if (std::fabs(*cycle_.bottom - *cycle_.r1) < config_.tap_min_travel) {
+      report(DiagId::TapTravel, 0, name, four_decimals(to_program(std::fabs(*cycle_.bottom - *cycle_.r1))),
+             four_decimals(to_program(config_.tap_min_travel)));
+      return refuse();
+    }
+    if (pattern.out == CyclePattern::Out::Feed && system_value(SysVar::TapReturn) == 0) {
+      report(DiagId::CycleDefinition, 0,
+             fmt::format("{} would bring the tap out at {} = 0 % of the speed, so it would not come out: set it to 1..255 first",
+                         name, system_name({SysVar::TapReturn, 0})));
+      return refuse();
+    }
+    if (cycle_.pitch && !config_.spindle_encoder) {
+      report(DiagId::ThreadEncoder, conv_.tap_pitch_word, name + " with K");
+      return refuse();
+    }
+  }
+  if (pattern.in == CyclePattern::In::Peck) {
+    double stuck = 0;
+    auto n = pecks.count(stuck);
+    if (!n) {
+      report(DiagId::CycleNoProgress, conv_.peck_word, name, four_decimals(to_program(stuck)));
+      return refuse();
+    }
+    if (*n > kMaxPecks) {
+      report(DiagId::CyclePecks, conv_.peck_word, name, shortest(*n), four_decimals(to_program(pecks.step)), kMaxPecks);
+      return refuse();
+    }
+  }
+
   if (position != machine_) rapid(position);
   if (at(*cycle_.r1) != machine_) rapid(at(*cycle_.r1));
-  if (!need_feed(("canned cycle " + name).c_str(), machine_)) return;
-  if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1) {
-    // The spindle starts in the direction it last turned (Table 2.6).
-    if (spindle_direction_ == 0) report(DiagId::CycleNoSpindle, 0, name);
-    else apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
-  }
+  if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1)
+    apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);  // Table 2.6
   const int direction = spindle_direction_;
-  const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
-  if (tapping && std::fabs(*cycle_.bottom - *cycle_.r1) < config_.tap_min_travel)
-    report(DiagId::TapTravel, 0, name, four_decimals(to_program(std::fabs(*cycle_.bottom - *cycle_.r1))),
-           four_decimals(to_program(config_.tap_min_travel)));
 
-  if (pattern.in == CyclePattern::In::Peck) {
-    const double step = cycle_.step.value_or(0);
-    if (step <= 0) return;
-    if (cycle_.factor || cycle_.minimum) {
-      // With K or J: each peck goes back to R1 to unload chips and returns to 1 mm
-      // above the depth reached; the peck shrinks by K down to J (§2.8.9.2, decision 21).
-      const double clearance = kUnloadClearance;
-      double from = *cycle_.r1, peck = step;
-      for (int n = 0;; ++n) {
-        if (n == kMaxPecks) {
-          report(DiagId::CyclePecks, conv_.peck_word, name, kMaxPecks, four_decimals(to_program(step)), kMaxPecks);
-          return;
-        }
-        if (at(from) != machine_) rapid(at(from));
-        double reached = std::max(from - peck, *cycle_.bottom);
-        linear(at(reached));
-        if (reached <= *cycle_.bottom) break;
-        rapid(at(*cycle_.r1));
-        from = reached + clearance;
-        double next = peck * cycle_.factor.value_or(1);
-        peck = next >= cycle_.minimum.value_or(0) ? next : *cycle_.minimum;
-        if (peck <= clearance) {
-          report(DiagId::CycleNoProgress, conv_.peck_word, name, four_decimals(to_program(peck)));
-          return;
-        }
-      }
-    } else {
-      // Without K and J: pecks of I with a dwell between them to break the chip.
-      double reached = *cycle_.r1;
-      for (int n = 0; reached > *cycle_.bottom; ++n) {
-        if (n == kMaxPecks) {
-          report(DiagId::CyclePecks, conv_.peck_word, name, kMaxPecks, four_decimals(to_program(step)), kMaxPecks);
-          return;
-        }
-        reached = std::max(reached - step, *cycle_.bottom);
-        linear(at(reached));
-        if (reached > *cycle_.bottom) dwell_seconds(timer_dwell());
-      }
+  if (pattern.in == CyclePattern::In::Peck && pecks.unloading()) {
+    double from = pecks.r1, peck = pecks.step;
+    while (true) {
+      if (at(from) != machine_) rapid(at(from));
+      double reached = std::max(from - peck, pecks.bottom);
+      linear(at(reached));
+      if (reached <= pecks.bottom) break;
+      rapid(at(pecks.r1));
+      from = reached + pecks.clearance;
+      peck = pecks.next(peck);
+    }
+  } else if (pattern.in == CyclePattern::In::Peck) {
+    // Pecks of I with a dwell between them to break the chip.
+    for (double reached = pecks.r1; reached > pecks.bottom;) {
+      reached = std::max(reached - pecks.step, pecks.bottom);
+      linear(at(reached));
+      if (reached > pecks.bottom) dwell_seconds(timer_dwell());
     }
   } else if (tapping) {
     tap_feed(at(*cycle_.bottom), false);
@@ -300,14 +379,10 @@ void Machine::nc110_cycle() {
 void Machine::tap_feed(const AxisValues& t, bool out) {
   // G84: with a spindle encoder and K, a move synchronised with the spindle at the
   // pitch K; else at F. The way out runs at RMS percent of the speed (§2.10.3).
+  // RMS 0 and K without an encoder were refused before the hole.
   double percent = system_value(SysVar::TapReturn);
-  if (out && percent == 0) {
-    report(DiagId::SystemValue, 0, system_name({SysVar::TapReturn, 0}), 0, "the tap would not come out");
-    return move_to(t);
-  }
   if (cycle_.pitch) {
     double rpm = spindle_rpm();
-    if (!config_.spindle_encoder) report(DiagId::ThreadEncoder, 0, "tapping with K");
     if (rpm <= 0) report(DiagId::ThreadNoSpindle, 0);
     if (!path_allowed({machine_, t})) return move_to(t);
     const double scale = out ? percent / 100 : 1;
@@ -349,8 +424,9 @@ void Machine::measure() {
   const AxisValues start = machine_;
   const uint32_t first = static_cast<uint32_t>(word('E'));
   // The next contact of the simulated probe, or the nominal one when the list has ended.
-  const ProbeContact* contact = next_contact_ < probe.contacts.size() ? &probe.contacts[next_contact_] : nullptr;
-  ++next_contact_;
+  const size_t index = next_contact_++;
+  const ProbeContact* contact = index < probe.contacts.size() ? &probe.contacts[index] : nullptr;
+  auto setup = [&](const std::string& why) { report(DiagId::ProbeSetup, 0, name, why); };
   auto probe_move = [&](const AxisValues& to, bool touched) {
     double length = 0;
     for (int i = 0; i < kAxisCount; ++i) length += (to[i] - machine_[i]) * (to[i] - machine_[i]);
@@ -360,37 +436,39 @@ void Machine::measure() {
     emit(e);
     machine_ = to;
   };
+  // Where a point is, in the program's frame, on the axes that move and X Y Z.
+  auto where = [&](const AxisValues& p) {
+    std::string s;
+    AxisValues q = to_frame(p);
+    for (char letter : conv_.axes)
+      if (int i = axis_index(letter); p[i] != start[i] || i < 3)
+        s += fmt::format("{}{}{}", s.empty() ? "" : " ", letter, four_decimals(program_axis(i, q[i])));
+    return s;
+  };
   auto no_contact = [&](const AxisValues& from, const AxisValues& to) {
     probe_move(to, false);
     rapid(start);
-    auto where = [&](const AxisValues& p) {
-      std::string s;
-      AxisValues q = in_program_units(p);
-      AxisValues off = in_program_units(origins());
-      for (char letter : conv_.axes)
-        if (int i = axis_index(letter); p[i] != start[i] || i < 3)
-          s += fmt::format("{}{}{}", s.empty() ? "" : " ", letter, four_decimals(q[i] - off[i]));
-      return s;
-    };
     report(DiagId::ProbeNoContact, 0, name, where(from), where(to));
   };
   const double radius = [&] {
     auto it = config_.offsets.find(offset_number_);
     return it == config_.offsets.end() || fn == Fn::MeasureDeviation ? 0.0 : it->second.radius;
   }();
+  const std::string contact_name = fmt::format("the next probe contact (probe.contacts[{}])", index);
 
   if (fn == Fn::MeasureHole) {
     // G73 r: three probes from the centre at 0, 120 and 240 degrees in the plane.
     const int u = modal_.plane.u, v = modal_.plane.v;
-    const double nominal = length_units(word('r'));
-    if (contact && contact->kind == ProbeContact::Kind::Point) {
-      report(DiagId::ProbeNoContact, 0, name, "the next probe contact is a point", "G73 needs a circle");
-      return;
-    }
+    const double nominal = length_units(word('r')) * (frame_.transformed() ? frame_.scale[u] : 1.0);
+    if (contact && contact->kind == ProbeContact::Kind::Point)
+      return setup(contact_name + " is a point; G73 needs a circle");
+    if (contact && contact->kind == ProbeContact::Kind::Circle && !((contact->axes >> u) & (contact->axes >> v) & 1))
+      return setup(fmt::format("{} is a circle about a centre in other axes than the {} plane G73 measures in",
+                               contact_name, plane_name(modal_.plane)));
     double cx = start[u], cy = start[v], r = nominal;
     if (contact && contact->kind == ProbeContact::Kind::Circle) {
-      cx = contact->centre[0];
-      cy = contact->centre[1];
+      cx = contact->point[u];
+      cy = contact->point[v];
       r = contact->radius;
     }
     for (int k = 0; k < 3; ++k) {
@@ -421,10 +499,13 @@ void Machine::measure() {
       probe_move(touch, true);
       rapid(start);
     }
-    const AxisValues off = origins();
-    results_.push_back({first, program_axis(u, cx - off[u])});
-    results_.push_back({first + 1, program_axis(v, cy - off[v])});
-    results_.push_back({first + 2, to_program(r)});
+    AxisValues centre = start;
+    centre[u] = cx;
+    centre[v] = cy;
+    const AxisValues c = to_frame(centre);
+    results_.push_back({first, program_axis(u, c[u])});
+    results_.push_back({first + 1, program_axis(v, c[v])});
+    results_.push_back({first + 2, to_program(r / (frame_.transformed() ? frame_.scale[u] : 1.0))});
     return;
   }
 
@@ -433,14 +514,9 @@ void Machine::measure() {
   double distance = 0;
   for (int i = 0; i < kAxisCount; ++i) distance += (nominal[i] - start[i]) * (nominal[i] - start[i]);
   distance = std::sqrt(distance);
-  if (distance < 1e-6) {
-    report(DiagId::ProbeNoContact, 0, name, "the nominal point is where the probe is", "nowhere to probe");
-    return;
-  }
-  if (contact && contact->kind == ProbeContact::Kind::Circle) {
-    report(DiagId::ProbeNoContact, 0, name, "the next probe contact is a circle", "G72 and G74 need a point");
-    return;
-  }
+  if (distance < 1e-6) return setup(fmt::format("the nominal point {} is where the probe is: no direction to probe", where(nominal)));
+  if (contact && contact->kind == ProbeContact::Kind::Circle)
+    return setup(fmt::format("{} is a circle; {} needs a point", contact_name, name));
   AxisValues dir{};
   for (int i = 0; i < kAxisCount; ++i) dir[i] = (nominal[i] - start[i]) / distance;
   auto along = [&](double s) {
@@ -463,15 +539,16 @@ void Machine::measure() {
     return no_contact(along(from_s), along(safety_s));
   probe_move(along(contact_s), true);
   rapid(start);
-  // The values in the order the axes were written (the front end says where each goes).
-  const AxisValues off = origins();
+  // The values in the order the axes were written (the front end says where each
+  // goes), in the program's frame (§2.8.12.1: the position "on every coordinate of the
+  // block"), whatever the origin, rotation, mirror or scale.
+  const AxisValues measured = to_frame(surface), wanted = to_frame(nominal);
   for (char letter : conv_.axes) {
     int a = axis_index(letter);
-    auto index = slot_if(second_slot(letter));
-    if (!index || !has(letter)) continue;
-    double measured = program_axis(a, surface[a] - off[a]);
-    double value = fn == Fn::MeasurePoint ? measured : program_axis(a, nominal[a] - off[a]) - measured;
-    results_.push_back({static_cast<uint32_t>(*index), value});
+    auto slot = slot_if(second_slot(letter));
+    if (!slot || !has(letter)) continue;
+    double value = fn == Fn::MeasurePoint ? measured[a] : wanted[a] - measured[a];
+    results_.push_back({static_cast<uint32_t>(*slot), program_axis(a, value)});
   }
 }
 

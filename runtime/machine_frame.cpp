@@ -119,32 +119,31 @@ AxisValues Machine::program_target() {
 
 AxisValues Machine::target() {
   const AxisValues& from = parabola_middle_ ? *parabola_middle_ : machine_;
-  if (frame_.transformed() && !block_.machine_frame && block_.block_offset < 0) {
-    AxisValues t = to_machine(program_target());
-    for (double& v : t) v = snap(v);
-    return t;
-  }
-  // Untransformed: unwritten axes stay exactly where they are.
-  AxisValues p = program_target();
-  AxisValues off = target_frame();
+  const AxisValues off = target_frame();
   AxisValues t = from;
+  if (frame_.transformed() && !block_.machine_frame && block_.block_offset < 0) {
+    t = to_machine(program_target());
+    for (double& v : t) v = snap(v);
+  } else {
+    // Untransformed: unwritten axes stay exactly where they are.
+    AxisValues p = program_target();
+    for (char letter : conv_.axes)
+      if (has(letter)) t[axis_index(letter)] = snap(p[axis_index(letter)] + off[axis_index(letter)]);
+  }
+  // An endless rotary axis goes the way the target's sign says; 0 the short way
+  // (NC-110 §2.8.4, decision 48), with or without a transform.
+  if (!modal_.absolute && !block_.machine_frame) return t;
   for (char letter : conv_.axes) {
-    if (!has(letter)) continue;
     int i = axis_index(letter);
     const AxisConfig& a = config_.axes[static_cast<size_t>(i)];
-    double v = snap(p[i] + off[i]);
-    // An endless rotary axis goes the way the target's sign says; 0 the short way
-    // (NC-110 §2.8.4, decision 18).
-    if (a.endless && a.kind == AxisKind::Rotary && (modal_.absolute || block_.machine_frame)) {
-      double written = angle_degrees(word(letter));
-      double at = std::fmod(from[i], 360.0);
-      if (at < 0) at += 360;
-      double to = std::fmod(std::fabs(written), 360.0);
-      double ahead = std::fmod(to - at + 360.0, 360.0);
-      double delta = written > 0 ? ahead : written < 0 ? (ahead == 0 ? 0 : ahead - 360) : (ahead <= 180 ? ahead : ahead - 360);
-      v = snap(from[i] + delta);
-    }
-    t[i] = v;
+    if (!has(letter) || !a.endless || a.kind != AxisKind::Rotary) continue;
+    double written = angle_degrees(word(letter));
+    double at = std::fmod(from[i] - off[i], 360.0);
+    if (at < 0) at += 360;
+    double to = std::fmod(std::fabs(written), 360.0);
+    double ahead = std::fmod(to - at + 360.0, 360.0);
+    double delta = written > 0 ? ahead : written < 0 ? (ahead == 0 ? 0 : ahead - 360) : (ahead <= 180 ? ahead : ahead - 360);
+    t[i] = snap(from[i] + delta);
   }
   return t;
 }
@@ -198,9 +197,12 @@ bool Machine::frame_function(FnCall call) {
     }
     return static_cast<int>(*v);
   };
-  std::vector<int> listed;  // the axes the block names, in canonical order
+  std::vector<int> listed;  // the axes the operands name, in canonical order
   for (char letter : conv_.axes)
-    if (has(letter)) listed.push_back(axis_index(letter));
+    if (has(letter)) {
+      listed.push_back(axis_index(letter));
+      block_.used.set(letter_slot(letter));
+    }
   auto value = [&](int axis) { return axis_units(axis, word(kAxisLetters[axis])); };
   const std::string code = block_.code_name;
 

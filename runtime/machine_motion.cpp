@@ -42,6 +42,13 @@ Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
   AxisValues off = origins();
   for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
   e.pos = in_program_units(e.pos);
+  // An endless rotary axis shows 0..359.9999 however far it has turned (NC-110 §2.8.4).
+  for (int i = 0; i < kAxisCount; ++i)
+    if (config_.axes[static_cast<size_t>(i)].endless && config_.axes[static_cast<size_t>(i)].kind == AxisKind::Rotary) {
+      e.pos[i] = std::fmod(e.pos[i], 360.0);
+      if (e.pos[i] < 0) e.pos[i] += 360;
+      if (e.pos[i] >= 359.99995) e.pos[i] = 0;  // shows as 0, not 360.0000
+    }
   return e;
 }
 
@@ -145,8 +152,10 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   };
   if (radius_form && (has(pu) || has(pv))) return fail("an arc is given by its centre I J or by its radius R, not both");
   if (!radius_form && (plane_words ? !(has(pu) && has(pv)) : !has(pu) && !has(pv))) {
+    const char missing = has(pu) ? pv : has(pv) ? pu : 0;
     report(DiagId::ArcNoCentre, 0, clockwise ? "clockwise" : "counter-clockwise", plane_name(modal_.plane),
-           fmt::format("{} {}", pu, pv));
+           fmt::format("{} {}", pu, pv),
+           missing ? fmt::format("{} is not programmed", missing) : std::string("none of them is programmed"));
     move_to(t);
     return;
   }
@@ -230,10 +239,19 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
       double off = std::fabs(candidate * std::fabs(per_radian) - std::fabs(dw));
       double slack = conv_.arc_tolerance + kSamePoint +
                      candidate * length_units(conv_.lead_resolution) / 2 / (per_revolution ? kTwoPi : 1);
+      if (per_radian == 0 && per_revolution) {
+        report(DiagId::ArcForm, pw, fmt::format("the helix pitch {}{} must be greater than zero", pw, shortest(*lead)));
+        move_to(t);
+        return;
+      }
       if (per_radian == 0 || off > slack || (!plane_words && dw / per_radian <= 0)) {
+        // In the unit of the lead: turns for a pitch, radians for a lead per radian.
+        auto angle = [&](double radians) {
+          return per_revolution ? fmt::format("{} turns", four_decimals(radians / kTwoPi))
+                                : fmt::format("{} rad", four_decimals(radians));
+        };
         report(DiagId::HelixLead, pw, four_decimals(*lead), four_decimals(to_program(dw)),
-               per_radian == 0 ? std::string("infinitely many") : four_decimals(std::fabs(dw / per_radian)),
-               four_decimals(sweep));
+               per_radian == 0 ? std::string("infinitely many rad") : angle(std::fabs(dw / per_radian)), angle(sweep));
         move_to(t);
         return;
       }

@@ -30,4 +30,11 @@ inline std::string slot_name(int slot) {
   return "?";
 }
 
+// For messages: "X", "operand 3", "the second R".
+inline std::string slot_text(int slot) {
+  if (slot >= 52 && slot < 64) return "operand " + std::to_string(slot - 51);
+  if (slot >= 64 && slot < 90) return std::string("the second ") + static_cast<char>('A' + slot - 64);
+  return slot_name(slot);
+}
+
 }  // namespace ncc

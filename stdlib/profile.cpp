@@ -3,6 +3,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -348,13 +349,8 @@ void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
       else p.report_value(diags, key, "must be \"none\" or a table such as { X = 10.02 }");
     } else if (!p.keys(key + ".centre").empty() || p.number(key + ".radius", diags)) {
       c.kind = ProbeContact::Kind::Circle;
-      AxisValues centre{};
-      uint32_t given = 0;
-      axis_values(p, key + ".centre", centre, diags, &given);
-      int k = 0;
-      for (int a = 0; a < kAxisCount && k < 2; ++a)
-        if (given & (1u << a)) c.centre[k++] = centre[a];
-      if (k != 2) p.report_value(diags, key + ".centre", "must give the centre's two coordinates, e.g. { X = 1, Y = 2 }");
+      axis_values(p, key + ".centre", c.point, diags, &c.axes);
+      if (std::popcount(c.axes) != 2) p.report_value(diags, key + ".centre", "must give the centre's two coordinates, e.g. { X = 1, Y = 2 }");
       if (auto r = p.number(key + ".radius", diags); r && *r > 0) c.radius = *r;
       else p.report_value(diags, key + ".radius", "must be greater than zero");
     } else {

@@ -9,7 +9,19 @@ namespace ncc {
 
 namespace {
 
-std::string word_text(const ir::Word& w) { return w.address + w.text; }
+// A code written without digits (NC-110 "G" is G00, decision 4) is named by its number.
+std::string word_text(const ir::Program& p, const ir::Word& w) {
+  if (w.text.empty() && w.kind == ir::WordKind::Code && w.value != ir::kNoExpr)
+    return fmt::format("{}{:02}", w.address, static_cast<int>(p.exprs[w.value].number));
+  return w.address + w.text;
+}
+
+// Both labels of a block range, where they are written.
+SourceRange range_operands(const ir::Stmt& s) {
+  SourceRange r = s.range;
+  if (s.end_range.line == r.line && s.end_range.end_col > r.end_col) r.end_col = s.end_range.end_col;
+  return r;
+}
 
 const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rules, const ir::Word& w) {
   const auto& table = w.address == "G" ? rules.tables->g_codes : rules.tables->m_codes;
@@ -19,10 +31,10 @@ const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rule
 
 int code_number(const ir::Program& p, const ir::Word& w) { return static_cast<int>(p.exprs[w.value].number); }
 
-void report_with_note(Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
+void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
                       const std::string& a, const std::string& b = {}, const std::string& c = {}) {
   if (Diagnostic* d = diags.report(id, second.range, a, b, c))
-    d->notes.push_back({first.range, fmt::format("{} is here", word_text(first))});
+    d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
 }
 
 void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block& block, Diagnostics& diags) {
@@ -39,23 +51,31 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
     if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) continue;  // known at run time
     char letter = w.address.size() == 1 ? w.address[0] : 0;
     auto addr = rules.tables->addresses.find(letter);
+    // The second word of a letter that may stand twice (NC-110 R1 R2) counts as it.
+    if (w.address.size() == 2 && w.address[1] == '\'') {
+      addr = rules.tables->addresses.find(w.address[0]);
+      if (addr != rules.tables->addresses.end() && addr->second.repeat != stdlib::Repeat::Twice)
+        addr = rules.tables->addresses.end();
+    }
     if (addr == rules.tables->addresses.end()) continue;
+    const std::string key(1, addr->first);
     if (rules.pedantic && previous) {
       auto prev = rules.tables->addresses.find(previous->address[0]);
       if (prev != rules.tables->addresses.end() && prev->second.order > addr->second.order)
-        diags.report(DiagId::WordOrder, w.range, word_text(w), word_text(*previous));
+        diags.report(DiagId::WordOrder, w.range, word_text(p, w), word_text(p, *previous));
     }
     previous = &w;
     switch (addr->second.repeat) {
       case stdlib::Repeat::Once:
       case stdlib::Repeat::Twice: {
-        auto [it, fresh] = once.emplace(w.address, &w);
+        auto [it, fresh] = once.emplace(key, &w);
         int allowed = addr->second.repeat == stdlib::Repeat::Twice ? 2 : 1;
-        if (++counts[w.address] == allowed + 1) report_with_note(diags, DiagId::WordRepeated, w, *it->second, w.address);
+        if (++counts[key] == allowed + 1)
+          report_with_note(p, diags, DiagId::WordRepeated, w, *it->second, key, allowed == 1 ? "once" : "twice");
         break;
       }
       case stdlib::Repeat::Feed:
-        if (feed) report_with_note(diags, DiagId::SeveralFeeds, w, *feed, "");
+        if (feed) report_with_note(p, diags, DiagId::SeveralFeeds, w, *feed, "");
         if (!feed) feed = &w;
         break;
       case stdlib::Repeat::Group:
@@ -63,14 +83,14 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         if (w.kind != ir::WordKind::Code) break;
         const stdlib::CodeEntry* entry = code_entry(p, rules, w);
         if (!entry) {
-          diags.report(w.address == "G" ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, w.range, word_text(w));
+          diags.report(w.address == "G" ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, w.range, word_text(p, w));
           break;
         }
         if (addr->second.repeat == stdlib::Repeat::Group && matrix) {
           // A compatibility matrix says which codes may share a block (NC-110 Table 2.4).
           for (const ir::Word* other : g_codes)
             if (rules.tables->incompatible.count({code_number(p, *other), code_number(p, w)})) {
-              report_with_note(diags, DiagId::CodesIncompatible, w, *other, word_text(*other), word_text(w));
+              report_with_note(p, diags, DiagId::CodesIncompatible, w, *other, word_text(p, *other), word_text(p, w));
               break;
             }
           g_codes.push_back(&w);
@@ -78,7 +98,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
           // Block-only codes without a group letter count as their own group (§2.5).
           std::string group = entry->group == "-" ? entry->desc.name : entry->group;
           auto [it, fresh] = groups.emplace(group, &w);
-          if (!fresh) report_with_note(diags, DiagId::GroupConflict, w, *it->second, word_text(*it->second), word_text(w), group);
+          if (!fresh) report_with_note(p, diags, DiagId::GroupConflict, w, *it->second, word_text(p, *it->second), word_text(p, w), group);
         } else {
           if (addr->second.max_count && ++counts[w.address] == addr->second.max_count + 1)
             diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
@@ -87,7 +107,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
           for (const std::string& set : my_sets) {
             auto [it, fresh] = sets.emplace(set, &w);
             if (!fresh) {
-              report_with_note(diags, DiagId::MCodeConflict, w, *it->second, word_text(*it->second), word_text(w), set);
+              report_with_note(p, diags, DiagId::MCodeConflict, w, *it->second, word_text(p, *it->second), word_text(p, w), set);
               break;
             }
           }
@@ -146,10 +166,12 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
   for (ir::Block& b : unit.blocks) {
     uint32_t errors = diags.error_count();
     for (const ir::Stmt& s : b.stmts) {
-      if (s.kind == ir::StmtKind::Jump && !labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, s.label);
-      if (s.kind == ir::StmtKind::CallRange)
-        for (const std::string* l : {&s.label, &s.end_label})
-          if (!labels.count(*l)) diags.report(DiagId::LabelUndefined, s.range, *l);
+      if (s.kind == ir::StmtKind::Jump && !labels.count(s.label))
+        diags.report(DiagId::LabelUndefined, s.range, "jump to", s.label);
+      if (s.kind == ir::StmtKind::CallRange) {
+        if (!labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, "block range from", s.label);
+        if (!labels.count(s.end_label)) diags.report(DiagId::LabelUndefined, s.end_range, "block range to", s.end_label);
+      }
       if (s.kind == ir::StmtKind::Call && !entries.count(s.label) && !b.has_errors)
         diags.report(DiagId::CallUndefined, s.range, s.label);
     }
@@ -209,9 +231,9 @@ void check_structure(const ir::Unit& unit, const CheckRules& rules, Diagnostics&
       if (from == at.end() || to == at.end()) continue;
       std::string name = fmt::format("{} to {}", s.label, s.end_label);
       if (to->second < from->second) {
-        diags.report(DiagId::RangeInvalid, s.range, name, "its last block comes before its first");
+        diags.report(DiagId::RangeInvalid, range_operands(s), name, "its last block comes before its first");
       } else if (before[from->second] != after[to->second]) {
-        diags.report(DiagId::RangeInvalid, s.range, name, "it cuts a repeat loop: a range holds whole loops");
+        diags.report(DiagId::RangeInvalid, range_operands(s), name, "it cuts a repeat loop: a range holds whole loops");
       } else {
         ranges.push_back({from->second, to->second});
       }
@@ -223,7 +245,7 @@ void check_structure(const ir::Unit& unit, const CheckRules& rules, Diagnostics&
       if (s.kind == ir::StmtKind::CallRange)
         for (auto [first, last] : ranges)
           if (i >= first && i <= last) {
-            diags.report(DiagId::RangeInvalid, s.range, fmt::format("{} to {}", s.label, s.end_label),
+            diags.report(DiagId::RangeInvalid, range_operands(s), fmt::format("{} to {}", s.label, s.end_label),
                          fmt::format("it stands inside the range {} to {}, and ranges do not nest",
                                      unit.blocks[first].label, unit.blocks[last].label));
             break;

@@ -106,6 +106,7 @@ struct Stmt {
   bool optional = false;    // Comment after a mid-block '/': dropped when block skip is on
   double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
   std::string end_label;    // CallRange
+  SourceRange end_range;    // CallRange: where end_label is written
   std::vector<DisplayItem> items;  // Display
 };
 

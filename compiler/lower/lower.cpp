@@ -258,6 +258,11 @@ class Lowering {
 
   // Each block starts with a Step (counted by --max-steps): jumps back land on block
   // starts, so every loop passes one (the verifier insists).
+  // Only programs run in the order of the medium; subprograms and macros run when called.
+  static vm::EntryKind entry_kind(const ir::Unit& unit) {
+    return unit.kind == ir::UnitKind::Program ? vm::EntryKind::Program : vm::EntryKind::Subprogram;
+  }
+
   void lower_unit(const ir::Unit& unit) {
     std::map<std::string, uint32_t> labels;
     std::vector<std::pair<uint32_t, std::string>> jumps;  // (operand, label)
@@ -286,7 +291,7 @@ class Lowering {
       m_.lines.push_back({pc(), source});
       for (; starting_loops > 0; --starting_loops) loop_start.push_back(pc());
       if (!entry_added) {
-        m_.entries.push_back({unit.name, vm::EntryKind::Program, pc()});
+        m_.entries.push_back({unit.name, entry_kind(unit), pc()});
         entry_added = true;
       }
       if (b.main_block && b.number)
@@ -372,7 +377,7 @@ class Lowering {
       s.col = unit.range.col;
       m_.source_map.blocks.push_back(s);
       m_.lines.push_back({pc(), static_cast<uint32_t>(m_.source_map.blocks.size() - 1)});
-      m_.entries.push_back({unit.name, vm::EntryKind::Program, pc()});
+      m_.entries.push_back({unit.name, entry_kind(unit), pc()});
       op(Op::Step);
     }
     uint32_t end = pc();

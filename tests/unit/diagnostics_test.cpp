@@ -30,7 +30,7 @@ TEST(Diagnostics, TextHasLocationCodeLineAndCaret) {
   SourceManager sources;
   uint32_t f = sources.add("p.nc", "%1\nN1 X10 X20\n");
   Diagnostics diags;
-  Diagnostic* d = diags.report(DiagId::WordRepeated, {f, 2, 8, 2, 11}, "X");
+  Diagnostic* d = diags.report(DiagId::WordRepeated, {f, 2, 8, 2, 11}, "X", "once");
   d->notes.push_back({{f, 2, 4, 2, 7}, "X10 is here"});
   EXPECT_EQ(format_text(*d, sources),
             "p.nc:2:8: error: X appears more than once in the block [NC3001]\n"

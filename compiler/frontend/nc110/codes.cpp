@@ -76,9 +76,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
   // A Cyrillic look-alike of a Latin letter gets its own message.
   for (const Piece& p : pieces)
     if (p.type == Nc110Lexer::LETTER && static_cast<unsigned char>(p.text[0]) >= 0x80 && kind != OperandKind::Label &&
-        kind != OperandKind::Comparand && kind != OperandKind::Item) {
-      diags_.report(DiagId::CharInvalid, p.range, fmt::format("'{}' (Cyrillic)", p.text));
-      block_.has_errors = true;
+        kind != OperandKind::Program) {
+      report_cyrillic(p.range, p.text);
       return std::nullopt;
     }
   // [sign] digits [. digits] | . digits
@@ -105,15 +104,19 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     std::from_chars(clean.data(), clean.data() + clean.size(), v);
     return v;
   };
-  // E<digits>, adjacent.
+  // E<digits> (a blank between them is allowed, as in `ZE 35`). `bad_parameter`: one
+  // that does not exist, already reported.
+  bool bad_parameter = false;
   auto parameter_at = [&]() -> std::optional<uint32_t> {
-    if (type(at) != Nc110Lexer::LETTER || pieces[at].text != "E" || type(at + 1) != Nc110Lexer::DIGITS || !adjacent(at + 1))
+    if (type(at) != Nc110Lexer::LETTER || pieces[at].text != "E" || type(at + 1) != Nc110Lexer::DIGITS)
       return std::nullopt;
     SourceRange r{file_, line_no_, pieces[at].range.col, line_no_, pieces[at + 1].range.end_col};
     auto index = parameter("E" + pieces[at + 1].text, r);
     at += 2;
+    bad_parameter = !index;
     return index;
   };
+  auto letter_o = [&](size_t i) { return type(i) == Nc110Lexer::LETTER && pieces[i].text == "O"; };
   // A constant of a range, or an E parameter of one of `classes`.
   auto value = [&](double lo, double hi, bool whole, std::vector<std::string> classes) -> bool {
     if (auto e = parameter_at()) {
@@ -122,11 +125,11 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       op.type = parameter_type(*e);
       return true;
     }
-    if (block_.has_errors && type(at) == Nc110Lexer::LETTER && pieces[at].text == "E") return false;
+    if (bad_parameter) return false;
     std::string written;
     auto v = number(written);
     if (!v) {
-      if (type(at) == Nc110Lexer::LETTER && pieces[at].text == "O" && pieces.size() == 1)
+      if (letter_o(at) && pieces.size() == 1)
         fail("the letter O where the digit 0 is meant");
       else
         fail("not a number");
@@ -144,6 +147,13 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     if (s_.conventions.axes.find(axis) == std::string::npos)
       return fail(fmt::format("{} is not an axis of this machine ({})", axis, s_.conventions.axes)), false;
     ++at;
+    if (letter_o(at) && adjacent(at)) return fail("the letter O where the digit 0 is meant"), false;
+    if ((type(at) == Nc110Lexer::PLUS || type(at) == Nc110Lexer::MINUS) && adjacent(at) && type(at + 1) == Nc110Lexer::LETTER &&
+        pieces[at + 1].text == "E") {
+      diags_.report(DiagId::SignedParameter, op.range, op.text);
+      block_.has_errors = true;
+      return false;
+    }
     if (at < pieces.size() && pieces[at].text == "E" && adjacent(at)) {
       shown = "E" + (at + 1 < pieces.size() ? pieces[at + 1].text : "");
       auto e = parameter_at();
@@ -169,9 +179,9 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
   auto letters_and_digits = [&](bool& ok) {
     std::string s;
     ok = true;
-    for (size_t i = at; i < pieces.size(); ++i) {
+    for (size_t i = at, first = at; i < pieces.size(); ++i) {
       if (pieces[i].type != Nc110Lexer::LETTER && pieces[i].type != Nc110Lexer::DIGITS) break;
-      if (i > at && !adjacent(i)) ok = false;
+      if (i > first && !adjacent(i)) ok = false;
       s += pieces[i].text;
       at = i + 1;
     }
@@ -216,8 +226,10 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       break;
     case OperandKind::Pair: {
       char second = 0;
-      if (!axis_word(op.axis, op.value, op.first_text) || !axis_word(second, op.second, op.second_text))
-        return std::nullopt;
+      if (!axis_word(op.axis, op.value, op.first_text)) return std::nullopt;
+      if (at == pieces.size())
+        return fail(fmt::format("the second value of {0} is missing (a pair is written {0}-300 {0}300, with a blank)", op.axis));
+      if (!axis_word(second, op.second, op.second_text)) return std::nullopt;
       if (second != op.axis) return fail(fmt::format("both values belong to one axis: {} and {}", op.axis, second));
       break;
     }
@@ -231,7 +243,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         if ((c & 0xC0) != 0x80) ++count;
         valid = valid && !(c >= 'a' && c <= 'z');
       }
-      if (!valid || count > 6) return fail("a label is 1 to 6 capital letters and digits, unquoted");
+      if (!valid || count > 6) return fail("a label is 1 to 6 capital letters and digits, unquoted, without blanks");
       break;
     }
     case OperandKind::Program: {
@@ -242,7 +254,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         if (s.size() < lo || s.size() > hi || !(s[0] >= 'A' && s[0] <= 'Z')) return false;
         return std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
       };
-      if (!ok || !good(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits, a letter first");
+      if (!ok || !good(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits without blanks, a letter first");
       if (type(at) == Nc110Lexer::SLASH) {
         ++at;
         op.device = letters_and_digits(ok);
@@ -265,6 +277,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         op.type = parameter_type(*e);
         break;
       }
+      if (bad_parameter) return std::nullopt;
+      if (letter_o(0) && pieces.size() == 1) return fail("the letter O where the digit 0 is meant");
       if (type(0) == Nc110Lexer::LETTER) {
         bool ok = false;
         std::string name;
@@ -330,11 +344,11 @@ void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
   if (it == s_.codes.end() || !adjacent) {
     for (auto* l : letters)
       if (static_cast<unsigned char>(l->getText()[0]) >= 0x80) {
-        diags_.report(DiagId::CharInvalid, range(l), fmt::format("'{}' (Cyrillic)", l->getText()));
-        block_.has_errors = true;
+        report_cyrillic(range(l), l->getText());
         return;
       }
-    diags_.report(DiagId::TlcUnknown, code_range, code.empty() ? std::string("") : code);
+    // As written: "(U RT)" shows the blank that makes it unknown.
+    diags_.report(DiagId::TlcUnknown, code_range, code.empty() ? code : std::string(line_.substr(code_range.col - 1, code_range.end_col - code_range.col)));
     block_.has_errors = true;
     return;
   }
@@ -375,7 +389,7 @@ void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
     while (next < operands.size() && (taken == 0 || item.repeat == '*' || item.repeat == '+')) {
       if (operands[next].empty()) {
         SourceRange at = next < commas.size() ? commas[next] : code_range;
-        diags_.report(DiagId::OperandMissing, at, code, "no empty operand");
+        diags_.report(DiagId::OperandMissing, at, code, kind_name(item.kind) + " here: the operand is empty");
         block_.has_errors = true;
         return;
       }
@@ -474,6 +488,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       s = ir::Stmt(ir::StmtKind::CallRange, ops[0].range);
       s.label = ops[0].name;
       s.end_label = ops[1].name;
+      s.end_range = ops[1].range;
       break;
     case Action::Jump:
       s = ir::Stmt(ir::StmtKind::Jump, ops[0].range);
@@ -499,7 +514,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         if (program_.exprs[other.value].op == ir::ExprOp::String) {
           std::string t = program_.texts[program_.exprs[other.value].text];
           if (t.size() != memory.chars) {
-            diags_.report(DiagId::TextPadded, other.range, t, t.size(), memory.text, 
+            diags_.report(DiagId::TextPadded, other.range, t, t.size(), memory.chars, memory.text,
                           t.size() < memory.chars ? "blanks are added" : "the rest is not compared");
             t.resize(memory.chars, ' ');
             right = string_expr(t, other.range);

@@ -338,8 +338,6 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
 
   // A system variable: TMR = 2, USB = 0, TIM2 = TIM0 - TIM1 (§2.10).
   std::string name = target->NAME()->getText();
-  if (name.size() == 1 && std::string_view("oplc").find(name[0]) != std::string_view::npos)
-    return fail(DiagId::Unsupported, target_range, fmt::format("the GTL element {}", target_text), "GTL geometry (§2.11)");
   std::optional<uint32_t> number;
   if (target->NUMBER()) number = static_cast<uint32_t>(std::min(std::stod(target->NUMBER()->getText()), 1e6));
   const SystemName* entry = nullptr;

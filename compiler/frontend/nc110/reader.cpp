@@ -72,6 +72,16 @@ size_t skip_leading(std::string_view line, size_t i) {
   return i;
 }
 
+// The length of a GTL element's name where a GTL definition starts (`c1 =`), or 0.
+size_t gtl_definition(std::string_view line, size_t at) {
+  if (at >= line.size() || std::string_view("oplc").find(line[at]) == std::string_view::npos) return 0;
+  size_t i = at + 1;
+  while (i < line.size() && line[i] >= '0' && line[i] <= '9') ++i;
+  size_t end = i;
+  while (i < line.size() && blank(line[i])) ++i;
+  return end > at + 1 && i < line.size() && line[i] == '=' ? end - at : 0;
+}
+
 bool has_equals(std::string_view s) {
   bool quoted = false;
   for (char c : s) {
@@ -97,33 +107,33 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
     if (!token || token->getType() == antlr4::Token::EOF) {
       size_t at = token ? token->getStartIndex() : position;
       uint32_t col = r_.byte_col(at);
-      r_.diags_.report(DiagId::SyntaxError, {r_.file_, r_.line_no_, col, r_.line_no_, col + 1}, "end of the block");
+      r_.diags_.report(DiagId::SyntaxError, {r_.file_, r_.line_no_, col, r_.line_no_, col + 1}, "end of the line");
       return;
     }
     SourceRange range = r_.range(token, token);
     std::string text = r_.text(token, token);
     switch (token->getType()) {
       case Nc110Lexer::OPEN_STRING: r_.diags_.report(DiagId::StringUnterminated, range); return;
-      case Nc110Lexer::CYRILLIC: {
-        size_t length = 0;
-        uint32_t cp = decode_utf8(text, 0, length);
-        if (char twin = latin_twin(cp)) {
-          r_.diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", text, cp), twin);
-          return;
-        }
-        r_.diags_.report(DiagId::CharInvalid, range, fmt::format("'{}' (U+{:04X})", text, cp));
-        return;
-      }
+      case Nc110Lexer::CYRILLIC: r_.report_cyrillic(range, text); return;
       case Nc110Lexer::INVALID:
         if (text == ";") {
           r_.diags_.report(DiagId::CommentInline, range);
         } else {
           unsigned char c = text.empty() ? 0 : static_cast<unsigned char>(text[0]);
+          size_t length = 0;
+          uint32_t cp = c >= 0x80 ? decode_utf8(text, 0, length) : 0;
+          // Typographic quotes come with texts copied from word processors.
+          bool quote = cp == 0x201C || cp == 0x201D || cp == 0x201E || cp == 0xAB || cp == 0xBB;
           r_.diags_.report(DiagId::CharInvalid, range,
                            c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
                            : c < 0x80          ? fmt::format("control character 0x{:02X}", c)
-                                               : fmt::format("byte 0x{:02X}", c));
+                           : length == 0       ? fmt::format("byte 0x{:02X}", c)
+                           : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
+                                   : fmt::format("'{}' (U+{:04X})", text, cp));
         }
+        return;
+      case Nc110Lexer::TRAILING:
+        r_.diags_.report(DiagId::OneInstruction, range, fmt::format("'{}' follows the three-letter code's ')'", text));
         return;
       case Nc110Lexer::EQUALS:
         r_.diags_.report(DiagId::OneInstruction, range, "a second '=' starts another assignment");
@@ -135,6 +145,14 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
  private:
   Reader& r_;
 };
+
+void Reader::report_cyrillic(const SourceRange& range, const std::string& letter) {
+  size_t length = 0;
+  uint32_t cp = decode_utf8(letter, 0, length);
+  if (char twin = latin_twin(cp)) diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", letter, cp), twin);
+  else diags_.report(DiagId::CharInvalid, range, fmt::format("'{}' (U+{:04X})", letter, cp));
+  block_.has_errors = true;
+}
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
                Diagnostics& diags)
@@ -244,6 +262,13 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
       break;
     }
     case Kind::Assign: {
+      // A GTL definition (`p2 = X10 Y25`, `c1=I15 J15 r5`, `l1=c1,c2`, §2.11) is
+      // reported as a whole; its leading fields are still read.
+      if (size_t n = gtl_definition(line, body)) {
+        diags_.report(DiagId::Unsupported, {file_, line_no, static_cast<uint32_t>(body + 1), line_no, static_cast<uint32_t>(body + n + 1)},
+                      fmt::format("the GTL element {}", line.substr(body, n)), "GTL geometry (§2.11)");
+        block_.has_errors = true;
+      }
       auto* ctx = parser_.assignBlock();
       if (block_.has_errors) leading(ctx->leading(), true);
       else assign_block(ctx);
@@ -440,7 +465,7 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
     if (kLowerCase.find(letter) == std::string_view::npos)
       return fail(DiagId::AddressUnknown, fmt::format("lower-case '{}'", letter));
     if (kGtlLetters.find(letter) != std::string_view::npos)
-      return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "GTL geometry (§2.11)");
+      return fail(DiagId::Unsupported, fmt::format("the GTL element {}", shown), "GTL geometry (§2.11)");
     if (kCompensationLetters.find(letter) != std::string_view::npos)
       return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "cutter radius compensation (§2.8.7, §2.9)");
   }

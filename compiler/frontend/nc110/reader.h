@@ -95,6 +95,8 @@ class Reader {
   void code_block(Nc110Parser::TlcBlockContext* ctx);
   struct Piece;
   struct Operand;
+  // A Cyrillic letter where a Latin one is read: NC1027 naming its Latin twin, if any.
+  void report_cyrillic(const SourceRange& range, const std::string& letter);
   std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind, const std::string& code);
   void code_action(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);
 
