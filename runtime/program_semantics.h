@@ -99,6 +99,7 @@ struct ProgramSemantics {
   std::vector<uint16_t> power_on;  // indices into codes, applied in order
   Conventions conventions;
   std::vector<std::string> system_names;  // the dialect's name of each SysVar ("TMR"), for messages
+  std::vector<std::string> builtin_names; // ... of each Builtin ("SQR"); empty: its own name
   std::vector<NumberedCode> numbered;     // the codes a program may select at run time
   std::vector<std::pair<uint16_t, uint16_t>> incompatible;  // codes that must not share a block
 };

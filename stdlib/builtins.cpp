@@ -13,6 +13,25 @@ constexpr std::array<BuiltinInfo, static_cast<size_t>(Builtin::Count)> kBuiltins
     {"gtl_line", 2}, {"gtl_point", 2}, {"gtl_circle", 2},
 }};
 constexpr double kDeg = std::numbers::pi / 180.0;
+
+// Trigonometry in degrees, exact at the multiples of 90: SIN(180) is 0, not 1.2e-16,
+// so a program that tests it against 0 works as on the machine.
+double turn(double a) {
+  double r = std::fmod(a, 360.0);
+  return r < 0 ? r + 360.0 : r;
+}
+double sin_degrees(double a) {
+  double r = turn(a);
+  if (r == 0 || r == 180) return 0;
+  if (r == 90 || r == 270) return r == 90 ? 1 : -1;
+  return std::sin(r * kDeg);
+}
+double cos_degrees(double a) {
+  double r = turn(a);
+  if (r == 90 || r == 270) return 0;
+  if (r == 0 || r == 180) return r == 0 ? 1 : -1;
+  return std::cos(r * kDeg);
+}
 }  // namespace
 
 const BuiltinInfo& builtin_info(Builtin b) { return kBuiltins[static_cast<size_t>(b)]; }
@@ -25,15 +44,15 @@ std::optional<Builtin> builtin_by_name(std::string_view name) {
 
 bool eval_builtin(Builtin b, const double* a, double& out, std::string_view& why) {
   switch (b) {
-    case Builtin::Sin: out = std::sin(a[0] * kDeg); break;
-    case Builtin::Cos: out = std::cos(a[0] * kDeg); break;
+    case Builtin::Sin: out = sin_degrees(a[0]); break;
+    case Builtin::Cos: out = cos_degrees(a[0]); break;
     case Builtin::Tan:
       // tan is undefined at odd multiples of 90 degrees.
       if (std::fmod(std::fabs(a[0]) - 90.0, 180.0) == 0.0) {
-        why = "an odd multiple of 90 degrees";
+        why = "not defined at odd multiples of 90 degrees";
         return false;
       }
-      out = std::tan(a[0] * kDeg);
+      out = sin_degrees(a[0]) / cos_degrees(a[0]);
       break;
     case Builtin::Asin:
     case Builtin::Acos:

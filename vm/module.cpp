@@ -94,6 +94,8 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   for (uint16_t i : s.power_on) w.u16(i);
   w.u32(static_cast<uint32_t>(s.system_names.size()));
   for (const std::string& name : s.system_names) w.str(name);
+  w.u32(static_cast<uint32_t>(s.builtin_names.size()));
+  for (const std::string& name : s.builtin_names) w.str(name);
   w.u32(static_cast<uint32_t>(s.numbered.size()));
   for (const NumberedCode& c : s.numbered) {
     w.u8(c.slot);
@@ -209,6 +211,9 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   if (!count(r, 4, n) || n > static_cast<uint32_t>(SysVar::Count)) return false;
   s.system_names.resize(n);
   for (std::string& name : s.system_names) name = r.str();
+  if (!count(r, 4, n) || n > static_cast<uint32_t>(Builtin::Count)) return false;
+  s.builtin_names.resize(n);
+  for (std::string& name : s.builtin_names) name = r.str();
   if (!count(r, 5, n)) return false;
   s.numbered.resize(n);
   for (NumberedCode& c : s.numbered) {
@@ -466,6 +471,7 @@ std::string verify(const Module& m) {
   std::vector<const std::string*> names = {&m.dialect, &m.profile_name, &s.dialect};
   for (const CodeDesc& code : s.codes) names.push_back(&code.name);
   for (const std::string& name : s.system_names) names.push_back(&name);
+  for (const std::string& name : s.builtin_names) names.push_back(&name);
   for (const CyclePattern& p : s.cycles) names.push_back(&p.name);
   for (const Entry& e : m.entries) names.push_back(&e.name);
   for (const VarSpace& v : m.spaces) names.push_back(&v.name);

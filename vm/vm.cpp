@@ -254,7 +254,11 @@ RunStatus Vm::run(uint32_t entry) {
                         shortest(args[0]));
           // The GTL functions' second argument is the field.
           bool field = b >= Builtin::GtlLine && !why.starts_with("element");
-          return fail(pc, DiagId::DomainError, shortest(args[field ? 1 : 0]), fmt::format("{} ({})", builtin_info(b).name, why));
+          // By the dialect's name of the function, as the program writes it.
+          const auto& names = m_.semantics.builtin_names;
+          const size_t i = static_cast<size_t>(b);
+          std::string_view name = i < names.size() && !names[i].empty() ? std::string_view(names[i]) : builtin_info(b).name;
+          return fail(pc, DiagId::DomainError, shortest(args[field ? 1 : 0]), fmt::format("{} ({})", name, why));
         }
         st.push_back(r);
         break;

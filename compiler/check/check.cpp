@@ -156,7 +156,6 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
         if (Diagnostic* d = diags.report(DiagId::LabelDuplicate, b.range, b.label))
           d->notes.push_back({it->second->range, "first defined here"});
     }
-    if (b.number) labels.insert(fmt::format("N{}", *b.number));
   }
   for (const ir::Unit& u : program.units) {
     entries.insert(u.name);
@@ -181,7 +180,7 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
 
 // Repeat loops: balanced, not too deep, never entered by a jump; block ranges
 // whole, in order, and not inside another range (NC-110 §2.13.2).
-void check_structure(const ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
+void check_structure(ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
   const size_t n = unit.blocks.size();
   std::vector<std::vector<size_t>> before(n), after(n);  // the loops open at each block
   std::vector<size_t> open;
@@ -213,15 +212,14 @@ void check_structure(const ir::Unit& unit, const CheckRules& rules, Diagnostics&
   for (const ir::Stmt* s : open_stmt) diags.report(DiagId::RepeatUnbalanced, s->range, "a repeat loop that does not end");
 
   std::map<std::string, size_t> at;
-  for (size_t i = 0; i < n; ++i) {
+  for (size_t i = 0; i < n; ++i)
     if (!unit.blocks[i].label.empty()) at.emplace(unit.blocks[i].label, i);
-    if (unit.blocks[i].number) at.emplace(fmt::format("N{}", *unit.blocks[i].number), i);
-  }
   auto inside = [](const std::vector<size_t>& inner, const std::vector<size_t>& outer) {
     return inner.size() <= outer.size() && std::equal(inner.begin(), inner.end(), outer.begin());
   };
   std::vector<std::pair<size_t, size_t>> ranges;
-  for (size_t i = 0; i < n; ++i)
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t errors = diags.error_count();
     for (const ir::Stmt& s : unit.blocks[i].stmts) {
       if (s.kind == ir::StmtKind::Jump)
         if (auto it = at.find(s.label); it != at.end() && !inside(before[it->second], before[i]))
@@ -234,12 +232,15 @@ void check_structure(const ir::Unit& unit, const CheckRules& rules, Diagnostics&
         diags.report(DiagId::RangeInvalid, range_operands(s), name, "its last block comes before its first");
       } else if (before[from->second] != after[to->second]) {
         diags.report(DiagId::RangeInvalid, range_operands(s), name, "it cuts a repeat loop: a range holds whole loops");
+      } else if (!inside(before[from->second], before[i])) {
+        diags.report(DiagId::JumpIntoRepeat, s.range, s.label, "the range call");
       } else {
         ranges.push_back({from->second, to->second});
       }
-      if (!inside(before[from->second], before[i]))
-        diags.report(DiagId::JumpIntoRepeat, s.range, s.label, "the range call");
     }
+    // Such a jump or range is not lowered: it would enter a loop from outside.
+    if (diags.error_count() != errors) unit.blocks[i].has_errors = true;
+  }
   for (size_t i = 0; i < n; ++i)
     for (const ir::Stmt& s : unit.blocks[i].stmts)
       if (s.kind == ir::StmtKind::CallRange)

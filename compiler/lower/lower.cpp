@@ -277,7 +277,6 @@ class Lowering {
     size_t depth = 0;
     for (const ir::Block& b : unit.blocks) {
       if (!b.label.empty()) label_depth.emplace(b.label, depth);
-      if (b.number) label_depth.emplace(fmt::format("N{}", *b.number), depth);
       for (const ir::Stmt& s : b.stmts) {
         if (s.kind == ir::StmtKind::RepeatBegin) ++depth;
         if (s.kind == ir::StmtKind::RepeatEnd && depth > 0) --depth;
@@ -297,10 +296,13 @@ class Lowering {
       if (b.main_block && b.number)
         m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
       if (!b.label.empty()) labels[b.label] = pc();
-      if (b.number) labels.emplace(fmt::format("N{}", *b.number), pc());
       op(Op::Step);
       uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
       for (const ir::Stmt& s : b.stmts) {
+        // A block the compiler rejected does not jump or call: where to is in doubt (a
+        // dry run goes on past it, its other errors already reported).
+        if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange))
+          continue;
         switch (s.kind) {
           case ir::StmtKind::Comment: {
             uint32_t skip_comment = s.optional ? jump(Op::JumpSkip) : 0;

@@ -246,7 +246,7 @@ TEST(Vm, ConditionalJumpsMakeALoop) {
   Builder t;
   t.assign(t.block(), t.var(30), t.num(0));
   ir::Block& loop = t.block();
-  loop.number = 2;
+  loop.label = "N2";
   t.assign(loop, t.var(30), t.bin(ir::ExprOp::Add, t.var(30), t.num(1)));
   t.move_x(loop, t.var(30));
   ir::Block& test = t.block();
@@ -305,7 +305,7 @@ TEST(Vm, UndefinedTargetsAreCheckedBeforeLowering) {
 TEST(Vm, StepLimitStopsARunawayLoop) {
   Builder t;
   ir::Block& b = t.block();
-  b.number = 1;
+  b.label = "N1";
   ir::Stmt jump(ir::StmtKind::Jump, b.range);
   jump.label = "N1";
   b.stmts.push_back(jump);

@@ -279,6 +279,11 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       }
       if (bad_parameter) return std::nullopt;
       if (letter_o(0) && pieces.size() == 1) return fail("the letter O where the digit 0 is meant");
+      if (pieces.size() == 2 && type(0) == Nc110Lexer::LETTER && type(1) == Nc110Lexer::DIGITS && adjacent(1) &&
+          pieces[0].text.size() == 1 && kGtlElements.find(pieces[0].text[0]) != std::string_view::npos) {
+        report_gtl(op.range, op.text);
+        return std::nullopt;
+      }
       if (type(0) == Nc110Lexer::LETTER) {
         bool ok = false;
         std::string name;

@@ -39,6 +39,13 @@ const Function* function(std::string_view name) {
 
 }  // namespace
 
+std::vector<std::string> function_names() {
+  std::vector<std::string> names(static_cast<size_t>(Builtin::Count));
+  for (const Function& f : kFunctions)
+    if (f.builtin) names[static_cast<size_t>(*f.builtin)] = f.name;
+  return names;
+}
+
 // ---- References ----------------------------------------------------------------------
 
 std::optional<uint32_t> Reader::parameter(std::string_view text, SourceRange r) {

@@ -47,6 +47,7 @@ class Nc110Frontend final : public Frontend {
     program.semantics.system_names.resize(static_cast<size_t>(SysVar::Count));
     for (const auto& [name, entry] : s_.system)
       if (entry.var) program.semantics.system_names[static_cast<size_t>(*entry.var)] = name;
+    program.semantics.builtin_names = function_names();
 
     // The main program, then every program it calls, each read once (§2.13.2.2).
     fs::path main_path = sources.file(file).path();

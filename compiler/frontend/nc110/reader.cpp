@@ -74,7 +74,7 @@ size_t skip_leading(std::string_view line, size_t i) {
 
 // The length of a GTL element's name where a GTL definition starts (`c1 =`), or 0.
 size_t gtl_definition(std::string_view line, size_t at) {
-  if (at >= line.size() || std::string_view("oplc").find(line[at]) == std::string_view::npos) return 0;
+  if (at >= line.size() || kGtlElements.find(line[at]) == std::string_view::npos) return 0;
   size_t i = at + 1;
   while (i < line.size() && line[i] >= '0' && line[i] <= '9') ++i;
   size_t end = i;
@@ -145,6 +145,11 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
  private:
   Reader& r_;
 };
+
+void Reader::report_gtl(const SourceRange& range, std::string_view element) {
+  diags_.report(DiagId::Unsupported, range, fmt::format("the GTL element {}", element), "GTL geometry (§2.11)");
+  block_.has_errors = true;
+}
 
 void Reader::report_cyrillic(const SourceRange& range, const std::string& letter) {
   size_t length = 0;
@@ -265,9 +270,8 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
       // A GTL definition (`p2 = X10 Y25`, `c1=I15 J15 r5`, `l1=c1,c2`, §2.11) is
       // reported as a whole; its leading fields are still read.
       if (size_t n = gtl_definition(line, body)) {
-        diags_.report(DiagId::Unsupported, {file_, line_no, static_cast<uint32_t>(body + 1), line_no, static_cast<uint32_t>(body + n + 1)},
-                      fmt::format("the GTL element {}", line.substr(body, n)), "GTL geometry (§2.11)");
-        block_.has_errors = true;
+        report_gtl({file_, line_no, static_cast<uint32_t>(body + 1), line_no, static_cast<uint32_t>(body + n + 1)},
+                   line.substr(body, n));
       }
       auto* ctx = parser_.assignBlock();
       if (block_.has_errors) leading(ctx->leading(), true);
@@ -465,7 +469,7 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
     if (kLowerCase.find(letter) == std::string_view::npos)
       return fail(DiagId::AddressUnknown, fmt::format("lower-case '{}'", letter));
     if (kGtlLetters.find(letter) != std::string_view::npos)
-      return fail(DiagId::Unsupported, fmt::format("the GTL element {}", shown), "GTL geometry (§2.11)");
+      return report_gtl(r, shown);
     if (kCompensationLetters.find(letter) != std::string_view::npos)
       return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "cutter radius compensation (§2.8.7, §2.9)");
   }

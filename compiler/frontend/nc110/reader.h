@@ -27,6 +27,12 @@ struct CallSite {
 using ncc_nc110::Nc110Lexer;
 using ncc_nc110::Nc110Parser;
 
+// The dialect's name of each built-in function (SQR for the square root), by Builtin.
+std::vector<std::string> function_names();
+
+// The letters of GTL elements: points, lines, circles, origins (§2.11).
+inline constexpr std::string_view kGtlElements = "oplc";
+
 class Reader {
  public:
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags);
@@ -95,6 +101,9 @@ class Reader {
   void code_block(Nc110Parser::TlcBlockContext* ctx);
   struct Piece;
   struct Operand;
+  // GTL geometry (§2.11) is later work: an element (`c1`) or a definition (`c1=...`)
+  // is reported as not supported.
+  void report_gtl(const SourceRange& range, std::string_view element);
   // A Cyrillic letter where a Latin one is read: NC1027 naming its Latin twin, if any.
   void report_cyrillic(const SourceRange& range, const std::string& letter);
   std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind, const std::string& code);
