@@ -490,15 +490,30 @@ BlockResult Machine::execute(const BlockRequest& request) {
 }
 
 void Machine::check_dynamic_codes() {
+  // The checks found the pairs of codes written as numbers; here those with a code
+  // chosen at run time, reported at its word (GE1), as the checks do: at the later.
   const BlockRequest& r = *block_.request;
-  for (size_t i = 0; i < r.code_count; ++i)
-    for (size_t j = i + 1; j < r.code_count; ++j)
-      for (const auto& [a, b] : sem_.incompatible)
-        if (a == r.codes[i] && b == r.codes[j]) {
-          block_.code = r.codes[j];
-          report_code(DiagId::CodesIncompatible, sem_.codes[a].name, sem_.codes[b].name);
-        }
-  block_.code = -1;
+  auto dynamic = [&](size_t i) { return i < 64 && ((r.dynamic_codes >> i) & 1); };
+  auto slot_of = [&](uint16_t code) {
+    for (const NumberedCode& n : sem_.numbered)
+      if (n.code == code) return static_cast<int>(n.slot);
+    return -1;
+  };
+  for (size_t j = 1; j < r.code_count; ++j)
+    for (size_t i = 0; i < j; ++i) {
+      if (!dynamic(i) && !dynamic(j)) continue;
+      for (const CodePair& p : sem_.incompatible) {
+        if (p.a != r.codes[i] || p.b != r.codes[j]) continue;
+        // At the later word: a code chosen at run time by its slot, else by its code.
+        RuntimeIssue issue{p.function.empty() ? DiagId::CodesIncompatible : DiagId::MCodeConflict, "", r.source,
+                           dynamic(j) ? slot_of(r.codes[j]) : -1, dynamic(j) ? -1 : r.codes[j]};
+        issue.message = p.function.empty()
+                            ? diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name)
+                            : diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name, p.function);
+        this->issue(issue);
+        break;
+      }
+    }
 }
 
 void Machine::apply_codes(Timing timing) {

@@ -42,7 +42,7 @@ struct BlockRequest {
   size_t code_count = 0;
   const BlockWords* words = nullptr;
   uint32_t source = 0;  // SourceMap::blocks index
-  bool dynamic_codes = false;  // some codes were chosen at run time: check they may share the block
+  uint64_t dynamic_codes = 0;  // bit i: codes[i] was chosen at run time; check it may share the block
 };
 
 // A problem found while running a block. `slot` is the word it concerns (-1 = the

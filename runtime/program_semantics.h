@@ -92,6 +92,13 @@ struct NumberedCode {
   bool operator==(const NumberedCode&) const = default;
 };
 
+// Two codes that must not share a block: by the compatibility matrix (NC-110 Table
+// 2.4), or because both control `function` (an M conflict set).
+struct CodePair {
+  uint16_t a = 0, b = 0;
+  std::string function;
+};
+
 struct ProgramSemantics {
   std::string dialect;
   std::vector<CodeDesc> codes;
@@ -101,7 +108,7 @@ struct ProgramSemantics {
   std::vector<std::string> system_names;  // the dialect's name of each SysVar ("TMR"), for messages
   std::vector<std::string> builtin_names; // ... of each Builtin ("SQR"); empty: its own name
   std::vector<NumberedCode> numbered;     // the codes a program may select at run time
-  std::vector<std::pair<uint16_t, uint16_t>> incompatible;  // codes that must not share a block
+  std::vector<CodePair> incompatible;     // codes that must not share a block
 };
 
 }  // namespace ncc

@@ -1,5 +1,6 @@
 #include "tables.h"
 
+#include <algorithm>
 #include <charconv>
 
 #include "embedded.h"
@@ -248,7 +249,10 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
       report(diags, table, row.line, fmt::format("scope '{}' must be modal or block", c[col - 1]));
       continue;
     }
-    if (m && c[col++] != "-") e.conflict_sets = split(c[col - 1], ',');
+    if (m && c[col++] != "-") {
+      e.conflict_sets = split(c[col - 1], ',');
+      for (std::string& set : e.conflict_sets) std::replace(set.begin(), set.end(), '_', ' ');  // "spindle range"
+    }
     std::string error;
     if (!parse_functions(c[col++], cycles, e.desc.calls, error)) {
       report(diags, table, row.line, error);

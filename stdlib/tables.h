@@ -58,7 +58,7 @@ struct CodeEntry {
   char letter = 'G';
   int number = 0;
   std::string group;                       // the dialect's group label; "-" = none
-  std::vector<std::string> conflict_sets;  // M codes: sets that must not share a block
+  std::vector<std::string> conflict_sets;  // M codes: sets that must not share a block (the function they control)
   CodeDesc desc;                           // name, scope, timing, canonical functions
   std::string meaning;
 };

@@ -103,9 +103,10 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
     w.u16(c.code);
   }
   w.u32(static_cast<uint32_t>(s.incompatible.size()));
-  for (auto [a, b] : s.incompatible) {
-    w.u16(a);
-    w.u16(b);
+  for (const CodePair& p : s.incompatible) {
+    w.u16(p.a);
+    w.u16(p.b);
+    w.str(p.function);
   }
 }
 
@@ -223,9 +224,10 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   }
   if (!count(r, 4, n)) return false;
   s.incompatible.resize(n);
-  for (auto& [a, b] : s.incompatible) {
-    a = r.u16();
-    b = r.u16();
+  for (CodePair& p : s.incompatible) {
+    p.a = r.u16();
+    p.b = r.u16();
+    p.function = r.str();
   }
   return !r.failed();
 }
@@ -472,6 +474,7 @@ std::string verify(const Module& m) {
   for (const CodeDesc& code : s.codes) names.push_back(&code.name);
   for (const std::string& name : s.system_names) names.push_back(&name);
   for (const std::string& name : s.builtin_names) names.push_back(&name);
+  for (const CodePair& p : s.incompatible) names.push_back(&p.function);
   for (const CyclePattern& p : s.cycles) names.push_back(&p.name);
   for (const Entry& e : m.entries) names.push_back(&e.name);
   for (const VarSpace& v : m.spaces) names.push_back(&v.name);
@@ -491,8 +494,8 @@ std::string verify(const Module& m) {
     if (i >= s.codes.size()) return fmt::format("power-on state names code {} of {}", i, s.codes.size());
   for (const NumberedCode& n : s.numbered)
     if (n.code >= s.codes.size() || n.slot >= kWordSlots) return "a numbered code names a code that does not exist";
-  for (auto [a, b] : s.incompatible)
-    if (a >= s.codes.size() || b >= s.codes.size()) return "the compatibility matrix names a code that does not exist";
+  for (const CodePair& p : s.incompatible)
+    if (p.a >= s.codes.size() || p.b >= s.codes.size()) return "the compatibility matrix names a code that does not exist";
   uint64_t variables = 0;
   for (const VarSpace& space : m.spaces) {
     variables += space.size;

@@ -60,7 +60,12 @@ Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions 
 
 template <typename... Args>
 RunStatus Vm::fail(uint32_t pc, DiagId id, const Args&... args) {
-  issues_.issue({id, diag_message(id, args...), m_.source_of(pc), 0});
+  return fail_at(pc, -1, id, args...);
+}
+
+template <typename... Args>
+RunStatus Vm::fail_at(uint32_t pc, int slot, DiagId id, const Args&... args) {
+  issues_.issue({id, diag_message(id, args...), m_.source_of(pc), slot});
   return RunStatus::Error;
 }
 
@@ -283,9 +288,14 @@ RunStatus Vm::run(uint32_t entry) {
         auto it = std::find_if(numbered.begin(), numbered.end(), [&](const NumberedCode& c) {
           return c.slot == operands[0] && c.number == v;
         });
-        if (it == numbered.end()) return fail(pc, DiagId::CodeUnknown, slot_name(operands[0]), shortest(v));
+        if (it == numbered.end()) {
+          // As the table writes it: G05.
+          bool two_digits = v >= 0 && v < 100 && v == std::trunc(v);
+          return fail_at(pc, operands[0], DiagId::CodeUnknown, slot_name(operands[0]),
+                         two_digits ? fmt::format("{:02}", static_cast<int>(v)) : shortest(v));
+        }
+        dynamic_codes_ |= uint64_t{1} << std::min<size_t>(codes_.size(), 63);
         codes_.push_back(it->code);
-        dynamic_codes_ = true;
         break;
       }
       case Op::Word: words_.set(operands[0], m_.numbers[u32_at(operands + 1)]); break;
@@ -300,7 +310,7 @@ RunStatus Vm::run(uint32_t entry) {
         BlockResult result = machine_.execute(request);
         codes_.clear();
         words_.clear();
-        dynamic_codes_ = false;
+        dynamic_codes_ = 0;
         // Measured values the block stores (NC-110 G72-G74).
         for (auto [index, value] : machine_.take_results())
           if (!store(m_.semantics.conventions.result_space, index, value, pc)) return RunStatus::Error;

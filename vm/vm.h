@@ -44,8 +44,11 @@ class Vm {
     std::vector<Loop> loops;
   };
 
+  // A run-time error of the block at pc; at its word of `slot`, if it has one.
   template <typename... Args>
   RunStatus fail(uint32_t pc, DiagId id, const Args&... args);
+  template <typename... Args>
+  RunStatus fail_at(uint32_t pc, int slot, DiagId id, const Args&... args);
   double load(uint8_t space, double index, uint32_t pc, bool& ok);
   bool store(uint8_t space, double index, double value, uint32_t pc);
   // A run of `count` bytes of memory `space` at byte `index`, or nullptr (reported).
@@ -66,7 +69,7 @@ class Vm {
   std::vector<uint16_t> codes_;  // the pending block
   BlockWords words_;
   std::string message_;          // the pending operator message
-  bool dynamic_codes_ = false;   // the pending block has codes chosen at run time
+  uint64_t dynamic_codes_ = 0;   // the pending block's codes chosen at run time (bit i: codes_[i])
 };
 
 }  // namespace ncc::vm

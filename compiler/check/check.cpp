@@ -46,9 +46,21 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
   const ir::Word* feed = nullptr;
   const ir::Word* previous = nullptr;  // for the word order
   const bool matrix = !rules.tables->incompatible.empty();
+  std::map<int, const ir::Word*> codes;           // M code number -> its word
+  // At most n words of an address that may stand several times (NC-110: 4 M words).
+  auto count_several = [&](const ir::Word& w) {
+    auto addr = rules.tables->addresses.find(w.address.size() == 1 ? w.address[0] : 0);
+    if (addr == rules.tables->addresses.end() || addr->second.repeat != stdlib::Repeat::Several || !addr->second.max_count)
+      return;
+    if (++counts[w.address] == addr->second.max_count + 1)
+      diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
+  };
   for (const ir::Word& w : block.words) {
     if (w.kind == ir::WordKind::Ignored || w.value == ir::kNoExpr) continue;
-    if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) continue;  // known at run time
+    if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) {
+      count_several(w);  // what it is comes at run time; that it is a word, now
+      continue;
+    }
     char letter = w.address.size() == 1 ? w.address[0] : 0;
     auto addr = rules.tables->addresses.find(letter);
     // The second word of a letter that may stand twice (NC-110 R1 R2) counts as it.
@@ -100,13 +112,16 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
           auto [it, fresh] = groups.emplace(group, &w);
           if (!fresh) report_with_note(p, diags, DiagId::GroupConflict, w, *it->second, word_text(p, *it->second), word_text(p, w), group);
         } else {
-          if (addr->second.max_count && ++counts[w.address] == addr->second.max_count + 1)
-            diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
-          std::vector<std::string> my_sets = entry->conflict_sets;
-          if (my_sets.empty()) my_sets.push_back(entry->desc.name);  // the same code twice
-          for (const std::string& set : my_sets) {
-            auto [it, fresh] = sets.emplace(set, &w);
-            if (!fresh) {
+          count_several(w);
+          // The same code twice is a word too many; two codes of one set contradict.
+          auto [same, fresh] = codes.emplace(code_number(p, w), &w);
+          if (!fresh) {
+            report_with_note(p, diags, DiagId::WordRepeated, w, *same->second, word_text(p, w), "once");
+            break;
+          }
+          for (const std::string& set : entry->conflict_sets) {
+            auto [it, first] = sets.emplace(set, &w);
+            if (!first) {
               report_with_note(p, diags, DiagId::MCodeConflict, w, *it->second, word_text(p, *it->second), word_text(p, w), set);
               break;
             }

@@ -1,5 +1,8 @@
 #include "frontend.h"
 
+#include <fstream>
+#include <sstream>
+
 #include "gost/gost_frontend.h"
 #include "nc110/nc110_frontend.h"
 
@@ -53,6 +56,29 @@ std::unique_ptr<Frontend> make_frontend(std::string_view dialect, const stdlib::
   for (const DialectEntry& d : kDialects) known += (known.empty() ? "" : ", ") + std::string(d.name);
   diags.report(DiagId::DialectUnknown, {}, fmt::format("unknown dialect '{}' (known: {})", dialect, known));
   return nullptr;
+}
+
+bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std::string_view letters,
+                        stdlib::DialectTables& tables, Diagnostics& diags) {
+  bool ok = true;
+  for (char letter : letters) {
+    const std::string key = fmt::format("{}.tables.{}_codes", section, letter == 'G' ? 'g' : 'm');
+    auto file = p.string(key, diags);
+    if (!file || file->empty()) continue;
+    std::string path = p.resolve_path(*file);
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+      ok = (p.report_value(diags, key, "names a file that cannot be read"), false);
+      continue;
+    }
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    size_t errors = diags.error_count();
+    auto table = stdlib::parse_table(path, buffer.str(), letter == 'G' ? 5 : 6, diags);
+    stdlib::read_code_table(table, letter, tables.cycles, letter == 'G' ? tables.g_codes : tables.m_codes, diags);
+    ok &= diags.error_count() == errors;
+  }
+  return ok;
 }
 
 }  // namespace ncc

@@ -33,6 +33,12 @@ int32_t program_code(ir::Program& program, const CodeDesc& desc);
 // The power-on state from a dialect's table: "G00" names a G code, anything else a
 // canonical function ("spindle.stop").
 void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens);
+// A machine builder's own codes from the profile's `<section>.tables` (`g_codes`,
+// `m_codes`: files in the columns of stdlib/dialects/<dialect>/*_codes.tsv), for the
+// letters given; a row replaces the table's code of its number. False if reported.
+bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std::string_view letters,
+                        stdlib::DialectTables& tables, Diagnostics& diags);
+
 // Builds the front end of `dialect` configured by `profile`; nullptr when the
 // dialect is unknown or its profile settings are invalid (reported).
 std::unique_ptr<Frontend> make_frontend(std::string_view dialect, const stdlib::Profile& profile, Diagnostics& diags);

@@ -80,9 +80,10 @@ class Lowering {
     s.has_errors = b.has_errors;
     s.number = b.number.value_or(0);
     s.first_word = static_cast<uint32_t>(m_.source_map.words.size());
+    // A code chosen at run time (GE1) is found by its slot, as a parameter word is.
     for (const ir::Word& w : b.words)
-      if (w.kind == ir::WordKind::Parameter || (w.kind == ir::WordKind::Code && w.code >= 0))
-        m_.source_map.words.push_back({w.slot, static_cast<int16_t>(w.kind == ir::WordKind::Code ? w.code : -1),
+      if (w.kind == ir::WordKind::Parameter || w.kind == ir::WordKind::Code)
+        m_.source_map.words.push_back({w.slot, static_cast<int16_t>(w.kind == ir::WordKind::Code && w.code >= 0 ? w.code : -1),
                                        w.range.line, w.range.col, w.range.end_col});
     s.word_count = static_cast<uint32_t>(m_.source_map.words.size()) - s.first_word;
     m_.source_map.blocks.push_back(s);

@@ -4,6 +4,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "frontend/frontend.h"
+
 namespace ncc::gost {
 
 namespace {
@@ -197,25 +199,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
     }
   }
 
-  // A machine builder's own codes (Table 4 note 1, Table 7 note 1), same columns as
-  // stdlib/dialects/gost/*_codes.tsv.
-  for (auto [key, letter, columns] : {std::tuple{"gost.tables.g_codes", 'G', size_t{5}},
-                                      std::tuple{"gost.tables.m_codes", 'M', size_t{6}}}) {
-    auto file = p.string(key, diags);
-    if (!file || file->empty()) continue;
-    std::string path = p.resolve_path(*file);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      ok &= (p.report_value(diags, key, "names a file that cannot be read"), false);
-      continue;
-    }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    size_t errors = diags.error_count();
-    auto table = stdlib::parse_table(path, buffer.str(), columns, diags);
-    stdlib::read_code_table(table, letter, s.tables.cycles, letter == 'G' ? s.tables.g_codes : s.tables.m_codes, diags);
-    ok &= diags.error_count() == errors;
-  }
+  // A machine builder's own codes (Table 4 note 1, Table 7 note 1).
+  ok &= read_machine_codes(p, "gost", "GM", s.tables, diags);
   if (!ok) return std::nullopt;
   return s;
 }

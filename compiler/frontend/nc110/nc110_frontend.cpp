@@ -114,7 +114,7 @@ class Nc110Frontend final : public Frontend {
   }
 
   // A G or M code given by an E parameter is found at run time: the program then
-  // carries every code of that letter, and the compatibility matrix.
+  // carries every code of that letter, the compatibility matrix and the M conflict sets.
   void add_dynamic_codes(ir::Program& program) const {
     std::set<char> letters;
     for (const ir::Unit& u : program.units)
@@ -123,14 +123,20 @@ class Nc110Frontend final : public Frontend {
           if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) letters.insert(w.address[0]);
     auto& sem = program.semantics;
     std::map<int, uint16_t> g_index;
+    std::map<std::string, std::vector<uint16_t>> sets;  // M conflict set -> its codes
     for (char letter : letters)
       for (const auto& [number, entry] : letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes) {
         auto index = static_cast<uint16_t>(program_code(program, entry.desc));
         sem.numbered.push_back({static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
         if (letter == 'G') g_index[number] = index;
+        for (const std::string& set : entry.conflict_sets) sets[set].push_back(index);
       }
     for (const auto& [a, b] : s_.tables.incompatible)
-      if (g_index.count(a) && g_index.count(b)) sem.incompatible.push_back({g_index[a], g_index[b]});
+      if (g_index.count(a) && g_index.count(b)) sem.incompatible.push_back({g_index[a], g_index[b], ""});
+    for (const auto& [set, codes] : sets)
+      for (uint16_t a : codes)
+        for (uint16_t b : codes)
+          if (a != b) sem.incompatible.push_back({a, b, set});
   }
 
   Settings s_;

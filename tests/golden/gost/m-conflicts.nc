@@ -1,4 +1,4 @@
-m-conflicts: M codes that control the same function must not share a block, nor may one M appear twice (ncc decision 14, NC3005); codes Table 7 leaves undefined are NC3004
+m-conflicts: M codes that control the same function must not share a block, (ncc decision 14, NC3005), nor may one M appear twice (NC3001); codes Table 7 leaves undefined are NC3004
 %
 N1 M00 M01 (stop set)
 N2 M03 M04 (spindle set)
