@@ -236,7 +236,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::WorkOffset:
       if (call.arg != 0 && !offsets_.count(call.arg)) {
-        report_code(DiagId::WorkOffsetUnknown, block_.code_name, call.arg);
+        report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
         break;
       }
       if (scope == Scope::Block) {
@@ -522,7 +522,8 @@ void Machine::apply_codes(Timing timing) {
     const CodeDesc& code = sem_.codes[request.codes[i]];
     if (code.timing != timing) continue;
     block_.code = request.codes[i];
-    block_.code_name = code.name;
+    // Messages name a three-letter code as it is written: (DTL).
+    block_.code_name = std::isdigit(static_cast<unsigned char>(code.name.back())) ? code.name : "(" + code.name + ")";
     for (const FnCall& call : code.calls) {
       // A block-only code's group comes back after the block (G53 works differently:
       // it only changes the frame of this block's words).

@@ -267,6 +267,7 @@ class Machine {
   Event motion_event(EventKind kind, const AxisValues& machine_target) const;
   void rapid(const AxisValues& t);
   bool need_feed(const char* what, const AxisValues& t);
+  double block_seconds();
   void linear(const AxisValues& t);
   void arc(const AxisValues& t, bool clockwise);
   void parabola(const AxisValues& t);

@@ -214,7 +214,7 @@ bool Machine::frame_function(FnCall call) {
       if (!n) break;
       auto record = offsets_.find(*n);
       if (*n != 0 && record == offsets_.end()) {
-        report_code(DiagId::WorkOffsetUnknown, code, *n);
+        report_slot(DiagId::WorkOffsetUnknown, operand_slot(0), code, fmt::format("origin {}", *n));
         break;
       }
       // (UAO,n) without axes: every axis origin n declares (§2.13.1.1).
@@ -270,7 +270,7 @@ bool Machine::frame_function(FnCall call) {
     case Fn::Scale: {
       auto factor = operand(0);
       if (factor && !(*factor > 0)) {
-        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "it must be greater than 0");
+        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "greater than 0");
         break;
       }
       // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on all; (SCF): 1.
@@ -286,7 +286,7 @@ bool Machine::frame_function(FnCall call) {
       auto u = operand(0), v = operand(1);
       if (!u || !v) break;
       if (modal_.comp || modal_.gtl || modal_.cycle >= 0) {
-        report_code(DiagId::PlaneState, modal_.comp ? "cutter radius compensation" : modal_.gtl ? "a GTL profile" : "a canned cycle");
+        report_code(DiagId::PlaneState, code, modal_.comp ? "cutter radius compensation" : modal_.gtl ? "a GTL profile" : "a canned cycle");
         break;
       }
       // The normal: the axis along abscissa x ordinate, of the X/U, Y/V, Z/W family.
@@ -300,18 +300,26 @@ bool Machine::frame_function(FnCall call) {
     }
     case Fn::Tolerance: {
       if (modal_.comp || modal_.gtl) {
-        report_code(DiagId::PlaneState, modal_.comp ? "cutter radius compensation" : "a GTL profile");
+        report_code(DiagId::PlaneState, code, modal_.comp ? "cutter radius compensation" : "a GTL profile");
         break;
       }
-      Event e{EventKind::Tolerance};
+      // Every value is checked before any is set: a DTL with an error changes nothing.
+      bool ok = true;
       for (int a : listed) {
         double v = value(a);
         const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
         if (v < 0 || v > cfg.drive_error) {
           report(DiagId::ToleranceValue, kAxisLetters[a], four_decimals(program_axis(a, v)), std::string(1, kAxisLetters[a]),
-                 four_decimals(program_axis(a, cfg.drive_error)));
-          continue;
+                 v < 0 ? std::string("must not be negative")
+                       : fmt::format("exceeds the drive error {} the machine allows", four_decimals(program_axis(a, cfg.drive_error))));
+          ok = false;
         }
+      }
+      if (!ok) break;
+      Event e{EventKind::Tolerance};
+      for (int a : listed) {
+        double v = value(a);
+        const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
         tolerance_[a] = v;
         e.n |= 1 << a;
         e.pos[a] = program_axis(a, v == 0 ? cfg.tolerance : v);
@@ -437,13 +445,22 @@ bool Machine::path_allowed(const std::vector<AxisValues>& path) {
   bool limits = std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; });
   bool zones = std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; });
   if (!limits && !zones) return true;
-  for (const AxisValues& p : path)
-    for (int a = 0; a < kAxisCount && limits; ++a)
-      if (limited_[a] && (p[a] < limits_[0][a] - 1e-9 || p[a] > limits_[1][a] + 1e-9)) {
-        report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]), four_decimals(program_axis(a, limits_[0][a] - origin(a))),
-               four_decimals(program_axis(a, limits_[1][a] - origin(a))), four_decimals(program_axis(a, p[a] - origin(a))));
-        return false;
-      }
+  // A move leaves the field where it goes farther outside than it starts: a tool
+  // outside the field may come back into it (decision 34). The message gives the
+  // farthest point the move would reach.
+  for (int a = 0; a < kAxisCount && limits; ++a) {
+    if (!limited_[a]) continue;
+    auto outside = [&](double v) { return std::max({limits_[0][a] - v, v - limits_[1][a], 0.0}); };
+    const double allowed = outside(path.front()[a]) + 1e-9;
+    const AxisValues* farthest = nullptr;
+    for (const AxisValues& p : path)
+      if (outside(p[a]) > allowed && (!farthest || outside(p[a]) > outside((*farthest)[a]))) farthest = &p;
+    if (farthest) {
+      report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]), four_decimals(program_axis(a, limits_[0][a] - origin(a))),
+             four_decimals(program_axis(a, limits_[1][a] - origin(a))), four_decimals(program_axis(a, (*farthest)[a] - origin(a))));
+      return false;
+    }
+  }
   for (size_t z = 0; z < zones_.size() && zones; ++z) {
     const Zone& zone = zones_[z];
     if (!zone.active) continue;

@@ -58,10 +58,12 @@ double Machine::spindle_rpm() const {
   if (std::abs(modal_.spindle) != 1) return 0;
   if (!modal_.constant_surface) return speed_;
   // Constant cutting speed (G96): S in m/min (ft/min) at the diameter of the cross
-  // axis, a diametral axis as written, else twice X (NC-110 decision 4).
-  double diameter = 2 * std::fabs(machine_[0]);
+  // axis, measured from the active origin (the spindle's axis): a diametral axis as
+  // written, else twice X (NC-110 decision 49).
+  const AxisValues at = to_frame(machine_);
+  double diameter = 2 * std::fabs(at[0]);
   for (int i = 0; i < kAxisCount; ++i)
-    if (config_.axes[static_cast<size_t>(i)].diameter) diameter = std::fabs(machine_[i]);
+    if (config_.axes[static_cast<size_t>(i)].diameter) diameter = std::fabs(at[i]);
   double surface = modal_.inch ? speed_ * 304.8 : speed_ * 1000;  // mm/min
   double rpm = diameter > 0 ? surface / (kPi * diameter) : config_.max_rpm;
   return config_.max_rpm > 0 ? std::min(rpm, config_.max_rpm) : rpm;
@@ -82,11 +84,24 @@ double Machine::feed_time(double length) {
 
 // ---- Straight moves -----------------------------------------------------------------
 
+// NC-110 t: the block's own time in seconds under G94 (§2.7.5): its feed is the
+// segment's length over t. 0 when the block has no t (or a wrong one, reported).
+double Machine::block_seconds() {
+  if (!has('t')) return 0;
+  const double t = word('t');
+  if (modal_.feed_mode != 1) report(DiagId::TimeWord, 't', "is for feed per minute (G94) only");
+  else if (t <= 0) report(DiagId::TimeWord, 't', "must be greater than 0");
+  return modal_.feed_mode == 1 && t > 0 ? t : 0;
+}
+
 bool Machine::need_feed(const char* what, const AxisValues& t) {
+  if (modal_.feed_mode == 1 && has('t')) return true;  // the block's t gives its feed
   if (modal_.feed_mode == 0 && !has('F')) {
     report(DiagId::InverseTimeNoFeed, 0);
   } else if (!feed_) {
     report(DiagId::NoFeed, 0, what);
+  } else if (modal_.feed_mode == 2 && spindle_rpm() <= 0) {
+    report(DiagId::FeedNoSpindle, 0, what);
   } else {
     return true;
   }
@@ -120,11 +135,8 @@ void Machine::linear(const AxisValues& t) {
   double length = 0;
   for (int i = 0; i < kAxisCount; ++i) length += (t[i] - machine_[i]) * (t[i] - machine_[i]);
   length = std::sqrt(length);
-  // NC-110 t: the block's time in seconds under G94 (§2.7.5).
-  if (auto seconds = word_if(has('t') ? 't' : 0)) {
-    if (modal_.feed_mode != 1) report(DiagId::TimeWord, 't', "is for feed per minute (G94) only");
-    else if (*seconds <= 0) report(DiagId::TimeWord, 't', "must be greater than 0");
-    else advance_clock(*seconds);
+  if (const double own = block_seconds()) {
+    advance_clock(own);
   } else if (system_value(SysVar::RapidRun) == 1) {
     double seconds = 0;
     for (int i = 0; i < kAxisCount; ++i)
@@ -170,6 +182,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     }
     if (frame_.mirror[u] != frame_.mirror[v]) clockwise = !clockwise;
   }
+  const bool programmed_clockwise = clockwise != (frame_.transformed() && !block_.machine_frame &&
+                                                  frame_.mirror[u] != frame_.mirror[v]);
   const AxisValues start_p = to_frame(machine_);
   const AxisValues end_p = to_frame(t);
   const Eigen::Vector2d q0(start_p[u], start_p[v]), q1(end_p[u], end_p[v]);
@@ -185,7 +199,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
                               four_decimals(to_program(2 * std::fabs(r))), four_decimals(to_program(r))));
     double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4));
     Eigen::Vector2d along = (q1 - q0) / chord, left(-along.y(), along.x());
-    double side = (clockwise == (r < 0)) ? 1 : -1;
+    double side = (programmed_clockwise == (r < 0)) ? 1 : -1;  // where it is programmed
     qc = (q0 + q1) / 2 + side * h * left;
   } else if (conv_.arc_centre == ArcCentre::Incremental || (!modal_.absolute && !block_.machine_frame)) {
     // Increments from the start point to the centre (GOST §4.3.3; NC-110 under G91).
@@ -283,9 +297,15 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
       std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; })) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
     int chords = std::clamp(static_cast<int>(std::ceil(sweep / std::max(step, 1e-6))), 1, 100000);
+    // The fractions of the sweep: the chords' ends and where the arc is farthest
+    // along u or v (every quarter turn from the start's angle).
+    std::vector<double> fractions;
+    for (int k = 0; k <= chords; ++k) fractions.push_back(static_cast<double>(k) / chords);
+    const double to_quarter = clockwise ? std::fmod(wrap(a0), kPi / 2) : kPi / 2 - std::fmod(wrap(a0), kPi / 2);
+    for (double s = to_quarter; s < sweep; s += kPi / 2) fractions.push_back(s / sweep);
+    std::sort(fractions.begin(), fractions.end());
     std::vector<AxisValues> path;
-    for (int k = 0; k <= chords; ++k) {
-      double f = static_cast<double>(k) / chords;
+    for (double f : fractions) {
       double a = a0 + (clockwise ? -1 : 1) * sweep * f;
       AxisValues p = machine_;
       for (int i = 0; i < kAxisCount; ++i) p[i] += (t[i] - machine_[i]) * f;
@@ -307,7 +327,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   e.a = to_program(r0);
   e.b = sweep * 180 / kPi;
   double length = std::hypot((r0 + r1) / 2 * sweep, dw);
-  advance_clock(system_value(SysVar::RapidRun) == 1 ? 0 : feed_time(length));
+  const double own = block_seconds();
+  advance_clock(own ? own : system_value(SysVar::RapidRun) == 1 ? 0 : feed_time(length));
   emit(e);
   move_to(t);
 }

@@ -230,7 +230,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       if (at == pieces.size())
         return fail(fmt::format("the second value of {0} is missing (a pair is written {0}-300 {0}300, with a blank)", op.axis));
       if (!axis_word(second, op.second, op.second_text)) return std::nullopt;
-      if (second != op.axis) return fail(fmt::format("both values belong to one axis: {} and {}", op.axis, second));
+      if (second != op.axis) return fail(fmt::format("the two values must belong to one axis, not {} and {}", op.axis, second));
       break;
     }
     case OperandKind::Label: {
