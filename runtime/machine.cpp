@@ -15,6 +15,9 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
 void Machine::power_on() {
   machine_ = config_.initial_position;
   offsets_ = config_.work_offsets;
+  // Origin 0 is 0 on every axis the profile does not give it: (UAO,0) and RESET
+  // select it on all axes (NC-110 §2.13.1.1).
+  offsets_[0].axes = (1u << kAxisCount) - 1;
   tool_loaded_ = 0;
   offset_number_ = 0;
   block_skip_ = config_.block_skip;
@@ -635,16 +638,9 @@ void Machine::finish() {
     if (spline_.active) report(DiagId::SplineStructure, 0, "the program ended inside a spline: (ESP) is missing");
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
-    Modal before = modal_;
-    Frame frame = frame_;
-    AxisValues position_offset = position_offset_;
+    const ResetState before{modal_, frame_, position_offset_, limited_, zones_, tolerance_, turning_};
     reset_state();
-    emit_reset(before, position_offset);
-    // Origins set per axis (NC-110) come back to origin 0; GOST shows its offsets' events.
-    std::array<int, kAxisCount> uniform{};
-    uniform.fill(before.work_offset);
-    if (frame.base != uniform || frame.shift != position_offset) origin_event();
-    if (frame.transformed()) transform_event();
+    emit_reset(before);
     Event e{EventKind::End};
     e.n = block_.end_information;
     emit(e);
@@ -655,23 +651,50 @@ void Machine::finish() {
     if (unused[slot]) report_slot(DiagId::WordUnused, slot, slot_text(slot));
 }
 
-void Machine::emit_reset(const Modal& before, const AxisValues& position_offset) {
+void Machine::emit_reset(const ResetState& before) {
   auto changed = [&](EventKind kind, int n) {
     Event e{kind};
     e.n = n;
     emit(e);
   };
-  if (before.inch != modal_.inch) changed(EventKind::Units, modal_.inch);
-  if (before.plane != modal_.plane) plane_event();
-  if (before.feed_mode != modal_.feed_mode) changed(EventKind::FeedMode, modal_.feed_mode);
-  if (before.constant_surface != modal_.constant_surface) changed(EventKind::SpindleMode, modal_.constant_surface);
-  if (before.dynamics != modal_.dynamics && modal_.dynamics >= 0) path_event(4 + modal_.dynamics);
+  const Modal& was = before.modal;
+  if (before.turning) changed(EventKind::Configuration, 0);  // NC-110 §2.13.5.4: milling again
+  if (was.inch != modal_.inch) changed(EventKind::Units, modal_.inch);
+  if (was.plane != modal_.plane) plane_event();
+  if (was.feed_mode != modal_.feed_mode) changed(EventKind::FeedMode, modal_.feed_mode);
+  if (was.constant_surface != modal_.constant_surface) changed(EventKind::SpindleMode, modal_.constant_surface);
+  if (was.dynamics != modal_.dynamics && modal_.dynamics >= 0) path_event(4 + modal_.dynamics);
+  if (was.spindle_range != modal_.spindle_range) changed(EventKind::SpindleRange, modal_.spindle_range);
   flush_compensation();
-  if (before.work_offset != modal_.work_offset) apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
-  if (position_offset != position_offset_) {
+  if (was.work_offset != modal_.work_offset) apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
+  if (before.position_offset != position_offset_) {
     Event e{EventKind::PositionOffset};
     emit(e);
   }
+  // Origins set per axis (NC-110) come back to origin 0; GOST shows its offsets' events.
+  std::array<int, kAxisCount> uniform{};
+  uniform.fill(was.work_offset);
+  if (before.frame.base != uniform || before.frame.shift != before.position_offset) origin_event();
+  if (before.frame.transformed()) transform_event();
+  // NC-110 §2.13.5: RESET cancels the working limits and the zones and gives the axes
+  // the machine's tolerance again; no axis stays clamped.
+  for (size_t z = 0; z < before.zones.size(); ++z)
+    if (before.zones[z].active) {
+      Event e{EventKind::Zone};
+      e.rotation = static_cast<int>(z + 1);
+      e.n = 0;
+      emit(e);
+    }
+  if (std::any_of(before.limited.begin(), before.limited.end(), [](bool b) { return b; })) emit(Event{EventKind::Limits});
+  Event tolerance{EventKind::Tolerance};
+  for (int a = 0; a < kAxisCount; ++a)
+    if (before.tolerance[a] != 0) {
+      tolerance.n |= 1 << a;
+      tolerance.pos[a] = program_axis(a, config_.axes[static_cast<size_t>(a)].tolerance);
+    }
+  if (tolerance.n) emit(tolerance);
+  if (was.clamp == 1) changed(EventKind::Clamp, 0);
+  if (was.rotary_clamp == 1) changed(EventKind::Clamp, 2);
 }
 
 void Machine::end_of_unit(uint32_t source) {

@@ -243,7 +243,17 @@ class Machine {
   void cutter_comp_event();
   Compensation compensation() const;
   void flush_compensation();
-  void emit_reset(const Modal& before, const AxisValues& position_offset);
+  // What M02/M30 reset; the trace shows what changed.
+  struct ResetState {
+    Modal modal;
+    Frame frame;
+    AxisValues position_offset;
+    std::array<bool, kAxisCount> limited;
+    std::array<Zone, 3> zones;
+    AxisValues tolerance;
+    bool turning;
+  };
+  void emit_reset(const ResetState& before);
 
   // Coordinates (machine_frame.cpp).
   double offset_value(int offset, int axis) const;  // machine units

@@ -184,7 +184,7 @@ class TextSink final : public BufferedSink {
           s += fmt::format(" {}{}", kAxisLetters[i], four_decimals(e.pos[i]));
           if (e.kind == EventKind::Limits) s += ".." + four_decimals(e.control[i]);
         }
-        return s;
+        return e.n ? s : s + " none";  // limits none: cancelled (RESET)
       }
       case EventKind::Zone: {
         std::string s = fmt::format("zone {} {}", e.rotation, e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
