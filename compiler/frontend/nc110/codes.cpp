@@ -363,7 +363,18 @@ void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
     block_.has_errors = true;
     return;
   }
+  code_operands(ctx, sig, code_range);
+  // A loop's begin or end stays when its operands are wrong (reported), so that the
+  // loops around it still pair up; the loop runs no time.
+  if (block_.has_errors && block_.stmts.empty() && (sig.action == Action::Repeat || sig.action == Action::EndRepeat)) {
+    ir::Stmt s(sig.action == Action::Repeat ? ir::StmtKind::RepeatBegin : ir::StmtKind::RepeatEnd, code_range);
+    if (sig.action == Action::Repeat) s.value = program_.number(0, code_range);
+    block_.stmts.push_back(s);
+  }
+}
 
+void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignature& sig, SourceRange code_range) {
+  const std::string& code = sig.code;
   // The operands' pieces.
   std::vector<std::vector<Piece>> operands;
   std::vector<SourceRange> commas;

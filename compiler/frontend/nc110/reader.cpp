@@ -112,6 +112,7 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
     }
     SourceRange range = r_.range(token, token);
     std::string text = r_.text(token, token);
+    if (r_.second_instruction(range.col - 1)) return;
     switch (token->getType()) {
       case Nc110Lexer::OPEN_STRING: r_.diags_.report(DiagId::StringUnterminated, range); return;
       case Nc110Lexer::CYRILLIC: r_.report_cyrillic(range, text); return;
@@ -133,7 +134,7 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
         }
         return;
       case Nc110Lexer::TRAILING:
-        r_.diags_.report(DiagId::OneInstruction, range, fmt::format("'{}' follows the three-letter code's ')'", text));
+        r_.diags_.report(DiagId::OneInstruction, range, fmt::format("words after a three-letter code, '{}'", text));
         return;
       case Nc110Lexer::EQUALS:
         r_.diags_.report(DiagId::OneInstruction, range, "a second '=' starts another assignment");
@@ -145,6 +146,34 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
  private:
   Reader& r_;
 };
+
+bool Reader::second_instruction(size_t at) {
+  // §2.5: a block holds one instruction. A syntax error where a second one starts
+  // says so: an assignment after other words or after an assignment, a code after
+  // words of an ISO block.
+  std::string_view rest = line_.substr(at);
+  size_t start = std::string_view::npos;
+  std::string what;
+  if (kind_ == Kind::Assign) {
+    size_t eq = line_.find('=', at);
+    if (eq == std::string_view::npos || !has_equals(line_.substr(0, eq + 1))) return false;
+    // The assignment's target: the word before its '='.
+    size_t end = eq;
+    while (end > at && blank(line_[end - 1])) --end;
+    start = end;
+    while (start > at && !blank(line_[start - 1])) --start;
+    what = has_equals(line_.substr(0, at)) ? "a second assignment" : "an assignment after other words";
+  } else if (kind_ == Kind::Iso && !rest.empty() && rest[0] == '(') {
+    start = at;
+    what = "a three-letter code after other words";
+  } else {
+    return false;
+  }
+  size_t end = line_.find_last_not_of(" \t\r") + 1;
+  diags_.report(DiagId::OneInstruction, {file_, line_no_, static_cast<uint32_t>(start + 1), line_no_, static_cast<uint32_t>(end + 1)},
+                fmt::format("{}, '{}'", what, line_.substr(start, end - start)));
+  return true;
+}
 
 void Reader::report_gtl(const SourceRange& range, std::string_view element) {
   diags_.report(DiagId::Unsupported, range, fmt::format("the GTL element {}", element), "GTL geometry (§2.11)");
@@ -247,9 +276,10 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
     return;
   }
   size_t body = skip_leading(line, first);
-  Kind kind = body < line.size() && line[body] == '(' ? Kind::Code
-              : has_equals(line.substr(body))          ? Kind::Assign
-                                                       : Kind::Iso;
+  const Kind kind = body < line.size() && line[body] == '(' ? Kind::Code
+                    : has_equals(line.substr(body))          ? Kind::Assign
+                                                             : Kind::Iso;
+  kind_ = kind;
 
   input_.load(decoded);
   lexer_.setInputStream(&input_);

@@ -44,6 +44,7 @@ class Reader {
 
  private:
   enum class Kind { Iso, Assign, Code };
+  Kind kind_ = Kind::Iso;  // of the block being read
 
   // Lines and tokens.
   void read_line(std::string_view line, uint32_t line_no);
@@ -99,11 +100,14 @@ class Reader {
 
   // codes.cpp: three-letter codes.
   void code_block(Nc110Parser::TlcBlockContext* ctx);
+  void code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignature& sig, SourceRange code_range);
   struct Piece;
   struct Operand;
   // GTL geometry (§2.11) is later work: an element (`c1`) or a definition (`c1=...`)
   // is reported as not supported.
   void report_gtl(const SourceRange& range, std::string_view element);
+  // Reports a second instruction starting at byte `at` of the line, if there is one.
+  bool second_instruction(size_t at);
   // A Cyrillic letter where a Latin one is read: NC1027 naming its Latin twin, if any.
   void report_cyrillic(const SourceRange& range, const std::string& letter);
   std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind, const std::string& code);
