@@ -477,7 +477,7 @@ void Machine::thread_variable(const AxisValues& t) {
     if (is_linear(i))
       length = std::max(length, std::fabs(t[i] - machine_[i]) / (config_.axes[static_cast<size_t>(i)].diameter ? 2 : 1));
   if (ok && length < kSamePoint) {
-    report(DiagId::ArcForm, 0, fmt::format("{} needs a move to cut the thread along", motion_name_));
+    report(DiagId::ThreadNoTravel, 0, motion_name_);
     ok = false;
   }
   if (ok && change < 0 && -change * length >= pitch * pitch) {

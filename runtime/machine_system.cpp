@@ -67,7 +67,8 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
       if (!flag()) return fail("it is 0 or 1");
       break;
     case SysVar::AxisDisplay:
-      if (value != 0 && value != 1 && value != 2) return fail("it is 0, 1 or 2");
+      // 3: the remaining path (§2.10.10, "after the command UCV=3").
+      if (value != 0 && value != 1 && value != 2 && value != 3) return fail("it is 0, 1, 2 or 3");
       break;
     case SysVar::TapReturn:
       if (!(value >= 0 && value <= 255) || value != std::trunc(value)) return fail("it is a whole percentage 0..255");

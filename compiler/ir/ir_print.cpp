@@ -127,6 +127,7 @@ std::string print(const Program& p, const SourceManager& sources) {
       out += fmt::format("  block @{}", range_text(b.range));
       if (b.number) out += fmt::format(" {}{}", b.main_block ? ":" : "N", *b.number);
       if (b.skippable) out += " skippable";
+      if (b.sync) out += fmt::format(" sync{}", b.sync);
       if (b.has_errors) out += " has_errors";
       if (!b.label.empty()) out += fmt::format(" label=\"{}\"", b.label);
       out += "\n";

@@ -150,11 +150,19 @@ std::optional<SysRef> Reader::system_ref(const std::string& name, std::optional<
     block_.has_errors = true;
     return std::nullopt;
   };
+  if (name == "e") return fail(DiagId::AddressUnknown, "lower-case 'e' (an E parameter is written with a capital E)");
   if (it == s_.system.end()) return fail(DiagId::SystemUnknown, shown);
   const SystemName& n = it->second;
-  if (!n.var) return fail(DiagId::SystemNotWritable, shown, "is set from the keyboard, not by a program");
-  if (n.numbered != number.has_value() || (number && (*number < n.first || *number > n.last)))
-    return fail(DiagId::ValueForm, name, n.numbered ? fmt::format("a number {} to {}", n.first, n.last) : "no number",
+  if (!n.var)
+    return fail(DiagId::SystemNotWritable, shown,
+                writing ? "is set from the keyboard, not by a program" : "is a keyboard command, not a value a program reads");
+  // RMNpq: process p, axis q 1..9 (§2.10.10).
+  const bool axis_digit = n.var != SysVar::RemainingPath || !number || *number % 10 != 0;
+  if (n.numbered != number.has_value() || (number && (*number < n.first || *number > n.last)) || !axis_digit)
+    return fail(DiagId::ValueForm, name,
+                n.var == SysVar::RemainingPath ? fmt::format("a number pq: process p 1 to {}, axis q 1 to 9", n.last / 10)
+                : n.numbered                   ? fmt::format("a number {} to {}", n.first, n.last)
+                                               : "no number",
                 shown);
   SysRef ref{*n.var, static_cast<uint8_t>(number.value_or(0))};
   if (writing && (n.value == "-" || !sys_writable(ref))) return fail(DiagId::SystemNotWritable, shown, "is read-only");

@@ -164,6 +164,15 @@ bool Reader::second_instruction(size_t at) {
     while (start > at && !blank(line_[start - 1])) --start;
     what = has_equals(line_.substr(0, at)) ? "a second assignment" : "an assignment after other words";
   } else if (kind_ == Kind::Iso && !rest.empty() && rest[0] == '(') {
+    // An address before the '(' takes an expression, which NC-110 words do not.
+    size_t before = line_.find_last_not_of(" \t", at == 0 ? 0 : at - 1);
+    if (at > 0 && before != std::string_view::npos && std::isalpha(static_cast<unsigned char>(line_[before]))) {
+      size_t close = line_.find(')', at);
+      size_t end = close == std::string_view::npos ? line_.size() : close + 1;
+      diags_.report(DiagId::ExpressionInWord, {file_, line_no_, static_cast<uint32_t>(before + 1), line_no_, static_cast<uint32_t>(end + 1)},
+                    std::string(1, line_[before]));
+      return true;
+    }
     start = at;
     what = "a three-letter code after other words";
   } else {
@@ -183,7 +192,10 @@ void Reader::report_gtl(const SourceRange& range, std::string_view element) {
 void Reader::report_cyrillic(const SourceRange& range, const std::string& letter) {
   size_t length = 0;
   uint32_t cp = decode_utf8(letter, 0, length);
-  if (char twin = latin_twin(cp)) diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", letter, cp), twin);
+  // A twin only where the Latin letter is one of Table 2.1 (no lower-case y).
+  char twin = latin_twin(cp);
+  if (twin >= 'a' && twin <= 'z' && kLowerCase.find(twin) == std::string_view::npos) twin = 0;
+  if (twin) diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", letter, cp), twin);
   else diags_.report(DiagId::CharInvalid, range, fmt::format("'{}' (U+{:04X})", letter, cp));
   block_.has_errors = true;
 }
@@ -460,7 +472,12 @@ std::optional<double> Reader::constant(char letter, std::string_view written, bo
   while (!fraction.empty() && fraction.back() == '0') fraction.remove_suffix(1);
   if (static_cast<int>(fraction.size()) > a.decimals) {
     if (a.decimals == 0) diags_.report(DiagId::WholeNumber, r, shown);
-    else diags_.report(DiagId::FractionDigits, r, shown, fraction.size(), fmt::format("{}.{}", letter, a.decimals), a.decimals);
+    else {
+      // The format as §1.2.6 writes it: X5.4 (the integer digits of the range's bound).
+      const auto whole = static_cast<long long>(std::max(std::fabs(a.min), std::fabs(a.max)));
+      diags_.report(DiagId::FractionDigits, r, shown, fraction.size(),
+                    fmt::format("{}{}.{}", letter, std::to_string(whole).size(), a.decimals), a.decimals);
+    }
     return std::nullopt;
   }
   if (v < a.min || v > a.max) {
@@ -504,7 +521,7 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
       return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "cutter radius compensation (§2.8.7, §2.9)");
   }
   if (letter == 'N') return fail(DiagId::LeadingFieldOrder, "the block number N comes first in the block, with its digits");
-  if (letter == 'E') return fail(DiagId::ValueMissing, "E (an E parameter needs its number)");
+  if (letter == 'E') return fail(DiagId::ParameterNumber, s_.e_count - 1);
   auto entry = s_.tables.addresses.find(letter);
   if (entry == s_.tables.addresses.end() || entry->second.word_class == stdlib::WordClass::Undefined)
     return fail(DiagId::AddressUnknown, fmt::format("'{}'", letter));
@@ -627,8 +644,7 @@ void Reader::check_iso_block() {
     if (w.address.size() == 1 && s_.conventions.axes.find(w.address[0]) != std::string::npos) ++axes;
     else if (w.address.size() == 1 && kAxisLetters.find(w.address[0]) != std::string_view::npos &&
              s_.conventions.axes.find(w.address[0]) == std::string::npos)
-      diags_.report(DiagId::AddressUnknown, w.range, fmt::format("axis {} (this machine's axes are {})", w.address,
-                                                                 s_.conventions.axes));
+      diags_.report(DiagId::AxisAbsent, w.range, w.address, s_.conventions.axes);
   }
   auto fail = [&](SourceRange r, const std::string& message) {
     diags_.report(DiagId::ResultWord, r, message);
