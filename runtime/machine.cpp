@@ -104,6 +104,9 @@ void Machine::path_event(int mode) {
 }
 
 void Machine::emit(Event e) {
+  // A block stops doing things at its first error: what it did before shows, the
+  // rest does not (the machine's state still follows it in a dry run).
+  if (block_.error) return;
   e.source = block_.request ? block_.request->source : 0;
   trace_.event(e);
 }
@@ -625,7 +628,9 @@ void Machine::finish() {
   flush_compensation();
   // A continuous profile runs until a G00 move, a G09 or G04 block or G29 (§2.8.5).
   if (block_.moved && (modal_.dynamics == 0 || modal_.dynamics == 1)) profile_running_ = true;
-  if (block_.rapid_moved || block_.decelerate || block_.dwell_end) profile_running_ = false;
+  // A G00 block ends it even where it does not move: the NC decelerates for it.
+  const bool rapid_block = modal_.motion == Fn::MotionRapid && has_axis_word();
+  if (block_.rapid_moved || rapid_block || block_.decelerate || block_.dwell_end) profile_running_ = false;
   if (block_.stop) {
     Event e{EventKind::Stop};
     e.n = block_.stop - 1;

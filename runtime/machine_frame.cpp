@@ -138,6 +138,12 @@ AxisValues Machine::target() {
     const AxisConfig& a = config_.axes[static_cast<size_t>(i)];
     if (!has(letter) || !a.endless || a.kind != AxisKind::Rotary) continue;
     double written = angle_degrees(word(letter));
+    if (std::fabs(written) >= 360) {  // 0..359.9999, its sign the way round
+      report(DiagId::ValueRange, letter, fmt::format("{}{}", letter, four_decimals(word(letter))),
+             "an endless rotary axis under G90", "-359.9999", "359.9999");
+      t[i] = from[i];
+      continue;
+    }
     double at = std::fmod(from[i] - off[i], 360.0);
     if (at < 0) at += 360;
     double to = std::fmod(std::fabs(written), 360.0);
@@ -273,8 +279,12 @@ bool Machine::frame_function(FnCall call) {
         report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "greater than 0");
         break;
       }
-      // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on all; (SCF): 1.
-      for (int i = 0; i < kAxisCount; ++i) frame_.scale[i] = factor && listed.empty() ? *factor : 1;
+      // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on every linear axis of
+      // the machine (an angle is not scaled); (SCF): 1.
+      frame_.scale.fill(1);
+      if (factor && listed.empty())
+        for (char c : conv_.axes)
+          if (is_linear(axis_index(c))) frame_.scale[axis_index(c)] = *factor;
       for (int a : listed) {
         word(kAxisLetters[a]);
         frame_.scale[a] = *factor;

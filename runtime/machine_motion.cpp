@@ -253,7 +253,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
       double off = std::fabs(candidate * std::fabs(per_radian) - std::fabs(dw));
       double slack = conv_.arc_tolerance + kSamePoint +
                      candidate * length_units(conv_.lead_resolution) / 2 / (per_revolution ? kTwoPi : 1);
-      if (per_radian == 0 && per_revolution) {
+      if (per_radian <= 0 && plane_words) {  // NC-110: a pitch; the travel's sign comes from the axis word
         report(DiagId::ArcForm, pw, fmt::format("the helix pitch {}{} must be greater than zero", pw, shortest(*lead)));
         move_to(t);
         return;
@@ -537,10 +537,18 @@ void Machine::spline_finish(const AxisValues& lead_out_end) {
   Eigen::Vector2d out(Eigen::Vector2d(lead_out_end[u], lead_out_end[v]) - points.back());
   SplineEnd start{spline_.ends == 1 || spline_.ends == 3, in};
   SplineEnd end{spline_.ends == 2 || spline_.ends == 3, out};
-  if ((start.clamped && in.norm() < kSamePoint) || (end.clamped && out.norm() < kSamePoint)) {
-    report(DiagId::SplineStructure, 0, "a tangent end needs a lead-in and a lead-out of some length");
-    start.clamped = start.clamped && in.norm() >= kSamePoint;
-    end.clamped = end.clamped && out.norm() >= kSamePoint;
+  if (start.clamped && in.norm() < kSamePoint) {
+    // At the lead-in's block, where the tangent should come from.
+    const BlockRequest* here = block_.request;
+    BlockRequest lead_in{nullptr, 0, here->words, spline_.sources[0]};
+    block_.request = &lead_in;
+    report(DiagId::SplineStructure, 0, "a tangent start needs a lead-in of some length: this block does not move");
+    block_.request = here;
+    start.clamped = false;
+  }
+  if (end.clamped && out.norm() < kSamePoint) {
+    report(DiagId::SplineStructure, 0, "a tangent end needs a lead-out of some length: this block does not move");
+    end.clamped = false;
   }
   const std::vector<BezierSpan> spans = cubic_spline(points, start, end);
   const AxisValues off = origins();

@@ -34,7 +34,7 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
   auto fail = [&](const std::string& why) {
     issues_.issue({DiagId::SystemValue, diag_message(DiagId::SystemValue, system_name(ref), shortest(value), why), source,
                    -1, -1});
-    return false;
+    return !stop_on_error_;  // a dry run goes on without the value
   };
   auto flag = [&] { return value == 0 || value == 1; };
   switch (ref.var) {

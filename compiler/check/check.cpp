@@ -282,9 +282,11 @@ void check_calls(const ir::Program& program, Diagnostics& diags) {
         if (s.kind != ir::StmtKind::Call) continue;
         auto it = units.find(s.label);
         if (it == units.end() || reported.count(&s)) continue;
-        if (std::find(path.begin(), path.end(), it->second) != path.end()) {
+        if (auto at = std::find(path.begin(), path.end(), it->second); at != path.end()) {
           reported.insert(&s);
-          diags.report(DiagId::CallRecursive, s.range, s.label, unit.name);
+          std::string through;  // the programs between: none when it calls itself directly
+          for (++at; at != path.end(); ++at) through += (through.empty() ? " through " : " -> ") + (*at)->name;
+          diags.report(DiagId::CallRecursive, s.range, s.label, through);
         } else if (limit && path.size() > limit) {
           reported.insert(&s);
           std::string chain;

@@ -29,7 +29,7 @@ std::string kind_name(OperandKind k) {
     case OperandKind::Seconds: return "a time 0..32 s";
     case OperandKind::Zone: return "a zone number 1..3";
     case OperandKind::Turning: return "the letter T";
-    case OperandKind::Condition: return "end conditions 0..3";
+    case OperandKind::Condition: return "an end condition 0..3";
   }
   return "?";
 }
