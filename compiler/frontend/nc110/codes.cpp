@@ -34,6 +34,27 @@ std::string kind_name(OperandKind k) {
   return "?";
 }
 
+// The numbers an operand takes and the E parameter class that may stand for it
+// (§2.13, Table 2.9).
+struct NumericOperand {
+  OperandKind kind;
+  double lo, hi;
+  bool whole;
+  const char* param_class;
+};
+constexpr NumericOperand kNumericOperands[] = {
+    {OperandKind::Origin, 0, 99, true, "IN"},       {OperandKind::Count, 0, 99, true, "BY"},
+    {OperandKind::Zone, 1, 3, true, "BY"},          {OperandKind::Condition, 0, 3, true, "BY"},
+    {OperandKind::Angle, -99999.9999, 99999.9999, false, "RE"},
+    {OperandKind::Factor, 0.0001, 99999.9999, false, "RE"},
+    {OperandKind::Seconds, 0, 32, false, "LR"}};
+
+const NumericOperand& numeric_operand(OperandKind kind) {
+  for (const NumericOperand& n : kNumericOperands)
+    if (n.kind == kind) return n;
+  return kNumericOperands[0];
+}
+
 bool is_letter(const std::string& s) { return s.size() == 1 && std::isalpha(static_cast<unsigned char>(s[0])); }
 
 }  // namespace
@@ -190,26 +211,16 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
 
   switch (kind) {
     case OperandKind::Origin:
-      if (!value(0, 99, true, {"IN"})) return std::nullopt;
-      break;
     case OperandKind::Count:
-      if (!value(0, 99, true, {"BY"})) return std::nullopt;
-      break;
     case OperandKind::Zone:
-      if (!value(1, 3, true, {"BY"})) return std::nullopt;
-      break;
     case OperandKind::Condition:
-      if (!value(0, 3, true, {"BY"})) return std::nullopt;
-      break;
     case OperandKind::Angle:
-      if (!value(-99999.9999, 99999.9999, false, {"RE"})) return std::nullopt;
-      break;
     case OperandKind::Factor:
-      if (!value(0.0001, 99999.9999, false, {"RE"})) return std::nullopt;
+    case OperandKind::Seconds: {
+      const NumericOperand& n = numeric_operand(kind);
+      if (!value(n.lo, n.hi, n.whole, {n.param_class})) return std::nullopt;
       break;
-    case OperandKind::Seconds:
-      if (!value(0, 32, false, {"LR"})) return std::nullopt;
-      break;
+    }
     case OperandKind::Axis:
     case OperandKind::Turning: {
       if (pieces.size() != 1 || !is_letter(pieces[0].text)) return fail("one letter");
@@ -243,7 +254,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         if ((c & 0xC0) != 0x80) ++count;
         valid = valid && !(c >= 'a' && c <= 'z');
       }
-      if (!valid || count > 6) return fail("a label is 1 to 6 capital letters and digits, unquoted, without blanks");
+      if (!ok) return fail("a label is written without blanks");
+      if (!valid || count > 6) return fail("a label is 1 to 6 capital letters and digits, unquoted");
       break;
     }
     case OperandKind::Program: {
@@ -254,7 +266,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         if (s.size() < lo || s.size() > hi || !(s[0] >= 'A' && s[0] <= 'Z')) return false;
         return std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
       };
-      if (!ok || !good(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits without blanks, a letter first");
+      if (!ok) return fail("a program name is written without blanks");
+      if (!good(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits, a letter first");
       if (type(at) == Nc110Lexer::SLASH) {
         ++at;
         op.device = letters_and_digits(ok);

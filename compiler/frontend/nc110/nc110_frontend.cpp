@@ -68,9 +68,10 @@ class Nc110Frontend final : public Frontend {
       CallSite call = pending.front();
       pending.pop_front();
       if (!done.insert(call.entry).second) continue;
-      fs::path root = !options.library.empty() ? fs::path(options.library)
-                      : !s_.library.empty()     ? fs::path(s_.library)
-                                                : main_path.parent_path();
+      // Lexically normal, so that messages and the trace name each file one way.
+      fs::path root = (!options.library.empty() ? fs::path(options.library)
+                       : !s_.library.empty()    ? fs::path(s_.library)
+                                                : main_path.parent_path()).lexically_normal();
       // <library>/<device>/<name>, with or without .nc (decision 8).
       std::vector<fs::path> candidates = {root / call.device / call.name, root / call.device / (call.name + ".nc")};
       std::optional<std::string> text;

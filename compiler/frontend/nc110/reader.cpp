@@ -112,11 +112,11 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
     }
     SourceRange range = r_.range(token, token);
     std::string text = r_.text(token, token);
-    if (r_.second_instruction(range.col - 1)) return;
     switch (token->getType()) {
       case Nc110Lexer::OPEN_STRING: r_.diags_.report(DiagId::StringUnterminated, range); return;
       case Nc110Lexer::CYRILLIC: r_.report_cyrillic(range, text); return;
       case Nc110Lexer::INVALID:
+        if (text == "(" && r_.second_instruction(range.col - 1)) return;
         if (text == ";") {
           r_.diags_.report(DiagId::CommentInline, range);
         } else {
@@ -134,12 +134,11 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
         }
         return;
       case Nc110Lexer::TRAILING:
-        r_.diags_.report(DiagId::OneInstruction, range, fmt::format("words after a three-letter code, '{}'", text));
+        if (text[0] == ';') r_.diags_.report(DiagId::CommentInline, {range.file, range.line, range.col, range.line, range.col + 1});
+        else r_.diags_.report(DiagId::OneInstruction, range, fmt::format("words after a three-letter code, '{}'", text));
         return;
-      case Nc110Lexer::EQUALS:
-        r_.diags_.report(DiagId::OneInstruction, range, "a second '=' starts another assignment");
-        return;
-      default: r_.diags_.report(DiagId::SyntaxError, range, fmt::format("'{}'", text));
+      default:
+        if (!r_.second_instruction(range.col - 1)) r_.diags_.report(DiagId::SyntaxError, range, fmt::format("'{}'", text));
     }
   }
 
@@ -157,11 +156,15 @@ bool Reader::second_instruction(size_t at) {
   if (kind_ == Kind::Assign) {
     size_t eq = line_.find('=', at);
     if (eq == std::string_view::npos || !has_equals(line_.substr(0, eq + 1))) return false;
-    // The assignment's target: the word before its '='.
+    // The assignment's target: the word before its '=' (the first assignment's
+    // expression may have taken it: `E51 = 5/E35 = FEL(37,1)`).
+    const size_t floor = line_.find('=') < eq ? line_.find('=') + 1 : at;
     size_t end = eq;
-    while (end > at && blank(line_[end - 1])) --end;
+    while (end > floor && blank(line_[end - 1])) --end;
     start = end;
-    while (start > at && !blank(line_[start - 1])) --start;
+    while (start > floor && !blank(line_[start - 1]) && line_[start - 1] != '/' && line_[start - 1] != '+' &&
+           line_[start - 1] != '-' && line_[start - 1] != '*')
+      --start;
     what = has_equals(line_.substr(0, at)) ? "a second assignment" : "an assignment after other words";
   } else if (kind_ == Kind::Iso && !rest.empty() && rest[0] == '(') {
     // An address before the '(' takes an expression, which NC-110 words do not.
@@ -179,13 +182,14 @@ bool Reader::second_instruction(size_t at) {
     return false;
   }
   size_t end = line_.find_last_not_of(" \t\r") + 1;
+  if (kind_ == Kind::Iso && line_.find(')', start) != std::string_view::npos) end = line_.find(')', start) + 1;
   diags_.report(DiagId::OneInstruction, {file_, line_no_, static_cast<uint32_t>(start + 1), line_no_, static_cast<uint32_t>(end + 1)},
                 fmt::format("{}, '{}'", what, line_.substr(start, end - start)));
   return true;
 }
 
-void Reader::report_gtl(const SourceRange& range, std::string_view element) {
-  diags_.report(DiagId::Unsupported, range, fmt::format("the GTL element {}", element), "GTL geometry (§2.11)");
+void Reader::report_gtl(const SourceRange& range, std::string_view text, std::string_view what) {
+  diags_.report(DiagId::Unsupported, range, fmt::format("the GTL {} {}", what, text), "GTL geometry (§2.11)");
   block_.has_errors = true;
 }
 
@@ -516,7 +520,7 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
     if (kLowerCase.find(letter) == std::string_view::npos)
       return fail(DiagId::AddressUnknown, fmt::format("lower-case '{}'", letter));
     if (kGtlLetters.find(letter) != std::string_view::npos)
-      return report_gtl(r, shown);
+      return report_gtl(r, shown, "word");
     if (kCompensationLetters.find(letter) != std::string_view::npos)
       return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "cutter radius compensation (§2.8.7, §2.9)");
   }

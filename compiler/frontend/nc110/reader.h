@@ -105,7 +105,7 @@ class Reader {
   struct Operand;
   // GTL geometry (§2.11) is later work: an element (`c1`) or a definition (`c1=...`)
   // is reported as not supported.
-  void report_gtl(const SourceRange& range, std::string_view element);
+  void report_gtl(const SourceRange& range, std::string_view text, std::string_view what = "element");
   // Reports a second instruction starting at byte `at` of the line, if there is one.
   bool second_instruction(size_t at);
   // A Cyrillic letter where a Latin one is read: NC1027 naming its Latin twin, if any.
