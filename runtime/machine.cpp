@@ -449,7 +449,7 @@ void Machine::check_profile_rules() {
   if (!profile_running_ || (modal_.dynamics != 0 && modal_.dynamics != 1)) return;
   if (modal_.motion == Fn::MotionRapid && has_axis_word()) return;  // a G00 move ends the profile
   const BlockRequest& r = *block_.request;
-  std::string words;
+  std::vector<std::string> words;
   for (size_t i = 0; i < r.code_count; ++i) {
     const CodeDesc& code = sem_.codes[r.codes[i]];
     // M codes; a program stop or end ends the profile too.
@@ -457,14 +457,14 @@ void Machine::check_profile_rules() {
       return c.fn == Fn::ProgramStop || c.fn == Fn::ProgramOptionalStop || c.fn == Fn::ProgramEnd ||
              c.fn == Fn::ProgramEndInformation;
     });
-    if (code.timing != Timing::None && !stops) words += code.name + " ";
+    if (code.timing != Timing::None && !stops) words.push_back(code.name);
   }
   for (char letter : {'S', 'T'})
-    if (has(letter)) words += std::string(1, letter) + " ";
-  if (!words.empty()) {
-    words.pop_back();
-    report(DiagId::ProfileRunning, 0, words, modal_.dynamics == 0 ? "G27" : "G28");
-  }
+    if (has(letter)) words.push_back(fmt::format("{}{}", letter, shortest(block_.request->words->value[letter_slot(letter)])));
+  if (words.empty()) return;
+  std::string list = words[0];  // "M13", "M13 and S1200", "M03, S600 and T1"
+  for (size_t i = 1; i < words.size(); ++i) list += (i + 1 == words.size() ? " and " : ", ") + words[i];
+  report(DiagId::ProfileRunning, 0, list, modal_.dynamics == 0 ? "G27" : "G28");
 }
 
 BlockResult Machine::execute(const BlockRequest& request) {
@@ -511,8 +511,11 @@ void Machine::check_dynamic_codes() {
       for (const CodePair& p : sem_.incompatible) {
         if (p.a != r.codes[i] || p.b != r.codes[j]) continue;
         // At the later word: a code chosen at run time by its slot, else by its code.
+        // A code chosen at run time is found among the words of its slot by its place.
+        int nth = 0;
+        for (size_t k = 0; k < j; ++k) nth += dynamic(k) && slot_of(r.codes[k]) == slot_of(r.codes[j]);
         RuntimeIssue issue{p.function.empty() ? DiagId::CodesIncompatible : DiagId::MCodeConflict, "", r.source,
-                           dynamic(j) ? slot_of(r.codes[j]) : -1, dynamic(j) ? -1 : r.codes[j]};
+                           dynamic(j) ? slot_of(r.codes[j]) : -1, dynamic(j) ? -1 : r.codes[j], dynamic(j) ? nth : 0};
         issue.message = p.function.empty()
                             ? diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name)
                             : diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name, p.function);

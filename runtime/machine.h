@@ -53,6 +53,7 @@ struct RuntimeIssue {
   uint32_t source = 0;
   int slot = -1;
   int code = -1;  // or the G/M code (ProgramSemantics::codes index) it concerns
+  int nth = 0;    // of the block's words of `slot`, the one meant (GE2 GE3: 1 is GE3)
 };
 
 class RuntimeIssues {

@@ -275,8 +275,8 @@ bool Machine::frame_function(FnCall call) {
       break;
     case Fn::Scale: {
       auto factor = operand(0);
-      if (factor && !(*factor > 0)) {
-        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "greater than 0");
+      if (factor && !(*factor >= 0.0001 && *factor <= 99999.9999)) {  // as a constant (Table 2.9)
+        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "from 0.0001 to 99999.9999");
         break;
       }
       // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on every linear axis of

@@ -264,7 +264,9 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
           return per_revolution ? fmt::format("{} turns", four_decimals(radians / kTwoPi))
                                 : fmt::format("{} rad", four_decimals(radians));
         };
-        report(DiagId::HelixLead, pw, four_decimals(*lead), four_decimals(to_program(dw)),
+        report(DiagId::HelixLead, pw,
+               plane_words ? fmt::format("helix pitch {}{}", pw, four_decimals(*lead)) : "helix lead " + four_decimals(*lead),
+               four_decimals(to_program(dw)),
                per_radian == 0 ? std::string("infinitely many rad") : angle(std::fabs(dw / per_radian)), angle(sweep));
         move_to(t);
         return;

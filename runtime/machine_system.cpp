@@ -36,24 +36,17 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
                    -1, -1});
     return !stop_on_error_;  // a dry run goes on without the value
   };
-  auto flag = [&] { return value == 0 || value == 1; };
+  if (auto why = sys_value_error(ref, value)) return fail(std::string(*why));
   switch (ref.var) {
-    case SysVar::RemainingPath: return fail("it is read-only");
     case SysVar::Timer:
-      if (ref.index == 0) return fail("it is the clock, read-only");
-      value = static_cast<float>(value);
-      break;
-    case SysVar::TotalTime: value = static_cast<float>(value); break;
+    case SysVar::TotalTime: value = static_cast<float>(value); break;  // RE
     case SysVar::BlockEnable:
-      if (!flag()) return fail("it is 0 or 1");
       block_skip_ = value == 0;
       return true;
     case SysVar::OptionalStop:
-      if (!flag()) return fail("it is 0 or 1");
       optional_stop_ = value == 1;
       return true;
     case SysVar::FeedOverride: {
-      if (!flag()) return fail("it is 0 or 1");
       modal_.override_enabled = value == 1;
       Event e{EventKind::Override};
       e.n = modal_.override_enabled;
@@ -61,25 +54,6 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
       trace_.event(e);
       return true;
     }
-    case SysVar::RapidRun:
-    case SysVar::AxesDisconnected:
-    case SysVar::PositionErrors:
-      if (!flag()) return fail("it is 0 or 1");
-      break;
-    case SysVar::AxisDisplay:
-      // 3: the remaining path (§2.10.10, "after the command UCV=3").
-      if (value != 0 && value != 1 && value != 2 && value != 3) return fail("it is 0, 1, 2 or 3");
-      break;
-    case SysVar::TapReturn:
-      if (!(value >= 0 && value <= 255) || value != std::trunc(value)) return fail("it is a whole percentage 0..255");
-      break;
-    case SysVar::CornerDeviation:
-      if (!(value >= 0 && value <= 2)) return fail("it lies between 0 and 2");
-      break;
-    case SysVar::DwellTime:
-    case SysVar::FormTolerance:
-      if (!(value >= 0)) return fail("it must not be negative");
-      break;
     default: break;
   }
   system_[ref.packed()] = value;

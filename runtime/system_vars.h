@@ -30,4 +30,8 @@ struct SysRef {
 // Whether a program may write it (the clock TIM0 and the remaining paths it may not).
 bool sys_writable(SysRef ref);
 
+// Why `value` cannot be stored in `ref` ("it is 0 or 1"), or nothing: the rule of
+// each variable (NC-110 §2.10), for the run and for constants the compiler sees.
+std::optional<std::string_view> sys_value_error(SysRef ref, double value);
+
 }  // namespace ncc

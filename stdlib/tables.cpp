@@ -274,6 +274,12 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
   }
 }
 
+void add_class_pairs(DialectTables& t) {
+  for (const auto& [a, ea] : t.g_codes)
+    for (const auto& [b, eb] : t.g_codes)
+      if (ea.group != "-" && ea.group == eb.group) t.incompatible.insert({a, b});
+}
+
 DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) {
   DialectTables t;
   if (auto table = load_table(dialect, "addresses.tsv", 5, diags, 7)) read_addresses(*table, t.addresses, diags);
@@ -324,9 +330,7 @@ DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) 
           }
         }
       }
-      for (const auto& [a, ea] : t.g_codes)
-        for (const auto& [b, eb] : t.g_codes)
-          if (ea.group != "-" && ea.group == eb.group) t.incompatible.insert({a, b});
+      add_class_pairs(t);
     }
   }
   if (auto table = load_table(dialect, "citations.tsv", 2, diags)) {

@@ -86,4 +86,8 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
 
 DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags);
 
+// With a compatibility matrix: two G codes of one class never share a block (NC-110
+// Table 2.5); again after a machine adds codes.
+void add_class_pairs(DialectTables& t);
+
 }  // namespace ncc::stdlib

@@ -215,7 +215,7 @@ void check_structure(ir::Unit& unit, const CheckRules& rules, Diagnostics& diags
           diags.report(DiagId::RepeatDepth, s.range, open.size(), rules.max_repeat_depth);
       } else if (end) {
         if (open.empty()) {
-          diags.report(DiagId::RepeatUnbalanced, s.range, "the end of a repeat loop that did not begin");
+          diags.report(DiagId::RepeatUnbalanced, s.range, "this end of a repeat loop has no beginning before it");
         } else {
           open.pop_back();
           open_stmt.pop_back();
@@ -224,7 +224,7 @@ void check_structure(ir::Unit& unit, const CheckRules& rules, Diagnostics& diags
     }
     after[i] = open;
   }
-  for (const ir::Stmt* s : open_stmt) diags.report(DiagId::RepeatUnbalanced, s->range, "a repeat loop that does not end");
+  for (const ir::Stmt* s : open_stmt) diags.report(DiagId::RepeatUnbalanced, s->range, "this repeat loop has no end in its program unit");
 
   std::map<std::string, size_t> at;
   for (size_t i = 0; i < n; ++i)

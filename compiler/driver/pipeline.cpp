@@ -33,9 +33,10 @@ class IssueReporter final : public RuntimeIssues {
       uint32_t file = b.file < file_ids_.size() ? file_ids_[b.file] : 0;
       range = {file, b.line, b.col, b.end_line, b.end_col};
       if (i.slot >= 0 || i.code >= 0) {
+        int skip = i.nth;
         for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
           const WordPosition& p = m_.source_map.words[w];
-          if (i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.slot)) {
+          if ((i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.slot)) && skip-- == 0) {
             range = {file, p.line, p.col, p.line, p.end_col};
             break;
           }

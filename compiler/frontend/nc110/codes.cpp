@@ -407,7 +407,13 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
   size_t next = 0;
   bool group_decided = false, group_present = false;
   size_t axis_operands = 0;
-  auto describe_missing = [&](const OperandItem& item) { return kind_name(item.kind); };
+  // "an axis and two values", or "another ..." where one of its kind came before.
+  auto describe_missing = [&](const OperandItem& item) {
+    std::string what = kind_name(item.kind);
+    bool again = std::any_of(matched.begin(), matched.end(), [&](const Operand& o) { return o.kind == item.kind; });
+    if (!again) return what;
+    return "another " + what.substr(what.find(' ') + 1);
+  };
   for (const OperandItem& item : sig.operands) {
     if (item.in_group && !group_decided) {
       group_decided = true;
@@ -426,8 +432,15 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
       ++next;
       ++taken;
       if (!op) return;
+      // At most six axes (§2.13.1: "up to 6 axes").
+      if ((item.repeat == '*' || item.repeat == '+') && ++axis_operands > kMaxAxisOperands && sig.action == Action::Function &&
+          op->axis) {
+        diags_.report(DiagId::OperandKind, op->range, op->text, kind_name(item.kind), code,
+                      fmt::format("a code takes at most {} axes", kMaxAxisOperands));
+        block_.has_errors = true;
+        return;
+      }
       matched.push_back(std::move(*op));
-      if (item.repeat == '*' || item.repeat == '+') ++axis_operands;
     }
     if (taken == 0 && (item.repeat == '1' || item.repeat == '+')) {
       diags_.report(DiagId::OperandMissing, range(ctx->RPAREN()), code, describe_missing(item));
@@ -453,11 +466,6 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
       block_.has_errors = true;
       return;
     }
-  }
-  if (axis_operands > kMaxAxisOperands && sig.action == Action::Function && !matched.empty() && matched.back().axis) {
-    diags_.report(DiagId::TooManyWords, code_range, axis_operands, "axis", kMaxAxisOperands);
-    block_.has_errors = true;
-    return;
   }
   code_action(sig, matched, code_range);
 }
@@ -538,7 +546,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         const Operand& memory = program_.exprs[a.value].op == ir::ExprOp::Text ? a : b;
         const Operand& other = &memory == &a ? b : a;
         if (program_.exprs[memory.value].op != ir::ExprOp::Text)
-          return fail(DiagId::TextMismatch, code_range, "two texts in quotes are always the same or always not");
+          return fail(DiagId::TextMismatch, code_range, "two quoted texts compare the same way every time: compare a text memory with a text");
         ir::ExprId right = other.value;
         if (program_.exprs[other.value].op == ir::ExprOp::String) {
           std::string t = program_.texts[program_.exprs[other.value].text];

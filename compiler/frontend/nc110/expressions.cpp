@@ -370,17 +370,17 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
     std::string cls = entry->value == "flag" ? "BY" : entry->value;
     if (!number_value && !parameter_value)
       return fail(DiagId::ValueForm, value_range, name,
-                  fmt::format("a constant or an E parameter of class {}", cls), "an expression");
+                  fmt::format("a constant or an E parameter of class {}", cls), "an expression is not allowed here");
     if (parameter_value) {
       auto index = parameter(parameter_value->EREF()->getText(), value_range);
       if (!index || !check_class(*index, {cls}, value_range, name)) return;
     }
   }
   s.value = expr(e);
-  if (entry->value == "flag" && program_.is_constant(s.value) && program_.exprs[s.value].number != 0 &&
-      program_.exprs[s.value].number != 1)
-    return fail(DiagId::ValueRange, value_range, fmt::format("{}={}", name, shortest(program_.exprs[s.value].number)),
-                name, 0, 1);
+  // A constant the variable cannot hold is found now, by the run's own rule.
+  if (program_.is_constant(s.value))
+    if (auto why = sys_value_error(*ref, program_.exprs[s.value].number))
+      return fail(DiagId::SystemValue, value_range, target_text, shortest(program_.exprs[s.value].number), *why);
   block_.stmts.push_back(s);
 }
 

@@ -696,8 +696,12 @@ void Reader::check_iso_block() {
       for (ir::Word& d : destinations) block_.words.push_back(std::move(d));
     }
   }
-  if (axes > 8) {
-    diags_.report(DiagId::TooManyWords, block_.range, axes, "axis", 8);
+  if (axes > 8) {  // §2.8.1.1: at most 8 axes; reported at the ninth
+    int seen = 0;
+    for (const ir::Word& w : block_.words)
+      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && s_.conventions.axes.find(w.address[0]) != std::string::npos &&
+          ++seen == 9)
+        diags_.report(DiagId::TooManyWords, w.range, axes, "axis", 8);
     block_.has_errors = true;
   }
 }

@@ -189,8 +189,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   read_classes(s, diags);
   read_memories(s, diags);
   if (s.classes.empty() || diags.error_count() != errors) return std::nullopt;
-  // Table 2.3 is "purely indicative": the machine logic adds or changes M codes.
-  bool ok = read_machine_codes(p, "nc110", "M", s.tables, diags);
+  // Table 2.3 is "purely indicative": the machine logic adds or changes M codes (and
+  // the NC-2xx/3xx add G codes of their own).
+  bool ok = read_machine_codes(p, "nc110", "GM", s.tables, diags);
+  stdlib::add_class_pairs(s.tables);
 
   if (auto v = p.number("nc110.e_count", diags)) {
     if (*v >= 1 && *v <= 65536 && *v == static_cast<uint32_t>(*v)) s.e_count = static_cast<uint32_t>(*v);
