@@ -1,0 +1,108 @@
+; Operands of the codes DPI DTL DLO CTL DSA ASC DSC (§2.13.5, seed lines 9355-9572), DIS DLY
+; (§2.13.6, lines 9573-9640) and BSP ESP (§2.8.1.3, lines 2140-2147), as
+; stdlib/dialects/nc110/three_letter_codes.tsv gives them: for each code a correct block (no error),
+; a missing operand (NC3016 at the closing parenthesis), an extra operand (NC3017; DTL and DLO take
+; at most six axes: a seventh is NC3018 at it), operands of the wrong kind (NC3018: a label where a number
+; is needed, an expression, the letter O for 0, a number out of range, a non-axis, a pair of two
+; axes), an E parameter of the wrong class (NC2016; Table 2.9, lines 7761-7827: zones and spline end
+; conditions BY, DLY LR, axis values RE or LR (decision 14)) and an axis twice (NC3019).
+; The first block ends the run (M30): the dry run executes none of the blocks below, so the report
+; holds only the static checks (blocks after M30 are still read and checked, decision 25, §2.15).
+M30
+; DPI (§2.13.5.1): two axis letters.
+(DPI,Z,U)
+(DPI,X,A)
+(DPI)
+(DPI,X)
+(DPI,X,Y,Z)
+(DPI,X,5)
+(DPI,X,Y10)
+(DPI,X,Q)
+(DPI,X,X)
+; DTL (§2.13.5.2): axes with values.
+(DTL,Z.1,X.05)
+(DTL,XE30)
+(DTL)
+(DTL,Z.1,X.05,Y1,A1,B1,C1,U1)
+(DTL,Z.1,5)
+(DTL,Z.1+1)
+(DTL,ZE20)
+(DTL,X1,X2)
+; DLO (§2.13.5.3): pairs of values of one axis.
+(DLO,X-300 X300)
+(DLO,Y-200Y200,XE30 XE31)
+(DLO)
+(DLO,X-1 X1,Y-1 Y1,Z-1 Z1,A-1 A1,B-1 B1,C-1 C1,U-1 U1)
+(DLO,X-300 Y300)
+(DLO,5)
+(DLO,X-300 X300 X5)
+(DLO,XE1 X3)
+(DLO,X1 X2,X3 X4)
+; CTL (§2.13.5.4): the letter T or nothing.
+(CTL,T)
+(CTL)
+(CTL,T,X)
+(CTL,X)
+(CTL,TT)
+; DSA (§2.13.5.5): a zone 1..3 and two pairs.
+(DSA, 1,X-300 X-100, Y-100Y100)
+(DSA,E0,X1 X2,Y1 Y2)
+(DSA)
+(DSA,1)
+(DSA,1,X-300 X-100)
+(DSA,1,X-300 X-100,Y-100 Y100,Z1 Z2)
+(DSA,4,X-300 X-100,Y-100 Y100)
+(DSA,LAB,X-300 X-100,Y-100 Y100)
+(DSA,O,X-300 X-100,Y-100 Y100)
+(DSA,E10,X-300 X-100,Y-100 Y100)
+(DSA,1,X-300 X-100,YE20 Y100)
+(DSA,1,X1 X2,X3 X4)
+; ASC, DSC (§2.13.5.5): a zone 1..3.
+(ASC,1)
+(ASC,E0)
+(DSC,3)
+(DSC,E9)
+(ASC)
+(ASC,1,2)
+(ASC,LAB)
+(ASC,0)
+(ASC,E10)
+(DSC)
+(DSC,1,2)
+(DSC,LAB)
+(DSC,4)
+(DSC,E25)
+; DIS (§2.13.6.1): one or more texts and values.
+(DIS,"RTA=",E40,"RTO=",E41)
+(DIS,100)
+(DIS,UOV,SYVAR1.2CH,TIM1,E10)
+(DIS)
+(DIS,E1+1)
+(DIS,"A=",E30-E31)
+; DLY (§2.13.6.2): seconds 0..32.
+(DLY,10)
+(DLY,E48)
+(DLY,0.5)
+(DLY)
+(DLY,2,3)
+(DLY,LAB)
+(DLY,O)
+(DLY,33)
+(DLY,-1)
+(DLY,E25)
+; BSP (§2.8.1.3): two axis letters and end conditions 0..3; ESP: no operand.
+(BSP,X,Y,3)
+(ESP)
+(BSP,X,Y,E1)
+(ESP)
+(BSP)
+(BSP,X)
+(BSP,X,Y)
+(BSP,X,Y,1,2)
+(BSP,5,Y,1)
+(BSP,X,Y,4)
+(BSP,X,Y,LAB)
+(BSP,X,Y,O)
+(BSP,X,Y,E10)
+(BSP,X,X,1)
+(ESP,1)

@@ -1,0 +1,58 @@
+; Table 2.4 (G congruence in one block), row G33: `ncc check` pairs G33 with every decoded G code.
+; Rule: NC-110 §2.8 (seed lines 1894-1904), Table 2.4 (lines 1917-1986, "1" = incompatible),
+; Table 2.5 classes (lines 1988-2009), docs/dialects/nc110.md decision 1: two codes are incompatible
+; if EITHER printed cell says 1, or they are of one class of Table 2.5; G95/G96 take the rows of
+; G93/G94/G97. The error NC3013 stands at the second code (column 5), its note at the first.
+; Printed row (seed line 1961): G33 1 1 1 1 1 1 1 1 1 1 1 0 0 0 0 0 0 0 1
+; Columns: 00|01|02 03|33|81-86 89|80|72 73 74|21|20|41 42|40|27 28|29|04|09|90 91|79|70 71|17 18 19
+; Class of G33: a. Measuring codes carry X10 E40 (G72, G74) or r5 E40 (G73), as the
+; block's last measuring code needs (NC3033); they change nothing in the G check.
+; The first block ends the run (M30), so the dry run of `ncc check` executes none of the
+; blocks below and the report holds only the static checks; blocks after M30 are still read
+; and checked (decision 25; the manual puts error handlers after M30, §2.15).
+M30
+; Incompatible by the 1s of row G33 itself (24):
+G33 G00
+G33 G01
+G33 G02
+G33 G03
+G33 G33
+G33 G17
+G33 G18
+G33 G19
+G33 G21
+G33 G20
+G33 G40
+G33 G41
+G33 G42
+G33 G80
+G33 G81
+G33 G82
+G33 G83
+G33 G84
+G33 G85
+G33 G86
+G33 G89
+G33 G72 X10 E40
+G33 G73 r5 E40
+G33 G74 X10 E40
+; Incompatible only by the partner's own row (the table is asymmetric here; "either cell") (6):
+G33 G06
+G33 G34
+G33 G28
+G33 G04
+G33 G09
+G33 G35
+; Compatible: no cell says 1 and not one class, no error (12):
+G33 G27
+G33 G29
+G33 G70
+G33 G71
+G33 G90
+G33 G91
+G33 G79
+G33 G93
+G33 G94
+G33 G95
+G33 G96
+G33 G97

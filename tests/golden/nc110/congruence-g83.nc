@@ -1,0 +1,58 @@
+; Table 2.4 (G congruence in one block), row G83: `ncc check` pairs G83 with every decoded G code.
+; Rule: NC-110 §2.8 (seed lines 1894-1904), Table 2.4 (lines 1917-1986, "1" = incompatible),
+; Table 2.5 classes (lines 1988-2009), docs/dialects/nc110.md decision 1: two codes are incompatible
+; if EITHER printed cell says 1, or they are of one class of Table 2.5; G95/G96 take the rows of
+; G93/G94/G97. The error NC3013 stands at the second code (column 5), its note at the first.
+; Printed row (seed line 1976): G83 0 0 1 1 1 1 1 1 1 1 1 1 1 0 0 0 1 0 1
+; Columns: 00|01|02 03|33|81-86 89|80|72 73 74|21|20|41 42|40|27 28|29|04|09|90 91|79|70 71|17 18 19
+; Class of G83: g. Measuring codes carry X10 E40 (G72, G74) or r5 E40 (G73), as the
+; block's last measuring code needs (NC3033); they change nothing in the G check.
+; The first block ends the run (M30), so the dry run of `ncc check` executes none of the
+; blocks below and the report holds only the static checks; blocks after M30 are still read
+; and checked (decision 25; the manual puts error handlers after M30, §2.15).
+M30
+; Incompatible by the 1s of row G83 itself (26):
+G83 G02
+G83 G03
+G83 G33
+G83 G17
+G83 G18
+G83 G19
+G83 G27
+G83 G28
+G83 G29
+G83 G21
+G83 G20
+G83 G40
+G83 G41
+G83 G42
+G83 G80
+G83 G81
+G83 G82
+G83 G83
+G83 G84
+G83 G85
+G83 G86
+G83 G89
+G83 G79
+G83 G72 X10 E40
+G83 G73 r5 E40
+G83 G74 X10 E40
+; Incompatible only by the partner's own row (the table is asymmetric here; "either cell") (5):
+G83 G06
+G83 G34
+G83 G04
+G83 G09
+G83 G35
+; Compatible: no cell says 1 and not one class, no error (11):
+G83 G00
+G83 G01
+G83 G70
+G83 G71
+G83 G90
+G83 G91
+G83 G93
+G83 G94
+G83 G95
+G83 G96
+G83 G97

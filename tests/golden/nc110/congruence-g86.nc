@@ -1,0 +1,58 @@
+; Table 2.4 (G congruence in one block), row G86: `ncc check` pairs G86 with every decoded G code.
+; Rule: NC-110 §2.8 (seed lines 1894-1904), Table 2.4 (lines 1917-1986, "1" = incompatible),
+; Table 2.5 classes (lines 1988-2009), docs/dialects/nc110.md decision 1: two codes are incompatible
+; if EITHER printed cell says 1, or they are of one class of Table 2.5; G95/G96 take the rows of
+; G93/G94/G97. The error NC3013 stands at the second code (column 5), its note at the first.
+; Printed row (seed line 1979): G86 0 0 1 1 1 1 1 1 1 1 1 1 1 0 0 0 1 0 1
+; Columns: 00|01|02 03|33|81-86 89|80|72 73 74|21|20|41 42|40|27 28|29|04|09|90 91|79|70 71|17 18 19
+; Class of G86: g. Measuring codes carry X10 E40 (G72, G74) or r5 E40 (G73), as the
+; block's last measuring code needs (NC3033); they change nothing in the G check.
+; The first block ends the run (M30), so the dry run of `ncc check` executes none of the
+; blocks below and the report holds only the static checks; blocks after M30 are still read
+; and checked (decision 25; the manual puts error handlers after M30, §2.15).
+M30
+; Incompatible by the 1s of row G86 itself (26):
+G86 G02
+G86 G03
+G86 G33
+G86 G17
+G86 G18
+G86 G19
+G86 G27
+G86 G28
+G86 G29
+G86 G21
+G86 G20
+G86 G40
+G86 G41
+G86 G42
+G86 G80
+G86 G81
+G86 G82
+G86 G83
+G86 G84
+G86 G85
+G86 G86
+G86 G89
+G86 G79
+G86 G72 X10 E40
+G86 G73 r5 E40
+G86 G74 X10 E40
+; Incompatible only by the partner's own row (the table is asymmetric here; "either cell") (5):
+G86 G06
+G86 G34
+G86 G04
+G86 G09
+G86 G35
+; Compatible: no cell says 1 and not one class, no error (11):
+G86 G00
+G86 G01
+G86 G70
+G86 G71
+G86 G90
+G86 G91
+G86 G93
+G86 G94
+G86 G95
+G86 G96
+G86 G97

@@ -1,0 +1,58 @@
+; Table 2.4 (G congruence in one block), row G89: `ncc check` pairs G89 with every decoded G code.
+; Rule: NC-110 §2.8 (seed lines 1894-1904), Table 2.4 (lines 1917-1986, "1" = incompatible),
+; Table 2.5 classes (lines 1988-2009), docs/dialects/nc110.md decision 1: two codes are incompatible
+; if EITHER printed cell says 1, or they are of one class of Table 2.5; G95/G96 take the rows of
+; G93/G94/G97. The error NC3013 stands at the second code (column 5), its note at the first.
+; Printed row (seed line 1980): G89 0 0 1 1 1 1 1 1 1 1 1 1 1 0 0 0 1 0 1
+; Columns: 00|01|02 03|33|81-86 89|80|72 73 74|21|20|41 42|40|27 28|29|04|09|90 91|79|70 71|17 18 19
+; Class of G89: g. Measuring codes carry X10 E40 (G72, G74) or r5 E40 (G73), as the
+; block's last measuring code needs (NC3033); they change nothing in the G check.
+; The first block ends the run (M30), so the dry run of `ncc check` executes none of the
+; blocks below and the report holds only the static checks; blocks after M30 are still read
+; and checked (decision 25; the manual puts error handlers after M30, §2.15).
+M30
+; Incompatible by the 1s of row G89 itself (26):
+G89 G02
+G89 G03
+G89 G33
+G89 G17
+G89 G18
+G89 G19
+G89 G27
+G89 G28
+G89 G29
+G89 G21
+G89 G20
+G89 G40
+G89 G41
+G89 G42
+G89 G80
+G89 G81
+G89 G82
+G89 G83
+G89 G84
+G89 G85
+G89 G86
+G89 G89
+G89 G79
+G89 G72 X10 E40
+G89 G73 r5 E40
+G89 G74 X10 E40
+; Incompatible only by the partner's own row (the table is asymmetric here; "either cell") (5):
+G89 G06
+G89 G34
+G89 G04
+G89 G09
+G89 G35
+; Compatible: no cell says 1 and not one class, no error (11):
+G89 G00
+G89 G01
+G89 G70
+G89 G71
+G89 G90
+G89 G91
+G89 G93
+G89 G94
+G89 G95
+G89 G96
+G89 G97

@@ -1,0 +1,2 @@
+; FLOWS (cls-recursion): calls FLOWT, which calls FLOWS again.
+(CLS,FLOWT)

@@ -1,0 +1,2 @@
+; FLOWT (cls-recursion): calls FLOWS, which called it.
+(CLS,FLOWS)
