@@ -211,7 +211,13 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
     }
   }
   if (auto v = p.string("nc110.program_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
-  if (auto v = p.string("nc110.default_device", diags)) s.default_device = *v;
+  if (auto v = p.string("nc110.default_device", diags)) {
+    // As a CLS operand writes it (§2.13.2.2): 2 or 3 capitals and digits, a letter first.
+    bool valid = v->size() >= 2 && v->size() <= 3 && std::isupper(static_cast<unsigned char>((*v)[0])) &&
+                 std::all_of(v->begin(), v->end(), [](char ch) { return std::isupper(static_cast<unsigned char>(ch)) || std::isdigit(static_cast<unsigned char>(ch)); });
+    if (valid) s.default_device = *v;
+    else ok = (p.report_value(diags, "nc110.default_device", "must be a device name of 2 or 3 capitals and digits, a letter first (MP0)"), false);
+  }
   if (auto v = p.string("nc110.mirror", diags)) {
     if (*v == "set" || *v == "toggle") s.conventions.mirror_toggles = *v == "toggle";
     else ok = (p.report_value(diags, "nc110.mirror", "must be set or toggle"), false);
@@ -279,7 +285,11 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
     if (valid) c.axes = axes;
     else ok = (p.report_value(diags, "nc110.axes", "must list axis letters of X Y Z A B C U V W P Q D"), false);
   }
-  if (auto v = p.string("nc110.tool_offset_axes", diags)) c.tool_offset_axes = *v;
+  if (auto v = p.string("nc110.tool_offset_axes", diags)) {
+    bool valid = !v->empty() && std::all_of(v->begin(), v->end(), [&](char a) { return c.axes.find(a) != std::string::npos; });
+    if (valid) c.tool_offset_axes = *v;
+    else ok = (p.report_value(diags, "nc110.tool_offset_axes", fmt::format("must list axes of the machine ({})", c.axes)), false);
+  }
   if (!ok) return std::nullopt;
   return s;
 }
