@@ -31,6 +31,7 @@ void Machine::reset_state() {
   modal_ = Modal{};
   modal_.length = length;
   frame_ = Frame{};
+  refresh_base_origin();
   position_offset_ = {};
   feed_.reset();
   speed_ = 0;
@@ -250,6 +251,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       } else {
         modal_.work_offset = call.arg;
         frame_.base.fill(call.arg);
+        refresh_base_origin();
         if (emit_events) {
           Event e{EventKind::WorkOffset};
           e.n = call.arg;
@@ -655,8 +657,11 @@ void Machine::finish() {
   }
   if (block_.error) return;
   std::bitset<kWordSlots> unused = block_.request->words->present & ~block_.used;
-  for (int slot = 0; slot < kWordSlots; ++slot)
-    if (unused[slot]) report_slot(DiagId::WordUnused, slot, slot_text(slot));
+  for (int slot = 0; slot < kWordSlots && unused.any(); ++slot)
+    if (unused.test(slot)) {
+      report_slot(DiagId::WordUnused, slot, slot_text(slot));
+      unused.reset(slot);
+    }
 }
 
 void Machine::emit_reset(const ResetState& before) {

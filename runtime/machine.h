@@ -314,6 +314,8 @@ class Machine {
   Modal modal_;
   Frame frame_;
   std::map<int, WorkOffset> offsets_;  // the work offsets (NC-110 RQO changes them)
+  AxisValues base_origin_{};           // each axis' offsets_ value at frame_.base: origin() is hot
+  void refresh_base_origin();          // after frame_.base or offsets_ change
   AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
   AxisValues position_offset_{};  // G92
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed

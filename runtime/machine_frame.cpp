@@ -34,7 +34,11 @@ double Machine::offset_value(int offset, int axis) const {
   return it->second.inch && is_linear(axis) ? v * 25.4 : v;
 }
 
-double Machine::origin(int axis) const { return offset_value(frame_.base[axis], axis) + frame_.shift[axis]; }
+double Machine::origin(int axis) const { return base_origin_[axis] + frame_.shift[axis]; }
+
+void Machine::refresh_base_origin() {
+  for (int i = 0; i < kAxisCount; ++i) base_origin_[i] = offset_value(frame_.base[i], i);
+}
 
 AxisValues Machine::origins() const {
   AxisValues o{};
@@ -253,6 +257,7 @@ bool Machine::frame_function(FnCall call) {
         frame_.shift[a] = call.fn == Fn::OriginTemporary ? value(a) : 0;
         moved = true;
       }
+      refresh_base_origin();
       if (moved) origin_event();
       break;
     }
