@@ -47,8 +47,12 @@ void Machine::reset_state() {
   locked_ = 0;
   profile_running_ = false;
   spline_ = {};
+  // The power-on codes apply as a block with no words.
   BlockState saved = block_;
+  BlockWords none;
+  BlockRequest request{nullptr, 0, &none, 0};
   block_ = BlockState{};
+  block_.request = &request;
   for (uint16_t index : sem_.power_on) {
     const CodeDesc& code = sem_.codes[index];
     for (const FnCall& call : code.calls) {
@@ -134,8 +138,17 @@ FnCall Machine::current(FnGroup group) const {
               : modal_.spindle == 2 ? Fn::SpindleOrient : Fn::SpindleStop};
     case FnGroup::Override: return {modal_.override_enabled ? Fn::OverrideEnable : Fn::OverrideDisable};
     case FnGroup::SpindleHold: return {modal_.spindle_hold ? Fn::SpindleHoldOn : Fn::SpindleHoldOff};
-    default: return {Fn::Count};  // not restorable: the tables reject such block-only codes
+    case FnGroup::Dynamics:
+      if (modal_.dynamics < 0) break;  // never set: nothing to give back
+      return {modal_.dynamics == 0 ? Fn::DynamicsCornerSlowdown : modal_.dynamics == 1 ? Fn::DynamicsContinuous
+                                                                                      : Fn::DynamicsPointToPoint};
+    case FnGroup::Gtl: return {modal_.gtl ? Fn::GtlOpen : Fn::GtlClose};
+    case FnGroup::SpindleRange:
+      return modal_.spindle_range > 0 ? FnCall{Fn::SpindleRangeForce, static_cast<uint16_t>(modal_.spindle_range)}
+                                      : FnCall{modal_.spindle_range < 0 ? Fn::SpindleRangeAuto : Fn::SpindleRangeCancel};
+    default: break;
   }
+  return {Fn::Count};  // not restorable: the tables reject such block-only codes
 }
 
 void Machine::tool_length_event() {
@@ -534,7 +547,7 @@ void Machine::apply_codes(Timing timing) {
     if (code.timing != timing) continue;
     block_.code = request.codes[i];
     // Messages name a three-letter code as it is written: (DTL).
-    block_.code_name = std::isdigit(static_cast<unsigned char>(code.name.back())) ? code.name : "(" + code.name + ")";
+    block_.code_name = !code.name.empty() && std::isdigit(static_cast<unsigned char>(code.name.back())) ? code.name : "(" + code.name + ")";
     for (const FnCall& call : code.calls) {
       // A block-only code's group comes back after the block (G53 works differently:
       // it only changes the frame of this block's words).

@@ -84,14 +84,13 @@ class Machine {
 
   // The block-skip switch: '/' blocks are skipped while it is on.
   bool block_skip() const { return block_skip_; }
-  // System variables (system_vars.def), read and written by the program; a bad
-  // value or a read-only variable is reported at `source`.
-  std::optional<double> system(SysRef ref, uint32_t source);
+  // System variables (system_vars.def), read and written by the program; a value a
+  // variable cannot take is reported at `source`.
+  double system(SysRef ref) const;
   bool set_system(SysRef ref, double value, uint32_t source);
   // Values the last block measured, by index of the result space (NC-110 G72-G74).
   std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
   // Seconds of motion and dwell so far.
-  double clock() const { return clock_; }
 
  private:
   struct Modal {
@@ -301,6 +300,7 @@ class Machine {
   void nc110_cycle();
   bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
   bool nc110_levels_ok(const CyclePattern& pattern);
+  bool nc110_registers_ok(const CyclePattern& pattern);
   void tap_feed(const AxisValues& t, bool out);
   void measure();
 
@@ -348,7 +348,7 @@ class Machine {
   std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()
   std::vector<std::pair<uint32_t, double>> results_;
   std::string system_name(SysRef ref) const;
-  double system_value(SysVar v) { return system(SysRef{v, 0}, 0).value_or(0); }
+  double system_value(SysVar v) const { return system(SysRef{v, 0}); }
 };
 
 }  // namespace ncc

@@ -1,6 +1,7 @@
 // Canned cycles (GOST 20999 Table 6; NC-110 §2.8.9) and the NC-110 measuring cycles
 // G72-G74 (§2.8.12) against a simulated probe.
 #include <cmath>
+#include <limits>
 
 #include "machine.h"
 #include "support/text.h"
@@ -184,7 +185,7 @@ struct Pecks {
   static double up(double x) { return std::ceil(x - 1e-9 * std::max(1.0, x)); }
   double next(double peck) const {
     double n = peck * factor.value_or(1);
-    return n >= minimum.value_or(0) ? n : *minimum;
+    return minimum && n < *minimum ? *minimum : n;
   }
   // How many pecks reach the bottom; nullopt when a peck (`stuck`) would not get
   // deeper than the clearance it comes back (the hole would never end).
@@ -194,6 +195,7 @@ struct Pecks {
     for (double n = 1;; ++n) {
       double reached = from - peck;
       if (reached <= bottom) return n;
+      if (n > kMaxPecks) return std::numeric_limits<double>::infinity();  // how many more is not needed
       double following = next(peck);
       if (following <= clearance) {
         stuck = following;
@@ -219,24 +221,31 @@ bool Machine::nc110_cycle_definition(const CyclePattern& pattern, const std::vec
   }
   cycle_.axis = written[0];
   nc110_cycle_registers(true);
-  if (!nc110_levels_ok(pattern)) return false;
+  if (pattern.in == CyclePattern::In::Peck && !cycle_.step) {
+    report(DiagId::CycleNoPeck, 0, name, std::string(1, conv_.peck_word));
+    return false;
+  }
+  return nc110_levels_ok(pattern) && nc110_registers_ok(pattern);
+}
+
+bool Machine::nc110_registers_ok(const CyclePattern& pattern) {
+  // Checked where they are written: in the cycle's block and in any hole's.
+  auto wrong = [&](char letter, const char* what, double v, const char* must) {
+    report(DiagId::PeckNotPositive, letter, fmt::format("the {} {}", what, letter), shortest(v), must, pattern.name);
+    return false;
+  };
   if (pattern.in == CyclePattern::In::Peck) {
-    if (!cycle_.step) {
-      report(DiagId::CycleNoPeck, 0, name, std::string(1, conv_.peck_word));
-      return false;
-    }
-    auto wrong = [&](char letter, const char* what, double v, const char* must) {
-      report(DiagId::PeckNotPositive, letter, fmt::format("the {} {}", what, letter), shortest(v), must, name);
-      return false;
-    };
-    if (*cycle_.step <= 0) return wrong(conv_.peck_word, "peck increment", to_program(*cycle_.step), "greater than zero");
+    if (cycle_.step && *cycle_.step <= 0)
+      return wrong(conv_.peck_word, "peck increment", to_program(*cycle_.step), "greater than zero");
     if (cycle_.factor && *cycle_.factor <= 0)
       return wrong(conv_.peck_factor_word, "peck factor", *cycle_.factor, "greater than zero");
     if (cycle_.minimum && *cycle_.minimum < 0)
       return wrong(conv_.peck_minimum_word, "minimum peck", to_program(*cycle_.minimum), "zero or more");
   }
+  if (cycle_.pitch && *cycle_.pitch <= 0)
+    return wrong(conv_.tap_pitch_word, "tapping pitch", to_program(*cycle_.pitch), "greater than zero");
   if (cycle_.pitch && !config_.spindle_encoder) {
-    report(DiagId::ThreadEncoder, conv_.tap_pitch_word, name + " with K");
+    report(DiagId::ThreadEncoder, conv_.tap_pitch_word, pattern.name + " with K");
     return false;
   }
   return true;
@@ -298,7 +307,7 @@ void Machine::nc110_cycle() {
   // Everything the hole needs is checked before the tool moves: a refused hole is
   // not drilled, and the tool is taken to be over it.
   auto refuse = [&] { move_to(position); };
-  if (!nc110_levels_ok(pattern)) return refuse();
+  if (!nc110_levels_ok(pattern) || !nc110_registers_ok(pattern)) return refuse();
   if (!(tapping && cycle_.pitch) && !need_feed(("canned cycle " + name).c_str(), machine_)) return refuse();
   if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1 && spindle_direction_ == 0) {
     report(DiagId::CycleNoSpindle, 0, name);
@@ -316,10 +325,6 @@ void Machine::nc110_cycle() {
                          name, system_name({SysVar::TapReturn, 0})));
       return refuse();
     }
-    if (cycle_.pitch && !config_.spindle_encoder) {
-      report(DiagId::ThreadEncoder, conv_.tap_pitch_word, name + " with K");
-      return refuse();
-    }
   }
   if (pattern.in == CyclePattern::In::Peck) {
     double stuck = 0;
@@ -329,7 +334,8 @@ void Machine::nc110_cycle() {
       return refuse();
     }
     if (*n > kMaxPecks) {
-      report(DiagId::CyclePecks, conv_.peck_word, name, shortest(*n), four_decimals(to_program(pecks.step)), kMaxPecks);
+      report(DiagId::CyclePecks, conv_.peck_word, name, std::isinf(*n) ? fmt::format("more than {}", kMaxPecks) : shortest(*n),
+             four_decimals(to_program(pecks.step)), kMaxPecks);
       return refuse();
     }
   }
@@ -422,7 +428,13 @@ void Machine::measure() {
   const std::string name = fn == Fn::MeasurePoint ? "G72" : fn == Fn::MeasureHole ? "G73" : "G74";
   const ProbeConfig& probe = config_.probe;
   const AxisValues start = machine_;
-  const uint32_t first = static_cast<uint32_t>(word('E'));
+  // Where the values go: the block's E word (a code chosen at run time has none).
+  const double e = has('E') ? word('E') : -1;
+  if (!(e >= 0 && e < 65536)) {
+    report(DiagId::ResultWord, 0, fmt::format("{} needs the E parameter its results go to, e.g. E40", name));
+    return;
+  }
+  const uint32_t first = static_cast<uint32_t>(e);
   // The next contact of the simulated probe, or the nominal one when the list has ended.
   const size_t index = next_contact_++;
   const ProbeContact* contact = index < probe.contacts.size() ? &probe.contacts[index] : nullptr;

@@ -292,24 +292,25 @@ bool Machine::frame_function(FnCall call) {
           if (is_linear(axis_index(c))) frame_.scale[axis_index(c)] = *factor;
       for (int a : listed) {
         word(kAxisLetters[a]);
-        frame_.scale[a] = *factor;
+        frame_.scale[a] = factor.value_or(1);
       }
       transform_event();
       break;
     }
     case Fn::PlaneSelect: {
-      auto u = operand(0), v = operand(1);
-      if (!u || !v) break;
+      // Axis numbers: the front end writes them; a hand-made .ncb could write anything.
+      auto u = whole(0, 0, kAxisCount - 1, "the abscissa axis"), v = whole(1, 0, kAxisCount - 1, "the ordinate axis");
+      if (!u || !v || *u == *v) break;
       if (modal_.comp || modal_.gtl || modal_.cycle >= 0) {
         report_code(DiagId::PlaneState, code, modal_.comp ? "cutter radius compensation" : modal_.gtl ? "a GTL profile" : "a canned cycle");
         break;
       }
       // The normal: the axis along abscissa x ordinate, of the X/U, Y/V, Z/W family.
       auto family = [](int axis) { return axis < 3 ? axis : axis >= 6 && axis < 9 ? axis - 6 : -1; };
-      int fu = family(static_cast<int>(*u)), fv = family(static_cast<int>(*v));
+      int fu = family(*u), fv = family(*v);
       int w = fu >= 0 && fv >= 0 && fu != fv ? 3 - fu - fv : -1;
       if (w >= 0 && (fu + 1) % 3 != fv) w = -1;  // a left-handed pair has no axis along +normal
-      modal_.plane = Plane{static_cast<int>(*u), static_cast<int>(*v), w};
+      modal_.plane = Plane{*u, *v, w};
       plane_event();
       break;
     }
@@ -423,23 +424,23 @@ bool Machine::frame_function(FnCall call) {
       }
       break;
     case Fn::SplineBegin: {
-      auto u = operand(0), v = operand(1);
+      auto u = whole(0, 0, kAxisCount - 1, "the abscissa axis"), v = whole(1, 0, kAxisCount - 1, "the ordinate axis");
       auto ends = whole(2, 0, 3, "the end conditions");
       if (!u || !v || !ends) break;
       if (spline_.active) {
         report_code(DiagId::SplineStructure, "a spline is already open: end it with (ESP)");
         break;
       }
-      if (static_cast<int>(*u) != modal_.plane.u || static_cast<int>(*v) != modal_.plane.v) {
+      if (*u != modal_.plane.u || *v != modal_.plane.v) {
         report_code(DiagId::SplineStructure,
-                    fmt::format("the spline's axes {}{} must be those of the plane {}", kAxisLetters[static_cast<int>(*u)],
-                                kAxisLetters[static_cast<int>(*v)], plane_name(modal_.plane)));
+                    fmt::format("the spline's axes {}{} must be those of the plane {}", kAxisLetters[*u], kAxisLetters[*v],
+                                plane_name(modal_.plane)));
         break;
       }
       spline_ = Spline{};
       spline_.active = true;
-      spline_.u = static_cast<int>(*u);
-      spline_.v = static_cast<int>(*v);
+      spline_.u = *u;
+      spline_.v = *v;
       spline_.ends = *ends;
       break;
     }

@@ -155,7 +155,11 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   if (!need_feed("circular interpolation", t)) return;
   const int u = modal_.plane.u, v = modal_.plane.v, w = modal_.plane.w;
   const bool plane_words = conv_.centre_words == CentreWords::Plane;
-  const char pu = plane_words ? 'I' : kParameterOf[u], pv = plane_words ? 'J' : kParameterOf[v];
+  // Per-axis centre words exist for X, Y, Z only: other planes take the plane's own.
+  auto centre_word = [&](int axis, char plane_word) {
+    return plane_words || axis < 0 || axis >= 3 ? plane_word : kParameterOf[axis];
+  };
+  const char pu = centre_word(u, 'I'), pv = centre_word(v, 'J');
   const char pw = plane_words ? 'K' : w >= 0 && w < 3 ? kParameterOf[w] : 0;
   const bool radius_form = conv_.radius_word && has(conv_.radius_word);
   auto fail = [&](const std::string& why) {
@@ -298,13 +302,17 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   if (std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; }) ||
       std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; })) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
-    int chords = std::clamp(static_cast<int>(std::ceil(sweep / std::max(step, 1e-6))), 1, 100000);
+    int chords = static_cast<int>(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0));
     // The fractions of the sweep: the chords' ends and where the arc is farthest
-    // along u or v (every quarter turn from the start's angle).
+    // along u or v (the quarter turns from the start's angle, in the first and the
+    // last turn: a helix repeats them in between).
     std::vector<double> fractions;
     for (int k = 0; k <= chords; ++k) fractions.push_back(static_cast<double>(k) / chords);
     const double to_quarter = clockwise ? std::fmod(wrap(a0), kPi / 2) : kPi / 2 - std::fmod(wrap(a0), kPi / 2);
-    for (double s = to_quarter; s < sweep; s += kPi / 2) fractions.push_back(s / sweep);
+    for (double s = to_quarter; s < sweep; s += kPi / 2) {
+      if (s >= kTwoPi && s <= sweep - kTwoPi) s += std::floor((sweep - kTwoPi - s) / (kPi / 2)) * (kPi / 2);
+      fractions.push_back(s / sweep);
+    }
     std::sort(fractions.begin(), fractions.end());
     std::vector<AxisValues> path;
     for (double f : fractions) {

@@ -14,7 +14,7 @@ std::string Machine::system_name(SysRef ref) const {
   return name;
 }
 
-std::optional<double> Machine::system(SysRef ref, uint32_t) {
+double Machine::system(SysRef ref) const {
   switch (ref.var) {
     case SysVar::BlockEnable: return block_skip_ ? 0 : 1;
     case SysVar::OptionalStop: return optional_stop_ ? 1 : 0;

@@ -43,7 +43,6 @@ enum class AngleUnit : uint8_t { Degree, Radian, Revolution };
 enum class CentreWords : uint8_t { PerAxis, Plane };
 // The drilling axis of a canned cycle: the plane's normal, or the axis of the depth
 // word (NC-110 §2.8.9).
-enum class CycleAxis : uint8_t { PlaneNormal, DepthWord };
 
 // Word conventions: which address carries what, and how to read it. Addresses are
 // letters; 0 means "none".
@@ -72,8 +71,6 @@ struct Conventions {
   uint8_t result_space = kNoSpace;  // the variable space measured values go to
   CentreWords centre_words = CentreWords::PerAxis;
   char radius_word = 0;             // an arc by its radius: R+ up to 180 degrees, R- beyond
-  bool dwell_timer = false;         // dwells last the dwell-time variable (NC-110 TMR), not a word
-  CycleAxis cycle_axis = CycleAxis::PlaneNormal;
   bool cycle_two_levels = false;    // R, then R' (its second value): approach and return levels
   bool cycle_defines_only = false;  // a cycle's own block stores it; the blocks after it drill
   bool cycle_needs_cancel = false;  // a new cycle needs the active one cancelled first

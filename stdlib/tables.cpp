@@ -263,7 +263,8 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
     bool restorable = true;
     for (const FnCall& call : e.desc.calls) {
       FnGroup g = fn_group(call.fn);
-      restorable = restorable && g != FnGroup::Mist && g != FnGroup::Flood && g != FnGroup::Clamp;
+      restorable = restorable && g != FnGroup::Mist && g != FnGroup::Flood && g != FnGroup::Clamp &&
+                   g != FnGroup::RotaryClamp;
     }
     if (e.desc.scope == Scope::Block && !restorable) {
       report(diags, table, row.line, "a block-only code cannot switch coolant or clamps: use a modal code");
@@ -275,6 +276,7 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
 }
 
 void add_class_pairs(DialectTables& t) {
+  t.incompatible = t.printed_incompatible;
   for (const auto& [a, ea] : t.g_codes)
     for (const auto& [b, eb] : t.g_codes)
       if (ea.group != "-" && ea.group == eb.group) t.incompatible.insert({a, b});
@@ -325,8 +327,8 @@ DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) 
         for (const std::string& cell : split(row.cells[1], ' ')) {
           auto b = cell.empty() ? std::nullopt : g_number(cell, row.line);
           if (a && b) {
-            t.incompatible.insert({*a, *b});
-            t.incompatible.insert({*b, *a});
+            t.printed_incompatible.insert({*a, *b});
+            t.printed_incompatible.insert({*b, *a});
           }
         }
       }

@@ -67,7 +67,8 @@ struct DialectTables {
   std::map<char, AddressEntry> addresses;
   // G codes that must not share a block (a compatibility matrix, NC-110 Table 2.4):
   // pairs of G numbers, both orders. Empty when the dialect has no matrix.
-  std::set<std::pair<int, int>> incompatible;
+  std::set<std::pair<int, int>> incompatible;  // printed pairs and class pairs (add_class_pairs)
+  std::set<std::pair<int, int>> printed_incompatible;  // the matrix as the manual prints it
   std::map<int, CodeEntry> g_codes;
   std::map<int, CodeEntry> m_codes;
   std::vector<CyclePattern> cycles;
@@ -86,8 +87,8 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
 
 DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags);
 
-// With a compatibility matrix: two G codes of one class never share a block (NC-110
-// Table 2.5); again after a machine adds codes.
+// With a compatibility matrix: the printed pairs, and two G codes of one class never
+// share a block (NC-110 Table 2.5); made anew after a machine adds or changes codes.
 void add_class_pairs(DialectTables& t);
 
 }  // namespace ncc::stdlib

@@ -86,7 +86,8 @@ std::string disassemble(const Module& m) {
         case 'b': operands += builtin_info(static_cast<Builtin>(v)).name; break;
         case 'f': operands += std::string(kFormatNames[v]); break;
         case 't': operands += std::string(kTypeNames[v]); break;
-        case 'n': operands += fmt::format("{}", v); break;
+        case 'n':
+        case 'd': operands += fmt::format("{}", v); break;
         case 'y': {
           SysRef ref = SysRef::unpack(static_cast<uint16_t>(v));
           operands += std::string(sys_name(ref.var));

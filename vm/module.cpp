@@ -61,8 +61,6 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(c.result_space);
   w.u8(static_cast<uint8_t>(c.centre_words));
   w.u8(static_cast<uint8_t>(c.radius_word));
-  w.u8(c.dwell_timer);
-  w.u8(static_cast<uint8_t>(c.cycle_axis));
   w.u8(c.cycle_two_levels);
   w.u8(c.cycle_defines_only);
   w.u8(c.cycle_needs_cancel);
@@ -97,10 +95,10 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u32(static_cast<uint32_t>(s.builtin_names.size()));
   for (const std::string& name : s.builtin_names) w.str(name);
   w.u32(static_cast<uint32_t>(s.numbered.size()));
-  for (const NumberedCode& c : s.numbered) {
-    w.u8(c.slot);
-    w.u16(c.number);
-    w.u16(c.code);
+  for (const NumberedCode& numbered : s.numbered) {
+    w.u8(numbered.slot);
+    w.u16(numbered.number);
+    w.u16(numbered.code);
   }
   w.u32(static_cast<uint32_t>(s.incompatible.size()));
   for (const CodePair& p : s.incompatible) {
@@ -173,8 +171,6 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.result_space = r.u8();
   ok = ok && enum_value(r, CentreWords::Plane, c.centre_words);
   c.radius_word = static_cast<char>(r.u8());
-  c.dwell_timer = r.u8();
-  ok = ok && enum_value(r, CycleAxis::DepthWord, c.cycle_axis);
   c.cycle_two_levels = r.u8();
   c.cycle_defines_only = r.u8();
   c.cycle_needs_cancel = r.u8();
@@ -217,12 +213,12 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   for (std::string& name : s.builtin_names) name = r.str();
   if (!count(r, 5, n)) return false;
   s.numbered.resize(n);
-  for (NumberedCode& c : s.numbered) {
-    c.slot = r.u8();
-    c.number = r.u16();
-    c.code = r.u16();
+  for (NumberedCode& numbered : s.numbered) {
+    numbered.slot = r.u8();
+    numbered.number = r.u16();
+    numbered.code = r.u16();
   }
-  if (!count(r, 4, n)) return false;
+  if (!count(r, 8, n)) return false;
   s.incompatible.resize(n);
   for (CodePair& p : s.incompatible) {
     p.a = r.u16();
@@ -469,6 +465,10 @@ std::string verify(const Module& m) {
       !(c.lead_resolution >= 0 && std::isfinite(c.lead_resolution)) ||
       !(c.dwell_seconds_per_unit > 0 && std::isfinite(c.dwell_seconds_per_unit)))
     return "a convention holds a number that is negative or not finite";
+  // Two-level cycles take their drilling axis from the block that defines them.
+  if (c.cycle_two_levels && !c.cycle_defines_only) return "two-level cycles need cycles that their own block defines";
+  for (const CodeDesc& code : s.codes)
+    if (code.name.empty()) return "a code has no name";
   // Names reach terminals and messages: no control characters.
   std::vector<const std::string*> names = {&m.dialect, &m.profile_name, &s.dialect};
   for (const CodeDesc& code : s.codes) names.push_back(&code.name);
@@ -554,6 +554,7 @@ std::string verify(const Module& m) {
         case 'f': ok = v < static_cast<uint32_t>(MemFormat::Count); break;
         case 't': ok = v < static_cast<uint32_t>(VarType::Count); break;
         case 'n': ok = v > 0; break;
+        case 'd': ok = true; break;
         case 'y': ok = SysRef::unpack(static_cast<uint16_t>(v)).valid(); break;
         case 'j':
           if (op == Op::CallRange && i == 1) range_ends.push_back(v);

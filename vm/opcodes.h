@@ -9,6 +9,7 @@
 //   b  u8   builtin function (stdlib/builtins.h)  f  u8   memory format (variables.h)
 //   n  u8   a count                               t  u8   value type (variables.h)
 //   y  u16  system variable: its number << 8 | its index (runtime/system_vars.def)
+//   d  u8   a repeat-loop depth (0: outside every loop)
 // `pop` and `push` are the fixed stack effects the verifier checks.
 //
 // A machine block is built up and then run: CODE and WORD/WORDPOP fill the pending
@@ -64,9 +65,9 @@ namespace ncc::vm {
   X(Comment, "s", 0, 0, "show strings[s] to the operator")                                     \
   X(Repeat, "jk", 1, 0, "pop a count 0..numbers[k]; open a repeat loop, or go to j if it is 0") \
   X(EndRepeat, "j", 0, 0, "count down the innermost repeat loop; go to j while it runs")       \
-  X(Unloop, "n", 0, 0, "close the n innermost repeat loops (a jump out of their bodies)")      \
+  X(Unloop, "d", 0, 0, "the next jump lands at repeat-loop depth n of its code: close deeper loops") \
   X(CallEntry, "e", 0, 0, "call entry point e")                                                \
-  X(CallRange, "jj", 0, 0, "run the code from j1 to the RANGEEND at j2, then come back")      \
+  X(CallRange, "jjd", 0, 0, "run the code from j1 (at loop depth n) to the RANGEEND at j2, then come back") \
   X(RangeEnd, "", 0, 0, "the end of a range: come back if the innermost frame runs it")       \
   X(Return, "", 0, 0, "return from a call")                                                    \
   X(End, "", 0, 0, "end of the program unit")                                                  \
@@ -104,7 +105,7 @@ constexpr int operand_size(char f) {
   switch (f) {
     case 'k': case 's': case 'j': case 'i': return 4;
     case 'c': case 'e': case 'y': return 2;
-    default: return 1;  // w v b f n t
+    default: return 1;  // w v b f n t d
   }
 }
 // The size of a whole instruction with opcode `op`.

@@ -42,7 +42,9 @@ std::string show(VarType type, double v) {
   switch (type) {
     case VarType::Byte:
     case VarType::Integer:
-    case VarType::Long: return fmt::format("{}", static_cast<int64_t>(v));
+    case VarType::Long:
+      if (std::fabs(v) < 9e18) return fmt::format("{}", static_cast<int64_t>(v));
+      return fmt::format("{:.10g}", v);  // only a hostile file gets here: no integer type holds it
     case VarType::Real: return fmt::format("{:.7g}", v == 0 ? 0.0 : v);
     default: return fmt::format("{:.10g}", v == 0 ? 0.0 : v);
   }
@@ -60,12 +62,12 @@ Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions 
 
 template <typename... Args>
 RunStatus Vm::fail(uint32_t pc, DiagId id, const Args&... args) {
-  return fail_at(pc, -1, id, args...);
+  return fail_at(pc, -1, 0, id, args...);
 }
 
 template <typename... Args>
-RunStatus Vm::fail_at(uint32_t pc, int slot, DiagId id, const Args&... args) {
-  issues_.issue({id, diag_message(id, args...), m_.source_of(pc), slot});
+RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args) {
+  issues_.issue({id, diag_message(id, args...), m_.source_of(pc), slot, -1, nth});
   return RunStatus::Error;
 }
 
@@ -162,8 +164,13 @@ size_t Vm::calls() const {
 void Vm::jump_to(uint32_t target) {
   Process& p = process_;
   while (!p.frames.empty() && p.frames.back().range && (target < p.frames.back().start || target > p.frames.back().end)) {
-    p.loops.resize(p.frames.back().loops);
+    if (p.loops.size() > p.frames.back().loops) p.loops.resize(p.frames.back().loops);
     p.frames.pop_back();
+  }
+  if (landing_depth_) {
+    size_t keep = (p.frames.empty() ? 0 : p.frames.back().base) + *landing_depth_;
+    if (p.loops.size() > keep) p.loops.resize(keep);
+    landing_depth_.reset();
   }
   p.pc = target;
 }
@@ -281,20 +288,27 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::Step:
         if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
         break;
-      case Op::Code: codes_.push_back(u16_at(operands)); break;
+      case Op::Code:
+        if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");
+        codes_.push_back(u16_at(operands));
+        break;
       case Op::CodeOf: {
         double v = pop();
         const auto& numbered = m_.semantics.numbered;
         auto it = std::find_if(numbered.begin(), numbered.end(), [&](const NumberedCode& c) {
           return c.slot == operands[0] && c.number == v;
         });
+        // The word is found by its slot and its place among this block's (GE1 GE2).
+        const int nth = static_cast<int>(std::count(dynamic_slots_.begin(), dynamic_slots_.end(), operands[0]));
         if (it == numbered.end()) {
           // As the table writes it: G05.
           bool two_digits = v >= 0 && v < 100 && v == std::trunc(v);
-          return fail_at(pc, operands[0], DiagId::CodeUnknown, slot_name(operands[0]),
+          return fail_at(pc, operands[0], nth, DiagId::CodeUnknown, slot_name(operands[0]),
                          two_digits ? fmt::format("{:02}", static_cast<int>(v)) : shortest(v));
         }
-        dynamic_codes_ |= uint64_t{1} << std::min<size_t>(codes_.size(), 63);
+        if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");
+        dynamic_codes_ |= uint64_t{1} << codes_.size();
+        dynamic_slots_.push_back(operands[0]);
         codes_.push_back(it->code);
         break;
       }
@@ -311,9 +325,13 @@ RunStatus Vm::run(uint32_t entry) {
         codes_.clear();
         words_.clear();
         dynamic_codes_ = 0;
-        // Measured values the block stores (NC-110 G72-G74).
-        for (auto [index, value] : machine_.take_results())
+        dynamic_slots_.clear();
+        // Measured values the block stores (NC-110 G72-G74), where the dialect keeps them.
+        for (auto [index, value] : machine_.take_results()) {
+          if (m_.semantics.conventions.result_space == kNoSpace)
+            return fail(pc, DiagId::BytecodeInvalid, "program", "a measuring code in a dialect with no place for its values");
           if (!store(m_.semantics.conventions.result_space, index, value, pc)) return RunStatus::Error;
+        }
         switch (result) {
           case BlockResult::Continue: break;
           case BlockResult::ProgramEnd: return RunStatus::ProgramEnd;
@@ -342,18 +360,12 @@ RunStatus Vm::run(uint32_t entry) {
         if (--p.loops.back().remaining > 0) p.pc = u32_at(operands);
         else p.loops.pop_back();
         break;
-      case Op::Unloop: {
-        size_t floor = p.frames.empty() ? 0 : p.frames.back().loops;
-        if (p.loops.size() < floor + operands[0])
-          return fail(pc, DiagId::BytecodeInvalid, "program", "a jump out of more repeat loops than are open");
-        p.loops.resize(p.loops.size() - operands[0]);
-        break;
-      }
+      case Op::Unloop: landing_depth_ = operands[0]; break;
       case Op::CallEntry: {
         uint32_t limit = m_.semantics.conventions.max_call_depth;
         if (p.frames.size() >= kMaxFrames || (limit && calls() >= limit))
           return fail(pc, DiagId::CallDepth, limit ? limit : kMaxFrames);
-        p.frames.push_back({p.pc, p.loops.size()});
+        p.frames.push_back({p.pc, p.loops.size(), false, 0, 0, p.loops.size()});
         p.pc = m_.entries[u16_at(operands)].pc;
         break;
       }
@@ -361,7 +373,10 @@ RunStatus Vm::run(uint32_t entry) {
         for (const Frame& f : p.frames)
           if (f.range) return fail(pc, DiagId::RangeNested);
         if (p.frames.size() >= kMaxFrames) return fail(pc, DiagId::CallDepth, kMaxFrames);
-        p.frames.push_back({p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4)});
+        if (p.loops.size() < operands[8])
+          return fail(pc, DiagId::BytecodeInvalid, "program", "a range deeper in repeat loops than its call");
+        // The range's code counts its loop depth from its first block's.
+        p.frames.push_back({p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4), p.loops.size() - operands[8]});
         p.pc = u32_at(operands);
         break;
       case Op::RangeEnd:
@@ -424,20 +439,24 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       }
       case Op::GetSys: {
-        auto v = machine_.system(SysRef::unpack(u16_at(operands)), m_.source_of(pc));
-        if (!v) return RunStatus::Error;
-        st.push_back(*v);
+        st.push_back(machine_.system(SysRef::unpack(u16_at(operands))));
         break;
       }
       case Op::SetSys:
         if (!machine_.set_system(SysRef::unpack(u16_at(operands)), pop(), m_.source_of(pc))) return RunStatus::Error;
         break;
-      case Op::Show: message_ += m_.strings[u32_at(operands)]; break;
-      case Op::ShowValue: message_ += show(static_cast<VarType>(operands[0]), pop()); break;
+      case Op::Show:
+      case Op::ShowValue:
       case Op::ShowText: {
-        const uint8_t* b = bytes(operands[0], pop(), operands[1], pc);
-        if (!b) return RunStatus::Error;
-        message_.append(reinterpret_cast<const char*>(b), operands[1]);
+        if (op == Op::Show) message_ += m_.strings[u32_at(operands)];
+        if (op == Op::ShowValue) message_ += show(static_cast<VarType>(operands[0]), pop());
+        if (op == Op::ShowText) {
+          const uint8_t* b = bytes(operands[0], pop(), operands[1], pc);
+          if (!b) return RunStatus::Error;
+          message_.append(reinterpret_cast<const char*>(b), operands[1]);
+        }
+        // A message is a line for the operator; a file that builds one without end is not.
+        if (message_.size() > 65536) return fail(pc, DiagId::BytecodeInvalid, "program", "a message longer than 64 KiB");
         break;
       }
       case Op::Message:

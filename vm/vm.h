@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "module.h"
@@ -32,6 +33,7 @@ class Vm {
     size_t loops;  // repeat loops open when the call was made
     bool range = false;
     uint32_t start = 0, end = 0;  // a range: its first instruction and its RangeEnd
+    size_t base = 0;              // the open loops its code's loop depth 0 stands for
   };
   struct Loop {
     int64_t remaining;
@@ -48,14 +50,17 @@ class Vm {
   template <typename... Args>
   RunStatus fail(uint32_t pc, DiagId id, const Args&... args);
   template <typename... Args>
-  RunStatus fail_at(uint32_t pc, int slot, DiagId id, const Args&... args);
+  RunStatus fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args);
   double load(uint8_t space, double index, uint32_t pc, bool& ok);
   bool store(uint8_t space, double index, double value, uint32_t pc);
   // A run of `count` bytes of memory `space` at byte `index`, or nullptr (reported).
   uint8_t* bytes(uint8_t space, double index, uint32_t count, uint32_t pc);
   bool load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out);
   bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
+  // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
+  // target's depth close.
   void jump_to(uint32_t target);
+  std::optional<size_t> landing_depth_;
   size_t calls() const;
 
   const Module& m_;
@@ -70,6 +75,7 @@ class Vm {
   BlockWords words_;
   std::string message_;          // the pending operator message
   uint64_t dynamic_codes_ = 0;   // the pending block's codes chosen at run time (bit i: codes_[i])
+  std::vector<uint8_t> dynamic_slots_;  // their words' slots, in order (GE1 GE2: G, G)
 };
 
 }  // namespace ncc::vm

@@ -24,7 +24,7 @@ class IssueReporter final : public RuntimeIssues {
       : s_(s), m_(m), file_ids_(std::move(file_ids)), dry_(dry) {}
 
   void issue(const RuntimeIssue& i) override {
-    if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code}).second) return;
+    if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code, i.nth}).second) return;
     // In a dry run a block the compiler already rejected would only repeat its errors.
     if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
     SourceRange range;
@@ -51,7 +51,7 @@ class IssueReporter final : public RuntimeIssues {
   const vm::Module& m_;
   std::vector<uint32_t> file_ids_;
   bool dry_;
-  std::set<std::tuple<int, uint32_t, int, int>> seen_;
+  std::set<std::tuple<int, uint32_t, int, int, int>> seen_;
 };
 
 std::optional<std::string> read_file(const std::string& path) {

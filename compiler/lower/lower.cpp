@@ -316,10 +316,12 @@ class Lowering {
           case ir::StmtKind::Assign: assign(s); break;
           case ir::StmtKind::Display: display(s); break;
           case ir::StmtKind::Jump: {
-            // A jump out of repeat loops closes them; the checks reject jumps into one.
+            // A jump out of repeat loops closes them (the checks reject jumps into
+            // one): it lands at its target's loop depth. So does a jump where a range
+            // may run the code, which may leave the range.
             auto it = label_depth.find(s.label);
-            size_t out = it != label_depth.end() && it->second < depth ? depth - it->second : 0;
-            if (!out) {
+            const size_t landing = it != label_depth.end() ? it->second : depth;
+            if (landing >= depth && range_ends.empty()) {
               if (s.cond != ir::kNoExpr) expr(s.cond);
               jumps.push_back({jump(s.cond != ir::kNoExpr ? Op::JumpIf : Op::Jump), s.label});
               break;
@@ -330,7 +332,7 @@ class Lowering {
               not_taken = jump(Op::JumpIfNot);
             }
             op(Op::Unloop);
-            u8(static_cast<uint32_t>(out));
+            u8(static_cast<uint32_t>(landing));
             jumps.push_back({jump(Op::Jump), s.label});
             if (not_taken) patch(not_taken, pc());
             break;
@@ -357,6 +359,7 @@ class Lowering {
             op(Op::CallRange);
             u32(0);
             u32(0);
+            u8(static_cast<uint32_t>(label_depth.count(s.label) ? label_depth.at(s.label) : 0));
             break;
           case ir::StmtKind::Call:
             calls_.push_back({pc() + 1, s.label});

@@ -501,10 +501,6 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
                                                              : op.value;
         add_word('#', operand_slot(operand_number++), value, "=" + op.text, op.range);
       }
-      if (sig.code == "DSA" && ops.size() == 3 && ops[1].axis == ops[2].axis)
-        return fail(DiagId::AxisTwice, ops[2].range, ops[2].axis, sig.code);
-      if (sig.code == "DPI" && ops.size() == 2 && ops[0].axis == ops[1].axis)
-        return fail(DiagId::AxisTwice, ops[1].range, ops[1].axis, sig.code);
       break;
     }
     case Action::Repeat:

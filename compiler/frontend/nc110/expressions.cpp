@@ -123,7 +123,7 @@ std::optional<Reader::MemoryRef> Reader::memory_ref(std::string_view written, So
   if (ref.format == MemFormat::Bit && !ref.chars) size = 1;
   if (first + size > ref.memory->bytes) {
     diags_.report(DiagId::ValueRange, r, text, fmt::format("{} ({} bytes)", ref.memory->name, ref.memory->bytes), 0,
-                  ref.chars ? ref.memory->bytes - ref.chars
+                  ref.chars ? static_cast<int64_t>(ref.memory->bytes) - ref.chars
                   : ref.format == MemFormat::Bit ? ref.memory->bytes * 8 - 1
                                                  : ref.memory->bytes / mem_size(ref.format) - 1);
     block_.has_errors = true;
@@ -139,6 +139,19 @@ ir::ExprId Reader::memory_expr(const MemoryRef& ref, SourceRange r) {
   e.format = ref.format;
   e.count = static_cast<uint8_t>(ref.chars);
   return program_.add(e);
+}
+
+bool Reader::system_number(antlr4::tree::TerminalNode* n, const std::string& name, SourceRange r,
+                           std::optional<uint32_t>& out) {
+  if (!n) return true;
+  const std::string text = n->getText();
+  if (text.find('.') != std::string::npos) {
+    diags_.report(DiagId::ValueForm, r, name, "a whole number", name + text);
+    block_.has_errors = true;
+    return false;
+  }
+  out = static_cast<uint32_t>(std::min(std::stod(text), 1e6));
+  return true;
 }
 
 std::optional<SysRef> Reader::system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r,
@@ -269,7 +282,7 @@ ir::ExprId Reader::primary(Nc110Parser::PrimaryContext* ctx) {
     return invalid();
   }
   std::optional<uint32_t> number;
-  if (s->NUMBER()) number = static_cast<uint32_t>(std::min(std::stod(s->NUMBER()->getText()), 1e6));
+  if (!system_number(s->NUMBER(), name, r, number)) return invalid();
   auto ref = system_ref(name, number, r, false);
   return ref ? system_expr(*ref, r) : invalid();
 }
@@ -354,7 +367,7 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
   // A system variable: TMR = 2, USB = 0, TIM2 = TIM0 - TIM1 (§2.10).
   std::string name = target->NAME()->getText();
   std::optional<uint32_t> number;
-  if (target->NUMBER()) number = static_cast<uint32_t>(std::min(std::stod(target->NUMBER()->getText()), 1e6));
+  if (!system_number(target->NUMBER(), name, target_range, number)) return;
   const SystemName* entry = nullptr;
   auto ref = system_ref(name, number, target_range, true, &entry);
   if (!ref) return;

@@ -91,6 +91,8 @@ class Reader {
   std::optional<MemoryRef> memory_ref(std::string_view text, SourceRange r);
   ir::ExprId memory_expr(const MemoryRef& ref, SourceRange r);
   // A system variable by name and number, to read or (writing) to write.
+  // The number after a system variable's name (TIM1), which must be whole.
+  bool system_number(antlr4::tree::TerminalNode* n, const std::string& name, SourceRange r, std::optional<uint32_t>& out);
   std::optional<SysRef> system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r, bool writing,
                                    const SystemName** entry = nullptr);
   ir::ExprId system_expr(SysRef ref, SourceRange r);

@@ -255,13 +255,11 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.centre_words = CentreWords::Plane;
   c.radius_word = 'R';
   c.dwell_word = 0;
-  c.dwell_timer = true;
   c.peck_word = 'I';
   c.peck_factor_word = 'K';
   c.peck_minimum_word = 'J';
   c.tap_pitch_word = 'K';
   c.cycle_level_word = 'R';
-  c.cycle_axis = CycleAxis::DepthWord;
   c.cycle_two_levels = true;
   c.cycle_defines_only = true;
   c.cycle_needs_cancel = true;
@@ -286,9 +284,11 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
     else ok = (p.report_value(diags, "nc110.axes", "must list axis letters of X Y Z A B C U V W P Q D"), false);
   }
   if (auto v = p.string("nc110.tool_offset_axes", diags)) {
-    bool valid = !v->empty() && std::all_of(v->begin(), v->end(), [&](char a) { return c.axes.find(a) != std::string::npos; });
+    bool valid = !v->empty();
+    for (size_t i = 0; i < v->size(); ++i)
+      valid = valid && c.axes.find((*v)[i]) != std::string::npos && v->find((*v)[i], i + 1) == std::string::npos;
     if (valid) c.tool_offset_axes = *v;
-    else ok = (p.report_value(diags, "nc110.tool_offset_axes", fmt::format("must list axes of the machine ({})", c.axes)), false);
+    else ok = (p.report_value(diags, "nc110.tool_offset_axes", fmt::format("must list axes of the machine ({}), each once", c.axes)), false);
   }
   if (!ok) return std::nullopt;
   return s;
