@@ -443,9 +443,9 @@ void Machine::measure() {
     double length = 0;
     for (int i = 0; i < kAxisCount; ++i) length += (to[i] - machine_[i]) * (to[i] - machine_[i]);
     advance_clock(60 * std::sqrt(length) / probe.feed);
-    Event e = motion_event(EventKind::Probe, to);
-    e.n = touched;
-    emit(e);
+    Event event = motion_event(EventKind::Probe, to);
+    event.n = touched;
+    emit(event);
     machine_ = to;
   };
   // Where a point is, in the program's frame, on the axes that move and X Y Z.

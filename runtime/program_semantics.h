@@ -96,6 +96,14 @@ struct CodePair {
   std::string function;
 };
 
+// The values an address takes, checked when a parameter gives the value at run time
+// (pp `Q R5`): lo..hi, whole numbers only when `whole`.
+struct ValueRule {
+  std::string address;
+  double lo = 0, hi = 0;
+  bool whole = false;
+};
+
 struct ProgramSemantics {
   std::string dialect;
   std::vector<CodeDesc> codes;
@@ -106,6 +114,7 @@ struct ProgramSemantics {
   std::vector<std::string> builtin_names; // ... of each Builtin ("SQR"); empty: its own name
   std::vector<NumberedCode> numbered;     // the codes a program may select at run time
   std::vector<CodePair> incompatible;     // codes that must not share a block
+  std::vector<ValueRule> value_rules;     // for Check
 };
 
 }  // namespace ncc

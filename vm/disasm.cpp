@@ -15,7 +15,7 @@ namespace ncc::vm {
 namespace {
 
 constexpr std::string_view kFormatNames[] = {"bit", "byte", "int16", "int32", "float", "double"};
-constexpr std::string_view kTypeNames[] = {"long_real", "real", "byte", "integer", "long"};
+constexpr std::string_view kTypeNames[] = {"long_real", "real", "byte", "integer", "long", "thousandths"};
 
 
 std::string source_text(const Module& m, uint32_t source) {
@@ -87,7 +87,8 @@ std::string disassemble(const Module& m) {
         case 'f': operands += std::string(kFormatNames[v]); break;
         case 't': operands += std::string(kTypeNames[v]); break;
         case 'n':
-        case 'd': operands += fmt::format("{}", v); break;
+        case 'd':
+        case 'r': operands += fmt::format("{}", v); break;
         case 'y': {
           SysRef ref = SysRef::unpack(static_cast<uint16_t>(v));
           operands += std::string(sys_name(ref.var));

@@ -106,6 +106,13 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
     w.u16(p.b);
     w.str(p.function);
   }
+  w.u32(static_cast<uint32_t>(s.value_rules.size()));
+  for (const ValueRule& rule : s.value_rules) {
+    w.str(rule.address);
+    w.f64(rule.lo);
+    w.f64(rule.hi);
+    w.u8(rule.whole);
+  }
 }
 
 void write_sources(ByteWriter& w, const SourceMap& m) {
@@ -225,6 +232,14 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
     p.b = r.u16();
     p.function = r.str();
   }
+  if (!count(r, 21, n) || n > 255) return false;  // Check names a rule by a byte
+  s.value_rules.resize(n);
+  for (ValueRule& rule : s.value_rules) {
+    rule.address = r.str();
+    rule.lo = r.f64();
+    rule.hi = r.f64();
+    rule.whole = r.u8();
+  }
   return !r.failed();
 }
 
@@ -296,19 +311,20 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       e.pc = r.u32();
     }
   } else if (t == kVars) {
-    if (!count(r, 21, n)) return false;
+    if (!count(r, 22, n)) return false;
     m.spaces.resize(n);
     for (VarSpace& s : m.spaces) {
       s.name = r.str();
       s.size = r.u32();
       s.memory = r.u8();
+      s.local = r.u8();
       s.limit = r.f64();
       uint32_t ranges = 0;
       if (!count(r, 5, ranges)) return false;
       s.types.resize(ranges);
       for (VarSpace::Range& range : s.types) {
         range.first = r.u32();
-        if (!enum_value(r, VarType::Long, range.type)) return false;
+        if (!enum_value(r, VarType::Thousandths, range.type)) return false;
       }
     }
   } else if (t == kSrcs) {
@@ -364,6 +380,7 @@ std::string write_module(const Module& m) {
     vars.str(s.name);
     vars.u32(s.size);
     vars.u8(s.memory);
+    vars.u8(s.local);
     vars.f64(s.limit);
     vars.u32(static_cast<uint32_t>(s.types.size()));
     for (const VarSpace::Range& r : s.types) {
@@ -496,10 +513,13 @@ std::string verify(const Module& m) {
     if (n.code >= s.codes.size() || n.slot >= kWordSlots) return "a numbered code names a code that does not exist";
   for (const CodePair& p : s.incompatible)
     if (p.a >= s.codes.size() || p.b >= s.codes.size()) return "the compatibility matrix names a code that does not exist";
+  for (const ValueRule& rule : s.value_rules)
+    if (!(rule.lo <= rule.hi) || !std::isfinite(rule.lo) || !std::isfinite(rule.hi)) return "a value rule has no values";
   uint64_t variables = 0;
   for (const VarSpace& space : m.spaces) {
     variables += space.size;
     if (!(space.limit >= 0 && std::isfinite(space.limit))) return fmt::format("space {} has a bad limit", space.name);
+    if (space.local && space.memory) return fmt::format("memory {} cannot be local to a call", space.name);
   }
   if (variables > kMaxVariables) return fmt::format("the variable spaces hold more than {} values", kMaxVariables);
   if (c.result_space != kNoSpace && (c.result_space >= m.spaces.size() || m.spaces[c.result_space].memory))
@@ -555,6 +575,7 @@ std::string verify(const Module& m) {
         case 't': ok = v < static_cast<uint32_t>(VarType::Count); break;
         case 'n': ok = v > 0; break;
         case 'd': ok = true; break;
+        case 'r': ok = v < m.semantics.value_rules.size(); break;
         case 'y': ok = SysRef::unpack(static_cast<uint16_t>(v)).valid(); break;
         case 'j':
           if (op == Op::CallRange && i == 1) range_ends.push_back(v);

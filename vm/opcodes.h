@@ -10,13 +10,15 @@
 //   n  u8   a count                               t  u8   value type (variables.h)
 //   y  u16  system variable: its number << 8 | its index (runtime/system_vars.def)
 //   d  u8   a repeat-loop depth (0: outside every loop)
+//   r  u8   index into the program's value rules (ProgramSemantics::value_rules)
 // `pop` and `push` are the fixed stack effects the verifier checks.
 //
 // A machine block is built up and then run: CODE and WORD/WORDPOP fill the pending
 // block, EXEC hands it to the motion runtime and clears it. An operator message is
 // built up by SHOW* and shown by MESSAGE.
 //
-// Frames: CALLENTRY calls an entry point, RETURN comes back. CALLRANGE runs the code
+// Frames: CALLENTRY calls an entry point (again, while its count lasts), RETURN comes
+// back; the local variable spaces start at zero in every call. CALLRANGE runs the code
 // from one place to a RANGEEND (NC-110 EPP) and comes back after it; a range does
 // not run inside another, and a jump out of it ends it.
 #pragma once
@@ -66,7 +68,7 @@ namespace ncc::vm {
   X(Repeat, "jk", 1, 0, "pop a count 0..numbers[k]; open a repeat loop, or go to j if it is 0") \
   X(EndRepeat, "j", 0, 0, "count down the innermost repeat loop; go to j while it runs")       \
   X(Unloop, "d", 0, 0, "the next jump lands at repeat-loop depth n of its code: close deeper loops") \
-  X(CallEntry, "e", 0, 0, "call entry point e")                                                \
+  X(CallEntry, "e", 1, 0, "pop a count 1..9999; call entry point e that many times, one after the other") \
   X(CallRange, "jjd", 0, 0, "run the code from j1 (at loop depth n) to the RANGEEND at j2, then come back") \
   X(RangeEnd, "", 0, 0, "the end of a range: come back if the innermost frame runs it")       \
   X(Return, "", 0, 0, "return from a call")                                                    \
@@ -82,7 +84,8 @@ namespace ncc::vm {
   X(Show, "s", 0, 0, "append strings[s] to the pending message")                               \
   X(ShowValue, "t", 1, 0, "pop a value; append it to the pending message as type t shows")     \
   X(ShowText, "vn", 1, 0, "pop a byte index; append n bytes of memory v to the pending message") \
-  X(Message, "", 0, 0, "show the pending message to the operator, then clear it")
+  X(Message, "", 0, 0, "show the pending message to the operator, then clear it")                \
+  X(Check, "wr", 1, 1, "fail at word w unless the top meets value rule r (a parameter's value)")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,
@@ -105,7 +108,7 @@ constexpr int operand_size(char f) {
   switch (f) {
     case 'k': case 's': case 'j': case 'i': return 4;
     case 'c': case 'e': case 'y': return 2;
-    default: return 1;  // w v b f n t d
+    default: return 1;  // w v b f n t d r
   }
 }
 // The size of a whole instruction with opcode `op`.

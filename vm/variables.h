@@ -10,9 +10,10 @@
 namespace ncc {
 
 // What a store keeps: LongReal any finite double (below `limit` in magnitude when the
-// space sets one), Real a float, Byte 0..255, Integer and Long 16 and 32 bits.
-// Integer types round half away from zero; a value out of range is an error.
-enum class VarType : uint8_t { LongReal, Real, Byte, Integer, Long, Count };
+// space sets one), Real a float, Byte 0..255, Integer and Long 16 and 32 bits,
+// Thousandths a LongReal rounded to 0.001 (pp R parameters, fixed point). Integer
+// types and Thousandths round half away from zero; a value out of range is an error.
+enum class VarType : uint8_t { LongReal, Real, Byte, Integer, Long, Thousandths, Count };
 
 // The formats of a byte-addressed memory (NC-110 §2.10.5, Table 2.7): a bit, a byte,
 // 16 and 32-bit integers, IEEE float and double, little-endian. The index of a
@@ -39,6 +40,7 @@ struct VarSpace {
   };
   std::vector<Range> types;  // the type of index i is that of the last range with first <= i
   bool memory = false;       // byte-addressed: read and written through a MemFormat
+  bool local = false;        // each call starts with zeros; the caller's values come back on return
   double limit = 0;          // LongReal values must stay below this magnitude (0 = no limit)
 
   VarType type_of(uint32_t index) const {

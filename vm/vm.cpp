@@ -18,6 +18,7 @@ namespace {
 constexpr size_t kMaxLoops = 64;
 constexpr double kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
+constexpr double kMaxCallCount = 9999;  // pp Q (the largest count a dialect writes)
 
 inline uint32_t u32_at(const uint8_t* p) { return read_operand(p, 4); }
 inline uint16_t u16_at(const uint8_t* p) { return static_cast<uint16_t>(read_operand(p, 2)); }
@@ -152,6 +153,25 @@ bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint3
     default: write_le(p, std::bit_cast<uint64_t>(v)); break;
   }
   return true;
+}
+
+std::vector<double> Vm::take_locals() {
+  std::vector<double> saved;
+  for (size_t i = 0; i < m_.spaces.size(); ++i)
+    if (m_.spaces[i].local) {
+      saved.insert(saved.end(), vars_[i].begin(), vars_[i].end());
+      std::fill(vars_[i].begin(), vars_[i].end(), 0.0);
+    }
+  return saved;
+}
+
+void Vm::restore_locals(const std::vector<double>& saved) {
+  auto from = saved.begin();
+  for (size_t i = 0; i < m_.spaces.size(); ++i)
+    if (m_.spaces[i].local) {
+      std::copy(from, from + static_cast<std::ptrdiff_t>(vars_[i].size()), vars_[i].begin());
+      from += static_cast<std::ptrdiff_t>(vars_[i].size());
+    }
 }
 
 size_t Vm::calls() const {
@@ -292,6 +312,15 @@ RunStatus Vm::run(uint32_t entry) {
         if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");
         codes_.push_back(u16_at(operands));
         break;
+      case Op::Check: {
+        const ValueRule& rule = m_.semantics.value_rules[operands[1]];
+        const double v = st.back();
+        if (!(v >= rule.lo && v <= rule.hi) || (rule.whole && v != std::trunc(v)))
+          return fail_at(pc, operands[0], 0, DiagId::ParameterValue, rule.address, shortest(v),
+                         fmt::format("{} from {} to {}", rule.whole ? "whole numbers" : "values", shortest(rule.lo),
+                                     shortest(rule.hi)));
+        break;
+      }
       case Op::CodeOf: {
         double v = pop();
         const auto& numbered = m_.semantics.numbered;
@@ -362,11 +391,17 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       case Op::Unloop: landing_depth_ = operands[0]; break;
       case Op::CallEntry: {
+        double count = pop();
+        if (!(count >= 1 && count <= kMaxCallCount) || count != std::trunc(count))
+          return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
+                      fmt::format("whole numbers from 1 to {}", kMaxCallCount));
         uint32_t limit = m_.semantics.conventions.max_call_depth;
         if (p.frames.size() >= kMaxFrames || (limit && calls() >= limit))
           return fail(pc, DiagId::CallDepth, limit ? limit : kMaxFrames);
-        p.frames.push_back({p.pc, p.loops.size(), false, 0, 0, p.loops.size()});
-        p.pc = m_.entries[u16_at(operands)].pc;
+        const uint32_t start = m_.entries[u16_at(operands)].pc;
+        p.frames.push_back({p.pc, p.loops.size(), false, 0, 0, p.loops.size(), start, static_cast<int64_t>(count) - 1,
+                            take_locals()});
+        p.pc = start;
         break;
       }
       case Op::CallRange:
@@ -376,7 +411,8 @@ RunStatus Vm::run(uint32_t entry) {
         if (p.loops.size() < operands[8])
           return fail(pc, DiagId::BytecodeInvalid, "program", "a range deeper in repeat loops than its call");
         // The range's code counts its loop depth from its first block's.
-        p.frames.push_back({p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4), p.loops.size() - operands[8]});
+        p.frames.push_back(
+            {p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4), p.loops.size() - operands[8], 0, 0, {}});
         p.pc = u32_at(operands);
         break;
       case Op::RangeEnd:
@@ -394,6 +430,14 @@ RunStatus Vm::run(uint32_t entry) {
           return RunStatus::UnitEnded;
         }
         p.loops.resize(p.frames.back().loops);
+        if (p.frames.back().remaining > 0) {
+          // The next repetition starts afresh, as a new call would.
+          --p.frames.back().remaining;
+          take_locals();
+          p.pc = p.frames.back().entry;
+          break;
+        }
+        restore_locals(p.frames.back().locals);
         p.pc = p.frames.back().return_pc;
         p.frames.pop_back();
         break;

@@ -34,6 +34,9 @@ class Vm {
     bool range = false;
     uint32_t start = 0, end = 0;  // a range: its first instruction and its RangeEnd
     size_t base = 0;              // the open loops its code's loop depth 0 stands for
+    uint32_t entry = 0;           // a call: where each of its repetitions starts
+    int64_t remaining = 0;        //         the repetitions after this one
+    std::vector<double> locals;   //         the caller's local variables
   };
   struct Loop {
     int64_t remaining;
@@ -62,6 +65,9 @@ class Vm {
   void jump_to(uint32_t target);
   std::optional<size_t> landing_depth_;
   size_t calls() const;
+  // The local variable spaces, all in one, and zeroed (a call starts with zeros).
+  std::vector<double> take_locals();
+  void restore_locals(const std::vector<double>& saved);
 
   const Module& m_;
   Machine& machine_;

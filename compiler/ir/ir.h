@@ -37,6 +37,7 @@ enum class ExprOp : uint8_t {
   Text,    // `count` bytes at byte a of memory `space`: not a number
   String,  // Program::texts[text]: not a number
   TextEq,  // 1 if Text a holds the bytes of Text or String b
+  Check,   // a, which must meet semantics.value_rules[rule] (reported at word `slot`)
 };
 
 struct Expr {
@@ -51,6 +52,8 @@ struct Expr {
   uint16_t sys = 0;                    // Sys
   uint32_t text = 0;                   // String: index into Program::texts
   uint8_t count = 0;                   // Text: bytes
+  uint8_t slot = 0;                    // Check
+  uint8_t rule = 0;                    // Check
 };
 
 enum class WordKind : uint8_t {
@@ -58,6 +61,7 @@ enum class WordKind : uint8_t {
   Code,         // a G or M code: `code` indexes Program::semantics.codes
   BlockNumber,  // N or ':'
   Ignored,      // kept for printing only (a word the checks rejected)
+  Control,      // read by a statement, not by the machine (pp L and Q of a call or jump)
 };
 
 // A Code word whose code is found at run time from its value (NC-110 `GE1`).
@@ -100,7 +104,7 @@ struct Stmt {
   StmtKind kind = StmtKind::Machine;
   SourceRange range;
   ExprId target = kNoExpr;  // Assign: a Var expression
-  ExprId value = kNoExpr;   // Assign value; RepeatBegin/Call count
+  ExprId value = kNoExpr;   // Assign value; RepeatBegin count; Call count (none: once)
   ExprId cond = kNoExpr;    // Jump condition
   std::string label;        // Jump target label; Call target; Comment text
   bool optional = false;    // Comment after a mid-block '/': dropped when block skip is on

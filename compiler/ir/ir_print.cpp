@@ -82,6 +82,12 @@ std::string print_expr(const Program& p, ExprId id) {
     }
     case ExprOp::String: return "\"" + json_escape(p.texts[e.text]) + "\"";
     case ExprOp::TextEq: return fmt::format("(text== {} {})", print_expr(p, e.a), print_expr(p, e.b));
+    case ExprOp::Check: {
+      const ValueRule* rule = e.rule < p.semantics.value_rules.size() ? &p.semantics.value_rules[e.rule] : nullptr;
+      return rule ? fmt::format("(check {} {} {}..{}{})", rule->address, print_expr(p, e.a), shortest(rule->lo),
+                                shortest(rule->hi), rule->whole ? " whole" : "")
+                  : fmt::format("(check ? {})", print_expr(p, e.a));
+    }
     case ExprOp::Call:
       if (builtin_info(e.builtin).arity == 2)
         return fmt::format("({} {} {})", builtin_info(e.builtin).name, print_expr(p, e.a), print_expr(p, e.b));
@@ -114,7 +120,8 @@ std::string print(const Program& p, const SourceManager& sources) {
   out += "power_on";
   for (uint16_t i : p.semantics.power_on) out += fmt::format(" {}", p.semantics.codes[i].name);
   out += "\n";
-  for (const VarSpace& s : p.spaces) out += fmt::format("space {} size={}{}\n", s.name, s.size, s.memory ? " memory" : "");
+  for (const VarSpace& s : p.spaces)
+    out += fmt::format("space {} size={}{}{}\n", s.name, s.size, s.memory ? " memory" : "", s.local ? " local" : "");
 
   for (const Unit& u : p.units) {
     const char* kind = pick(u.kind, {"program", "subprogram", "macro"});
@@ -134,7 +141,7 @@ std::string print(const Program& p, const SourceManager& sources) {
       // Text the dialect does not show the operator (an NC-110 ';' block).
       bool shown = std::any_of(b.stmts.begin(), b.stmts.end(), [](const Stmt& s) { return s.kind == StmtKind::Comment; });
       if (!shown)
-        for (const std::string& c : b.comments) out += fmt::format("    note \"{}\"\n", json_escape(c));
+        for (const std::string& text : b.comments) out += fmt::format("    note \"{}\"\n", json_escape(text));
       if (!b.words.empty()) {
         out += "    words";
         for (const Word& w : b.words) out += fmt::format(" {}{}{}", w.optional ? "/" : "", w.address, w.text);

@@ -82,7 +82,7 @@ class Lowering {
     s.first_word = static_cast<uint32_t>(m_.source_map.words.size());
     // A code chosen at run time (GE1) is found by its slot, as a parameter word is.
     for (const ir::Word& w : b.words)
-      if (w.kind == ir::WordKind::Parameter || w.kind == ir::WordKind::Code)
+      if (w.kind == ir::WordKind::Parameter || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Control)
         m_.source_map.words.push_back({w.slot, static_cast<int16_t>(w.kind == ir::WordKind::Code && w.code >= 0 ? w.code : -1),
                                        w.range.line, w.range.col, w.range.end_col});
     s.word_count = static_cast<uint32_t>(m_.source_map.words.size()) - s.first_word;
@@ -146,6 +146,12 @@ class Lowering {
         }
         return;
       }
+      case ir::ExprOp::Check:
+        expr(e.a);
+        op(Op::Check);
+        u8(e.slot);
+        u8(e.rule);
+        return;
       case ir::ExprOp::Text:
       case ir::ExprOp::String: return;  // not numbers: only parts of the above
       default: break;
@@ -362,6 +368,12 @@ class Lowering {
             u8(static_cast<uint32_t>(label_depth.count(s.label) ? label_depth.at(s.label) : 0));
             break;
           case ir::StmtKind::Call:
+            if (s.value != ir::kNoExpr) {
+              expr(s.value);
+            } else {
+              op(Op::Const);
+              u32(number(1));
+            }
             calls_.push_back({pc() + 1, s.label});
             op(Op::CallEntry);
             u16(0);

@@ -500,5 +500,67 @@ TEST(Vm, CallDepthLimitOfTheDialect) {
   EXPECT_EQ(r.issues[0].id, DiagId::CallDepth);
 }
 
+// A subprogram called three times by one call, with a local counter: each repetition
+// starts it at zero, and the caller's own value comes back after the call.
+TEST(Vm, CallCountRepeatsTheSubprogramWithFreshLocals) {
+  Builder t;
+  VarSpace local{"C", 1, {}};
+  local.local = true;
+  t.p.spaces.push_back(local);
+  const uint16_t c = static_cast<uint16_t>(t.p.spaces.size() - 1);
+  auto counter = [&] { return t.p.add({ir::ExprOp::Var, Builtin::Sin, c, 0, t.num(0), ir::kNoExpr, {}}); };
+  ir::Block& set = t.block();
+  t.assign(set, counter(), t.num(7));
+  ir::Block& caller = t.block();
+  ir::Stmt call(ir::StmtKind::Call, caller.range);
+  call.label = "sub";
+  call.value = t.num(3);
+  caller.stmts.push_back(call);
+  t.move_x(t.block(), counter());  // 7 again after the call
+  t.p.units.push_back({});
+  t.p.units.back().kind = ir::UnitKind::Subprogram;
+  t.p.units.back().name = "sub";
+  ir::Block& body = t.block();
+  t.assign(body, counter(), t.bin(ir::ExprOp::Add, counter(), t.num(1)));
+  t.move_x(body, counter());  // 1 in every repetition
+  auto r = t.run();
+  EXPECT_TRUE(r.issues.empty());
+  EXPECT_EQ(r.xs, (std::vector<double>{1, 1, 1, 7}));
+}
+
+TEST(Vm, CheckStopsAValueOutsideItsRule) {
+  Builder t;
+  t.p.semantics.value_rules.push_back({"Q", 1, 9999, true});
+  ir::Expr check{ir::ExprOp::Check, Builtin::Sin, 0, 0, t.num(2.5), ir::kNoExpr, {}};
+  check.slot = 'X' - 'A';
+  t.move_x(t.block(), t.num(4));
+  t.move_x(t.block(), t.p.add(check));
+  auto r = t.run();
+  EXPECT_EQ(r.xs, (std::vector<double>{4}));
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::ParameterValue);
+  EXPECT_EQ(r.issues[0].message, "Q 2.5, given by a parameter, is outside the values the address takes: whole numbers from 1 to 9999");
+}
+
+TEST(Vm, ThousandthsRoundHalfAwayFromZero) {
+  Builder t;
+  VarSpace r{"R", 2, {{0, VarType::Thousandths}}};
+  r.limit = 70000;
+  t.p.spaces.push_back(r);
+  const uint16_t space = static_cast<uint16_t>(t.p.spaces.size() - 1);
+  auto var = [&](double i) { return t.p.add({ir::ExprOp::Var, Builtin::Sin, space, 0, t.num(i), ir::kNoExpr, {}}); };
+  ir::Block& b = t.block();
+  t.assign(b, var(0), t.bin(ir::ExprOp::Div, t.num(10), t.num(3)));
+  t.assign(b, var(1), t.num(-0.0125));
+  t.move_x(b, var(0));
+  t.move_x(t.block(), var(1));
+  ir::Block& over = t.block();
+  t.assign(over, var(0), t.num(70000));
+  auto result = t.run();
+  EXPECT_EQ(result.xs, (std::vector<double>{3.333, -0.013}));
+  ASSERT_EQ(result.issues.size(), 1u);
+  EXPECT_EQ(result.issues[0].id, DiagId::ValueOverflow);
+}
+
 }  // namespace
 }  // namespace ncc

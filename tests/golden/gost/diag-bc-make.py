@@ -71,8 +71,9 @@ def main():
     domain = bytes([CONST]) + struct.pack("<I", 1) + bytes([NEG, CALL1, SQRT, WORD_POP, ord("X") - ord("A")]) + bytes([NOP] * 5)
     assert len(domain) == len(words)
     files["domain"] = with_crc(good.replace(words, domain))
-    # ... and as "CallEntry 0; Nop x 12": block N1 calls its own program without end.
-    recurse = bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 12)
+    # ... and as "Const k1; CallEntry 0; Nop x 7": block N1 calls its own program (ten
+    # times) without end.
+    recurse = bytes([CONST]) + struct.pack("<I", 1) + bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 7)
     assert len(recurse) == len(words)
     files["recursion"] = with_crc(good.replace(words, recurse))
 
