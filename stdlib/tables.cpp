@@ -122,7 +122,7 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
       }
       if (c[5] != "-")
         for (const std::string& cls : split(c[5], ',')) {
-          ok = ok && (cls == "BY" || cls == "IN" || cls == "LI" || cls == "RE" || cls == "LR");
+          ok = ok && (cls == "BY" || cls == "IN" || cls == "LI" || cls == "RE" || cls == "LR" || cls == "R");
           a.params.push_back(cls);
         }
     }
@@ -179,6 +179,7 @@ std::optional<Table> load_table(std::string_view dialect, std::string_view file,
 
 bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cycles, std::vector<FnCall>& out,
                      std::string& error) {
+  if (text == "-") return true;  // none: a code the front end reads, or a state the trace records
   for (const std::string& part : split(text, '+')) {
     std::string_view name = part;
     std::string_view arg;

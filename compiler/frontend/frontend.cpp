@@ -5,6 +5,7 @@
 
 #include "gost/gost_frontend.h"
 #include "nc110/nc110_frontend.h"
+#include "pp/pp_frontend.h"
 
 namespace ncc {
 
@@ -16,8 +17,33 @@ struct DialectEntry {
 constexpr DialectEntry kDialects[] = {
     {"gost", gost::make_gost_frontend},
     {"nc110", nc110::make_nc110_frontend},
+    {"pp", pp::make_pp_frontend},
 };
 }  // namespace
+
+std::string describe_char(std::string_view text, size_t at, size_t& length) {
+  length = 1;
+  unsigned char c = static_cast<unsigned char>(text[at]);
+  if (c >= 'a' && c <= 'z') return fmt::format("lower-case '{}'", static_cast<char>(c));
+  if (c >= 0x20 && c < 0x7F) return fmt::format("'{}'", static_cast<char>(c));
+  if (c < 0x80) return fmt::format("control character 0x{:02X}", c);
+  // A whole UTF-8 sequence, if it is one.
+  size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
+  if (n && at + n <= text.size()) {
+    uint32_t cp = c & (0x7F >> n);
+    bool valid = true;
+    for (size_t i = 1; i < n; ++i) {
+      unsigned char cc = static_cast<unsigned char>(text[at + i]);
+      valid = valid && (cc & 0xC0) == 0x80;
+      cp = (cp << 6) | (cc & 0x3F);
+    }
+    if (valid) {
+      length = n;
+      return fmt::format("'{}' (U+{:04X})", text.substr(at, n), cp);
+    }
+  }
+  return fmt::format("byte 0x{:02X}", c);
+}
 
 int32_t program_code(ir::Program& program, const CodeDesc& desc) {
   auto& codes = program.semantics.codes;
@@ -30,9 +56,10 @@ int32_t program_code(ir::Program& program, const CodeDesc& desc) {
 void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens) {
   for (const std::string& token : tokens) {
     CodeDesc desc;
-    if (token.size() > 1 && token[0] == 'G') {
-      auto it = tables.g_codes.find(std::stoi(token.substr(1)));
-      if (it == tables.g_codes.end()) continue;
+    if (token.size() > 1 && (token[0] == 'G' || token[0] == 'M') && std::isdigit(static_cast<unsigned char>(token[1]))) {
+      const auto& codes = token[0] == 'G' ? tables.g_codes : tables.m_codes;
+      auto it = codes.find(std::stoi(token.substr(1)));
+      if (it == codes.end()) continue;
       desc = it->second.desc;
     } else {
       desc.name = token;

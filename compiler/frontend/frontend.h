@@ -27,11 +27,15 @@ class Frontend {
 
 std::vector<std::string_view> dialect_names();
 
+// A character outside a comment, for a message: "'*'", "lower-case 'x'", "'Д'
+// (U+0414)", "byte 0xFF"; `length` is set to its bytes.
+std::string describe_char(std::string_view text, size_t at, size_t& length);
+
 // The index of a code in the program's code table, adding it on first use.
 int32_t program_code(ir::Program& program, const CodeDesc& desc);
 
-// The power-on state from a dialect's table: "G00" names a G code, anything else a
-// canonical function ("spindle.stop").
+// The power-on state from a dialect's table: "G00" and "M05" name codes, anything
+// else a canonical function ("spindle.stop").
 void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens);
 // A machine builder's own codes from the profile's `<section>.tables` (`g_codes`,
 // `m_codes`: files in the columns of stdlib/dialects/<dialect>/*_codes.tsv), for the

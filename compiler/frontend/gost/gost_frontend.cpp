@@ -19,31 +19,6 @@ using ncc_gost::GostParser;
 
 bool is_ignored(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\0' || c == '\x7F'; }
 
-// "'*'", "lower-case 'x'", "'Д' (U+0414)", "byte 0xFF".
-std::string describe_char(std::string_view text, size_t at, size_t& length) {
-  length = 1;
-  unsigned char c = static_cast<unsigned char>(text[at]);
-  if (c >= 'a' && c <= 'z') return fmt::format("lower-case '{}'", static_cast<char>(c));
-  if (c >= 0x20 && c < 0x7F) return fmt::format("'{}'", static_cast<char>(c));
-  if (c < 0x80) return fmt::format("control character 0x{:02X}", c);
-  // A whole UTF-8 sequence, if it is one.
-  size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
-  if (n && at + n <= text.size()) {
-    uint32_t cp = c & (0x7F >> n);
-    bool valid = true;
-    for (size_t i = 1; i < n; ++i) {
-      unsigned char cc = static_cast<unsigned char>(text[at + i]);
-      valid = valid && (cc & 0xC0) == 0x80;
-      cp = (cp << 6) | (cc & 0x3F);
-    }
-    if (valid) {
-      length = n;
-      return fmt::format("'{}' (U+{:04X})", text.substr(at, n), cp);
-    }
-  }
-  return fmt::format("byte 0x{:02X}", c);
-}
-
 // Maps ANTLR syntax errors to diagnostics at the right column.
 class ErrorListener final : public antlr4::BaseErrorListener {
  public:

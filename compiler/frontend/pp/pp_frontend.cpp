@@ -1,0 +1,127 @@
+// pp front end: the part program with its subprograms, and the macro files its G72
+// calls name (and theirs), each read once, into one IR program.
+#include "pp_frontend.h"
+
+#include <deque>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "reader.h"
+
+namespace ncc::pp {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr uintmax_t kMaxFileSize = 256 << 20;
+
+std::optional<std::string> read_file(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) > kMaxFileSize || ec) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (!in && !in.eof()) return std::nullopt;
+  return buffer.str();
+}
+
+class PpFrontend final : public Frontend {
+ public:
+  explicit PpFrontend(Settings settings) : s_(std::move(settings)) {
+    rules_.tables = &s_.tables;
+    rules_.block_number_order = false;  // unique in the file (the reader), in any order
+  }
+
+  ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
+    ir::Program program;
+    program.dialect = program.semantics.dialect = "pp";
+    program.files.push_back(file);
+    program.semantics.conventions = s_.conventions;
+    program.semantics.cycles = s_.tables.cycles;
+    // R0..R95, one set for the whole run, fixed point to 0.001 (decision 9); the jump
+    // counters of G73, local to each call (decision 14).
+    Spaces spaces;
+    VarSpace r{"R", 96, {{0, VarType::Thousandths}}};
+    r.limit = 70000;
+    spaces.r = static_cast<uint16_t>(program.spaces.size());
+    program.spaces.push_back(r);
+    VarSpace counters{"G73", 0, {{0, VarType::Long}}};
+    counters.local = true;
+    spaces.counters = static_cast<uint16_t>(program.spaces.size());
+    program.spaces.push_back(counters);
+
+    Reader main(s_, program, sources.file(file), file, diags, spaces, std::nullopt);
+    main.run();
+    std::deque<MacroCall> pending(main.macro_calls().begin(), main.macro_calls().end());
+    // Macros live in files L<nnnn> of the library (§2.3.5, decision 13).
+    fs::path root = (!options.library.empty() ? fs::path(options.library)
+                     : !s_.library.empty()    ? fs::path(s_.library)
+                                              : fs::path(sources.file(file).path()).parent_path()).lexically_normal();
+    std::set<uint32_t> done;
+    while (!pending.empty() && !diags.limit_reached()) {
+      MacroCall call = pending.front();
+      pending.pop_front();
+      if (!done.insert(call.number).second) continue;
+      std::string name = Reader::macro_name(call.number);
+      fs::path found;
+      std::optional<std::string> text;
+      for (const fs::path& candidate : {root / name, root / (name + ".pp")})
+        if ((text = read_file(candidate))) {
+          found = candidate;
+          break;
+        }
+      if (!text) {
+        diags.report(DiagId::ProgramNotFound, call.range, "L" + std::to_string(call.number),
+                     (root / name).string() + "[.pp]");
+        program.units[call.unit].blocks[call.block].has_errors = true;
+        continue;
+      }
+      uint32_t f = sources.add(found.string(), std::move(*text));
+      program.files.push_back(f);
+      Reader macro(s_, program, sources.file(f), f, diags, spaces, call.number);
+      macro.run();
+      for (const MacroCall& c : macro.macro_calls()) pending.push_back(c);
+    }
+    program.spaces[spaces.counters].size = spaces.next_counter;
+    set_power_on(program, s_.tables, s_.power_on);
+    add_dynamic_codes(program);
+    return program;
+  }
+
+  const CheckRules& rules() const override { return rules_; }
+
+ private:
+  // A G or M code given by an R parameter is found at run time: the program then
+  // carries every code of that letter.
+  void add_dynamic_codes(ir::Program& program) const {
+    std::set<char> letters;
+    for (const ir::Unit& u : program.units)
+      for (const ir::Block& b : u.blocks)
+        for (const ir::Word& w : b.words)
+          if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) letters.insert(w.address[0]);
+    for (char letter : letters)
+      for (const auto& [number, entry] : letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes) {
+        // A code the front end reads itself (G71...) cannot be chosen at run time.
+        if (s_.control.count(entry.desc.name)) continue;
+        auto index = static_cast<uint16_t>(program_code(program, entry.desc));
+        program.semantics.numbered.push_back(
+            {static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
+      }
+  }
+
+  Settings s_;
+  CheckRules rules_;
+};
+
+}  // namespace
+
+std::unique_ptr<Frontend> make_pp_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
+  auto settings = load_settings(profile, diags);
+  if (!settings) return nullptr;
+  return std::make_unique<PpFrontend>(std::move(*settings));
+}
+
+}  // namespace ncc::pp

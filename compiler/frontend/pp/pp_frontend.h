@@ -1,0 +1,9 @@
+#pragma once
+
+#include "frontend/frontend.h"
+
+namespace ncc::pp {
+
+std::unique_ptr<Frontend> make_pp_frontend(const stdlib::Profile& profile, Diagnostics& diags);
+
+}  // namespace ncc::pp
