@@ -1,5 +1,6 @@
 #include "frontend.h"
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -20,6 +21,18 @@ constexpr DialectEntry kDialects[] = {
     {"pp", pp::make_pp_frontend},
 };
 }  // namespace
+
+std::optional<std::string> read_called_file(const std::string& path) {
+  constexpr uintmax_t kMaxFileSize = 256 << 20;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxFileSize || ec)
+    return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (!in && !in.eof()) return std::nullopt;
+  return buffer.str();
+}
 
 std::string describe_char(std::string_view text, size_t at, size_t& length) {
   length = 1;

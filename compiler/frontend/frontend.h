@@ -2,6 +2,8 @@
 #pragma once
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -26,6 +28,10 @@ class Frontend {
 };
 
 std::vector<std::string_view> dialect_names();
+
+// The text of a program file a program calls (NC-110 CLS, pp G72): nothing if it is
+// not a regular file of at most 256 MiB or cannot be read.
+std::optional<std::string> read_called_file(const std::string& path);
 
 // A character outside a comment, for a message: "'*'", "lower-case 'x'", "'Д'
 // (U+0414)", "byte 0xFF"; `length` is set to its bytes.

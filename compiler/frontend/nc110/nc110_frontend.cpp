@@ -4,9 +4,7 @@
 
 #include <deque>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "reader.h"
 
@@ -15,18 +13,6 @@ namespace ncc::nc110 {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr uintmax_t kMaxFileSize = 256 << 20;
-
-std::optional<std::string> read_program(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) > kMaxFileSize || ec) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (!in && !in.eof()) return std::nullopt;
-  return buffer.str();
-}
 
 class Nc110Frontend final : public Frontend {
  public:
@@ -77,7 +63,7 @@ class Nc110Frontend final : public Frontend {
       std::optional<std::string> text;
       fs::path found;
       for (const fs::path& candidate : candidates)
-        if ((text = read_program(candidate))) {
+        if ((text = read_called_file(candidate.string()))) {
           found = candidate;
           break;
         }

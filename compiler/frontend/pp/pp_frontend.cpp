@@ -4,9 +4,7 @@
 
 #include <deque>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "reader.h"
 
@@ -15,18 +13,6 @@ namespace ncc::pp {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr uintmax_t kMaxFileSize = 256 << 20;
-
-std::optional<std::string> read_file(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::is_regular_file(path, ec) || fs::file_size(path, ec) > kMaxFileSize || ec) return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (!in && !in.eof()) return std::nullopt;
-  return buffer.str();
-}
 
 class PpFrontend final : public Frontend {
  public:
@@ -69,7 +55,7 @@ class PpFrontend final : public Frontend {
       fs::path found;
       std::optional<std::string> text;
       for (const fs::path& candidate : {root / name, root / (name + ".pp")})
-        if ((text = read_file(candidate))) {
+        if ((text = read_called_file(candidate.string()))) {
           found = candidate;
           break;
         }

@@ -154,14 +154,7 @@ void Reader::read_tape() {
 void Reader::read_start(uint32_t line_no, size_t pct) {
   const size_t base = source_.line_offset(line_no);
   std::string_view line = source_.line(line_no);
-  piece_ = Piece{line_no, static_cast<uint32_t>(pct - base + 1), pct, base + line.size()};
-  sanitized_.assign(line.substr(pct - base));
-  for (char& c : sanitized_)
-    if (static_cast<unsigned char>(c) >= 0x80) c = '\x01';
-  input_.load(sanitized_);
-  lexer_.setInputStream(&input_);
-  tokens_.setTokenSource(&lexer_);
-  parser_.setTokenStream(&tokens_);
+  load(Piece{line_no, static_cast<uint32_t>(pct - base + 1), pct, base + line.size()});
   PpParser::ProgramStartContext* ctx = parser_.programStart();
   start_range_ = range(ctx->getStart(), ctx->getStart());
   number_ = "%";
@@ -192,6 +185,19 @@ void Reader::read_start(uint32_t line_no, size_t pct) {
   }
 }
 
+void Reader::load(const Piece& piece) {
+  // Outside 7-bit ASCII only a comment takes a character: U+0001 stands in for each
+  // byte, so that the lexer reports it and every column stays a byte offset.
+  piece_ = piece;
+  sanitized_.assign(source_.text().substr(piece.begin, piece.end - piece.begin));
+  for (char& c : sanitized_)
+    if (static_cast<unsigned char>(c) >= 0x80) c = '\x01';
+  input_.load(sanitized_);
+  lexer_.setInputStream(&input_);
+  tokens_.setTokenSource(&lexer_);
+  parser_.setTokenStream(&tokens_);
+}
+
 SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
   auto at = [&](antlr4::Token* t, size_t offset) {
     uint32_t line = piece_.line + static_cast<uint32_t>(t->getLine()) - 1;
@@ -214,14 +220,7 @@ std::string Reader::comment_text(antlr4::Token* t) const {
 // ---- One block --------------------------------------------------------------------
 
 void Reader::read_block(const Piece& piece) {
-  piece_ = piece;
-  sanitized_.assign(source_.text().substr(piece.begin, piece.end - piece.begin));
-  for (char& c : sanitized_)
-    if (static_cast<unsigned char>(c) >= 0x80) c = '\x01';
-  input_.load(sanitized_);
-  lexer_.setInputStream(&input_);
-  tokens_.setTokenSource(&lexer_);
-  parser_.setTokenStream(&tokens_);
+  load(piece);
   block_ = ir::Block{};
   assignments_.clear();
   slash_ = false;

@@ -61,6 +61,7 @@ class Reader {
   };
 
   void read_tape();
+  void load(const Piece& piece);  // hands the text of `piece` to the parser
   void read_start(uint32_t line_no, size_t pct);
   void read_block(const Piece& piece);
   void build_units();
