@@ -83,6 +83,37 @@ void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, con
   }
 }
 
+void add_dynamic_codes(ir::Program& program, const stdlib::DialectTables& tables, const std::set<std::string>& fixed) {
+  std::set<char> letters;
+  for (const ir::Unit& u : program.units)
+    for (const ir::Block& b : u.blocks)
+      for (const ir::Word& w : b.words)
+        if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) letters.insert(w.address[0]);
+  auto& sem = program.semantics;
+  std::map<int, uint16_t> g_index;
+  std::map<std::string, std::vector<uint16_t>> groups;  // G group -> its codes (no matrix)
+  std::map<std::string, std::vector<uint16_t>> sets;    // M conflict set -> its codes
+  for (char letter : letters)
+    for (const auto& [number, entry] : letter == 'G' ? tables.g_codes : tables.m_codes) {
+      if (fixed.count(entry.desc.name)) continue;
+      auto index = static_cast<uint16_t>(program_code(program, entry.desc));
+      sem.numbered.push_back({static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
+      if (letter == 'G') g_index[number] = index;
+      if (letter == 'G' && tables.incompatible.empty() && entry.group != "-") groups[entry.group].push_back(index);
+      for (const std::string& set : entry.conflict_sets) sets[set].push_back(index);
+    }
+  for (const auto& [a, b] : tables.incompatible)
+    if (g_index.count(a) && g_index.count(b)) sem.incompatible.push_back({g_index[a], g_index[b], ""});
+  auto pairs = [&](const std::map<std::string, std::vector<uint16_t>>& of, bool named) {
+    for (const auto& [name, codes] : of)
+      for (uint16_t a : codes)
+        for (uint16_t b : codes)
+          if (a != b) sem.incompatible.push_back({a, b, named ? name : ""});
+  };
+  pairs(groups, false);
+  pairs(sets, true);
+}
+
 std::vector<std::string_view> dialect_names() {
   std::vector<std::string_view> names;
   for (const DialectEntry& d : kDialects) names.push_back(d.name);

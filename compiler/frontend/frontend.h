@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,6 +49,13 @@ void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, con
 // letters given; a row replaces the table's code of its number. False if reported.
 bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std::string_view letters,
                         stdlib::DialectTables& tables, Diagnostics& diags);
+
+// Codes a program chooses at run time (NC-110 `GE1`, pp `G R3`): the program then
+// carries every code of the letters its dynamic words use, except those named in
+// `fixed` (codes the front end reads itself), and the pairs of them that must not
+// share a block: the compatibility matrix (without one, two codes of one G group),
+// and the M conflict sets.
+void add_dynamic_codes(ir::Program& program, const stdlib::DialectTables& tables, const std::set<std::string>& fixed = {});
 
 // Builds the front end of `dialect` configured by `profile`; nullptr when the
 // dialect is unknown or its profile settings are invalid (reported).

@@ -78,7 +78,7 @@ class Nc110Frontend final : public Frontend {
     }
 
     set_power_on(program, s_.tables, s_.power_on);
-    add_dynamic_codes(program);
+    add_dynamic_codes(program, s_.tables);
     return program;
   }
 
@@ -98,32 +98,6 @@ class Nc110Frontend final : public Frontend {
       space.memory = true;
       program.spaces.push_back(space);
     }
-  }
-
-  // A G or M code given by an E parameter is found at run time: the program then
-  // carries every code of that letter, the compatibility matrix and the M conflict sets.
-  void add_dynamic_codes(ir::Program& program) const {
-    std::set<char> letters;
-    for (const ir::Unit& u : program.units)
-      for (const ir::Block& b : u.blocks)
-        for (const ir::Word& w : b.words)
-          if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) letters.insert(w.address[0]);
-    auto& sem = program.semantics;
-    std::map<int, uint16_t> g_index;
-    std::map<std::string, std::vector<uint16_t>> sets;  // M conflict set -> its codes
-    for (char letter : letters)
-      for (const auto& [number, entry] : letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes) {
-        auto index = static_cast<uint16_t>(program_code(program, entry.desc));
-        sem.numbered.push_back({static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
-        if (letter == 'G') g_index[number] = index;
-        for (const std::string& set : entry.conflict_sets) sets[set].push_back(index);
-      }
-    for (const auto& [a, b] : s_.tables.incompatible)
-      if (g_index.count(a) && g_index.count(b)) sem.incompatible.push_back({g_index[a], g_index[b], ""});
-    for (const auto& [set, codes] : sets)
-      for (uint16_t a : codes)
-        for (uint16_t b : codes)
-          if (a != b) sem.incompatible.push_back({a, b, set});
   }
 
   Settings s_;

@@ -73,31 +73,17 @@ class PpFrontend final : public Frontend {
     }
     program.spaces[spaces.counters].size = spaces.next_counter;
     set_power_on(program, s_.tables, s_.power_on);
-    add_dynamic_codes(program);
+    // A code the front end reads itself (G71...) cannot be chosen at run time.
+    std::set<std::string> fixed;
+    for (const auto& [name, control] : s_.control)
+      if (control.action != Control::Dwell) fixed.insert(name);
+    add_dynamic_codes(program, s_.tables, fixed);
     return program;
   }
 
   const CheckRules& rules() const override { return rules_; }
 
  private:
-  // A G or M code given by an R parameter is found at run time: the program then
-  // carries every code of that letter.
-  void add_dynamic_codes(ir::Program& program) const {
-    std::set<char> letters;
-    for (const ir::Unit& u : program.units)
-      for (const ir::Block& b : u.blocks)
-        for (const ir::Word& w : b.words)
-          if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) letters.insert(w.address[0]);
-    for (char letter : letters)
-      for (const auto& [number, entry] : letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes) {
-        // A code the front end reads itself (G71...) cannot be chosen at run time.
-        if (s_.control.count(entry.desc.name)) continue;
-        auto index = static_cast<uint16_t>(program_code(program, entry.desc));
-        program.semantics.numbered.push_back(
-            {static_cast<uint8_t>(letter_slot(letter)), static_cast<uint16_t>(number), index});
-      }
-  }
-
   Settings s_;
   CheckRules rules_;
 };
