@@ -477,10 +477,8 @@ Reader::Flow Reader::flow_of(const ir::Block& b) const {
   for (const ir::Word& w : b.words) {
     if (w.kind == ir::WordKind::Code && w.code >= 0) {
       const CodeDesc& code = program_.semantics.codes[static_cast<size_t>(w.code)];
-      if (auto it = s_.control.find(code.name); it != s_.control.end()) {
-        f.controls.push_back(&it->second);
+      if (auto it = s_.control.find(code.name); it != s_.control.end())
         f.control_word[static_cast<size_t>(it->second.action)] = &w;
-      }
       for (const FnCall& call : code.calls)
         f.ends_main = f.ends_main || call.fn == Fn::ProgramEnd || call.fn == Fn::ProgramEndInformation;
     }

@@ -52,7 +52,6 @@ class Reader {
   };
   // What a block does to the program's structure and flow.
   struct Flow {
-    std::vector<const ControlCode*> controls;
     const ir::Word* control_word[9] = {};  // by Control: the code that asked for it
     std::optional<uint32_t> l;              // L, when written as a number
     const ir::Word* l_word = nullptr;
