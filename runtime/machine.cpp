@@ -8,6 +8,10 @@
 
 namespace ncc {
 
+namespace {
+constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (mm/min)", "feeds per revolution (mm/rev)"};
+}  // namespace
+
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
     : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues) {}
@@ -34,6 +38,7 @@ void Machine::reset_state() {
   refresh_base_origin();
   position_offset_ = {};
   feed_.reset();
+  helix_pitch_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
   if (!conv_.corrector_in_tool_word) offset_number_ = 0;
@@ -75,7 +80,7 @@ double Machine::angle_degrees(double v) const {
 double Machine::axis_units(int axis, double v) const {
   const AxisConfig& a = config_.axes[static_cast<size_t>(axis)];
   switch (a.kind) {
-    case AxisKind::Linear: return length_units(v);
+    case AxisKind::Linear: return length_units(modal_.diameter && kAxisLetters[axis] == conv_.diameter_axis ? v / 2 : v);
     case AxisKind::Rotary: return angle_degrees(v);
     case AxisKind::Indexing: return v * a.index_step;
   }
@@ -141,11 +146,14 @@ FnCall Machine::current(FnGroup group) const {
     case FnGroup::Dynamics:
       if (modal_.dynamics < 0) break;  // never set: nothing to give back
       return {modal_.dynamics == 0 ? Fn::DynamicsCornerSlowdown : modal_.dynamics == 1 ? Fn::DynamicsContinuous
-                                                                                      : Fn::DynamicsPointToPoint};
+              : modal_.dynamics == 2 ? Fn::DynamicsPointToPoint : Fn::DynamicsSmooth};
     case FnGroup::Gtl: return {modal_.gtl ? Fn::GtlOpen : Fn::GtlClose};
     case FnGroup::SpindleRange:
       return modal_.spindle_range > 0 ? FnCall{Fn::SpindleRangeForce, static_cast<uint16_t>(modal_.spindle_range)}
                                       : FnCall{modal_.spindle_range < 0 ? Fn::SpindleRangeAuto : Fn::SpindleRangeCancel};
+    case FnGroup::Diameter: return {modal_.diameter ? Fn::DiameterOn : Fn::DiameterOff};
+    case FnGroup::Helix: return {modal_.helix ? Fn::HelixOn : Fn::HelixOff};
+    case FnGroup::FeedReduction: return {modal_.feed_reduced ? Fn::FeedReduced : Fn::FeedProgrammed};
     default: break;
   }
   return {Fn::Count};  // not restorable: the tables reject such block-only codes
@@ -153,12 +161,7 @@ FnCall Machine::current(FnGroup group) const {
 
 void Machine::tool_length_event() {
   Event e{EventKind::ToolLengthOffset};
-  if (modal_.length != 0) {
-    auto it = config_.offsets.find(offset_number_);
-    double length = it == config_.offsets.end() ? 0 : it->second.length * modal_.length;
-    std::string axes = it != config_.offsets.end() && it->second.axis ? std::string(1, it->second.axis) : conv_.tool_offset_axes;
-    for (char axis : axes) e.pos[axis_index(axis)] = to_program(length);
-  }
+  e.pos = in_program_units(compensation().length);
   emit(e);
 }
 
@@ -255,6 +258,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       modal_.length = call.fn == Fn::LengthOff ? 0 : call.fn == Fn::LengthPlus ? 1 : -1;
       break;
     case Fn::WorkOffset:
+      // pp G92: a G5 code in its block names the offset to load; it selects nothing.
+      if (block_.offset_load) {
+        block_.load_entry = call.arg;
+        break;
+      }
       if (call.arg != 0 && !offsets_.count(call.arg)) {
         report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
         break;
@@ -358,9 +366,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::DynamicsCornerSlowdown:
     case Fn::DynamicsContinuous:
-    case Fn::DynamicsPointToPoint: {
-      int mode = call.fn == Fn::DynamicsCornerSlowdown ? 0 : call.fn == Fn::DynamicsContinuous ? 1 : 2;
-      if (mode == 2) profile_running_ = false;
+    case Fn::DynamicsPointToPoint:
+    case Fn::DynamicsSmooth: {
+      int mode = call.fn == Fn::DynamicsCornerSlowdown ? 0 : call.fn == Fn::DynamicsContinuous ? 1
+               : call.fn == Fn::DynamicsPointToPoint ? 2 : 3;
+      if (mode >= 2) profile_running_ = false;
       if (mode != modal_.dynamics) event(EventKind::PathMode, 4 + mode);
       modal_.dynamics = mode;
       break;
@@ -384,6 +394,50 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       event(EventKind::SpindleRange, modal_.spindle_range);
       break;
     case Fn::PartChange: event(EventKind::PartChange); break;
+    case Fn::MotionReference: block_.reference = true; break;
+    case Fn::OffsetLoad: break;  // found before the block's codes apply (execute)
+    case Fn::DiameterOn:
+    case Fn::DiameterOff:
+      if (modal_.diameter != (call.fn == Fn::DiameterOn)) event(EventKind::Diameter, call.fn == Fn::DiameterOn);
+      modal_.diameter = call.fn == Fn::DiameterOn;
+      break;
+    case Fn::HelixOn:
+    case Fn::HelixOff: modal_.helix = call.fn == Fn::HelixOn; break;
+    case Fn::HelixPitch: block_.helix_pitch = block_.code_name; break;
+    case Fn::TransformCancel: {
+      const bool shifted = frame_.shift != AxisValues{};
+      const bool transformed = frame_.transformed();
+      frame_.mirror.fill(false);
+      frame_.scale.fill(1);
+      frame_.shift.fill(0);
+      if (emit_events && transformed) transform_event();
+      if (emit_events && shifted) origin_event();
+      break;
+    }
+    case Fn::Coolant3:
+      modal_.coolant3 = true;
+      event(EventKind::Coolant, 3);
+      break;
+    case Fn::Coolant4:
+      modal_.coolant4 = true;
+      event(EventKind::Coolant, 4);
+      break;
+    case Fn::CoolantOff34:
+      modal_.coolant3 = modal_.coolant4 = false;
+      event(EventKind::Coolant, 5);
+      break;
+    case Fn::FeedReduced:
+    case Fn::FeedProgrammed:
+      if (modal_.feed_reduced != (call.fn == Fn::FeedReduced)) event(EventKind::FeedReduction, call.fn == Fn::FeedReduced);
+      modal_.feed_reduced = call.fn == Fn::FeedReduced;
+      break;
+    case Fn::Aux: {
+      if (!emit_events) break;
+      Event e{EventKind::Aux};
+      e.text = block_.code_name;
+      emit(e);
+      break;
+    }
     default:
       // The three-letter functions (origins, transforms, limits, zones...): their
       // axis words are operands, not a move.
@@ -396,6 +450,10 @@ void Machine::registers() {
   // F, S, T and the offset number are modal registers (§1.3); G00 ignores F but
   // keeps it (Table 5).
   if (has('F')) {
+    // pp: what F may be depends on the feed mode (mm/min or mm/rev).
+    const double* range = conv_.feed_limits[modal_.feed_mode];
+    if (range[1] > 0 && !(word('F') >= range[0] && word('F') <= range[1]))
+      report(DiagId::FeedRange, 'F', shortest(word('F')), kFeedModes[modal_.feed_mode], shortest(range[0]), shortest(range[1]));
     feed_ = word('F');
     Event e{EventKind::FeedRate};
     e.a = *feed_;
@@ -422,8 +480,17 @@ void Machine::registers() {
         corrector_selected_ = static_cast<int>(corrector);
     }
   }
+  // pp H, P: auxiliary functions the machine's logic carries out, in written order.
+  for (char letter : conv_.aux_words)
+    if (auto n = whole_number(letter, "auxiliary functions")) {
+      Event e{EventKind::Aux};
+      e.text = fmt::format("{}{}", letter, *n);
+      emit(e);
+    }
+  if (has_slot(kLinkSlot)) link();
   if (conv_.corrector_in_tool_word) return;  // NC-110 D is an axis
   for (char letter : {'D', 'H'}) {
+    if (conv_.aux_words.find(letter) != std::string::npos) continue;
     auto number = whole_number(letter, "offset numbers");
     if (!number) continue;
     if (*number != 0 && !config_.offsets.count(*number)) {
@@ -444,9 +511,35 @@ std::optional<int> Machine::whole_number(char letter, const char* what) {
 
 Machine::Compensation Machine::compensation() const {
   auto it = config_.offsets.find(offset_number_);
-  double radius = it == config_.offsets.end() ? 0 : it->second.radius;
-  double length = it == config_.offsets.end() ? 0 : it->second.length;
-  return {modal_.comp, modal_.comp ? radius : 0, modal_.length * length};
+  const bool known = it != config_.offsets.end();
+  const double radius = known ? it->second.radius : 0, length = known ? it->second.length : 0;
+  Compensation c{modal_.comp, modal_.comp ? radius : 0, {}};
+  if (modal_.length != 0)
+    for (char axis : known && it->second.axis ? std::string(1, it->second.axis) : conv_.tool_offset_axes)
+      c.length[axis_index(axis)] = modal_.length * length;
+  // pp '&': per axis, 1 adds the length, 2 subtracts it.
+  for (size_t i = 0; i < conv_.link_axes.size() && i < modal_.link.size(); ++i)
+    if (modal_.link[i]) c.length[axis_index(conv_.link_axes[i])] += (modal_.link[i] == 1 ? 1 : -1) * length;
+  return c;
+}
+
+void Machine::link() {
+  // pp '&' (docs/dialects/pp.md): a digit per axis of link_axes, right-aligned.
+  const double v = slot_value(kLinkSlot);
+  const size_t n = std::min(conv_.link_axes.size(), modal_.link.size());
+  std::array<uint8_t, 4> digits{};
+  bool ok = v >= 0 && v < std::pow(10.0, static_cast<double>(n)) && v == std::trunc(v);
+  for (auto rest = static_cast<uint32_t>(ok ? v : 0), i = static_cast<uint32_t>(n); ok && i-- > 0; rest /= 10) {
+    digits[i] = static_cast<uint8_t>(rest % 10);
+    ok = digits[i] <= 2;
+  }
+  if (!ok) {
+    report_slot(DiagId::OperandValue, kLinkSlot, "the length link &", shortest(v),
+                fmt::format("{} digits 0, 1 or 2, one for each of {} (0 none, 1 plus, 2 minus the tool length)", n,
+                            conv_.link_axes));
+    return;
+  }
+  modal_.link = digits;
 }
 
 void Machine::flush_compensation() {
@@ -489,6 +582,8 @@ BlockResult Machine::execute(const BlockRequest& request) {
   auto failed = [&] { return block_.error && stop_on_error_; };
   if (request.dynamic_codes) check_dynamic_codes();
   if (failed()) return BlockResult::Error;
+  for (size_t i = 0; i < request.code_count; ++i)
+    for (const FnCall& call : sem_.codes[request.codes[i]].calls) block_.offset_load |= call.fn == Fn::OffsetLoad;
   // 1. Preparatory functions in written order.
   apply_codes(Timing::None);
   check_profile_rules();
@@ -575,6 +670,20 @@ void Machine::action() {
   }
   if (block_.set_position) {
     set_position();
+    return;
+  }
+  if (block_.offset_load) {
+    load_offset();
+    return;
+  }
+  if (block_.reference) {
+    reference_approach();
+    return;
+  }
+  if (!block_.helix_pitch.empty()) {
+    // pp G10: the pitch of the helices that follow; the block does not move.
+    if (auto k = word_if('K')) helix_pitch_ = *k;
+    else report(DiagId::ArcForm, 0, fmt::format("{} defines the helix pitch: K is missing", block_.helix_pitch));
     return;
   }
   if (modal_.cycle >= 0) {
@@ -691,6 +800,9 @@ void Machine::emit_reset(const ResetState& before) {
   if (was.constant_surface != modal_.constant_surface) changed(EventKind::SpindleMode, modal_.constant_surface);
   if (was.dynamics != modal_.dynamics && modal_.dynamics >= 0) path_event(4 + modal_.dynamics);
   if (was.spindle_range != modal_.spindle_range) changed(EventKind::SpindleRange, modal_.spindle_range);
+  if (was.coolant3 || was.coolant4) changed(EventKind::Coolant, 5);
+  if (was.diameter != modal_.diameter) changed(EventKind::Diameter, modal_.diameter);
+  if (was.feed_reduced != modal_.feed_reduced) changed(EventKind::FeedReduction, modal_.feed_reduced);
   flush_compensation();
   if (was.work_offset != modal_.work_offset) apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
   if (before.position_offset != position_offset_) {
@@ -738,6 +850,12 @@ void Machine::end_of_unit(uint32_t source) {
 void Machine::comment(const std::string& text, uint32_t source) {
   Event e{EventKind::Comment};
   e.text = text;
+  e.source = source;
+  trace_.event(e);
+}
+
+void Machine::block_start(uint32_t source) {
+  Event e{EventKind::Block};
   e.source = source;
   trace_.event(e);
 }

@@ -78,6 +78,8 @@ class Machine {
   void end_of_unit(uint32_t source);
   // Operator text of a block (a comment), shown when the block runs.
   void comment(const std::string& text, uint32_t source);
+  // A block starts (the trace's `block` events, pp P-10.2).
+  void block_start(uint32_t source);
   // A message the program shows the operator (NC-110 DIS).
   void message(const std::string& text, uint32_t source);
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
@@ -110,9 +112,15 @@ class Machine {
     int rotary_clamp = -1;
     bool override_enabled = true;
     bool spindle_hold = false;
-    int dynamics = -1;  // -1 none, 0 corner slow-down (G27), 1 continuous (G28), 2 point to point (G29)
+    int dynamics = -1;  // -1 none, 0 corner slow-down (G27), 1 continuous (G28), 2 point to point (G29), 3 smooth (pp G23)
     bool gtl = false;
     int spindle_range = 0;  // 0 none forced, -1 automatic, 1..n forced
+    // pp.
+    bool diameter = false;  // the diameter axis programmed as a diameter (G74)
+    bool helix = true;      // an arc may move its normal axis (pp: only under G09)
+    bool coolant3 = false, coolant4 = false;
+    bool feed_reduced = false;  // M37: the feed is F / 100
+    std::array<uint8_t, 4> link{};  // '&': per axis of link_axes, 0 none, 1 plus, 2 minus the tool length
   };
 
   // Program coordinates to machine coordinates: per axis an origin (a work offset
@@ -132,7 +140,7 @@ class Machine {
   struct Compensation {
     int side = 0;
     double radius = 0;
-    double length = 0;
+    AxisValues length{};  // per axis
   };
 
   struct Cycle {
@@ -179,6 +187,10 @@ class Machine {
     bool moved = false;           // the block made a feed move
     bool rapid_moved = false;     // ... a rapid move
     bool operands = false;        // a three-letter function took the block's words
+    bool reference = false;       // pp G30: the named axes go to the reference point
+    bool offset_load = false;     // pp G92: the axis words load a work offset
+    int load_entry = -1;          // ... the one the block names (-1: the active one)
+    std::string helix_pitch;      // pp G10: the block stores the helix pitch (the code's name)
   };
 
   // Words.
@@ -240,6 +252,7 @@ class Machine {
   void plane_event();
   void path_event(int mode);
   void tool_length_event();
+  void link();  // pp '&'
   void cutter_comp_event();
   Compensation compensation() const;
   void flush_compensation();
@@ -271,6 +284,8 @@ class Machine {
   void transform_event();
   bool path_allowed(const std::vector<AxisValues>& path);  // limits and protected zones
   void set_position();
+  void load_offset();      // pp G92
+  void reference_approach();  // pp G30
 
   // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
@@ -319,6 +334,7 @@ class Machine {
   AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
   AxisValues position_offset_{};  // G92
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
+  std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
   double speed_ = 0;
   int tool_selected_ = 0;
   int corrector_selected_ = 0;

@@ -88,6 +88,7 @@ struct MachineConfig {
   std::map<int, OffsetEntry> offsets;      // D/H offset numbers, NC-110 correctors
   std::array<AxisConfig, kAxisCount> axes = default_axes();
   AxisValues initial_position{};
+  AxisValues reference_position{};         // the machine's reference point (pp G30)
   bool block_skip = false;                 // run-time switches
   bool optional_stop = false;
   bool spindle_encoder = true;             // threading and rigid tapping need one

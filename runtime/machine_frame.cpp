@@ -192,6 +192,37 @@ void Machine::set_position() {
   emit(e);
 }
 
+void Machine::load_offset() {
+  // pp G92: offset n becomes what makes the named axes read as their values where
+  // the tool stands (shift = position - value); the values are positions, G91 or not.
+  const int n = block_.load_entry >= 0 ? block_.load_entry : modal_.work_offset;
+  WorkOffset& entry = offsets_[n];
+  Event e{EventKind::OffsetLoad};
+  e.n = n;
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    double v = machine_[i] - frame_.shift[i] - axis_units(i, word(letter));
+    entry.values[i] = entry.inch && is_linear(i) ? v / 25.4 : v;
+    entry.axes |= 1u << i;
+  }
+  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(n, i));
+  refresh_base_origin();
+  emit(e);
+}
+
+void Machine::reference_approach() {
+  // pp G30: the named axes go at rapid to the reference point; the others stay.
+  AxisValues t = machine_;
+  for (char letter : conv_.axes) {
+    if (!has(letter)) continue;
+    int i = axis_index(letter);
+    if (double v = word(letter); v != 0) report(DiagId::ReferenceValue, letter, std::string(1, letter), shortest(v));
+    t[i] = config_.reference_position[i];
+  }
+  rapid(t);
+}
+
 // ---- The three-letter functions (NC-110 §2.13) ---------------------------------------
 
 bool Machine::frame_function(FnCall call) {
@@ -274,6 +305,26 @@ bool Machine::frame_function(FnCall call) {
       }
       transform_event();
       break;
+    case Fn::ScaleAxes:
+    case Fn::ShiftAxes: {
+      // pp G36, G37: the axes named get their factor or shift, the others none.
+      const bool scale = call.fn == Fn::ScaleAxes;
+      AxisValues values{};
+      if (scale) values.fill(1);
+      for (int a : listed) {
+        double v = word(kAxisLetters[a]);
+        if (scale && !(v > 0)) {
+          report(DiagId::OperandValue, kAxisLetters[a], fmt::format("the scale factor of {}", kAxisLetters[a]), shortest(v),
+                 "greater than 0");
+          return true;
+        }
+        values[a] = scale ? v : axis_units(a, v);
+      }
+      (scale ? frame_.scale : frame_.shift) = values;
+      if (scale) transform_event();
+      else origin_event();
+      break;
+    }
     case Fn::Rotation:
       if (auto v = operand(0)) frame_.rotation = *v;
       transform_event();

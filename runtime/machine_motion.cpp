@@ -71,14 +71,15 @@ double Machine::spindle_rpm() const {
 
 double Machine::feed_time(double length) {
   if (system_value(SysVar::AxesDisconnected) == 1) return 0;
-  if (!feed_) return 0;
+  if (!feed_ || *feed_ <= 0) return 0;
+  const double slow = modal_.feed_reduced ? 100 : 1;  // pp M37: the feed is F / 100
   switch (modal_.feed_mode) {
-    case 0: return *feed_ > 0 ? 60 / *feed_ : 0;  // inverse time: the block takes 1/F minutes
+    case 0: return slow * 60 / *feed_;  // inverse time: the block takes 1/F minutes
     case 2: {
       double rpm = spindle_rpm();
-      return rpm > 0 && *feed_ > 0 ? 60 * length / (length_units(*feed_) * rpm) : 0;
+      return rpm > 0 ? slow * 60 * length / (length_units(*feed_) * rpm) : 0;
     }
-    default: return *feed_ > 0 ? 60 * length / length_units(*feed_) : 0;
+    default: return slow * 60 * length / length_units(*feed_);
   }
 }
 
@@ -241,9 +242,17 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   // perpendicular axis moves and its parameter is the travel per radian (or per
   // revolution: the pitch).
   const double dw = w >= 0 ? t[w] - machine_[w] : 0;
+  if (std::fabs(dw) > kSamePoint && !modal_.helix) {
+    report(DiagId::ArcForm, kAxisLetters[w], fmt::format("{} is not in the {} plane of the arc: and the helix mode is off",
+                                                         kAxisLetters[w], plane_name(modal_.plane)));
+    move_to(t);
+    return;
+  }
   if (std::fabs(dw) > kSamePoint) {
     const bool per_revolution = conv_.helix_lead == HelixLead::PerRevolution;
-    if (auto lead = word_if(pw)) {
+    auto lead = word_if(pw);
+    if (!lead) lead = helix_pitch_;  // pp G10 K
+    if (lead) {
       // The lead selects the number of turns; the end point stays as programmed. It
       // must agree with the travel: lead x sweep = travel, within the arc tolerance
       // plus the rounding of the lead word over the sweep.

@@ -79,6 +79,13 @@ struct Conventions {
   char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)
   bool corrector_in_tool_word = false;  // T tool.corrector: the corrector takes effect at M06
   bool mirror_toggles = false;      // a mirror code on a mirrored axis turns it back
+  // pp.
+  char diameter_axis = 0;           // the axis a diameter code (G74) programs as a diameter
+  std::string link_axes;            // the axes of the digits of the length link '&', in order
+  std::string aux_words;            // addresses the machine's logic takes as auxiliary functions (H P)
+  // The feeds F may give in each feed mode (inverse time, per minute, per revolution):
+  // lo, hi; 0, 0 = any.
+  double feed_limits[3][2] = {};
 };
 
 // A code a program selects at run time by its number (NC-110 `GE1`).

@@ -21,8 +21,9 @@ namespace {
 
 constexpr const char* kStopKinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
 constexpr const char* kPathModes[] = {"accelerate", "decelerate", "tapping", "spindle_sync",
-                                      "corner_slowdown", "continuous", "point_to_point"};
+                                      "corner_slowdown", "continuous", "point_to_point", "smooth"};
 constexpr const char* kClamps[] = {"off", "on", "rotary_off", "rotary_on"};
+constexpr const char* kCoolants[] = {"off", "mist", "flood", "3", "4", "off_3_4"};
 
 // "X Z" for the axes of a mask.
 std::string axis_list(int mask) {
@@ -38,8 +39,9 @@ std::string event_name(EventKind kind) {
       "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
-      "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::PartChange) + 1, "one name per event kind");
+      "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
+      "offset_load", "diameter", "feed_reduction", "aux", "block"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::Block) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
 
@@ -155,7 +157,7 @@ class TextSink final : public BufferedSink {
       case EventKind::WorkOffset:
         return e.n == 0 ? std::string("work_offset none") : fmt::format("work_offset {} {}", e.n, position(e.pos));
       case EventKind::PositionOffset: return "position_offset " + position(e.pos);
-      case EventKind::Coolant: return e.n == 0 ? "coolant off" : e.n == 1 ? "coolant mist" : "coolant flood";
+      case EventKind::Coolant: return fmt::format("coolant {}", kCoolants[e.n]);
       case EventKind::Clamp: return fmt::format("clamp {}", kClamps[e.n]);
       case EventKind::Override: return e.n ? "override enabled" : "override disabled";
       case EventKind::SpindleHold: return e.n ? "spindle_hold on" : "spindle_hold off";
@@ -197,6 +199,11 @@ class TextSink final : public BufferedSink {
       case EventKind::Probe: return fmt::format("probe {} {}", position(e.pos), e.n ? "contact" : "no_contact");
       case EventKind::SpindleRange: return "spindle_range " + spindle_range(e.n);
       case EventKind::PartChange: return "part_change";
+      case EventKind::OffsetLoad: return fmt::format("offset_load {} {}", e.n, position(e.pos));
+      case EventKind::Diameter: return e.n ? "diameter on" : "diameter off";
+      case EventKind::FeedReduction: return e.n ? "feed_reduction on" : "feed_reduction off";
+      case EventKind::Aux: return "aux " + e.text;
+      case EventKind::Block: return "block";
     }
     return "?";
   }
@@ -324,7 +331,15 @@ class JsonlSink final : public BufferedSink {
         s += fmt::format(R"(,"index":{})", e.n);
         pos(e, s);
         break;
-      case EventKind::Coolant: str("coolant", e.n == 0 ? "off" : e.n == 1 ? "mist" : "flood"); break;
+      case EventKind::Coolant: str("coolant", kCoolants[e.n]); break;
+      case EventKind::OffsetLoad:
+        s += fmt::format(R"(,"n":{})", e.n);
+        pos(e, s);
+        break;
+      case EventKind::Diameter:
+      case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
+      case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
+      case EventKind::Block: break;
       case EventKind::Clamp: str("clamp", kClamps[e.n]); break;
       case EventKind::Override:
       case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
@@ -411,9 +426,13 @@ class CanonSink final : public BufferedSink {
           line("MIST_OFF()");
           line("FLOOD_OFF()");
         } else {
-          line(e.n == 1 ? "MIST_ON()" : "FLOOD_ON()");
+          if (e.n <= 2) line(e.n == 1 ? "MIST_ON()" : "FLOOD_ON()");
+          else line(fmt::format("COMMENT(\"ncc: coolant {}\")", kCoolants[e.n]));
         }
         break;
+      case EventKind::OffsetLoad: line(fmt::format("SET_G5X_OFFSET({}, {})", e.n, axes_list(e.pos, 0))); break;
+      case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
+      case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
       case EventKind::Override:
         line(e.n ? "ENABLE_FEED_OVERRIDE()" : "DISABLE_FEED_OVERRIDE()");
         line(e.n ? "ENABLE_SPEED_OVERRIDE(0)" : "DISABLE_SPEED_OVERRIDE(0)");
@@ -445,6 +464,8 @@ class CanonSink final : public BufferedSink {
       case EventKind::Configuration:
       case EventKind::SpindleRange:
       case EventKind::PartChange:
+      case EventKind::Diameter:
+      case EventKind::FeedReduction:
         line(fmt::format("COMMENT(\"ncc: {}\")", event_name(e.kind)));
         break;
     }

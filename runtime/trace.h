@@ -59,12 +59,12 @@ enum class EventKind : uint8_t {
   CutterComp,        // n: 0 off, 1 left, 2 right; a: radius
   WorkOffset,        // n: 0 none, 1..; pos: offset values
   PositionOffset,    // pos: the G92 offset values
-  Coolant,           // n: 0 off, 1 mist on, 2 flood on
+  Coolant,           // n: 0 off, 1 mist on, 2 flood on, 3 coolant 3 on, 4 coolant 4 on, 5 coolants 3 and 4 off
   Clamp,             // n: 1 clamp, 0 unclamp, 3 clamp the rotary axes, 2 unclamp them
   Override,          // n: 1 enabled, 0 disabled
   SpindleHold,       // n: 1 on, 0 off
   PathMode,          // n: 0 accelerate, 1 decelerate, 2 tapping, 3 spindle sync, 4 corner slow-down,
-                     //    5 continuous, 6 point to point
+                     //    5 continuous, 6 point to point, 7 smooth
   Comment,           // text
   Message,           // text: an operator message the program shows (NC-110 DIS)
   Stop,              // n: 0 program stop, 1 optional stop taken, 2 optional stop skipped, 3 manual retract
@@ -81,6 +81,12 @@ enum class EventKind : uint8_t {
   Spline,            // pos = end; control, control2: the cubic Bezier control points of the span
   SpindleRange,      // n: 0 none forced, -1 automatic, 1.. forced
   PartChange,
+  // pp.
+  OffsetLoad,        // n: the work offset loaded (0: G53's); pos: its values
+  Diameter,          // n: 1 diameter programming, 0 radius programming
+  FeedReduction,     // n: 1 the feed is F / 100, 0 as programmed
+  Aux,               // text: the auxiliary function the machine's logic carries out ("M23", "H5")
+  Block,             // a block starts (--trace-blocks)
 };
 
 struct Event {

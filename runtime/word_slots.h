@@ -3,7 +3,8 @@
 // letters take 0..25 and lower-case ones 26..51 (NC-110 addresses are
 // case-sensitive: U and u differ); the operands of a three-letter code take 52..63
 // in their written order; a letter's second value takes 64..89: the second R of an
-// NC-110 cycle block, the corrector of T1.5, the upper bound of an axis pair.
+// NC-110 cycle block, the corrector of T1.5, the upper bound of an axis pair; 90 is
+// pp's '&'.
 #pragma once
 
 #include <string>
@@ -20,6 +21,8 @@ constexpr int letter_slot(char c) {
 }
 constexpr int operand_slot(int i) { return i >= 0 && i < kOperandSlots ? 52 + i : -1; }
 constexpr int second_slot(char c) { return c >= 'A' && c <= 'Z' ? 64 + (c - 'A') : -1; }
+// pp '&': the length-compensation link, four digits for the axes of Conventions::link_axes.
+constexpr int kLinkSlot = 90;
 
 // "X", "u", "#3" (the third operand), "R'" (the second R).
 inline std::string slot_name(int slot) {
@@ -27,6 +30,7 @@ inline std::string slot_name(int slot) {
   if (slot >= 26 && slot < 52) return std::string(1, static_cast<char>('a' + slot - 26));
   if (slot >= 52 && slot < 64) return "#" + std::to_string(slot - 51);
   if (slot >= 64 && slot < 90) return std::string(1, static_cast<char>('A' + slot - 64)) + "'";
+  if (slot == kLinkSlot) return "&";
   return "?";
 }
 

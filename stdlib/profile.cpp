@@ -381,6 +381,7 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     if (!m.turning_plane) p.report_value(diags, "machine.turning_plane", "must name two different axes, e.g. \"ZX\"");
   }
   axis_values(p, "machine.initial_position", m.initial_position, diags);
+  axis_values(p, "machine.reference_position", m.reference_position, diags);
   for (const std::string& key : p.keys("work_offsets")) {
     auto n = table_number(p, "work_offsets", key, diags);
     std::string base = "work_offsets." + key;

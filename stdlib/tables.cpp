@@ -80,7 +80,7 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
     const auto& c = row.cells;
     AddressEntry a;
     a.letter = c[0].size() == 1 ? c[0][0] : 0;
-    bool ok = (a.letter >= 'A' && a.letter <= 'Z') || (a.letter >= 'a' && a.letter <= 'z');
+    bool ok = (a.letter >= 'A' && a.letter <= 'Z') || (a.letter >= 'a' && a.letter <= 'z') || a.letter == '&';  // pp's link
     ok = ok && pick(c[1],
                     {{"dimension", WordClass::Dimension},
                      {"angular", WordClass::Angular},

@@ -69,6 +69,11 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(static_cast<uint8_t>(c.tap_pitch_word));
   w.u8(c.corrector_in_tool_word);
   w.u8(c.mirror_toggles);
+  w.u8(static_cast<uint8_t>(c.diameter_axis));
+  w.str(c.link_axes);
+  w.str(c.aux_words);
+  for (const auto& limits : c.feed_limits)
+    for (double v : limits) w.f64(v);
   w.u32(static_cast<uint32_t>(s.codes.size()));
   for (const CodeDesc& code : s.codes) {
     w.str(code.name);
@@ -186,6 +191,11 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.tap_pitch_word = static_cast<char>(r.u8());
   c.corrector_in_tool_word = r.u8();
   c.mirror_toggles = r.u8();
+  c.diameter_axis = static_cast<char>(r.u8());
+  c.link_axes = r.str();
+  c.aux_words = r.str();
+  for (auto& limits : c.feed_limits)
+    for (double& v : limits) v = r.f64();
   uint32_t n = 0;
   if (!ok || !count(r, 10, n)) return false;
   s.codes.resize(n);
@@ -472,9 +482,15 @@ std::string verify(const Module& m) {
   const Conventions& c = s.conventions;
   if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
       !letter_ok(c.pitch_change_word) || !letter_ok(c.radius_word) || !letter_ok(c.peck_factor_word) ||
-      !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word))
+      !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word) ||
+      !std::all_of(c.aux_words.begin(), c.aux_words.end(), letter_ok))
     return "a convention names an address that is not a letter";
-  for (const std::string* axes : {&c.axes, &c.tool_offset_axes})
+  if (c.diameter_axis && kAxisLetters.find(c.diameter_axis) == std::string_view::npos)
+    return "the diameter axis is not an axis";
+  for (const auto& limits : c.feed_limits)
+    if (!(limits[0] >= 0 && limits[1] >= limits[0] && std::isfinite(limits[1])))
+      return "a feed range is not a range of feeds";
+  for (const std::string* axes : {&c.axes, &c.tool_offset_axes, &c.link_axes})
     for (size_t i = 0; i < axes->size(); ++i)
       if (kAxisLetters.find((*axes)[i]) == std::string_view::npos || axes->find((*axes)[i]) != i)
         return fmt::format("'{}' in \"{}\" is not an axis, or appears twice", printable(axes->substr(i, 1)), printable(*axes));

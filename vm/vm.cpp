@@ -307,6 +307,7 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       case Op::Step:
         if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
+        if (options_.trace_blocks) machine_.block_start(m_.source_of(pc));
         break;
       case Op::Code:
         if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");

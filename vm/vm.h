@@ -13,6 +13,7 @@ namespace ncc::vm {
 
 struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
+  bool trace_blocks = false;  // a `block` event as each block starts
 };
 
 enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error };

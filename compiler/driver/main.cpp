@@ -49,6 +49,7 @@ constexpr Command kCommands[] = {
     {"run", "run a program (source or .ncb) and write its trace", "ncc run [options] FILE",
      R"(  --trace FILE              write the trace to FILE ('-' = stdout, the default; 'none' = no trace)
   --trace-format F          text | jsonl | canon (default text; docs/trace.md)
+  --trace-blocks            a 'block' event as each block starts (which blocks ran, how often)
   --max-steps N             stop after N executed blocks (default: the program's blocks + 100000000)
   --block-skip              the block-skip switch is on: '/' parts are skipped
   --optional-stop           the optional-stop switch is on: M01 stops
@@ -139,6 +140,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
     } else if (a == "--max-steps" && allowed("--max-steps")) {
       if (!number(n)) return "--max-steps needs a number";
       o.run.max_steps = n;
+    } else if (a == "--trace-blocks" && allowed("--trace-blocks")) {
+      o.run.trace_blocks = true;
     } else if (a == "--block-skip" && allowed("--block-skip")) {
       o.run.block_skip = true;
     } else if (a == "--optional-stop" && allowed("--optional-stop")) {

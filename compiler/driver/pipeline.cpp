@@ -111,6 +111,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   machine.set_stop_on_error(!dry);
   vm::VmOptions options;
   options.max_steps = settings.max_steps.value_or(m.source_map.blocks.size() + kDefaultExtraSteps);
+  options.trace_blocks = settings.trace_blocks;
   vm::Vm vm(m, machine, reporter, options);
   machine.power_on();
 

@@ -31,6 +31,7 @@ struct RunSettings {
   std::optional<uint64_t> max_steps;  // default: the program's blocks + 100,000,000
   bool block_skip = false;
   bool optional_stop = false;
+  bool trace_blocks = false;
   std::optional<uint32_t> start_block;  // a main block ':N' to start at
 };
 

@@ -27,6 +27,9 @@ struct Written {
   std::string before, after;  // digits around the point; the parameter number
 };
 
+// The word slot of an address: its letter's, or pp's link '&'.
+int slot_of(char letter) { return letter == '&' ? kLinkSlot : letter_slot(letter); }
+
 Written parse_written(std::string_view v) {
   Written w;
   if (!v.empty() && (v[0] == '+' || v[0] == '-')) {
@@ -269,10 +272,7 @@ void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vec
   switch (t->getType()) {
     case PpLexer::WORD: word(t); return;
     case PpLexer::PARAMETER: parameter(t); return;
-    case PpLexer::LINK:
-      diags_.report(DiagId::Unsupported, range(t, t), "The length-compensation link '&'",
-                    "the runtime has no per-axis length compensation yet");
-      return;
+    case PpLexer::LINK: word(t); return;
     case PpLexer::BLOCK_SKIP: {
       // §2.2.1 i: anywhere after the block number, '/' marks the whole block.
       SourceRange r = range(t, t);
@@ -370,7 +370,7 @@ std::optional<ir::ExprId> Reader::value(std::string_view text, char letter, cons
       while (rule < rules.size() && rules[rule].address != address) ++rule;
       if (rule == rules.size()) rules.push_back({address, entry.min, entry.max, dimensionless});
       ir::Expr check{ir::ExprOp::Check, Builtin::Sin, 0, 0, v, ir::kNoExpr, r};
-      check.slot = static_cast<uint8_t>(letter_slot(letter));
+      check.slot = static_cast<uint8_t>(slot_of(letter));
       check.rule = static_cast<uint8_t>(rule);
       v = program_.add(check);
     }
@@ -398,6 +398,11 @@ std::optional<ir::ExprId> Reader::value(std::string_view text, char letter, cons
     diags_.report(DiagId::ValueRange, r, shown, std::string(1, letter), shortest(entry.min), shortest(entry.max));
     return std::nullopt;
   }
+  if (letter == '&' && w.before.find_first_not_of("012") != std::string::npos) {
+    diags_.report(DiagId::ValueForm, r, shown, "a digit 0, 1 or 2 for each of X Y Z 4.",
+                  "0 is no length compensation, 1 adds the tool length and 2 subtracts it");
+    return std::nullopt;
+  }
   return program_.number(v, r);
 }
 
@@ -412,7 +417,7 @@ void Reader::word(antlr4::Token* t) {
   w.address = std::string(1, letter);
   w.text = std::string(rest);
   w.range = r;
-  w.slot = static_cast<uint8_t>(letter_slot(letter));
+  w.slot = static_cast<uint8_t>(slot_of(letter));
   w.kind = ir::WordKind::Ignored;
   auto entry = s_.tables.addresses.find(letter);
   if (entry == s_.tables.addresses.end() || letter == 'N' || letter == 'R') {
@@ -420,8 +425,6 @@ void Reader::word(antlr4::Token* t) {
   } else if (!numbered && std::string_view("ABCUVW").find(letter) != std::string_view::npos &&
              s_.axis_letters.find(letter) == std::string::npos) {
     diags_.report(DiagId::AxisAbsent, r, std::string(1, letter), s_.conventions.axes);
-  } else if (letter == 'H' || letter == 'P') {
-    diags_.report(DiagId::Unsupported, r, text, "the auxiliary functions H and P go to the machine's logic, which ncc does not model yet");
   } else if (auto v = value(rest, letter, entry->second, r, text)) {
     w.value = *v;
     if (letter == 'G' || letter == 'M') {

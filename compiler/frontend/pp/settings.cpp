@@ -55,24 +55,55 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   Settings s;
   size_t errors = diags.error_count();
   s.tables = stdlib::load_dialect_tables("pp", diags);
-  // Group M14 is every auxiliary function 10..99 that no other group lists.
-  for (int n = 10; n <= 99; ++n)
-    if (!s.tables.m_codes.count(n)) {
-      stdlib::CodeEntry e;
-      e.letter = 'M';
-      e.number = n;
-      e.conflict_sets = {"M14"};
-      e.desc.name = fmt::format("M{:02}", n);
-      e.desc.timing = Timing::After;
-      e.meaning = "Auxiliary function of group M14 (to the machine's logic)";
-      s.tables.m_codes[n] = e;
-    }
   read_control(s, diags);
   if (diags.error_count() != errors) return std::nullopt;
   diags.set_citations(s.tables.citations);
   s.power_on = s.tables.power_on.at("default");
 
+  // Groups M10..M13 are the machine's (machine constants R56..R59: pp.m_groups), group
+  // M14 every other auxiliary function 10..99: the machine's logic carries them out.
   bool ok = true;
+  auto aux_code = [&](int n, const std::string& group) {
+    stdlib::CodeEntry e;
+    e.letter = 'M';
+    e.number = n;
+    e.conflict_sets = {group};
+    e.desc.name = fmt::format("M{:02}", n);
+    e.desc.timing = Timing::After;
+    e.desc.calls = {FnCall{Fn::Aux, static_cast<uint16_t>(n)}};
+    e.meaning = fmt::format("Auxiliary function of group {} (to the machine's logic)", group);
+    s.tables.m_codes[n] = e;
+  };
+  if (auto groups = p.string_table("pp.m_groups", diags)) {
+    for (const auto& [group, members] : *groups) {
+      const std::string key = "pp.m_groups." + group;
+      if (group != "M10" && group != "M11" && group != "M12" && group != "M13") {
+        ok = (p.report_value(diags, key, "the machine's groups are M10, M11, M12 and M13"), false);
+        continue;
+      }
+      // "M20 M21+ M22": the codes of the group, '+' on its basic state.
+      for (std::string_view rest = members; !rest.empty();) {
+        size_t end = rest.find(' ');
+        std::string_view item = rest.substr(0, end);
+        rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+        if (item.empty()) continue;
+        const bool basic = item.back() == '+';
+        if (basic) item.remove_suffix(1);
+        int n = 0;
+        auto [stop, ec] = item.size() == 3 && item[0] == 'M' ? std::from_chars(item.data() + 1, item.data() + 3, n)
+                                                              : std::from_chars_result{item.data(), std::errc::invalid_argument};
+        if (ec != std::errc() || stop != item.data() + item.size() || n < 10 || s.tables.m_codes.count(n)) {
+          ok = (p.report_value(diags, key,
+                               fmt::format("'{}' is not an M code 10..99 of no other group", item)), false);
+          continue;
+        }
+        aux_code(n, group);
+        if (basic) s.power_on.push_back(fmt::format("M{:02}", n));
+      }
+    }
+  }
+  for (int n = 10; n <= 99; ++n)
+    if (!s.tables.m_codes.count(n)) aux_code(n, "M14");
   if (auto v = p.string("pp.axis_letters", diags)) {
     // §2.2.1 a, b: axes 4. and 5. may be A B C U V W, axis 6. A B C.
     bool valid = v->size() == 3 && (*v)[0] != (*v)[1] && (*v)[0] != (*v)[2] && (*v)[1] != (*v)[2];
@@ -96,6 +127,17 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.axes = "XYZ";
   for (char axis : kAxisLetters)
     if (s.axis_letters.find(axis) != std::string::npos) c.axes += axis;
+  c.link_axes = std::string("XYZ") + s.axis_letters[0];  // '&': X Y Z 4. (decision 12)
+  c.aux_words = "HP";
+  c.feed_limits[1][0] = 1;  // the maximum block format: F(5) mm/min, F(2.3) mm/rev
+  c.feed_limits[1][1] = 24000;
+  c.feed_limits[2][0] = 0.001;
+  c.feed_limits[2][1] = 99.999;
+  c.diameter_axis = 'X';
+  if (auto v = p.string("pp.diameter_axis", diags)) {
+    if (v->size() == 1 && c.axes.find((*v)[0]) != std::string::npos) c.diameter_axis = (*v)[0];
+    else ok = (p.report_value(diags, "pp.diameter_axis", fmt::format("must be one of the machine's axes {}", c.axes)), false);
+  }
   c.max_call_depth = 8;                       // decision 15
   if (auto v = p.number("pp.max_call_depth", diags)) {
     if (*v >= 1 && *v <= 32 && *v == static_cast<int>(*v)) c.max_call_depth = static_cast<uint8_t>(*v);
