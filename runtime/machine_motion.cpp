@@ -243,7 +243,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   // revolution: the pitch).
   const double dw = w >= 0 ? t[w] - machine_[w] : 0;
   if (std::fabs(dw) > kSamePoint && !modal_.helix) {
-    report(DiagId::ArcForm, kAxisLetters[w], fmt::format("{} is not in the {} plane of the arc: and the helix mode is off",
+    report(DiagId::ArcForm, kAxisLetters[w], fmt::format("{} is not in the {} plane of the arc, and the helix mode is off",
                                                          kAxisLetters[w], plane_name(modal_.plane)));
     move_to(t);
     return;

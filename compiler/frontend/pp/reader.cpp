@@ -483,7 +483,7 @@ Reader::Flow Reader::flow_of(const ir::Block& b) const {
       if (auto it = s_.control.find(code.name); it != s_.control.end())
         f.control_word[static_cast<size_t>(it->second.action)] = &w;
       for (const FnCall& call : code.calls)
-        f.ends_main = f.ends_main || call.fn == Fn::ProgramEnd || call.fn == Fn::ProgramEndInformation;
+        if (call.fn == Fn::ProgramEnd || call.fn == Fn::ProgramEndInformation) f.ends_main = &w;
     }
     if (w.address == "L" && w.kind != ir::WordKind::Ignored) {
       f.l_word = &w;
@@ -495,6 +495,13 @@ Reader::Flow Reader::flow_of(const ir::Block& b) const {
 }
 
 void Reader::finish_block() {
+  // §2.2, the maximum block format: "11G", "10M" (one per group is the rule that binds).
+  for (auto [letter, most] : {std::pair{'G', 11}, std::pair{'M', 10}}) {
+    int n = 0;
+    for (const ir::Word& w : block_.words)
+      if (w.kind == ir::WordKind::Code && w.address[0] == letter && ++n == most + 1)
+        diags_.report(DiagId::TooManyCodes, w.range, most + 1, std::string(1, letter), most);
+  }
   for (const ir::Word& w : block_.words) {
     if (w.kind != ir::WordKind::Code || w.code < 0) continue;
     auto it = s_.control.find(program_.semantics.codes[static_cast<size_t>(w.code)].name);
@@ -632,7 +639,7 @@ void Reader::build_units() {
       structure(blocks_[i], fmt::format("the macro in file {} must be L{}, not L{} (§2.3.5)", macro_name(*macro_), *macro_, n));
     if (macro_ && !spans.empty())
       structure(blocks_[i], "a macro file holds one macro: G79 L<number> ... G70 (§2.3.5)");
-    if (f.l && !defined.insert(n).second) structure(blocks_[i], fmt::format("subprogram L{} is defined twice", n));
+    if (f.l && !defined.insert(n).second && !macro_) structure(blocks_[i], fmt::format("subprogram L{} is defined twice", n));
     if (defined.size() == kSubprograms + 1 && !macro_)
       structure(blocks_[i], fmt::format("a part program holds at most {} subprograms (§2.3.3)", kSubprograms));
     // §2.3.3: the entry block holds G79 and L only.
@@ -658,6 +665,9 @@ void Reader::build_units() {
       auto word = [&](Control c) { return f.control_word[static_cast<size_t>(c)]; };
       if (word(Control::End) && (u == 0 && !macro_))
         structure(b, "G70 ends a subprogram or a macro, not the main part (§2.3.3)");
+      if (f.ends_main && (u > 0 || macro_))
+        diags_.report(DiagId::EndInSubprogram, f.ends_main->range, f.ends_main->address + f.ends_main->text,
+                      macro_ ? "a macro" : "subprogram " + span.unit.name);
       if (word(Control::Entry) && k != span.first)
         structure(b, u == 0 && !macro_ ? "G79 starts a subprogram, after the main part (§2.3.3)"
                                        : "G79 inside a subprogram: G70 ends the one before it (§2.3.3)");

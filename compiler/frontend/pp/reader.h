@@ -56,7 +56,7 @@ class Reader {
     std::optional<uint32_t> l;              // L, when written as a number
     const ir::Word* l_word = nullptr;
     const ir::Word* q_word = nullptr;
-    bool ends_main = false;  // M02 or M30
+    const ir::Word* ends_main = nullptr;  // M02 or M30
   };
 
   void read_tape();

@@ -1,0 +1,8 @@
+%10 "the maximum block format: 11 G and 10 M words (§2.2); M02 in a subprogram"
+N1 G00 G17 G98 G40 G26 G53 G94 G71 G80 G90 G75 G34 L10 R1 1
+N2 M00 M03 M41 M36 M08 M50 M10 M48 M06 M20 M22 T1
+N3 G00 G17 G98 G40 G26 G53 G94 G80 G90 G75 G34 M03 M41 M36 M08 M50 M10 M48 M20
+N4 M30
+N5 G79 L10
+N6 M02 "ends the whole run, not the subprogram"
+N7 G70

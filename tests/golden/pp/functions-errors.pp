@@ -1,0 +1,11 @@
+%8 "run-time rules of the functions (ncc check runs the program dry)"
+N1 G95 F120 "mm/rev: 0.001 to 99.999"
+N2 G94 F0.5 "mm/min: 1 to 24000"
+N3 R1 130 &R1 "a parameter gives the link: digit 3"
+N4 G02 X10 Y0 I5 J0 Z5 F100 "a third axis needs G09"
+N5 G10 "the pitch K is missing"
+N6 G36 X0 "a scale factor must be greater than 0"
+N7 G30 X0 Y5 "Y5 is no position: the value is ignored"
+N8 G04 X1 Q10 "a dwell does not move"
+N9 G01 Q5 X1 "Q has nothing to read it"
+N10 M30
