@@ -19,6 +19,7 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
 void Machine::power_on() {
   machine_ = config_.initial_position;
   offsets_ = config_.work_offsets;
+  tool_offsets_ = config_.offsets;
   // Origin 0 is 0 on every axis the profile does not give it: (UAO,0) and RESET
   // select it on all axes (NC-110 §2.13.1.1).
   offsets_[0].axes = (1u << kAxisCount) - 1;
@@ -168,7 +169,7 @@ void Machine::tool_length_event() {
 void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
-  if (auto it = config_.offsets.find(offset_number_); it != config_.offsets.end()) e.a = to_program(it->second.radius);
+  if (auto it = tool_offsets_.find(offset_number_); it != tool_offsets_.end()) e.a = to_program(it->second.radius);
   emit(e);
 }
 
@@ -395,7 +396,8 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::PartChange: event(EventKind::PartChange); break;
     case Fn::MotionReference: block_.reference = true; break;
-    case Fn::OffsetLoad: break;  // found before the block's codes apply (execute)
+    case Fn::OffsetLoad:
+    case Fn::CompLoad: break;  // found before the block's codes apply (execute)
     case Fn::DiameterOn:
     case Fn::DiameterOff:
       if (modal_.diameter != (call.fn == Fn::DiameterOn)) event(EventKind::Diameter, call.fn == Fn::DiameterOn);
@@ -474,7 +476,7 @@ void Machine::registers() {
     // NC-110 T tool.corrector: the corrector takes effect at M06 (§2.7.7).
     if (conv_.corrector_in_tool_word) {
       double corrector = slot_if(second_slot('T')).value_or(0);
-      if (corrector != 0 && !config_.offsets.count(static_cast<int>(corrector)))
+      if (corrector != 0 && !tool_offsets_.count(static_cast<int>(corrector)))
         report_slot(DiagId::OffsetUnknown, second_slot('T'), "corrector", shortest(corrector));
       else
         corrector_selected_ = static_cast<int>(corrector);
@@ -488,12 +490,12 @@ void Machine::registers() {
       emit(e);
     }
   if (has_slot(kLinkSlot)) link();
-  if (conv_.corrector_in_tool_word) return;  // NC-110 D is an axis
+  if (conv_.corrector_in_tool_word || block_.comp_load) return;  // NC-110 D is an axis; pp G93 D names an entry
   for (char letter : {'D', 'H'}) {
     if (conv_.aux_words.find(letter) != std::string::npos) continue;
     auto number = whole_number(letter, "offset numbers");
     if (!number) continue;
-    if (*number != 0 && !config_.offsets.count(*number)) {
+    if (*number != 0 && !tool_offsets_.count(*number)) {
       report(DiagId::OffsetUnknown, letter, "offset number", *number);
       continue;
     }
@@ -510,8 +512,8 @@ std::optional<int> Machine::whole_number(char letter, const char* what) {
 }
 
 Machine::Compensation Machine::compensation() const {
-  auto it = config_.offsets.find(offset_number_);
-  const bool known = it != config_.offsets.end();
+  auto it = tool_offsets_.find(offset_number_);
+  const bool known = it != tool_offsets_.end();
   const double radius = known ? it->second.radius : 0, length = known ? it->second.length : 0;
   Compensation c{modal_.comp, modal_.comp ? radius : 0, {}};
   if (modal_.length != 0)
@@ -583,7 +585,10 @@ BlockResult Machine::execute(const BlockRequest& request) {
   if (request.dynamic_codes) check_dynamic_codes();
   if (failed()) return BlockResult::Error;
   for (size_t i = 0; i < request.code_count; ++i)
-    for (const FnCall& call : sem_.codes[request.codes[i]].calls) block_.offset_load |= call.fn == Fn::OffsetLoad;
+    for (const FnCall& call : sem_.codes[request.codes[i]].calls) {
+      block_.offset_load |= call.fn == Fn::OffsetLoad;
+      block_.comp_load |= call.fn == Fn::CompLoad;
+    }
   // 1. Preparatory functions in written order.
   apply_codes(Timing::None);
   check_profile_rules();
@@ -674,6 +679,10 @@ void Machine::action() {
   }
   if (block_.offset_load) {
     load_offset();
+    return;
+  }
+  if (block_.comp_load) {
+    load_compensation();
     return;
   }
   if (block_.reference) {

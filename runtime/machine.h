@@ -189,6 +189,7 @@ class Machine {
     bool operands = false;        // a three-letter function took the block's words
     bool reference = false;       // pp G30: the named axes go to the reference point
     bool offset_load = false;     // pp G92: the axis words load a work offset
+    bool comp_load = false;       // pp G93: D names the compensation entry to load
     int load_entry = -1;          // ... the one the block names (-1: the active one)
     std::string helix_pitch;      // pp G10: the block stores the helix pitch (the code's name)
   };
@@ -285,6 +286,7 @@ class Machine {
   bool path_allowed(const std::vector<AxisValues>& path);  // limits and protected zones
   void set_position();
   void load_offset();      // pp G92
+  void load_compensation();  // pp G93
   void reference_approach();  // pp G30
 
   // Motions (machine_motion.cpp).
@@ -329,6 +331,7 @@ class Machine {
   Modal modal_;
   Frame frame_;
   std::map<int, WorkOffset> offsets_;  // the work offsets (NC-110 RQO changes them)
+  std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it)
   AxisValues base_origin_{};           // each axis' offsets_ value at frame_.base: origin() is hot
   void refresh_base_origin();          // after frame_.base or offsets_ change
   AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees

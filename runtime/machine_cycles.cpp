@@ -463,8 +463,8 @@ void Machine::measure() {
     report(DiagId::ProbeNoContact, 0, name, where(from), where(to));
   };
   const double radius = [&] {
-    auto it = config_.offsets.find(offset_number_);
-    return it == config_.offsets.end() || fn == Fn::MeasureDeviation ? 0.0 : it->second.radius;
+    auto it = tool_offsets_.find(offset_number_);
+    return it == tool_offsets_.end() || fn == Fn::MeasureDeviation ? 0.0 : it->second.radius;
   }();
   const std::string contact_name = fmt::format("the next probe contact (probe.contacts[{}])", index);
 

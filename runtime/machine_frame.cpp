@@ -211,6 +211,23 @@ void Machine::load_offset() {
   emit(e);
 }
 
+void Machine::load_compensation() {
+  // pp G93 (decision 23): entry D takes the length and radius the block's words give.
+  auto entry = whole_number('D', "compensation entries");
+  if (!entry || *entry == 0) {
+    if (!block_.error) report(DiagId::OperandValue, 'D', "the compensation entry D", "missing", "in the block that loads it");
+    return;
+  }
+  OffsetEntry& e = tool_offsets_[*entry];
+  if (auto v = word_if(conv_.comp_length_word)) e.length = length_units(*v);
+  if (auto v = word_if(conv_.comp_radius_word)) e.radius = length_units(*v);
+  Event ev{EventKind::CompLoad};
+  ev.n = *entry;
+  ev.a = to_program(e.length);
+  ev.b = to_program(e.radius);
+  emit(ev);
+}
+
 void Machine::reference_approach() {
   // pp G30: the named axes go at rapid to the reference point; the others stay.
   AxisValues t = machine_;

@@ -83,6 +83,7 @@ struct Conventions {
   char diameter_axis = 0;           // the axis a diameter code (G74) programs as a diameter
   std::string link_axes;            // the axes of the digits of the length link '&', in order
   std::string aux_words;            // addresses the machine's logic takes as auxiliary functions (H P)
+  char comp_length_word = 0, comp_radius_word = 0;  // what loads a compensation entry (pp G93)
   // The feeds F may give in each feed mode (inverse time, per minute, per revolution):
   // lo, hi; 0, 0 = any.
   double feed_limits[3][2] = {};

@@ -40,8 +40,8 @@ std::string event_name(EventKind kind) {
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
       "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::Block) + 1, "one name per event kind");
+      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::CompLoad) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
 
@@ -204,6 +204,8 @@ class TextSink final : public BufferedSink {
       case EventKind::FeedReduction: return e.n ? "feed_reduction on" : "feed_reduction off";
       case EventKind::Aux: return "aux " + e.text;
       case EventKind::Block: return "block";
+      case EventKind::CompLoad:
+        return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
     }
     return "?";
   }
@@ -340,6 +342,11 @@ class JsonlSink final : public BufferedSink {
       case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
       case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
       case EventKind::Block: break;
+      case EventKind::CompLoad:
+        s += fmt::format(R"(,"n":{})", e.n);
+        num("length", e.a);
+        num("radius", e.b);
+        break;
       case EventKind::Clamp: str("clamp", kClamps[e.n]); break;
       case EventKind::Override:
       case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
@@ -433,6 +440,9 @@ class CanonSink final : public BufferedSink {
       case EventKind::OffsetLoad: line(fmt::format("SET_G5X_OFFSET({}, {})", e.n, axes_list(e.pos, 0))); break;
       case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
+      case EventKind::CompLoad:
+        line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
+        break;
       case EventKind::Override:
         line(e.n ? "ENABLE_FEED_OVERRIDE()" : "DISABLE_FEED_OVERRIDE()");
         line(e.n ? "ENABLE_SPEED_OVERRIDE(0)" : "DISABLE_SPEED_OVERRIDE(0)");

@@ -87,6 +87,7 @@ enum class EventKind : uint8_t {
   FeedReduction,     // n: 1 the feed is F / 100, 0 as programmed
   Aux,               // text: the auxiliary function the machine's logic carries out ("M23", "H5")
   Block,             // a block starts (--trace-blocks)
+  CompLoad,          // n: the compensation entry loaded; a: its length; b: its radius
 };
 
 struct Event {

@@ -72,6 +72,8 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(static_cast<uint8_t>(c.diameter_axis));
   w.str(c.link_axes);
   w.str(c.aux_words);
+  w.u8(static_cast<uint8_t>(c.comp_length_word));
+  w.u8(static_cast<uint8_t>(c.comp_radius_word));
   for (const auto& limits : c.feed_limits)
     for (double v : limits) w.f64(v);
   w.u32(static_cast<uint32_t>(s.codes.size()));
@@ -194,6 +196,8 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.diameter_axis = static_cast<char>(r.u8());
   c.link_axes = r.str();
   c.aux_words = r.str();
+  c.comp_length_word = static_cast<char>(r.u8());
+  c.comp_radius_word = static_cast<char>(r.u8());
   for (auto& limits : c.feed_limits)
     for (double& v : limits) v = r.f64();
   uint32_t n = 0;
@@ -482,7 +486,8 @@ std::string verify(const Module& m) {
   const Conventions& c = s.conventions;
   if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
       !letter_ok(c.pitch_change_word) || !letter_ok(c.radius_word) || !letter_ok(c.peck_factor_word) ||
-      !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word) ||
+      !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word) || !letter_ok(c.comp_length_word) ||
+      !letter_ok(c.comp_radius_word) ||
       !std::all_of(c.aux_words.begin(), c.aux_words.end(), letter_ok))
     return "a convention names an address that is not a letter";
   if (c.diameter_axis && kAxisLetters.find(c.diameter_axis) == std::string_view::npos)

@@ -114,6 +114,20 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
   if (auto v = p.string("pp.macro_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
   if (auto v = p.boolean("pp.require_star", diags)) s.require_star = *v;
+  // G93 (decision 23): the manual names no words for the values; the machine may.
+  if (auto words = p.string_table("pp.comp_table_words", diags)) {
+    for (const auto& [what, word] : *words) {
+      const std::string key = "pp.comp_table_words." + what;
+      auto entry = word.size() == 1 ? s.tables.addresses.find(word[0]) : s.tables.addresses.end();
+      if (what != "length" && what != "radius")
+        ok = (p.report_value(diags, key, "the words are `length` and `radius`"), false);
+      else if (entry == s.tables.addresses.end() || entry->second.word_class != stdlib::WordClass::Dimension)
+        ok = (p.report_value(diags, key, "must be an address of a dimension, such as Z or K"), false);
+      else
+        (what == "length" ? s.conventions.comp_length_word : s.conventions.comp_radius_word) = word[0];
+    }
+    if (s.conventions.comp_length_word || s.conventions.comp_radius_word) s.control.erase("G93");
+  }
 
   Conventions& c = s.conventions;
   c.arc_centre = ArcCentre::Incremental;      // I, J from the start point (decision 17)
