@@ -405,7 +405,13 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::HelixOn:
     case Fn::HelixOff: modal_.helix = call.fn == Fn::HelixOn; break;
-    case Fn::HelixPitch: block_.helix_pitch = block_.code_name; break;
+    case Fn::HelixPitch:
+      // pp G10 K: the pitch of the helices that follow (mm per turn).
+      if (!emit_events) break;
+      if (!has('K')) report_code(DiagId::ArcForm, fmt::format("{} defines the helix pitch: K is missing", block_.code_name));
+      else if (word('K') <= 0) report(DiagId::ArcForm, 'K', fmt::format("the helix pitch K{} must be greater than zero", shortest(word('K'))));
+      else helix_pitch_ = word('K');
+      break;
     case Fn::TransformCancel: {
       const bool shifted = frame_.shift != AxisValues{};
       const bool transformed = frame_.transformed();
@@ -482,7 +488,7 @@ void Machine::registers() {
         corrector_selected_ = static_cast<int>(corrector);
     }
   }
-  // pp H, P: auxiliary functions the machine's logic carries out, in written order.
+  // pp H, P: auxiliary functions the machine's logic carries out (H, then P).
   for (char letter : conv_.aux_words)
     if (auto n = whole_number(letter, "auxiliary functions")) {
       Event e{EventKind::Aux};
@@ -537,7 +543,7 @@ void Machine::link() {
   }
   if (!ok) {
     report_slot(DiagId::OperandValue, kLinkSlot, "the length link &", shortest(v),
-                fmt::format("{} digits 0, 1 or 2, one for each of {} (0 none, 1 plus, 2 minus the tool length)", n,
+                fmt::format("at most {} digits, each 0, 1 or 2, for {} from the right (0 none, 1 plus, 2 minus the tool length)", n,
                             conv_.link_axes));
     return;
   }
@@ -687,12 +693,6 @@ void Machine::action() {
   }
   if (block_.reference) {
     reference_approach();
-    return;
-  }
-  if (!block_.helix_pitch.empty()) {
-    // pp G10: the pitch of the helices that follow; the block does not move.
-    if (auto k = word_if('K')) helix_pitch_ = *k;
-    else report(DiagId::ArcForm, 0, fmt::format("{} defines the helix pitch: K is missing", block_.helix_pitch));
     return;
   }
   if (modal_.cycle >= 0) {

@@ -191,7 +191,6 @@ class Machine {
     bool offset_load = false;     // pp G92: the axis words load a work offset
     bool comp_load = false;       // pp G93: D names the compensation entry to load
     int load_entry = -1;          // ... the one the block names (-1: the active one)
-    std::string helix_pitch;      // pp G10: the block stores the helix pitch (the code's name)
   };
 
   // Words.

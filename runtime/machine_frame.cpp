@@ -194,7 +194,8 @@ void Machine::set_position() {
 
 void Machine::load_offset() {
   // pp G92: offset n becomes what makes the named axes read as their values where
-  // the tool stands (shift = position - value); the values are positions, G91 or not.
+  // the tool stands (shift = position - value, the value through the G35-G37
+  // transformations); the values are positions, G91 or not.
   const int n = block_.load_entry >= 0 ? block_.load_entry : modal_.work_offset;
   WorkOffset& entry = offsets_[n];
   Event e{EventKind::OffsetLoad};
@@ -202,13 +203,21 @@ void Machine::load_offset() {
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
-    double v = machine_[i] - frame_.shift[i] - axis_units(i, word(letter));
+    const double scale = frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i];
+    double v = machine_[i] - frame_.shift[i] - scale * axis_units(i, word(letter));
     entry.values[i] = entry.inch && is_linear(i) ? v / 25.4 : v;
     entry.axes |= 1u << i;
   }
   for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(n, i));
   refresh_base_origin();
   emit(e);
+  // The shift in force changed: the trace says so as a selection would.
+  if (n == modal_.work_offset && n != 0) {
+    Event in_force{EventKind::WorkOffset};
+    in_force.n = n;
+    in_force.pos = e.pos;
+    emit(in_force);
+  }
 }
 
 void Machine::load_compensation() {
@@ -237,7 +246,7 @@ void Machine::reference_approach() {
     if (double v = word(letter); v != 0) report(DiagId::ReferenceValue, letter, std::string(1, letter), shortest(v));
     t[i] = config_.reference_position[i];
   }
-  rapid(t);
+  if (t != machine_) rapid(t);
 }
 
 // ---- The three-letter functions (NC-110 §2.13) ---------------------------------------

@@ -437,7 +437,13 @@ class CanonSink final : public BufferedSink {
           else line(fmt::format("COMMENT(\"ncc: coolant {}\")", kCoolants[e.n]));
         }
         break;
-      case EventKind::OffsetLoad: line(fmt::format("SET_G5X_OFFSET({}, {})", e.n, axes_list(e.pos, 0))); break;
+      case EventKind::OffsetLoad:  // a table entry: what is in force shows when it is selected
+        line(fmt::format("COMMENT(\"ncc: offset_load {} {}\")", e.n, axes_list(e.pos, 0)));
+        break;
+      case EventKind::Diameter:
+      case EventKind::FeedReduction:
+        line(fmt::format("COMMENT(\"ncc: {} {}\")", event_name(e.kind), e.n ? "on" : "off"));
+        break;
       case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
       case EventKind::CompLoad:
@@ -474,8 +480,6 @@ class CanonSink final : public BufferedSink {
       case EventKind::Configuration:
       case EventKind::SpindleRange:
       case EventKind::PartChange:
-      case EventKind::Diameter:
-      case EventKind::FeedReduction:
         line(fmt::format("COMMENT(\"ncc: {}\")", event_name(e.kind)));
         break;
     }

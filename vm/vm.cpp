@@ -307,7 +307,9 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       case Op::Step:
         if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
-        if (options_.trace_blocks) machine_.block_start(m_.source_of(pc));
+        // A block that the block-skip switch skips whole (its JUMPSKIP follows) does not run.
+        if (options_.trace_blocks && !(p.pc < m_.code.size() && static_cast<Op>(code[p.pc]) == Op::JumpSkip && machine_.block_skip()))
+          machine_.block_start(m_.source_of(pc));
         break;
       case Op::Code:
         if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");

@@ -82,6 +82,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
         continue;
       }
       // "M20 M21+ M22": the codes of the group, '+' on its basic state.
+      bool basic_seen = false;
       for (std::string_view rest = members; !rest.empty();) {
         size_t end = rest.find(' ');
         std::string_view item = rest.substr(0, end);
@@ -92,13 +93,20 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
         int n = 0;
         auto [stop, ec] = item.size() == 3 && item[0] == 'M' ? std::from_chars(item.data() + 1, item.data() + 3, n)
                                                               : std::from_chars_result{item.data(), std::errc::invalid_argument};
-        if (ec != std::errc() || stop != item.data() + item.size() || n < 10 || s.tables.m_codes.count(n)) {
-          ok = (p.report_value(diags, key,
-                               fmt::format("'{}' is not an M code 10..99 of no other group", item)), false);
+        std::string problem;
+        if (ec != std::errc() || stop != item.data() + item.size() || n < 10)
+          problem = fmt::format("'{}' is not an M code 10..99", item);
+        else if (auto it = s.tables.m_codes.find(n); it != s.tables.m_codes.end())
+          problem = fmt::format("M{} is already in group {}", n, it->second.conflict_sets.front());
+        else if (basic && basic_seen)
+          problem = "a group has one basic state ('+')";
+        if (!problem.empty()) {
+          ok = (p.report_value(diags, key, problem), false);
           continue;
         }
         aux_code(n, group);
         if (basic) s.power_on.push_back(fmt::format("M{:02}", n));
+        basic_seen = basic_seen || basic;
       }
     }
   }

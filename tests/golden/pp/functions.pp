@@ -32,4 +32,11 @@ N30 G23 X2
 N31 G95 F0.25 S1000 M03 X3
 N32 G97 F1.5 S120 X4
 N33 G96 F2000 X5
-N34 M30
+N35 G24 X6
+N36 G09 X7 "G09 replaces G24 in group G2: smooth again"
+N37 G36 X2
+N38 G92 X10 "under a scale too, the tool reads X10 here"
+N39 G01 X10 "so X10 does not move"
+N40 G34 G30 X0 "the scale off; G30 named without a move"
+N41 G30 "no axis: nothing moves"
+N42 M30
