@@ -522,6 +522,7 @@ Machine::Compensation Machine::compensation() const {
   const bool known = it != tool_offsets_.end();
   const double radius = known ? it->second.radius : 0, length = known ? it->second.length : 0;
   Compensation c{modal_.comp, modal_.comp ? radius : 0, {}};
+  if (length == 0) return c;  // every block asks: keep the usual case short
   if (modal_.length != 0)
     for (char axis : known && it->second.axis ? std::string(1, it->second.axis) : conv_.tool_offset_axes)
       c.length[axis_index(axis)] = modal_.length * length;
