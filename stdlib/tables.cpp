@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "embedded.h"
+#include "support/text.h"
 
 namespace ncc::stdlib {
 
@@ -56,22 +57,6 @@ bool pick(std::string_view cell, std::initializer_list<std::pair<std::string_vie
       return true;
     }
   return false;
-}
-
-void report(Diagnostics& diags, const Table& t, uint32_t line, std::string_view what) {
-  diags.report(DiagId::TableSyntax, {}, fmt::format("{}:{}: {}", t.name, line, what));
-}
-
-std::vector<std::string> split(std::string_view s, char sep) {
-  std::vector<std::string> out;
-  size_t start = 0;
-  while (true) {
-    size_t end = s.find(sep, start);
-    out.emplace_back(s.substr(start, end - start));
-    if (end == std::string_view::npos) break;
-    start = end + 1;
-  }
-  return out;
 }
 
 void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagnostics& diags) {
@@ -137,6 +122,10 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
 }
 
 }  // namespace
+
+void report(Diagnostics& diags, const Table& t, uint32_t line, std::string_view what) {
+  diags.report(DiagId::TableSyntax, {}, fmt::format("{}:{}: {}", t.name, line, what));
+}
 
 Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags, size_t max_columns) {
   if (max_columns < columns) max_columns = columns;

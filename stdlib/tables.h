@@ -29,6 +29,9 @@ struct Table {
 // reported (max_columns 0: exactly `columns`).
 Table parse_table(std::string name, std::string_view text, size_t columns, Diagnostics& diags, size_t max_columns = 0);
 
+// A problem with the row at `line` of a table (NC6006, "file:line: what").
+void report(Diagnostics& diags, const Table& t, uint32_t line, std::string_view what);
+
 // Loads stdlib/dialects/<dialect>/<file> from the embedded data.
 std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags,
                                 size_t max_columns = 0);

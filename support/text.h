@@ -3,6 +3,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace ncc {
 
@@ -13,5 +14,7 @@ std::string four_decimals(double v);
 // Text from a file or a bytecode file, safe to print on a terminal: control
 // characters become '?'.
 std::string printable(std::string_view s);
+// The pieces of `s` between the separators (empty ones too).
+std::vector<std::string> split(std::string_view s, char sep);
 
 }  // namespace ncc

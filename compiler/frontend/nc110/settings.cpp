@@ -9,10 +9,6 @@ namespace ncc::nc110 {
 
 namespace {
 
-void report(Diagnostics& diags, const stdlib::Table& t, uint32_t line, std::string_view what) {
-  diags.report(DiagId::TableSyntax, {}, fmt::format("{}:{}: {}", t.name, line, what));
-}
-
 std::optional<uint32_t> whole(std::string_view s) {
   uint32_t v = 0;
   auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);

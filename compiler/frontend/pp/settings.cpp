@@ -3,14 +3,11 @@
 #include <charconv>
 
 #include "frontend/frontend.h"
+#include "support/text.h"
 
 namespace ncc::pp {
 
 namespace {
-
-void report(Diagnostics& diags, const stdlib::Table& t, uint32_t line, std::string_view what) {
-  diags.report(DiagId::TableSyntax, {}, fmt::format("{}:{}: {}", t.name, line, what));
-}
 
 void read_control(Settings& s, Diagnostics& diags) {
   auto table = stdlib::load_table("pp", "control_codes.tsv", 3, diags);
@@ -83,10 +80,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       }
       // "M20 M21+ M22": the codes of the group, '+' on its basic state.
       bool basic_seen = false;
-      for (std::string_view rest = members; !rest.empty();) {
-        size_t end = rest.find(' ');
-        std::string_view item = rest.substr(0, end);
-        rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+      for (const std::string& piece : split(members, ' ')) {
+        std::string_view item = piece;
         if (item.empty()) continue;
         const bool basic = item.back() == '+';
         if (basic) item.remove_suffix(1);
