@@ -10,7 +10,7 @@ namespace ncc {
 enum class FnGroup : uint8_t {
   None, Motion, Plane, Distance, Units, FeedMode, SpindleMode, CutterComp, ToolLength, WorkOffset, Cycle,
   Spindle, Mist, Flood, Clamp, Override, SpindleHold, Dynamics, Gtl, RotaryClamp, SpindleRange,
-  Diameter, Helix, Coolant3, Coolant4, FeedReduction,
+  Diameter, Helix, Coolant3, Coolant4, FeedReduction, Polar, Scaling, Rotation, CycleReturn,
   Count
 };
 

@@ -38,6 +38,8 @@ void Machine::reset_state() {
   frame_ = Frame{};
   refresh_base_origin();
   position_offset_ = {};
+  local_offsets_.clear();
+  intermediate_.reset();
   feed_.reset();
   helix_pitch_.reset();
   speed_ = 0;
@@ -155,6 +157,10 @@ FnCall Machine::current(FnGroup group) const {
     case FnGroup::Diameter: return {modal_.diameter ? Fn::DiameterOn : Fn::DiameterOff};
     case FnGroup::Helix: return {modal_.helix ? Fn::HelixOn : Fn::HelixOff};
     case FnGroup::FeedReduction: return {modal_.feed_reduced ? Fn::FeedReduced : Fn::FeedProgrammed};
+    case FnGroup::CycleReturn: return {modal_.cycle_return_level ? Fn::CycleReturnLevel : Fn::CycleReturnInitial};
+    case FnGroup::Polar: return {modal_.polar ? Fn::PolarOn : Fn::PolarOff};
+    case FnGroup::Scaling: return {modal_.scaling ? Fn::ScalingOn : Fn::ScalingOff};
+    case FnGroup::Rotation: return {modal_.rotation ? Fn::RotationOn : Fn::RotationOff};
     default: break;
   }
   return {Fn::Count};  // not restorable: the tables reject such block-only codes
@@ -273,6 +279,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       } else {
         modal_.work_offset = call.arg;
         frame_.base.fill(call.arg);
+        frame_.local = local_offsets_.count(call.arg) ? local_offsets_[call.arg] : AxisValues{};
         refresh_base_origin();
         if (emit_events) {
           Event e{EventKind::WorkOffset};
@@ -396,6 +403,19 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::PartChange: event(EventKind::PartChange); break;
     case Fn::MotionReference: block_.reference = true; break;
+    case Fn::ReferenceReturn:
+    case Fn::ReferenceLeave: block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2; break;
+    case Fn::OffsetLocal: block_.local_offset = true; break;
+    case Fn::CycleReturnInitial:
+    case Fn::CycleReturnLevel: modal_.cycle_return_level = call.fn == Fn::CycleReturnLevel; break;
+    // G16, G51 and G68 are refused by the front end until the runtime has them
+    // (docs/dialects/iso.md): here they only switch their state off.
+    case Fn::PolarOff:
+    case Fn::PolarOn: modal_.polar = false; break;
+    case Fn::ScalingOff:
+    case Fn::ScalingOn: modal_.scaling = false; break;
+    case Fn::RotationOff:
+    case Fn::RotationOn: modal_.rotation = false; break;
     case Fn::OffsetLoad:
     case Fn::CompLoad: break;  // found before the block's codes apply (execute)
     case Fn::DiameterOn:
@@ -696,9 +716,17 @@ void Machine::action() {
     reference_approach();
     return;
   }
+  if (block_.reference_iso) {
+    block_.reference_iso == 1 ? reference_return() : reference_leave();
+    return;
+  }
+  if (block_.local_offset) {
+    set_local_offset();
+    return;
+  }
   if (modal_.cycle >= 0) {
     if (conv_.cycle_two_levels) nc110_cycle();
-    else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) cycle();
+    else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) repeat_cycle();
     else cycle_registers();
     if (block_.dwell_end) dwell_seconds(timer_dwell());
     return;

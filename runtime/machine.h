@@ -121,6 +121,9 @@ class Machine {
     bool coolant3 = false, coolant4 = false;
     bool feed_reduced = false;  // M37: the feed is F / 100
     std::array<uint8_t, 4> link{};  // '&': per axis of link_axes, 0 none, 1 plus, 2 minus the tool length
+    // ISO.
+    bool cycle_return_level = false;  // G99: canned cycles return to R, not the initial level
+    bool polar = false, scaling = false, rotation = false;
   };
 
   // Program coordinates to machine coordinates: per axis an origin (a work offset
@@ -129,6 +132,7 @@ class Machine {
   struct Frame {
     std::array<int, kAxisCount> base{};  // the work offset (origin) of each axis
     AxisValues shift{};                  // mm, degrees
+    AxisValues local{};                  // ISO G52: the local zero of the active work offset
     AxisValues scale;
     std::array<bool, kAxisCount> mirror{};
     double rotation = 0;  // degrees, counter-clockwise in the plane
@@ -191,6 +195,8 @@ class Machine {
     bool offset_load = false;     // pp G92: the axis words load a work offset
     bool comp_load = false;       // pp G93: D names the compensation entry to load
     int load_entry = -1;          // ... the one the block names (-1: the active one)
+    int reference_iso = 0;        // ISO G28 (1) and G29 (2)
+    bool local_offset = false;    // ISO G52: the axis words shift the work zero
   };
 
   // Words.
@@ -287,6 +293,10 @@ class Machine {
   void load_offset();      // pp G92
   void load_compensation();  // pp G93
   void reference_approach();  // pp G30
+  void reference_return();    // ISO G28
+  void reference_leave();     // ISO G29
+  void set_local_offset();    // ISO G52
+  void position_offset_event();
 
   // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
@@ -311,6 +321,8 @@ class Machine {
 
   // Cycles (machine_cycles.cpp).
   void cycle();
+  void repeat_cycle();  // ISO: L (or K) holes, the first's initial level for all
+  std::optional<double> repeat_start_;
   void cycle_registers();
   void nc110_cycle_registers(bool definition);
   void nc110_cycle();
@@ -335,6 +347,8 @@ class Machine {
   void refresh_base_origin();          // after frame_.base or offsets_ change
   AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
   AxisValues position_offset_{};  // G92
+  std::map<int, AxisValues> local_offsets_;  // ISO G52: the local shift of each work offset
+  std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
   std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
   double speed_ = 0;

@@ -27,6 +27,23 @@ void Machine::cycle_registers() {
   if (auto v = word_if(conv_.peck_word)) cycle_.peck = v;
 }
 
+void Machine::repeat_cycle() {
+  int count = 1;
+  for (char letter : conv_.cycle_repeat_words) {
+    if (!has(letter)) continue;
+    const double v = word(letter);
+    if (v < 0 || v > 9999 || v != std::trunc(v)) {
+      report(DiagId::RepeatCount, letter, shortest(v), 9999);
+      return;
+    }
+    count = static_cast<int>(v);
+    break;
+  }
+  if (count == 0) cycle_registers();  // L0: the cycle's words are stored, no hole is made
+  for (int i = 0; i < count && !block_.error; ++i) cycle();
+  repeat_start_.reset();
+}
+
 void Machine::cycle() {
   const CyclePattern& pattern = sem_.cycles[modal_.cycle];
   const std::string name = "canned cycle " + pattern.name;
@@ -71,7 +88,8 @@ void Machine::cycle() {
   }
   // G90: R and the depth are coordinates; G91: R is measured from the initial level
   // and the depth from R.
-  const double start = machine_[d];
+  // A repeat (ISO L) starts from the first hole's initial level.
+  const double start = repeat_start_.value_or(machine_[d]);
   AxisValues off = target_frame();
   const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
   const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
@@ -79,6 +97,9 @@ void Machine::cycle() {
   // first goes up to R, and R is then the initial level it returns to.
   const bool below_level = (bottom < level) ? start < level : start > level;
   const double initial = below_level ? level : start;
+  // ISO G99: back to R; G98 (and every other dialect): back to the initial level.
+  const double back = conv_.fanuc_cycles && modal_.cycle_return_level ? level : initial;
+  if (conv_.fanuc_cycles) repeat_start_ = start;
   auto at = [&](double z) {
     AxisValues p = hole;
     p[d] = z;
@@ -124,16 +145,26 @@ void Machine::cycle() {
     apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
   if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
   switch (pattern.out) {
-    case CyclePattern::Out::Rapid: rapid(at(initial)); break;
-    case CyclePattern::Out::Feed: linear(at(initial)); break;
+    case CyclePattern::Out::Rapid:
+      if (back != machine_[d]) rapid(at(back));
+      break;
+    case CyclePattern::Out::Feed:
+      // ISO §8.27: out at feed to R, then at rapid to the initial level (G98).
+      if (conv_.fanuc_cycles) {
+        linear(at(level));
+        if (back != level) rapid(at(back));
+      } else {
+        linear(at(initial));
+      }
+      break;
     case CyclePattern::Out::Manual: {
       // The operator retracts by hand: the run stops; on resume the tool is at the
       // initial level (S-7.5).
       Event stop{EventKind::Stop};
       stop.n = 3;
       emit(stop);
-      emit(motion_event(EventKind::OperatorMove, at(initial)));
-      move_to(at(initial));
+      emit(motion_event(EventKind::OperatorMove, at(back)));
+      move_to(at(back));
       break;
     }
   }

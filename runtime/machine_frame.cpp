@@ -34,7 +34,7 @@ double Machine::offset_value(int offset, int axis) const {
   return it->second.inch && is_linear(axis) ? v * 25.4 : v;
 }
 
-double Machine::origin(int axis) const { return base_origin_[axis] + frame_.shift[axis]; }
+double Machine::origin(int axis) const { return base_origin_[axis] + frame_.shift[axis] + frame_.local[axis]; }
 
 void Machine::refresh_base_origin() {
   for (int i = 0; i < kAxisCount; ++i) base_origin_[i] = offset_value(frame_.base[i], i);
@@ -48,7 +48,7 @@ AxisValues Machine::origins() const {
 
 AxisValues Machine::frame_offset(int work_offset) const {
   AxisValues off{};
-  for (int i = 0; i < kAxisCount; ++i) off[i] = offset_value(work_offset, i) + frame_.shift[i];
+  for (int i = 0; i < kAxisCount; ++i) off[i] = offset_value(work_offset, i) + frame_.shift[i] + frame_.local[i];
   return off;
 }
 
@@ -176,7 +176,10 @@ void Machine::transform_event() {
 
 void Machine::set_position() {
   // The named axes take the programmed values as their current coordinates; nothing
-  // moves (Table 5). Incremental values add to the current coordinates.
+  // moves (Table 5). Incremental values add to the current coordinates. ISO §8.19:
+  // the G52 shifts end.
+  local_offsets_.clear();
+  frame_.local.fill(0);
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
@@ -186,10 +189,61 @@ void Machine::set_position() {
     double wanted = modal_.absolute ? v : current + v;
     frame_.shift[i] = machine_[i] - work - wanted;
   }
-  position_offset_ = frame_.shift;
+  position_offset_event();
+}
+
+// The shift of the work zero beyond the work offset: G92 and G52 together, as
+// LinuxCNC's G92 offset carries both.
+void Machine::position_offset_event() {
+  for (int i = 0; i < kAxisCount; ++i) position_offset_[i] = frame_.shift[i] + frame_.local[i];
   Event e{EventKind::PositionOffset};
   e.pos = in_program_units(position_offset_);
   emit(e);
+}
+
+void Machine::set_local_offset() {
+  // ISO §8.13: the axis words are the local zero in the work coordinate system (each
+  // work offset keeps its own); an axis not written keeps its shift (decision 16).
+  AxisValues& local = local_offsets_[modal_.work_offset];
+  for (char letter : conv_.axes)
+    if (has(letter)) local[axis_index(letter)] = axis_units(axis_index(letter), word(letter));
+  frame_.local = local;
+  position_offset_event();
+}
+
+void Machine::reference_return() {
+  // ISO §8.8: the named axes go at rapid through the point the words give (read in
+  // G90/G91, in the work system) to the reference point; without words every axis
+  // goes there directly.
+  AxisValues t = machine_;
+  if (!has_axis_word()) {
+    intermediate_.reset();
+    t = config_.reference_position;
+  } else {
+    const AxisValues mid = target();
+    intermediate_ = mid;
+    if (mid != machine_) rapid(mid);
+    for (char letter : conv_.axes)
+      if (has(letter)) t[axis_index(letter)] = config_.reference_position[axis_index(letter)];
+  }
+  if (t != machine_) rapid(t);
+}
+
+void Machine::reference_leave() {
+  // ISO §8.9: from the reference point through G28's intermediate point on the named
+  // axes (all without words), then to the words' point, read from there (decision 17).
+  if (!intermediate_) {
+    report_code(DiagId::ReferenceNoIntermediate, block_.code_name);
+    return;
+  }
+  AxisValues mid = machine_;
+  const bool words = has_axis_word();
+  for (char letter : conv_.axes)
+    if (!words || has(letter)) mid[axis_index(letter)] = (*intermediate_)[axis_index(letter)];
+  if (mid != machine_) rapid(mid);
+  if (!words) return;
+  const AxisValues t = target();
+  if (t != machine_) rapid(t);
 }
 
 void Machine::load_offset() {

@@ -161,7 +161,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     return plane_words || axis < 0 || axis >= 3 ? plane_word : kParameterOf[axis];
   };
   const char pu = centre_word(u, 'I'), pv = centre_word(v, 'J');
-  const char pw = plane_words ? 'K' : w >= 0 && w < 3 ? kParameterOf[w] : 0;
+  const char pw = conv_.helix_by_end ? 0 : plane_words ? 'K' : w >= 0 && w < 3 ? kParameterOf[w] : 0;
   const bool radius_form = conv_.radius_word && has(conv_.radius_word);
   auto fail = [&](const std::string& why) {
     report(DiagId::ArcForm, 0, why);
@@ -285,7 +285,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
         return;
       }
       sweep = candidate;
-    } else if (!plane_words) {
+    } else if (!plane_words && !conv_.helix_by_end) {
       report(DiagId::HelixNoLead, 0, std::string(1, pw), std::string(1, kAxisLetters[w]),
              per_revolution ? "revolution" : "radian");
     }

@@ -17,6 +17,7 @@ std::string Machine::system_name(SysRef ref) const {
 double Machine::system(SysRef ref) const {
   switch (ref.var) {
     case SysVar::BlockEnable: return block_skip_ ? 0 : 1;
+    case SysVar::InchMode: return modal_.inch ? 1 : 0;
     case SysVar::OptionalStop: return optional_stop_ ? 1 : 0;
     case SysVar::FeedOverride: return modal_.override_enabled ? 1 : 0;
     case SysVar::Timer:

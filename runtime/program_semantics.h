@@ -71,9 +71,12 @@ struct Conventions {
   uint8_t result_space = kNoSpace;  // the variable space measured values go to
   CentreWords centre_words = CentreWords::PerAxis;
   char radius_word = 0;             // an arc by its radius: R+ up to 180 degrees, R- beyond
+  bool helix_by_end = false;        // a helix is given by its end point alone: no lead word (ISO)
   bool cycle_two_levels = false;    // R, then R' (its second value): approach and return levels
   bool cycle_defines_only = false;  // a cycle's own block stores it; the blocks after it drill
   bool cycle_needs_cancel = false;  // a new cycle needs the active one cancelled first
+  bool fanuc_cycles = false;        // G98/G99 return, feed out to R then rapid, repeats (ISO)
+  std::string cycle_repeat_words;   // the words that repeat a cycle block (ISO "LK")
   char peck_factor_word = 0;        // G83: the factor on the peck, down to
   char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
   char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)

@@ -10,7 +10,7 @@ namespace {
 constexpr std::array<BuiltinInfo, static_cast<size_t>(Builtin::Count)> kBuiltins = {{
     {"sin", 1}, {"cos", 1}, {"tan", 1}, {"asin", 1}, {"acos", 1}, {"atan", 1}, {"atan2", 2}, {"sqrt", 1},
     {"abs", 1}, {"trunc", 1}, {"round", 1}, {"floor", 1}, {"ceil", 1}, {"exp", 1}, {"ln", 1},
-    {"gtl_line", 2}, {"gtl_point", 2}, {"gtl_circle", 2},
+    {"gtl_line", 2}, {"gtl_point", 2}, {"gtl_circle", 2}, {"away", 1}, {"round_to", 2},
 }};
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -83,6 +83,12 @@ bool eval_builtin(Builtin b, const double* a, double& out, std::string_view& why
     case Builtin::Floor: out = std::floor(a[0]); break;
     case Builtin::Ceil: out = std::ceil(a[0]); break;
     case Builtin::Exp: out = std::exp(a[0]); break;
+    case Builtin::Away: out = std::copysign(std::ceil(std::fabs(a[0])), a[0]); break;
+    case Builtin::RoundTo: {
+      const double scale = std::pow(10.0, a[1]);
+      out = std::round(a[0] * scale) / scale;
+      break;
+    }
     case Builtin::Ln:
       if (a[0] <= 0.0) {
         why = "positive numbers";

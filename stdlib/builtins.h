@@ -14,6 +14,9 @@ enum class Builtin : uint8_t {
   // NC-110 FEL, FEP, FEC (§2.12): field b of GTL line, point or circle a. No element
   // is defined before ncc supports GTL geometry, so they report it undefined.
   GtlLine, GtlPoint, GtlCircle,
+  // Macro B FUP (away from zero: FUP[-1.2] = -2) and ROUND after an address: a to b
+  // decimals, half away from zero.
+  Away, RoundTo,
   Count
 };
 

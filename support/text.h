@@ -16,5 +16,7 @@ std::string four_decimals(double v);
 std::string printable(std::string_view s);
 // The pieces of `s` between the separators (empty ones too).
 std::vector<std::string> split(std::string_view s, char sep);
+// `s` without the blanks (space, tab, CR) around it.
+std::string_view trim(std::string_view s);
 
 }  // namespace ncc

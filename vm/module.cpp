@@ -61,6 +61,9 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(c.result_space);
   w.u8(static_cast<uint8_t>(c.centre_words));
   w.u8(static_cast<uint8_t>(c.radius_word));
+  w.u8(c.helix_by_end);
+  w.u8(c.fanuc_cycles);
+  w.str(c.cycle_repeat_words);
   w.u8(c.cycle_two_levels);
   w.u8(c.cycle_defines_only);
   w.u8(c.cycle_needs_cancel);
@@ -185,6 +188,9 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.result_space = r.u8();
   ok = ok && enum_value(r, CentreWords::Plane, c.centre_words);
   c.radius_word = static_cast<char>(r.u8());
+  c.helix_by_end = r.u8();
+  c.fanuc_cycles = r.u8();
+  c.cycle_repeat_words = r.str();
   c.cycle_two_levels = r.u8();
   c.cycle_defines_only = r.u8();
   c.cycle_needs_cancel = r.u8();
@@ -325,13 +331,14 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       e.pc = r.u32();
     }
   } else if (t == kVars) {
-    if (!count(r, 22, n)) return false;
+    if (!count(r, 26, n)) return false;
     m.spaces.resize(n);
     for (VarSpace& s : m.spaces) {
       s.name = r.str();
       s.size = r.u32();
       s.memory = r.u8();
-      s.local = r.u8();
+      s.locals = r.u32();
+      s.vacant = r.u8();
       s.limit = r.f64();
       uint32_t ranges = 0;
       if (!count(r, 5, ranges)) return false;
@@ -394,7 +401,8 @@ std::string write_module(const Module& m) {
     vars.str(s.name);
     vars.u32(s.size);
     vars.u8(s.memory);
-    vars.u8(s.local);
+    vars.u32(s.locals);
+    vars.u8(s.vacant);
     vars.f64(s.limit);
     vars.u32(static_cast<uint32_t>(s.types.size()));
     for (const VarSpace::Range& r : s.types) {
@@ -540,7 +548,9 @@ std::string verify(const Module& m) {
   for (const VarSpace& space : m.spaces) {
     variables += space.size;
     if (!(space.limit >= 0 && std::isfinite(space.limit))) return fmt::format("space {} has a bad limit", space.name);
-    if (space.local && space.memory) return fmt::format("memory {} cannot be local to a call", space.name);
+    if (space.locals && space.memory) return fmt::format("memory {} cannot be local to a call", space.name);
+    if (space.locals > space.size) return fmt::format("space {} has more local variables than variables", space.name);
+    if (space.vacant && (space.memory || space.size == 0)) return fmt::format("space {} cannot start vacant", space.name);
   }
   if (variables > kMaxVariables) return fmt::format("the variable spaces hold more than {} values", kMaxVariables);
   if (c.result_space != kNoSpace && (c.result_space >= m.spaces.size() || m.spaces[c.result_space].memory))
@@ -571,7 +581,7 @@ std::string verify(const Module& m) {
     size_t at = pc + 1;
     uint8_t space = 0;
     // Numbered variables go through Load/Store, memories through the others.
-    const bool wants_memory = op != Op::Load && op != Op::LoadX && op != Op::Store && op != Op::StoreX;
+    const bool wants_memory = op != Op::Load && op != Op::LoadX && op != Op::Store && op != Op::StoreX && op != Op::Arg;
     for (size_t i = 0; i < info.format.size(); ++i) {
       const char f = info.format[i];
       uint32_t v = read_operand(&code[at], operand_size(f));
@@ -657,7 +667,8 @@ std::string verify(const Module& m) {
       case Op::EndRepeat:
       case Op::CallRange: successors = {read_operand(&code[pc + 1], 4), next}; break;
       case Op::Return:
-      case Op::End: break;
+      case Op::End:
+      case Op::NoBlock: break;
       default: successors = {next};
     }
     for (uint32_t to : successors) {

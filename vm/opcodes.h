@@ -18,7 +18,8 @@
 // built up by SHOW* and shown by MESSAGE.
 //
 // Frames: CALLENTRY calls an entry point (again, while its count lasts), RETURN comes
-// back; the local variable spaces start at zero in every call. CALLRANGE runs the code
+// back; the local variables start afresh in every call (ARGs before it give some of
+// them values), except in a CALLSHARED call (Macro B M98). CALLRANGE runs the code
 // from one place to a RANGEEND (NC-110 EPP) and comes back after it; a range does
 // not run inside another, and a jump out of it ends it.
 #pragma once
@@ -85,7 +86,11 @@ namespace ncc::vm {
   X(ShowValue, "t", 1, 0, "pop a value; append it to the pending message as type t shows")     \
   X(ShowText, "vn", 1, 0, "pop a byte index; append n bytes of memory v to the pending message") \
   X(Message, "", 0, 0, "show the pending message to the operator, then clear it")                \
-  X(Check, "wr", 1, 1, "fail at word w unless the top meets value rule r (a parameter's value)")
+  X(Check, "wr", 1, 1, "fail at word w unless the top meets value rule r (a parameter's value)") \
+  X(ZeroIfVacant, "", 1, 1, "a vacant top (an unset Macro B variable) reads as 0")            \
+  X(Arg, "vi", 1, 0, "pop a value into local variable v[i] of the next CALLENTRY's frame")     \
+  X(CallShared, "e", 1, 0, "pop a count 1..9999; call entry point e that many times, keeping the caller's locals") \
+  X(NoBlock, "", 1, 0, "pop a block number: fail, the unit has no block of that number (a computed GOTO)")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,

@@ -40,7 +40,12 @@ struct VarSpace {
   };
   std::vector<Range> types;  // the type of index i is that of the last range with first <= i
   bool memory = false;       // byte-addressed: read and written through a MemFormat
-  bool local = false;        // each call starts with zeros; the caller's values come back on return
+  // The first `locals` variables are local to a call: each call starts with them
+  // reset, and the caller's values come back on return (pp: all; Macro B: #0-#33).
+  uint32_t locals = 0;
+  // Variables start vacant (Macro B <vacant>, a quiet NaN) rather than 0, and
+  // variable 0 is always vacant (#0).
+  bool vacant = false;
   double limit = 0;          // LongReal values must stay below this magnitude (0 = no limit)
 
   VarType type_of(uint32_t index) const {

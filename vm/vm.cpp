@@ -18,6 +18,7 @@ namespace {
 constexpr size_t kMaxLoops = 64;
 constexpr double kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
+const double kVacant = std::numeric_limits<double>::quiet_NaN();
 constexpr double kMaxCallCount = 9999;  // pp Q (the largest count a dialect writes)
 
 inline uint32_t u32_at(const uint8_t* p) { return read_operand(p, 4); }
@@ -56,7 +57,8 @@ std::string show(VarType type, double v) {
 Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions options)
     : m_(module), machine_(machine), issues_(issues), options_(options) {
   for (const VarSpace& s : m_.spaces) {
-    vars_.emplace_back(s.memory ? 0 : s.size, 0.0);
+    vars_.emplace_back(s.memory ? 0 : s.size, s.vacant ? kVacant : 0.0);
+    vacancy_ = vacancy_ || s.vacant;
     memories_.emplace_back(s.memory ? s.size : 0, uint8_t{0});
   }
 }
@@ -89,6 +91,14 @@ bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
     return false;
   }
   double v = value;
+  if (s.vacant && index == 0) {
+    fail(pc, DiagId::VacantVariable, fmt::format("{}0", s.name));
+    return false;
+  }
+  if (s.vacant && std::isnan(v)) {
+    vars_[space][static_cast<size_t>(index)] = kVacant;
+    return true;
+  }
   if (!convert_value(s.type_of(static_cast<uint32_t>(index)), s.limit, v)) {
     fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, shortest(index)));
     return false;
@@ -155,22 +165,24 @@ bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint3
   return true;
 }
 
-std::vector<double> Vm::take_locals() {
+std::vector<double> Vm::take_locals(const std::vector<Arg>& args) {
   std::vector<double> saved;
   for (size_t i = 0; i < m_.spaces.size(); ++i)
-    if (m_.spaces[i].local) {
-      saved.insert(saved.end(), vars_[i].begin(), vars_[i].end());
-      std::fill(vars_[i].begin(), vars_[i].end(), 0.0);
+    if (const VarSpace& s = m_.spaces[i]; s.locals) {
+      auto end = vars_[i].begin() + static_cast<std::ptrdiff_t>(s.locals);
+      saved.insert(saved.end(), vars_[i].begin(), end);
+      std::fill(vars_[i].begin(), end, s.vacant ? kVacant : 0.0);
     }
+  for (const Arg& a : args) vars_[a.space][a.index] = a.value;
   return saved;
 }
 
 void Vm::restore_locals(const std::vector<double>& saved) {
   auto from = saved.begin();
   for (size_t i = 0; i < m_.spaces.size(); ++i)
-    if (m_.spaces[i].local) {
-      std::copy(from, from + static_cast<std::ptrdiff_t>(vars_[i].size()), vars_[i].begin());
-      from += static_cast<std::ptrdiff_t>(vars_[i].size());
+    if (const VarSpace& s = m_.spaces[i]; s.locals) {
+      std::copy(from, from + static_cast<std::ptrdiff_t>(s.locals), vars_[i].begin());
+      from += static_cast<std::ptrdiff_t>(s.locals);
     }
 }
 
@@ -263,8 +275,9 @@ RunStatus Vm::run(uint32_t entry) {
         st.back() = r;
         break;
       }
-      case Op::Eq: { double b = pop(); st.back() = st.back() == b; break; }
-      case Op::Ne: { double b = pop(); st.back() = st.back() != b; break; }
+      // Two vacant values are equal (Macro B: `#1 EQ #0` is true when #1 is vacant).
+      case Op::Eq: { double b = pop(); st.back() = st.back() == b || (std::isnan(b) && std::isnan(st.back())); break; }
+      case Op::Ne: { double b = pop(); st.back() = !(st.back() == b || (std::isnan(b) && std::isnan(st.back()))); break; }
       case Op::Lt: { double b = pop(); st.back() = st.back() < b; break; }
       case Op::Le: { double b = pop(); st.back() = st.back() <= b; break; }
       case Op::Gt: { double b = pop(); st.back() = st.back() > b; break; }
@@ -326,6 +339,7 @@ RunStatus Vm::run(uint32_t entry) {
       }
       case Op::CodeOf: {
         double v = pop();
+        if (vacancy_ && std::isnan(v)) break;  // G#1 with #1 vacant: no code
         const auto& numbered = m_.semantics.numbered;
         auto it = std::find_if(numbered.begin(), numbered.end(), [&](const NumberedCode& c) {
           return c.slot == operands[0] && c.number == v;
@@ -347,6 +361,7 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::Word: words_.set(operands[0], m_.numbers[u32_at(operands + 1)]); break;
       case Op::WordPop: {
         double v = pop();
+        if (vacancy_ && std::isnan(v)) break;  // X#1 with #1 vacant: no X word
         if (!std::isfinite(v)) return fail(pc, DiagId::DomainError, shortest(v), "word values");
         words_.set(operands[0], v);
         break;
@@ -393,7 +408,8 @@ RunStatus Vm::run(uint32_t entry) {
         else p.loops.pop_back();
         break;
       case Op::Unloop: landing_depth_ = operands[0]; break;
-      case Op::CallEntry: {
+      case Op::CallEntry:
+      case Op::CallShared: {
         double count = pop();
         if (!(count >= 1 && count <= kMaxCallCount) || count != std::trunc(count))
           return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
@@ -403,10 +419,22 @@ RunStatus Vm::run(uint32_t entry) {
           return fail(pc, DiagId::CallDepth, limit ? limit : kMaxFrames);
         const uint32_t start = m_.entries[u16_at(operands)].pc;
         p.frames.push_back({p.pc, p.loops.size(), false, 0, 0, p.loops.size(), start, static_cast<int64_t>(count) - 1,
-                            take_locals()});
+                            op == Op::CallShared ? std::vector<double>{} : take_locals(args_), op == Op::CallShared,
+                            std::move(args_)});
+        args_.clear();
         p.pc = start;
         break;
       }
+      case Op::Arg:
+        if (args_.size() >= 256) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 256 arguments to a call");
+        if (!m_.spaces[operands[0]].locals || u32_at(operands + 1) >= m_.spaces[operands[0]].locals)
+          return fail(pc, DiagId::BytecodeInvalid, "program", "an argument that is not a local variable");
+        args_.push_back({operands[0], u32_at(operands + 1), pop()});
+        break;
+      case Op::ZeroIfVacant:
+        if (std::isnan(st.back())) st.back() = 0;
+        break;
+      case Op::NoBlock: return fail(pc, DiagId::JumpTargetMissing, shortest(pop()));
       case Op::CallRange:
         for (const Frame& f : p.frames)
           if (f.range) return fail(pc, DiagId::RangeNested);
@@ -415,7 +443,7 @@ RunStatus Vm::run(uint32_t entry) {
           return fail(pc, DiagId::BytecodeInvalid, "program", "a range deeper in repeat loops than its call");
         // The range's code counts its loop depth from its first block's.
         p.frames.push_back(
-            {p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4), p.loops.size() - operands[8], 0, 0, {}});
+            {p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4), p.loops.size() - operands[8], 0, 0, {}, false, {}});
         p.pc = u32_at(operands);
         break;
       case Op::RangeEnd:
@@ -436,11 +464,11 @@ RunStatus Vm::run(uint32_t entry) {
         if (p.frames.back().remaining > 0) {
           // The next repetition starts afresh, as a new call would.
           --p.frames.back().remaining;
-          take_locals();
+          if (!p.frames.back().shared) take_locals(p.frames.back().args);
           p.pc = p.frames.back().entry;
           break;
         }
-        restore_locals(p.frames.back().locals);
+        if (!p.frames.back().shared) restore_locals(p.frames.back().locals);
         p.pc = p.frames.back().return_pc;
         p.frames.pop_back();
         break;

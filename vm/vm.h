@@ -29,6 +29,11 @@ class Vm {
   uint32_t pc() const { return process_.pc; }  // where the last run stopped
 
  private:
+  struct Arg {
+    uint8_t space;
+    uint32_t index;
+    double value;
+  };
   struct Frame {
     uint32_t return_pc;
     size_t loops;  // repeat loops open when the call was made
@@ -38,6 +43,8 @@ class Vm {
     uint32_t entry = 0;           // a call: where each of its repetitions starts
     int64_t remaining = 0;        //         the repetitions after this one
     std::vector<double> locals;   //         the caller's local variables
+    bool shared = false;          //         keeps the caller's locals (CALLSHARED)
+    std::vector<Arg> args;        //         the values each repetition starts with
   };
   struct Loop {
     int64_t remaining;
@@ -66,8 +73,9 @@ class Vm {
   void jump_to(uint32_t target);
   std::optional<size_t> landing_depth_;
   size_t calls() const;
-  // The local variable spaces, all in one, and zeroed (a call starts with zeros).
-  std::vector<double> take_locals();
+  // The local variables of every space, all in one, and reset (a call starts with
+  // zeros, or vacant ones), then the call's arguments set.
+  std::vector<double> take_locals(const std::vector<Arg>& args);
   void restore_locals(const std::vector<double>& saved);
 
   const Module& m_;
@@ -83,6 +91,8 @@ class Vm {
   std::string message_;          // the pending operator message
   uint64_t dynamic_codes_ = 0;   // the pending block's codes chosen at run time (bit i: codes_[i])
   std::vector<uint8_t> dynamic_slots_;  // their words' slots, in order (GE1 GE2: G, G)
+  std::vector<Arg> args_;        // the next call's arguments
+  bool vacancy_ = false;         // a space holds vacant values: a vacant word value or code is omitted
 };
 
 }  // namespace ncc::vm

@@ -56,7 +56,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
       diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
   };
   for (const ir::Word& w : block.words) {
-    if (w.kind == ir::WordKind::Ignored || w.value == ir::kNoExpr) continue;
+    if (w.kind == ir::WordKind::Ignored || w.kind == ir::WordKind::Argument || w.value == ir::kNoExpr) continue;
     if (w.kind == ir::WordKind::Code && w.code == ir::kDynamicCode) {
       count_several(w);  // what it is comes at run time; that it is a word, now
       continue;
@@ -174,13 +174,15 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
   }
   for (const ir::Unit& u : program.units) {
     entries.insert(u.name);
-    for (const ir::Block& b : u.blocks)
+    for (const ir::Block& b : u.blocks) {
       if (b.main_block && b.number) entries.insert(fmt::format(":{}", *b.number));
+      if (!b.label.empty()) entries.insert(u.name + "/" + b.label);  // Macro B M97: a block of the unit
+    }
   }
   for (ir::Block& b : unit.blocks) {
     uint32_t errors = diags.error_count();
     for (const ir::Stmt& s : b.stmts) {
-      if (s.kind == ir::StmtKind::Jump && !labels.count(s.label))
+      if (s.kind == ir::StmtKind::Jump && !s.label.empty() && !labels.count(s.label))
         diags.report(DiagId::LabelUndefined, s.range, "jump to", s.label);
       if (s.kind == ir::StmtKind::CallRange) {
         if (!labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, "block range from", s.label);
@@ -269,7 +271,7 @@ void check_structure(ir::Unit& unit, const CheckRules& rules, Diagnostics& diags
 }
 
 // Calls: at most the dialect's depth open at once, and none that would never end.
-void check_calls(const ir::Program& program, Diagnostics& diags) {
+void check_calls(const ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
   const uint32_t limit = program.semantics.conventions.max_call_depth;
   std::map<std::string, const ir::Unit*> units;
   for (const ir::Unit& u : program.units) units.emplace(u.name, &u);
@@ -284,6 +286,7 @@ void check_calls(const ir::Program& program, Diagnostics& diags) {
         if (it == units.end() || reported.count(&s)) continue;
         if (auto at = std::find(path.begin(), path.end(), it->second); at != path.end()) {
           reported.insert(&s);
+          if (rules.recursion) continue;  // a condition may end it; the call depth limit holds at run time
           std::string through;  // the programs between: none when it calls itself directly
           for (++at; at != path.end(); ++at) through += (through.empty() ? " through " : " -> ") + (*at)->name;
           diags.report(DiagId::CallRecursive, s.range, s.label, through);
@@ -316,7 +319,7 @@ void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
     check_targets(program, unit, rules, diags);
     check_structure(unit, rules, diags);
   }
-  check_calls(program, diags);
+  check_calls(program, rules, diags);
 }
 
 }  // namespace ncc

@@ -15,6 +15,7 @@ struct CheckRules {
   bool block_number_order = true;   // block numbers rise and are not used twice
   bool unique_labels = false;       // a label names one block of its unit
   uint32_t max_repeat_depth = 0;    // repeat loops that may nest (0: no limit)
+  bool recursion = false;           // a unit may call itself (Macro B: a condition ends it)
 };
 
 // Reports every problem and marks the blocks that have one.

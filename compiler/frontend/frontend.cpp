@@ -6,6 +6,7 @@
 
 #include "gost/gost_frontend.h"
 #include "nc110/nc110_frontend.h"
+#include "iso/iso_frontend.h"
 #include "pp/pp_frontend.h"
 
 namespace ncc {
@@ -19,6 +20,7 @@ constexpr DialectEntry kDialects[] = {
     {"gost", gost::make_gost_frontend},
     {"nc110", nc110::make_nc110_frontend},
     {"pp", pp::make_pp_frontend},
+    {"iso", iso::make_iso_frontend},
 };
 }  // namespace
 

@@ -38,6 +38,7 @@ enum class ExprOp : uint8_t {
   String,  // Program::texts[text]: not a number
   TextEq,  // 1 if Text a holds the bytes of Text or String b
   Check,   // a, which must meet semantics.value_rules[rule] (reported at word `slot`)
+  ZeroIfVacant,  // a, or 0 if it is vacant (Macro B: a vacant operand of arithmetic)
 };
 
 struct Expr {
@@ -62,6 +63,7 @@ enum class WordKind : uint8_t {
   BlockNumber,  // N or ':'
   Ignored,      // kept for printing only (a word the checks rejected)
   Control,      // read by a statement, not by the machine (pp L and Q of a call or jump)
+  Argument,     // a value a macro call gives the macro (Macro B G65 A..Z: I J K may repeat)
 };
 
 // A Code word whose code is found at run time from its value (NC-110 `GE1`).
@@ -82,10 +84,10 @@ enum class StmtKind : uint8_t {
   Comment,      // operator text shown when the block runs (`label`)
   Machine,      // run the block's codes and parameter words on the runtime
   Assign,       // target := value
-  Jump,         // go to `label` (if `cond` is true, when given)
+  Jump,         // go to `label` (if `cond` is true, when given); no label: to the block numbered `value`
   RepeatBegin,  // repeat the statements up to the matching RepeatEnd `count` times
   RepeatEnd,
-  Call,         // call unit/file `label`, `count` times
+  Call,         // call unit/file `label` (a block of its unit: "unit/label"), `value` times, with `args`
   Return,
   CallRange,    // run the blocks from label `label` to label `end_label`, then go on
   Display,      // show `items` to the operator, one after the other
@@ -97,6 +99,13 @@ struct DisplayItem {
   VarType type = VarType::LongReal;
 };
 
+// A value a call gives a local variable of the called code (Macro B G65 A..Z).
+struct CallArg {
+  uint16_t space = 0;
+  uint32_t index = 0;
+  ExprId value = kNoExpr;
+};
+
 struct Stmt {
   Stmt() = default;
   Stmt(StmtKind k, SourceRange r) : kind(k), range(r) {}
@@ -105,13 +114,15 @@ struct Stmt {
   SourceRange range;
   ExprId target = kNoExpr;  // Assign: a Var expression
   ExprId value = kNoExpr;   // Assign value; RepeatBegin count; Call count (none: once)
-  ExprId cond = kNoExpr;    // Jump condition
+  ExprId cond = kNoExpr;    // Jump condition; any other statement runs only if it is true
   std::string label;        // Jump target label; Call target; Comment text
   bool optional = false;    // Comment after a mid-block '/': dropped when block skip is on
   double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
   std::string end_label;    // CallRange
   SourceRange end_range;    // CallRange: where end_label is written
   std::vector<DisplayItem> items;  // Display
+  std::vector<CallArg> args;       // Call
+  bool shares_locals = false;      // Call: the called code keeps the caller's locals (Macro B M98)
 };
 
 struct Block {

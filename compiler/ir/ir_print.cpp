@@ -17,6 +17,7 @@ namespace {
 const char* op_name(ExprOp op) {
   switch (op) {
     case ExprOp::Neg: return "neg";
+    case ExprOp::ZeroIfVacant: return "or0";
     case ExprOp::Not: return "not";
     case ExprOp::Add: return "+";
     case ExprOp::Sub: return "-";
@@ -69,7 +70,8 @@ std::string print_expr(const Program& p, ExprId id) {
       return fmt::format("{}[{}]", space, print_expr(p, e.a));
     }
     case ExprOp::Neg:
-    case ExprOp::Not: return fmt::format("({} {})", op_name(e.op), print_expr(p, e.a));
+    case ExprOp::Not:
+    case ExprOp::ZeroIfVacant: return fmt::format("({} {})", op_name(e.op), print_expr(p, e.a));
     case ExprOp::Mem: {
       constexpr const char* formats[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
       return fmt::format("{}[{}].{}", p.spaces[e.space].name, print_expr(p, e.a), formats[static_cast<int>(e.format)]);
@@ -121,7 +123,10 @@ std::string print(const Program& p, const SourceManager& sources) {
   for (uint16_t i : p.semantics.power_on) out += fmt::format(" {}", p.semantics.codes[i].name);
   out += "\n";
   for (const VarSpace& s : p.spaces)
-    out += fmt::format("space {} size={}{}{}\n", s.name, s.size, s.memory ? " memory" : "", s.local ? " local" : "");
+    out += fmt::format("space {} size={}{}{}{}\n", s.name, s.size, s.memory ? " memory" : "", s.locals == 0       ? std::string()
+                       : s.locals >= s.size ? std::string(" local")
+                                            : fmt::format(" locals={}", s.locals),
+                       s.vacant ? " vacant" : "");
 
   for (const Unit& u : p.units) {
     const char* kind = pick(u.kind, {"program", "subprogram", "macro"});
@@ -148,6 +153,7 @@ std::string print(const Program& p, const SourceManager& sources) {
         out += "\n";
       }
       for (const Stmt& s : b.stmts) {
+        if (s.cond != kNoExpr && s.kind != StmtKind::Jump) out += fmt::format("    if {}:\n", print_expr(p, s.cond));
         switch (s.kind) {
           case StmtKind::Comment:
             out += fmt::format("    comment {}\"{}\"\n", s.optional ? "/" : "", json_escape(s.label));
@@ -172,13 +178,18 @@ std::string print(const Program& p, const SourceManager& sources) {
             out += fmt::format("    assign {} = {}\n", print_expr(p, s.target), print_expr(p, s.value));
             break;
           case StmtKind::Jump:
-            out += fmt::format("    goto {}", s.label);
+            out += s.label.empty() ? fmt::format("    goto N[{}]", print_expr(p, s.value)) : fmt::format("    goto {}", s.label);
             if (s.cond != kNoExpr) out += " if " + print_expr(p, s.cond);
             out += "\n";
             break;
           case StmtKind::RepeatBegin: out += fmt::format("    repeat {}\n", print_expr(p, s.value)); break;
           case StmtKind::RepeatEnd: out += "    end_repeat\n"; break;
-          case StmtKind::Call: out += fmt::format("    call {} x{}\n", s.label, print_expr(p, s.value)); break;
+          case StmtKind::Call:
+            out += fmt::format("    call {} x{}{}", s.label, print_expr(p, s.value), s.shares_locals ? " shared" : "");
+            for (const CallArg& a : s.args)
+              out += fmt::format(" {}{}={}", p.spaces[a.space].name, a.index, print_expr(p, a.value));
+            out += "\n";
+            break;
           case StmtKind::Return: out += "    return\n"; break;
           case StmtKind::CallRange: out += fmt::format("    call_range {} {}\n", s.label, s.end_label); break;
           case StmtKind::Display: {

@@ -24,6 +24,10 @@ class Lowering {
   }
 
   vm::Module run() {
+    for (const ir::Unit& unit : p_.units)
+      for (const ir::Block& b : unit.blocks)
+        for (const ir::Stmt& s : b.stmts)
+          if (s.kind == ir::StmtKind::Call) called_.insert(s.label);
     for (const ir::Unit& unit : p_.units) lower_unit(unit);
     resolve_calls();
     return std::move(m_);
@@ -146,6 +150,10 @@ class Lowering {
         }
         return;
       }
+      case ir::ExprOp::ZeroIfVacant:
+        expr(e.a);
+        op(Op::ZeroIfVacant);
+        return;
       case ir::ExprOp::Check:
         expr(e.a);
         op(Op::Check);
@@ -303,6 +311,9 @@ class Lowering {
       if (b.main_block && b.number)
         m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
       if (!b.label.empty()) labels[b.label] = pc();
+      // A block a call names (Macro B M97) is an entry point of its own.
+      if (!b.label.empty() && called_.count(unit.name + "/" + b.label))
+        m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});
       op(Op::Step);
       uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
       for (const ir::Stmt& s : b.stmts) {
@@ -310,6 +321,12 @@ class Lowering {
         // dry run goes on past it, its other errors already reported).
         if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange))
           continue;
+        // A statement with a condition (Macro B `IF [...] THEN`) runs only when it holds.
+        uint32_t unless = 0;
+        if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) {
+          expr(s.cond);
+          unless = jump(Op::JumpIfNot);
+        }
         switch (s.kind) {
           case ir::StmtKind::Comment: {
             uint32_t skip_comment = s.optional ? jump(Op::JumpSkip) : 0;
@@ -322,6 +339,10 @@ class Lowering {
           case ir::StmtKind::Assign: assign(s); break;
           case ir::StmtKind::Display: display(s); break;
           case ir::StmtKind::Jump: {
+            if (s.label.empty()) {
+              computed_jump(unit, s, jumps);
+              break;
+            }
             // A jump out of repeat loops closes them (the checks reject jumps into
             // one): it lands at its target's loop depth. So does a jump where a range
             // may run the code, which may leave the range.
@@ -368,6 +389,12 @@ class Lowering {
             u8(static_cast<uint32_t>(label_depth.count(s.label) ? label_depth.at(s.label) : 0));
             break;
           case ir::StmtKind::Call:
+            for (const ir::CallArg& a : s.args) {
+              expr(a.value);
+              op(Op::Arg);
+              u8(a.space);
+              u32(a.index);
+            }
             if (s.value != ir::kNoExpr) {
               expr(s.value);
             } else {
@@ -375,11 +402,12 @@ class Lowering {
               u32(number(1));
             }
             calls_.push_back({pc() + 1, s.label});
-            op(Op::CallEntry);
+            op(s.shares_locals ? Op::CallShared : Op::CallEntry);
             u16(0);
             break;
           case ir::StmtKind::Return: op(Op::Return); break;
         }
+        if (unless) patch(unless, pc());
       }
       if (skip) patch(skip, pc());
       if (!b.label.empty() && range_ends.count(b.label)) {
@@ -426,6 +454,28 @@ class Lowering {
     labels_end_.clear();
   }
 
+  // A jump to the block whose number an expression gives (Macro B `GOTO #1`): each
+  // numbered block of the unit in turn, and an error if none has the number.
+  void computed_jump(const ir::Unit& unit, const ir::Stmt& s, std::vector<std::pair<uint32_t, std::string>>& jumps) {
+    uint32_t not_taken = 0;
+    if (s.cond != ir::kNoExpr) {
+      expr(s.cond);
+      not_taken = jump(Op::JumpIfNot);
+    }
+    std::set<uint32_t> seen;
+    for (const ir::Block& target : unit.blocks) {
+      if (!target.number || target.label.empty() || !seen.insert(*target.number).second) continue;
+      expr(s.value);
+      op(Op::Const);
+      u32(number(*target.number));
+      op(Op::Eq);
+      jumps.push_back({jump(Op::JumpIf), target.label});
+    }
+    expr(s.value);
+    op(Op::NoBlock);
+    if (not_taken) patch(not_taken, pc());
+  }
+
   // Calls name entry points of any unit, so they are resolved last. A call the checks
   // reported as unresolved goes to an entry that returns at once.
   void resolve_calls() {
@@ -454,6 +504,7 @@ class Lowering {
   std::map<uint64_t, uint32_t> numbers_;
   std::map<std::string, uint32_t> strings_;
   std::vector<std::pair<uint32_t, std::string>> calls_;  // (operand, entry name)
+  std::set<std::string> called_;                          // every entry name a call names
   std::vector<std::pair<uint32_t, std::string>> range_ends_at_;  // (CallRange end operand, end label)
   std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd
 };

@@ -505,7 +505,7 @@ TEST(Vm, CallDepthLimitOfTheDialect) {
 TEST(Vm, CallCountRepeatsTheSubprogramWithFreshLocals) {
   Builder t;
   VarSpace local{"C", 1, {}};
-  local.local = true;
+  local.locals = local.size;
   t.p.spaces.push_back(local);
   const uint16_t c = static_cast<uint16_t>(t.p.spaces.size() - 1);
   auto counter = [&] { return t.p.add({ir::ExprOp::Var, Builtin::Sin, c, 0, t.num(0), ir::kNoExpr, {}}); };

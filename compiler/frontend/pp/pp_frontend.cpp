@@ -35,7 +35,6 @@ class PpFrontend final : public Frontend {
     spaces.r = static_cast<uint16_t>(program.spaces.size());
     program.spaces.push_back(r);
     VarSpace counters{"G73", 0, {{0, VarType::Long}}};
-    counters.local = true;
     spaces.counters = static_cast<uint16_t>(program.spaces.size());
     program.spaces.push_back(counters);
 
@@ -71,7 +70,7 @@ class PpFrontend final : public Frontend {
       macro.run();
       for (const MacroCall& c : macro.macro_calls()) pending.push_back(c);
     }
-    program.spaces[spaces.counters].size = spaces.next_counter;
+    program.spaces[spaces.counters].size = program.spaces[spaces.counters].locals = spaces.next_counter;
     set_power_on(program, s_.tables, s_.power_on);
     // A code the front end reads itself (G71...) cannot be chosen at run time.
     std::set<std::string> fixed;

@@ -1,0 +1,90 @@
+// iso front end: the main program file with its O subprograms and macros, and the O
+// programs its M98 and G65 calls name that the file does not hold, each read once from
+// the program library into one IR program.
+#include "iso_frontend.h"
+
+#include <deque>
+#include <filesystem>
+#include <set>
+
+#include "reader.h"
+
+namespace ncc::iso {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class IsoFrontend final : public Frontend {
+ public:
+  explicit IsoFrontend(Settings settings) : s_(std::move(settings)) {
+    rules_.tables = &s_.tables;
+    rules_.block_number_order = false;  // any order; GOTO finds its block by number
+    rules_.recursion = true;            // a macro may call itself until a condition stops it
+  }
+
+  ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
+    ir::Program program;
+    program.dialect = program.semantics.dialect = "iso";
+    program.files.push_back(file);
+    program.semantics.conventions = s_.conventions;
+    program.semantics.cycles = s_.tables.cycles;
+    // #0..#999 (decision 3): #1-#33 local to each macro call, all vacant at the start.
+    VarSpace vars{"#", 1000, {{0, VarType::LongReal}}};
+    vars.locals = 34;
+    vars.vacant = true;
+    const auto space = static_cast<uint16_t>(program.spaces.size());
+    program.spaces.push_back(vars);
+
+    Reader main(s_, program, sources.file(file), file, diags, space, std::nullopt);
+    main.run();
+    std::deque<ProgramCall> pending(main.calls().begin(), main.calls().end());
+    // Called programs the file does not hold: O<nnnn>[.nc] in the library (decision 12).
+    fs::path root = (!options.library.empty() ? fs::path(options.library)
+                     : !s_.library.empty()    ? fs::path(s_.library)
+                                              : fs::path(sources.file(file).path()).parent_path()).lexically_normal();
+    std::set<std::string> known;
+    for (const ir::Unit& u : program.units) known.insert(u.name);
+    while (!pending.empty() && !diags.limit_reached()) {
+      ProgramCall call = pending.front();
+      pending.pop_front();
+      if (!known.insert(call.name).second) continue;
+      fs::path found;
+      std::optional<std::string> text;
+      for (const char* ext : {"", ".nc", ".ngc", ".tap", ".txt"})
+        if ((text = read_called_file((root / (call.name + ext)).string()))) {
+          found = root / (call.name + ext);
+          break;
+        }
+      if (!text) {
+        diags.report(DiagId::ProgramNotFound, call.range, call.name, (root / call.name).string() + "[.nc|.ngc|.tap|.txt]");
+        program.units[call.unit].blocks[call.block].has_errors = true;
+        continue;
+      }
+      uint32_t f = sources.add(found.string(), std::move(*text));
+      program.files.push_back(f);
+      Reader called(s_, program, sources.file(f), f, diags, space, call.name);
+      called.run();
+      for (const ProgramCall& c : called.calls()) pending.push_back(c);
+    }
+    set_power_on(program, s_.tables, s_.power_on);
+    add_dynamic_codes(program, s_.tables, {"G65", "M97", "M98", "M99"});
+    return program;
+  }
+
+  const CheckRules& rules() const override { return rules_; }
+
+ private:
+  Settings s_;
+  CheckRules rules_;
+};
+
+}  // namespace
+
+std::unique_ptr<Frontend> make_iso_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
+  auto settings = load_settings(profile, diags);
+  if (!settings) return nullptr;
+  return std::make_unique<IsoFrontend>(std::move(*settings));
+}
+
+}  // namespace ncc::iso

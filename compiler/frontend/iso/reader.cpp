@@ -1,0 +1,944 @@
+#include "reader.h"
+
+#include <charconv>
+#include <cmath>
+#include <set>
+
+#include "frontend/frontend.h"
+#include "support/text.h"
+
+namespace ncc::iso {
+
+namespace {
+
+constexpr uint32_t kMaxCount = 999;     // L of M97, M98, G65 (§8.16, §8.33)
+constexpr int kMaxLoopDepth = 3;        // DO1..DO3 (§8.34.3)
+
+// #0..#33 are local to a macro call (§8.16), #100..#199 and #500..#999 common
+// (decision 3); #0 is always vacant.
+bool variable_exists(double n) { return n == 0 || (n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999); }
+
+// G65 argument specification I (§8.16): the letter's local variable; 0 = not an argument.
+uint32_t argument_of(char letter) {
+  switch (letter) {
+    case 'A': return 1;  case 'B': return 2;  case 'C': return 3;  case 'I': return 4;  case 'J': return 5;
+    case 'K': return 6;  case 'D': return 7;  case 'E': return 8;  case 'F': return 9;  case 'H': return 11;
+    case 'M': return 13; case 'Q': return 17; case 'R': return 18; case 'S': return 19; case 'T': return 20;
+    case 'U': return 21; case 'V': return 22; case 'W': return 23; case 'X': return 24; case 'Y': return 25;
+    case 'Z': return 26;
+    default: return 0;
+  }
+}
+
+}  // namespace
+
+// A stretch of text between block ends: a block, or a brace of a multi-line IF.
+struct Reader::Piece {
+  enum Kind { Text, Open, Close } kind = Text;
+  uint32_t line = 0, col = 0;  // 1-based, of its first character
+  size_t begin = 0, end = 0;   // byte offsets in the file
+  std::vector<std::pair<size_t, size_t>> comments;  // byte ranges of '(' ... ')'
+};
+
+// An open WHILE/DO loop (§8.34.3).
+struct Reader::Loop {
+  int index = 0;
+  SourceRange range;
+  size_t do_block = 0;
+  std::optional<size_t> exit;  // the WHILE's jump out (the block's stmt)
+  ir::ExprId cond = ir::kNoExpr;
+  std::optional<size_t> body;  // its first block
+};
+
+// An open multi-line IF (§8.34.2): the jump to the next branch, the jumps to its end.
+struct Reader::Branch {
+  SourceRange range;
+  std::optional<std::pair<size_t, size_t>> next;   // (block, stmt) of the condition's false jump
+  std::vector<std::pair<size_t, size_t>> exits;     // the jumps of the bodies to the end
+  bool in_body = false, closed = false, has_else = false;
+  std::optional<size_t> close_block;                // the '}' block of the last body
+};
+
+// Maps ANTLR syntax errors to diagnostics at the right column.
+class Reader::Errors final : public antlr4::BaseErrorListener {
+ public:
+  explicit Errors(Reader& r) : r_(r) {}
+  bool any = false;
+  void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t, size_t position, const std::string&,
+                   std::exception_ptr) override {
+    if (any) return;  // one message a block: the rest follows from it
+    any = true;
+    size_t at = token ? token->getStartIndex() : position;
+    const bool eof = !token || token->getType() == antlr4::Token::EOF;
+    if (eof) at = r_.sanitized_.size();
+    uint32_t col = r_.base_ + static_cast<uint32_t>(at) + 1;
+    if (!eof && token->getType() == IsoLexer::INVALID) {
+      size_t length = 1;
+      std::string_view original = r_.source_.text().substr(r_.source_.line_offset(r_.line_) + r_.base_);
+      std::string what = describe_char(original, at, length);
+      r_.diags_.report(DiagId::CharInvalid, {r_.file_, r_.line_, col, r_.line_, col + static_cast<uint32_t>(length)}, what);
+      return;
+    }
+    std::string what = eof ? std::string("end of the block") : fmt::format("'{}'", token->getText());
+    uint32_t len = eof ? 1 : static_cast<uint32_t>(token->getStopIndex() - token->getStartIndex() + 1);
+    r_.diags_.report(DiagId::SyntaxError, {r_.file_, r_.line_, col, r_.line_, col + len}, what);
+  }
+
+ private:
+  Reader& r_;
+};
+
+std::string Reader::program_name(uint32_t number) { return fmt::format("O{:04}", number); }
+
+Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
+               Diagnostics& diags, uint16_t space, std::optional<std::string> called)
+    : s_(settings), program_(program), source_(source), file_(file), diags_(diags), space_(space),
+      called_(std::move(called)), errors_(std::make_unique<Errors>(*this)) {
+  lexer_.removeErrorListeners();
+  parser_.removeErrorListeners();
+  parser_.addErrorListener(errors_.get());
+  parser_.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
+}
+
+Reader::~Reader() = default;
+
+void Reader::run() {
+  std::vector<Piece> pieces;
+  cut(pieces);
+  if (called_) start_unit(ir::UnitKind::Subprogram, *called_, SourceRange::point(file_, 1, 1));
+  for (const Piece& p : pieces) {
+    if (diags_.limit_reached()) return;
+    switch (p.kind) {
+      case Piece::Text: read(p); break;
+      case Piece::Open: open_brace(p); break;
+      case Piece::Close: close_brace(p); break;
+    }
+  }
+  if (in_unit_) end_unit();
+}
+
+// ---- Cutting the text -------------------------------------------------------------
+
+void Reader::cut(std::vector<Piece>& pieces) {
+  std::string_view text = source_.text();
+  bool started = false;  // a '%' line was seen (the tape start)
+  for (uint32_t line_no = 1; line_no <= source_.line_count(); ++line_no) {
+    std::string_view line = source_.line(line_no);
+    const size_t base = source_.line_offset(line_no);
+    std::string_view trimmed = trim(line);
+    // '%' alone on a line marks the start and the end of the tape.
+    if (trimmed == "%") {
+      if (started) {
+        for (uint32_t rest = line_no + 1; rest <= source_.line_count(); ++rest)
+          if (!trim(source_.line(rest)).empty()) {
+            diags_.report(DiagId::TrailerIgnored, SourceRange::point(file_, rest, 1));
+            break;
+          }
+        return;
+      }
+      started = true;
+      continue;
+    }
+    Piece piece{Piece::Text, line_no, 1, base, base, {}};
+    auto close = [&](size_t at) {
+      piece.end = at;
+      pieces.push_back(piece);
+      piece = Piece{Piece::Text, line_no, static_cast<uint32_t>(at - base + 2), at + 1, at + 1, {}};
+    };
+    for (size_t i = 0; i < line.size(); ++i) {
+      const char c = line[i];
+      if (c == '(') {
+        // A comment runs to its ')' on the same line (comments do not nest).
+        size_t end = line.find(')', i + 1);
+        if (end == std::string_view::npos) {
+          diags_.report(DiagId::CommentUnterminated,
+                        {file_, line_no, static_cast<uint32_t>(i + 1), line_no, static_cast<uint32_t>(line.size() + 1)});
+          end = line.size() - 1;
+        }
+        piece.comments.push_back({base + i, base + end + 1});
+        i = end;
+      } else if (c == ';') {
+        close(base + i);
+      } else if (c == '{' || c == '}') {
+        close(base + i);
+        pieces.push_back({c == '{' ? Piece::Open : Piece::Close, line_no, static_cast<uint32_t>(i + 1), base + i, base + i + 1, {}});
+      }
+    }
+    close(base + line.size());
+  }
+  (void)text;
+}
+
+void Reader::load(const Piece& piece) {
+  // Upper case outside comments (decision 2); comments become spaces; the typographic
+  // dash the seed prints (U+2013) is a minus (decision 4); other bytes outside 7-bit
+  // ASCII are U+0001, which the lexer reports. Every column stays a byte offset.
+  sanitized_.assign(source_.text().substr(piece.begin, piece.end - piece.begin));
+  for (auto [from, to] : piece.comments)
+    for (size_t i = from; i < to; ++i) sanitized_[i - piece.begin] = ' ';
+  for (size_t i = 0; i < sanitized_.size(); ++i) {
+    unsigned char c = static_cast<unsigned char>(sanitized_[i]);
+    if (c >= 'a' && c <= 'z') {
+      sanitized_[i] = static_cast<char>(c - 'a' + 'A');
+    } else if (c == 0xE2 && sanitized_.compare(i, 3, "\xE2\x80\x93") == 0) {
+      sanitized_.replace(i, 3, "-  ");
+      uint32_t col = piece.col + static_cast<uint32_t>(i);
+      diags_.report(DiagId::TypographicDash, {file_, piece.line, col, piece.line, col + 1});
+      i += 2;
+    } else if (c >= 0x80) {
+      sanitized_[i] = '\x01';
+    }
+  }
+  line_ = piece.line;
+  base_ = piece.col - 1;
+  errors_->any = false;
+  input_.load(sanitized_);
+  lexer_.setInputStream(&input_);
+  tokens_.setTokenSource(&lexer_);
+  parser_.setTokenStream(&tokens_);
+}
+
+SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
+  uint32_t begin = base_ + static_cast<uint32_t>(first->getStartIndex()) + 1;
+  uint32_t end = base_ + static_cast<uint32_t>(last->getStopIndex()) + 2;
+  if (last->getType() == antlr4::Token::EOF || end < begin) end = begin + 1;
+  return {file_, line_, begin, line_, end};
+}
+
+// ---- Units and blocks ------------------------------------------------------------------
+
+void Reader::start_unit(ir::UnitKind kind, std::string name, SourceRange r) {
+  if (in_unit_) end_unit();
+  unit_ = ir::Unit{};
+  unit_.kind = kind;
+  unit_.name = std::move(name);
+  unit_.range = r;
+  in_unit_ = true;
+}
+
+void Reader::end_unit() {
+  for (const Loop& l : loops_)
+    diags_.report(DiagId::RepeatUnbalanced, l.range, fmt::format("DO{} has no END{} in its program", l.index, l.index));
+  loops_.clear();
+  // A multi-line IF still open at the end: its last '}' ends it, if it has one.
+  while (!branches_.empty()) {
+    Branch& b = branches_.back();
+    if (b.closed) {
+      std::string end = label_of(*b.close_block);
+      if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = end;
+      for (auto [block, stmt] : b.exits) unit_.blocks[block].stmts[stmt].label = end;
+    } else {
+      diags_.report(DiagId::ProgramStructure, b.range, "this IF has no closing '}' in its program");
+      if (b.next) unit_.blocks[b.next->first].has_errors = true;
+    }
+    branches_.pop_back();
+  }
+  if (expect_brace_) diags_.report(DiagId::ProgramStructure, unit_.range, "a multi-line IF needs its '{'");
+  expect_brace_ = false;
+  // §8.33 (E-29): M97 subprograms stand after M02/M30.
+  for (const auto& [label, r] : local_calls_) {
+    for (size_t i = 0; i < unit_.blocks.size(); ++i) {
+      if (unit_.blocks[i].label != label) continue;
+      if (unit_.kind == ir::UnitKind::Program && (!end_block_ || i <= *end_block_))
+        diags_.report(DiagId::ProgramStructure, r,
+                      fmt::format("M97 calls {}, which stands before M02/M30: an internal subprogram is written after the end of the main program", label));
+      break;
+    }
+  }
+  local_calls_.clear();
+  if (unit_.kind != ir::UnitKind::Program) {
+    // E-23, E-28: a subprogram or macro ends with M99.
+    bool returns = false;
+    for (const ir::Block& b : unit_.blocks)
+      for (const ir::Stmt& s : b.stmts) returns = returns || s.kind == ir::StmtKind::Return;
+    if (!returns) diags_.report(DiagId::ProgramStructure, unit_.range, fmt::format("{} does not end with M99", unit_.name));
+  }
+  program_.units.push_back(std::move(unit_));
+  unit_ = ir::Unit{};
+  in_unit_ = false;
+}
+
+ir::Block& Reader::new_block(SourceRange r) {
+  if (!in_unit_) start_unit(ir::UnitKind::Program, "%", r);
+  unit_.blocks.emplace_back();
+  ir::Block& b = unit_.blocks.back();
+  b.range = r;
+  for (Loop& l : loops_)
+    if (!l.body) l.body = unit_.blocks.size() - 1;
+  return b;
+}
+
+std::string Reader::label_of(size_t block) {
+  ir::Block& b = unit_.blocks[block];
+  if (b.label.empty()) b.label = fmt::format("@{}", ++next_label_);
+  return b.label;
+}
+
+// ---- Braces of the multi-line IF ------------------------------------------------------
+
+void Reader::open_brace(const Piece& at) {
+  SourceRange r = SourceRange::point(file_, at.line, at.col);
+  if (!expect_brace_ || branches_.empty()) {
+    diags_.report(DiagId::ProgramStructure, r, "'{' opens the body of IF, ELIF or ELSE and stands after its condition");
+    return;
+  }
+  expect_brace_ = false;
+  branches_.back().in_body = true;
+}
+
+void Reader::close_brace(const Piece& at) {
+  SourceRange r = SourceRange::point(file_, at.line, at.col);
+  if (branches_.empty() || !branches_.back().in_body) {
+    diags_.report(DiagId::ProgramStructure, r, "'}' without the '{' of an IF, ELIF or ELSE body");
+    return;
+  }
+  new_block(r);
+  Branch& b = branches_.back();
+  b.in_body = false;
+  b.closed = true;
+  b.close_block = unit_.blocks.size() - 1;
+}
+
+// ---- Blocks -----------------------------------------------------------------------------
+
+void Reader::read(const Piece& piece) {
+  load(piece);
+  if (trim(sanitized_).empty() && piece.comments.empty()) return;
+  SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
+  std::vector<std::string> comments;
+  for (auto [from, to] : piece.comments) comments.emplace_back(source_.text().substr(from + 1, to - from - 2));
+  if (trim(sanitized_).empty()) {
+    // A comment alone: kept for the listing, runs nothing.
+    if (branches_.empty() || !branches_.back().closed) {
+      new_block(whole).comments = std::move(comments);
+      return;
+    }
+  }
+
+  // E-32: brackets that do not pair up.
+  const auto open = std::count(sanitized_.begin(), sanitized_.end(), '[');
+  const auto shut = std::count(sanitized_.begin(), sanitized_.end(), ']');
+  IsoParser::BlockContext* ctx = nullptr;
+  if (open != shut) {
+    diags_.report(DiagId::BracketsUnbalanced, whole, open, shut);
+  } else {
+    ctx = parser_.block();
+  }
+  const bool bad = !ctx || errors_->any;
+  IsoParser::BodyContext* body = bad ? nullptr : ctx->body();
+  auto* head = body ? body->braceHead() : nullptr;
+
+  // After a '}': ELIF or ELSE continues the IF; anything else ends it.
+  if (!branches_.empty() && branches_.back().closed) {
+    Branch& b = branches_.back();
+    if (head && !head->IF() && !b.has_else) {
+      // The body before jumps to the end; the false condition lands here.
+      ir::Block& close = unit_.blocks[*b.close_block];
+      close.stmts.push_back({ir::StmtKind::Jump, close.range});
+      b.exits.push_back({*b.close_block, close.stmts.size() - 1});
+      b.closed = false;
+    } else {
+      std::string end = label_of(*b.close_block);
+      if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = end;
+      for (auto [block, stmt] : b.exits) unit_.blocks[block].stmts[stmt].label = end;
+      branches_.pop_back();
+      if (head && !head->IF()) {
+        diags_.report(DiagId::ProgramStructure, range(head),
+                      head->ELSE() ? std::string("ELSE follows the ELSE of its IF") : std::string("ELIF follows the ELSE of its IF"));
+        return;
+      }
+    }
+  }
+  if (expect_brace_) {
+    diags_.report(DiagId::ProgramStructure, whole, "a multi-line IF needs its '{' before the next block");
+    expect_brace_ = false;
+  }
+
+  ir::Block& block = new_block(whole);
+  const size_t index = unit_.blocks.size() - 1;
+  block.comments = std::move(comments);
+  if (bad) {
+    block.has_errors = true;
+    return;
+  }
+  block_ = ir::Block{};
+  block_.range = whole;
+  block_.skippable = ctx->SLASH() != nullptr;
+  if (auto* seq = ctx->SEQUENCE()) {
+    std::string digits(trim(seq->getText().substr(1)));
+    uint32_t n = 0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+    SourceRange r = range(seq->getSymbol(), seq->getSymbol());
+    if (ec != std::errc() || n > 99999) {
+      diags_.report(DiagId::ValueRange, r, "N" + digits, "N", 0, 99999);
+    } else {
+      block_.number = n;
+      unit_.blocks[index].label = fmt::format("N{}", n);  // §8.34.2 (decision 5): N01 is N1
+      ir::Word w;
+      w.kind = ir::WordKind::BlockNumber;
+      w.slot = static_cast<uint8_t>(letter_slot('N'));
+      w.address = "N";
+      w.text = digits;
+      w.value = program_.number(n, r);
+      w.range = r;
+      block_.words.push_back(std::move(w));
+    }
+  }
+
+  if (auto* prog = ctx->PROGRAM()) {
+    // §8.16, §8.33: OXXXX alone in its block starts a subprogram or macro.
+    std::string digits(trim(prog->getText().substr(1)));
+    SourceRange r = range(prog->getSymbol(), prog->getSymbol());
+    uint32_t n = 0;
+    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+    unit_.blocks.pop_back();
+    if (ec != std::errc() || n > 9999) {
+      diags_.report(DiagId::ValueRange, r, "O" + digits, "O", 0, 9999);
+      return;
+    }
+    const std::string name = program_name(n);
+    if (called_) {
+      if (name != *called_ || !unit_.blocks.empty())
+        diags_.report(DiagId::ProgramStructure, r,
+                      fmt::format("{} stands in the file of {}: a program file holds its own program", name, *called_));
+      return;
+    }
+    if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && in_unit_ && unit_.name == "%" ) {
+      unit_.name = name;  // the main program's own number
+      unit_.range = r;
+      return;
+    }
+    if (!in_unit_) {
+      start_unit(ir::UnitKind::Program, name, r);
+      return;
+    }
+    if (unit_.kind == ir::UnitKind::Program && !main_done_)
+      diags_.report(DiagId::ProgramStructure, r,
+                    fmt::format("{} starts before the main program ends: subprograms and macros follow M02/M30 (decision 12)", name));
+    for (const ir::Unit& u : program_.units)
+      if (u.name == name) diags_.report(DiagId::ProgramStructure, r, fmt::format("{} is defined twice", name));
+    if (unit_.name == name) diags_.report(DiagId::ProgramStructure, r, fmt::format("{} is defined twice", name));
+    start_unit(ir::UnitKind::Subprogram, name, r);
+    return;
+  }
+
+  ir::ExprId cond = ir::kNoExpr;
+  if (body) {
+    if (auto* a = body->assignment()) {
+      block_.stmts.push_back(assignment(a));
+    } else if (auto* g = body->gotoStmt()) {
+      block_.stmts.push_back(go_to(g));
+    } else if (auto* i = body->ifStmt()) {
+      cond = condition(i->expr(), "IF");
+      if (auto* g2 = i->gotoStmt()) {
+        ir::Stmt j = go_to(g2);
+        j.cond = cond;
+        block_.stmts.push_back(std::move(j));
+      } else if (auto* a2 = i->assignment()) {
+        ir::Stmt s = assignment(a2);
+        s.cond = cond;
+        block_.stmts.push_back(std::move(s));
+      } else {
+        words(i->words(), cond);
+      }
+    } else if (head) {
+      if (head->IF()) branches_.push_back({range(head), std::nullopt, {}, false, false, false, std::nullopt});
+      Branch& b = branches_.back();
+      if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = label_of(index);
+      b.next.reset();
+      if (head->expr()) {
+        ir::Stmt j{ir::StmtKind::Jump, range(head)};
+        j.cond = program_.add({ir::ExprOp::Not, Builtin::Sin, 0, 0, condition(head->expr(), head->IF() ? "IF" : "ELIF"),
+                               ir::kNoExpr, range(head)});
+        block_.stmts.push_back(std::move(j));
+        b.next = std::pair{index, block_.stmts.size() - 1};
+      } else {
+        b.has_else = true;
+      }
+      expect_brace_ = true;
+    } else if (auto* w = body->whileStmt()) {
+      const int n = std::atoi(w->NUMBER()->getText().c_str());
+      SourceRange r = range(w);
+      if (w->NUMBER()->getText().find('.') != std::string::npos || n < 1 || n > kMaxLoopDepth)
+        diags_.report(DiagId::RepeatUnbalanced, r, fmt::format("the loop index is 1, 2 or 3, not {}", w->NUMBER()->getText()));
+      Loop loop{n, r, index, std::nullopt, ir::kNoExpr, std::nullopt};
+      for (const Loop& l : loops_)
+        if (l.index == n) diags_.report(DiagId::RepeatUnbalanced, r, fmt::format("DO{} stands inside the loop DO{} of the same index", n, n));
+      if (loops_.size() == kMaxLoopDepth) diags_.report(DiagId::RepeatDepth, r, loops_.size() + 1, kMaxLoopDepth);
+      if (w->WHILE()) {
+        loop.cond = condition(w->expr(), "WHILE");
+        ir::Stmt j{ir::StmtKind::Jump, r};
+        j.cond = program_.add({ir::ExprOp::Not, Builtin::Sin, 0, 0, loop.cond, ir::kNoExpr, r});
+        block_.stmts.push_back(std::move(j));
+        loop.exit = block_.stmts.size() - 1;
+      }
+      loops_.push_back(loop);
+    } else if (auto* e = body->endStmt()) {
+      const int n = std::atoi(e->NUMBER()->getText().c_str());
+      SourceRange r = range(e);
+      if (loops_.empty() || loops_.back().index != n) {
+        diags_.report(DiagId::RepeatUnbalanced, r,
+                      loops_.empty() ? fmt::format("END{} has no DO{} before it", n, n)
+                                     : fmt::format("END{} stands where END{} closes the innermost loop", n, loops_.back().index));
+        block_.has_errors = true;
+      } else {
+        Loop loop = loops_.back();
+        loops_.pop_back();
+        const size_t body_start = loop.body.value_or(index);
+        ir::Stmt back{ir::StmtKind::Jump, r};
+        back.cond = loop.cond;
+        back.label = label_of(body_start);
+        block_.stmts.push_back(std::move(back));
+        if (loop.exit) unit_.blocks[loop.do_block].stmts[*loop.exit].label = label_of(index);
+      }
+    } else if (auto* ws = body->words()) {
+      words(ws, ir::kNoExpr);
+    }
+  }
+  // The block read into block_ is the one new_block() made (a label may have been
+  // given to it meanwhile).
+  ir::Block& target = unit_.blocks[index];
+  block_.label = target.label;
+  block_.comments = std::move(target.comments);
+  block_.has_errors = block_.has_errors || target.has_errors;
+  target = std::move(block_);
+  block_ = ir::Block{};
+}
+
+// ---- Statements ---------------------------------------------------------------------------
+
+ir::Stmt Reader::assignment(IsoParser::AssignmentContext* ctx) {
+  ir::Stmt s{ir::StmtKind::Assign, range(ctx)};
+  s.target = variable(ctx->variable(), true);
+  s.value = expr(ctx->expr());  // `#2 = #1` copies a vacant #1 (decision 3)
+  return s;
+}
+
+ir::Stmt Reader::go_to(IsoParser::GotoStmtContext* ctx) {
+  ir::Stmt s{ir::StmtKind::Jump, range(ctx)};
+  bool literal = false;
+  ir::ExprId target = value(ctx->value(), literal);
+  if (program_.is_constant(target)) {
+    // §8.34.2 (E-33): the target is a block number.
+    double n = program_.exprs[target].number;
+    if (n != std::trunc(n) || n < 0 || n > 99999) {
+      diags_.report(DiagId::ValueForm, range(ctx->value()), "GOTO", "a block number 0 to 99999", shortest(n));
+      block_.has_errors = true;
+    }
+    s.label = fmt::format("N{}", static_cast<int64_t>(n));
+  } else {
+    s.value = operand(target);  // found among the unit's numbered blocks at run time
+  }
+  return s;
+}
+
+ir::ExprId Reader::condition(IsoParser::ExprContext* ctx, const char* what) {
+  ir::ExprId e = expr(ctx);
+  // §8.34.2, §8.34.3 (E-34): a condition compares.
+  std::vector<ir::ExprId> todo{e};
+  bool compares = false;
+  while (!todo.empty() && !compares) {
+    const ir::Expr& x = program_.exprs[todo.back()];
+    todo.pop_back();
+    compares = x.op >= ir::ExprOp::Eq && x.op <= ir::ExprOp::Ge;
+    if (x.op == ir::ExprOp::And || x.op == ir::ExprOp::Or || x.op == ir::ExprOp::Xor || x.op == ir::ExprOp::Not) {
+      todo.push_back(x.a);
+      if (x.b != ir::kNoExpr) todo.push_back(x.b);
+    }
+  }
+  if (!compares) {
+    diags_.report(DiagId::ConditionNoComparison, range(ctx), what);
+    block_.has_errors = true;
+  }
+  return e;
+}
+
+std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t max, const char* what) {
+  if (!program_.is_constant(w.value)) {
+    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{} written as a number", what), w.address + w.text);
+    block_.has_errors = true;
+    return std::nullopt;
+  }
+  double v = program_.exprs[w.value].number;
+  if (v != std::trunc(v) || v < 0 || v > max) {
+    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{}, a whole number 0 to {}", what, max), w.address + w.text);
+    block_.has_errors = true;
+    return std::nullopt;
+  }
+  return static_cast<uint32_t>(v);
+}
+
+void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
+  std::set<int> g, m;  // the codes written as numbers
+  const size_t first = block_.words.size();  // after the block number
+  std::vector<bool> literal_integer;         // of each word from `first` on
+  for (auto* wc : ctx->word()) {
+    const char letter = wc->LETTER()->getText()[0];
+    bool literal = false;
+    in_word_ = true;
+    ir::ExprId e = value(wc->value(), literal);
+    in_word_ = false;
+    ir::Word w;
+    w.slot = static_cast<uint8_t>(letter_slot(letter));
+    w.address = std::string(1, letter);
+    w.text = wc->value()->getText();
+    w.range = range(wc);
+    w.value = e;
+    if (letter == 'N' || letter == 'O') {
+      diags_.report(DiagId::BlockNumberPosition, w.range, w.address + w.text);
+      w.kind = ir::WordKind::Ignored;
+      block_.has_errors = true;
+    } else if (letter == 'G' || letter == 'M') {
+      w.kind = ir::WordKind::Code;
+      if (!program_.is_constant(e)) {
+        w.code = ir::kDynamicCode;  // G#4 (§8.34.1): the code comes at run time
+      } else if (double v = program_.exprs[e].number; v != std::trunc(v) || v < 0 || v > 999) {
+        diags_.report(DiagId::ValueForm, w.range, w.address, "a code number", w.address + w.text);
+        w.kind = ir::WordKind::Ignored;
+        block_.has_errors = true;
+      } else {
+        const int n = static_cast<int>(v);
+        (letter == 'G' ? g : m).insert(n);
+        const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
+        auto it = table.find(n);
+        if (it == table.end()) w.code = -1;  // the checks report it
+        else if (it->second.desc.calls.empty()) w.kind = ir::WordKind::Control;  // G65 M97 M98 M99
+        else w.code = program_code(program_, it->second.desc);
+      }
+    } else {
+      w.kind = ir::WordKind::Parameter;
+    }
+    literal_integer.push_back(literal);
+    block_.words.push_back(std::move(w));
+  }
+  if (ctx->COMMA()) {
+    // §8.3: ,C chamfer and ,R fillet.
+    diags_.report(DiagId::Unsupported, range(ctx->COMMA()->getSymbol(), ctx->value()->getStop()),
+                  "a chamfer or fillet (,C ,R)", "the corner is not inserted yet");
+    block_.has_errors = true;
+  }
+  // Not run by ncc yet (docs/dialects/iso.md, "Not yet supported").
+  static const std::map<int, const char*> kNotYet = {
+      {16, "polar coordinates"}, {51, "scaling about a centre"}, {68, "rotation about a centre"}};
+  for (const ir::Word& w : block_.words)
+    if (w.kind == ir::WordKind::Code && w.address == "G" && program_.is_constant(w.value))
+      if (auto it = kNotYet.find(static_cast<int>(program_.exprs[w.value].number)); it != kNotYet.end()) {
+        diags_.report(DiagId::Unsupported, w.range, "G" + w.text, std::string(it->second) + " are not run yet");
+        block_.has_errors = true;
+      }
+  // §8.8, §8.9, §8.19 (E-08, E-09, E-26): G53 does not share a block with G28, G29 or G92.
+  if (g.count(53))
+    for (int other : {28, 29, 92})
+      if (g.count(other)) {
+        diags_.report(DiagId::CodesIncompatible, block_.range, "G53", fmt::format("G{}", other));
+        block_.has_errors = true;
+      }
+  if (g.count(65) || m.count(97) || m.count(98)) {
+    call_words(cond);
+    return;
+  }
+  // The decimal-point rule (§8.4, §8.12, §8.17, §8.24): an integer is thousandths
+  // (milliseconds of a dwell, a factor / 1000, an angle / 1000 degrees).
+  auto thousandths = [&](size_t i) {
+    ir::Word& w = block_.words[i];
+    if (literal_integer[i - first]) w.value = program_.number(program_.exprs[w.value].number / 1000, w.range);
+  };
+  const bool dwell_block = g.count(4) > 0;
+  bool has_p = false;
+  for (size_t i = first; i < block_.words.size(); ++i) {
+    const char a = block_.words[i].address[0];
+    if (block_.words[i].kind != ir::WordKind::Parameter) continue;
+    if (a == 'P') {
+      has_p = true;
+      thousandths(i);
+    }
+    if ((g.count(51) && (a == 'I' || a == 'J' || a == 'K')) || (g.count(68) && a == 'R')) thousandths(i);
+  }
+  // §8.4 (decision 8): G04 X or U is the dwell when no P gives it.
+  if (dwell_block && !has_p)
+    for (size_t i = first; i < block_.words.size(); ++i)
+      if (ir::Word& w = block_.words[i]; w.kind == ir::WordKind::Parameter && (w.address == "X" || w.address == "U")) {
+        thousandths(i);
+        w.slot = static_cast<uint8_t>(letter_slot('P'));
+        break;
+      }
+  bool action = false;
+  for (const ir::Word& w : block_.words) action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
+  if (action) {
+    ir::Stmt s{ir::StmtKind::Machine, block_.range};
+    s.cond = cond;
+    block_.stmts.push_back(std::move(s));
+  }
+  if (m.count(99)) {
+    ir::Stmt s{ir::StmtKind::Return, block_.range};
+    s.cond = cond;
+    block_.stmts.push_back(std::move(s));
+  }
+  if ((m.count(2) || m.count(30)) && unit_.kind == ir::UnitKind::Program && !main_done_ && !block_.skippable &&
+      cond == ir::kNoExpr) {
+    main_done_ = true;
+    end_block_ = unit_.blocks.size() - 1;
+  }
+}
+
+// M97, M98, G65 (§8.16, §8.33): the block's other words run first (M97/M98), or are
+// the macro's arguments (G65).
+bool Reader::call_words(ir::ExprId cond) {
+  const ir::Word* code = nullptr;
+  const ir::Word* p = nullptr;
+  const ir::Word* l = nullptr;
+  bool macro = false;
+  for (ir::Word& w : block_.words) {
+    if (w.kind == ir::WordKind::Control && !code) {
+      code = &w;
+      macro = w.address == "G";
+    }
+  }
+  ir::Stmt call{ir::StmtKind::Call, block_.range};
+  call.cond = cond;
+  call.shares_locals = !macro;  // §8.16: only a macro call opens new locals
+  std::map<uint32_t, std::string> given;  // G65: argument variable -> the word that gives it
+  int set = -1;
+  char last = 'K';
+  bool machine_words = false;
+  for (ir::Word& w : block_.words) {
+    if (&w == code || w.kind == ir::WordKind::BlockNumber) continue;
+    const char a = w.address[0];
+    if (a == 'P' && !p) {
+      p = &w;
+      w.kind = ir::WordKind::Control;
+    } else if (a == 'L' && !l) {
+      l = &w;
+      w.kind = ir::WordKind::Control;
+    } else if (macro) {
+      // Specification I, and II for repeated I J K: a set begins with a letter that
+      // does not follow the one before in I J K (decision 14).
+      uint32_t var = argument_of(a);
+      if (a == 'I' || a == 'J' || a == 'K') {
+        if (a <= last) ++set;
+        last = a;
+        var = static_cast<uint32_t>(3 * set + 4 + (a - 'I'));
+      }
+      if (var == 0 || var > 33) {
+        diags_.report(DiagId::MacroArgument, w.range,
+                      var ? fmt::format("{}{} would be argument #{}: at most 10 sets of I J K", a, w.text, var)
+                          : fmt::format("{}{} is not a G65 argument: the arguments are the letters A-Z but G L N O P", a, w.text));
+        block_.has_errors = true;
+        continue;
+      }
+      if (auto [it, fresh] = given.emplace(var, w.address + w.text); !fresh) {
+        diags_.report(DiagId::MacroArgument, w.range, fmt::format("#{} is given twice, by {} and by {}", var, it->second, w.address + w.text));
+        block_.has_errors = true;
+        continue;
+      }
+      w.kind = ir::WordKind::Argument;
+      call.args.push_back({space_, var, w.value});
+    } else if (w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter) {
+      machine_words = true;
+    } else if (w.kind == ir::WordKind::Control) {
+      diags_.report(DiagId::MacroArgument, w.range, fmt::format("{} and {} cannot share a block", code->address + code->text, w.address + w.text));
+      block_.has_errors = true;
+    }
+  }
+  const std::string what = code->address + code->text;
+  if (!p) {
+    diags_.report(DiagId::ValueMissing, code->range, what + " P");
+    block_.has_errors = true;
+    return false;
+  }
+  std::optional<uint32_t> number = whole(*p, what == "M97" ? 99999 : what == "M98" ? 9999999 : 9999,
+                                         what == "M97" ? "a block number" : "a program number");
+  uint32_t count = 0;
+  if (number && what == "M98" && *number > 9999) {
+    count = *number / 10000;  // §8.33: P31002 = O1002 three times
+    number = *number % 10000;
+  }
+  if (l) {
+    if (count) {
+      diags_.report(DiagId::MacroArgument, l->range, fmt::format("{}{} already holds the count {}", p->address, p->text, count));
+      block_.has_errors = true;
+    } else if (program_.is_constant(l->value)) {
+      if (auto n = whole(*l, kMaxCount, "the number of calls"); n && *n == 0) {
+        diags_.report(DiagId::ValueForm, l->range, "L", "the number of calls, 1 to 999", "L0");
+        block_.has_errors = true;
+      }
+    }
+    call.value = operand(l->value);
+  } else if (count) {
+    call.value = program_.number(count, p->range);
+  }
+  if (!number) return false;
+  if (macro && machine_words) block_.has_errors = true;
+  if (machine_words) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
+  if (what == "M97") {
+    const std::string label = fmt::format("N{}", *number);
+    call.label = unit_.name + "/" + label;
+    local_calls_.push_back({label, p->range});
+  } else {
+    call.label = program_name(*number);
+    calls_.push_back({call.label, p->range, program_.units.size(), unit_.blocks.size() - 1});
+  }
+  block_.stmts.push_back(std::move(call));
+  return true;
+}
+
+// ---- Expressions ------------------------------------------------------------------------
+
+// Macro B arithmetic reads a vacant variable as 0; a comparison EQ/NE, an assignment
+// and an address keep it vacant (decision 3).
+ir::ExprId Reader::operand(ir::ExprId e) {
+  if (program_.exprs[e].op != ir::ExprOp::Var) return e;
+  return program_.add({ir::ExprOp::ZeroIfVacant, Builtin::Sin, 0, 0, e, ir::kNoExpr, program_.exprs[e].range});
+}
+
+ir::ExprId Reader::expr(IsoParser::ExprContext* ctx) {
+  auto parts = ctx->andExpr();
+  ir::ExprId e = and_expr(parts[0]);
+  size_t k = 1;
+  for (auto* child : ctx->children) {
+    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
+    if (!t) continue;
+    ir::ExprOp op = t->getSymbol()->getType() == IsoLexer::XOR ? ir::ExprOp::Xor : ir::ExprOp::Or;
+    e = program_.add({op, Builtin::Sin, 0, 0, operand(e), operand(and_expr(parts[k++])), range(ctx)});
+  }
+  return e;
+}
+
+ir::ExprId Reader::and_expr(IsoParser::AndExprContext* ctx) {
+  auto parts = ctx->compare();
+  ir::ExprId e = compare(parts[0]);
+  for (size_t k = 1; k < parts.size(); ++k)
+    e = program_.add({ir::ExprOp::And, Builtin::Sin, 0, 0, operand(e), operand(compare(parts[k])), range(ctx)});
+  return e;
+}
+
+ir::ExprId Reader::compare(IsoParser::CompareContext* ctx) {
+  auto parts = ctx->sum();
+  ir::ExprId a = sum(parts[0]);
+  if (parts.size() == 1) return a;
+  ir::ExprId b = sum(parts[1]);
+  ir::ExprOp op = ctx->EQ() ? ir::ExprOp::Eq : ctx->NE() ? ir::ExprOp::Ne : ctx->GT() ? ir::ExprOp::Gt
+                : ctx->GE() ? ir::ExprOp::Ge : ctx->LT() ? ir::ExprOp::Lt : ir::ExprOp::Le;
+  // EQ and NE tell vacant from 0 (`#1 EQ #0`); the order comparisons read it as 0.
+  if (op != ir::ExprOp::Eq && op != ir::ExprOp::Ne) {
+    a = operand(a);
+    b = operand(b);
+  }
+  return program_.add({op, Builtin::Sin, 0, 0, a, b, range(ctx)});
+}
+
+ir::ExprId Reader::sum(IsoParser::SumContext* ctx) {
+  auto parts = ctx->term();
+  ir::ExprId e = term(parts[0]);
+  size_t k = 1;
+  for (auto* child : ctx->children) {
+    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
+    if (!t) continue;
+    ir::ExprOp op = t->getSymbol()->getType() == IsoLexer::PLUS ? ir::ExprOp::Add : ir::ExprOp::Sub;
+    e = program_.add({op, Builtin::Sin, 0, 0, operand(e), operand(term(parts[k++])), range(ctx)});
+  }
+  return e;
+}
+
+ir::ExprId Reader::term(IsoParser::TermContext* ctx) {
+  auto parts = ctx->factor();
+  ir::ExprId e = factor(parts[0]);
+  size_t k = 1;
+  for (auto* child : ctx->children) {
+    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
+    if (!t) continue;
+    const size_t type = t->getSymbol()->getType();
+    ir::ExprOp op = type == IsoLexer::STAR ? ir::ExprOp::Mul : type == IsoLexer::SLASH ? ir::ExprOp::Div : ir::ExprOp::Mod;
+    e = program_.add({op, Builtin::Sin, 0, 0, operand(e), operand(factor(parts[k++])), range(ctx)});
+  }
+  return e;
+}
+
+ir::ExprId Reader::factor(IsoParser::FactorContext* ctx) {
+  if (auto* inner = ctx->factor()) {
+    ir::ExprId e = factor(inner);
+    if (ctx->PLUS()) return e;
+    return program_.add({ir::ExprOp::Neg, Builtin::Sin, 0, 0, operand(e), ir::kNoExpr, range(ctx)});
+  }
+  return primary(ctx->primary());
+}
+
+ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
+  if (auto* n = dynamic_cast<IsoParser::NumberPrimaryContext*>(ctx)) {
+    std::string text = n->NUMBER()->getText();
+    double v = 0;
+    std::from_chars(text.data(), text.data() + text.size(), v);
+    return program_.number(v, range(ctx));
+  }
+  if (auto* v = dynamic_cast<IsoParser::VariablePrimaryContext*>(ctx)) return variable(v->variable(), false);
+  if (auto* g = dynamic_cast<IsoParser::GroupPrimaryContext*>(ctx)) return expr(g->expr());
+  auto* c = dynamic_cast<IsoParser::CallPrimaryContext*>(ctx);
+  const std::string name = c->FUNCTION()->getText();
+  auto args = c->expr();
+  ir::ExprId a = operand(expr(args[0]));
+  static const std::map<std::string, Builtin> kFunctions = {
+      {"SIN", Builtin::Sin},   {"COS", Builtin::Cos},   {"TAN", Builtin::Tan},     {"ASIN", Builtin::Asin},
+      {"ACOS", Builtin::Acos}, {"ATAN", Builtin::Atan}, {"SQRT", Builtin::Sqrt},   {"ABS", Builtin::Abs},
+      {"ROUND", Builtin::Round}, {"EXP", Builtin::Exp}, {"LN", Builtin::Ln},       {"FIX", Builtin::Trunc},
+      {"FUP", Builtin::Away}};
+  Builtin b = kFunctions.at(name);
+  ir::ExprId second = ir::kNoExpr;
+  if (args.size() == 2) {
+    if (b != Builtin::Atan) {
+      // `SIN[a]/[b]` is SIN[a] divided by b.
+      ir::ExprId call = program_.add({ir::ExprOp::Call, b, 0, 0, a, ir::kNoExpr, range(ctx)});
+      return program_.add({ir::ExprOp::Div, Builtin::Sin, 0, 0, call, operand(expr(args[1])), range(ctx)});
+    }
+    b = Builtin::Atan2;  // ATAN[a]/[b] (decision 7)
+    second = operand(expr(args[1]));
+  }
+  if (b == Builtin::Round && in_word_) {
+    // §8.34.1: after an address ROUND keeps 3 decimals (mm) or 4 (inch).
+    ir::ExprId inch = program_.add({ir::ExprOp::Sys, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, range(ctx)});
+    program_.exprs[inch].sys = SysRef{SysVar::InchMode, 0}.packed();
+    ir::ExprId places = program_.add({ir::ExprOp::Add, Builtin::Sin, 0, 0, program_.number(3, range(ctx)), inch, range(ctx)});
+    return program_.add({ir::ExprOp::Call, Builtin::RoundTo, 0, 0, a, places, range(ctx)});
+  }
+  return program_.add({ir::ExprOp::Call, b, 0, 0, a, second, range(ctx)});
+}
+
+ir::ExprId Reader::variable(IsoParser::VariableContext* ctx, bool target) {
+  SourceRange r = range(ctx);
+  ir::ExprId index;
+  if (auto* n = ctx->NUMBER()) {
+    std::string text = n->getText();
+    double v = 0;
+    std::from_chars(text.data(), text.data() + text.size(), v);
+    if (!variable_exists(v)) {
+      diags_.report(DiagId::VariableNumber, r, text);
+      block_.has_errors = true;
+      v = 0;
+    } else if (target && v == 0) {
+      diags_.report(DiagId::VacantVariable, r, "#0");
+      block_.has_errors = true;
+    }
+    index = program_.number(v, r);
+  } else {
+    index = operand(expr(ctx->expr()));  // #[...]: checked when it runs
+  }
+  return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, index, ir::kNoExpr, r});
+}
+
+ir::ExprId Reader::value(IsoParser::ValueContext* ctx, bool& literal_integer) {
+  ir::ExprId e;
+  literal_integer = false;
+  if (auto* n = ctx->NUMBER()) {
+    std::string text = n->getText();
+    double v = 0;
+    std::from_chars(text.data(), text.data() + text.size(), v);
+    literal_integer = text.find('.') == std::string::npos;
+    if (ctx->MINUS()) v = -v;
+    return program_.number(v, range(ctx));
+  }
+  e = ctx->variable() ? variable(ctx->variable(), false) : expr(ctx->expr());
+  // X-#1 with #1 vacant stays vacant: the word is left out.
+  if (ctx->MINUS()) e = program_.add({ir::ExprOp::Neg, Builtin::Sin, 0, 0, e, ir::kNoExpr, range(ctx)});
+  return e;
+}
+
+}  // namespace ncc::iso

@@ -1,0 +1,113 @@
+// Reads one iso file: cuts the text into blocks (';', the end of a line, the braces
+// of a multi-line IF), parses each with the ANTLR grammar, and builds the program
+// structure (the main program, O subprograms and macros, M97 blocks after M30) and
+// the Macro B control flow (GOTO, IF, WHILE/DO/END) into IR units.
+#pragma once
+
+#include <antlr4-runtime.h>
+
+#include <map>
+#include <optional>
+
+#include "IsoLexer.h"
+#include "IsoParser.h"
+#include "ir/ir.h"
+#include "settings.h"
+
+namespace ncc::iso {
+
+using ncc_iso::IsoLexer;
+using ncc_iso::IsoParser;
+
+// A call of an O program (M98, G65), for the front end to find it.
+struct ProgramCall {
+  std::string name;  // "O1002"
+  SourceRange range;
+  size_t unit = 0, block = 0;
+};
+
+class Reader {
+ public:
+  // `called`: the file of a called program (its blocks form one subprogram named so).
+  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
+         uint16_t space, std::optional<std::string> called);
+  ~Reader();
+
+  // Appends the file's units to the program.
+  void run();
+  const std::vector<ProgramCall>& calls() const { return calls_; }
+
+  // "O1002": the name of program 1002.
+  static std::string program_name(uint32_t number);
+
+ private:
+  struct Piece;
+  struct Loop;
+  struct Branch;
+  class Errors;
+
+  void cut(std::vector<Piece>& pieces);
+  void read(const Piece& piece);
+  void load(const Piece& piece);
+  void open_brace(const Piece& at);
+  void close_brace(const Piece& at);
+
+  // Parse-tree walking.
+  SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
+  SourceRange range(antlr4::ParserRuleContext* ctx) const { return range(ctx->getStart(), ctx->getStop()); }
+  ir::ExprId expr(IsoParser::ExprContext* ctx);
+  ir::ExprId and_expr(IsoParser::AndExprContext* ctx);
+  ir::ExprId compare(IsoParser::CompareContext* ctx);
+  ir::ExprId sum(IsoParser::SumContext* ctx);
+  ir::ExprId term(IsoParser::TermContext* ctx);
+  ir::ExprId factor(IsoParser::FactorContext* ctx);
+  ir::ExprId primary(IsoParser::PrimaryContext* ctx);
+  ir::ExprId variable(IsoParser::VariableContext* ctx, bool target);
+  ir::ExprId value(IsoParser::ValueContext* ctx, bool& literal_integer);
+  ir::ExprId operand(ir::ExprId e);  // vacant reads as 0
+  ir::ExprId condition(IsoParser::ExprContext* ctx, const char* what);
+  ir::Stmt assignment(IsoParser::AssignmentContext* ctx);
+  ir::Stmt go_to(IsoParser::GotoStmtContext* ctx);
+  void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
+  bool call_words(ir::ExprId cond);
+  std::optional<uint32_t> whole(const ir::Word& w, uint32_t max, const char* what);
+
+  // Structure.
+  ir::Block& new_block(SourceRange r);
+  std::string label_of(size_t block);
+  void start_unit(ir::UnitKind kind, std::string name, SourceRange r);
+  void end_unit();
+
+  const Settings& s_;
+  ir::Program& program_;
+  const SourceFile& source_;
+  uint32_t file_;
+  Diagnostics& diags_;
+  uint16_t space_;  // the Macro B variables #0..#999
+  std::optional<std::string> called_;
+
+  antlr4::ANTLRInputStream input_;
+  IsoLexer lexer_{&input_};
+  antlr4::CommonTokenStream tokens_{&lexer_};
+  IsoParser parser_{&tokens_};
+  std::unique_ptr<Errors> errors_;
+  std::string sanitized_;
+  uint32_t line_ = 0, base_ = 0;  // of the piece being parsed
+
+  ir::Unit unit_;
+  bool in_unit_ = false;
+  bool main_done_ = false;     // the main program has ended (M02/M30): O units may follow
+  std::optional<size_t> end_block_;  // the main program's M02/M30 block
+  std::vector<Loop> loops_;
+  std::vector<Branch> branches_;
+  bool expect_brace_ = false;  // a multi-line IF head waits for its '{'
+  bool label_next_ = false;    // the next block starts a loop body: it needs a label
+  std::vector<std::pair<size_t, size_t>> label_wanted_;  // (block, stmt) whose label is the next block's
+  std::vector<std::pair<std::string, SourceRange>> local_calls_;  // M97 targets of this unit
+  size_t next_label_ = 0;
+  bool in_word_ = false;       // reading an address's value (ROUND keeps decimals there)
+  std::vector<ProgramCall> calls_;
+  ir::Block block_;  // being read
+};
+
+}  // namespace ncc::iso

@@ -1,0 +1,45 @@
+#include "settings.h"
+
+namespace ncc::iso {
+
+std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& diags) {
+  Settings s;
+  size_t errors = diags.error_count();
+  s.tables = stdlib::load_dialect_tables("iso", diags);
+  if (diags.error_count() != errors) return std::nullopt;
+  diags.set_citations(s.tables.citations);
+  s.power_on = s.tables.power_on.at("default");
+  bool ok = true;
+  // §8.7: the units at the start are an application setting.
+  std::string units = "mm";
+  if (auto v = p.string("iso.units", diags)) {
+    if (*v == "mm" || *v == "inch") units = *v;
+    else ok = (p.report_value(diags, "iso.units", "must be \"mm\" or \"inch\""), false);
+  }
+  s.power_on.push_back(units == "mm" ? "G21" : "G20");
+  if (auto v = p.string("iso.program_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
+
+  Conventions& c = s.conventions;
+  c.arc_centre = ArcCentre::Incremental;  // §8.2: I J K from the arc's start point
+  c.centre_words = CentreWords::PerAxis;
+  c.radius_word = 'R';                    // §8.2: R+ up to 180 degrees, R- beyond
+  c.helix_by_end = true;                  // §8.2: a helix is its end point; no lead word
+  c.dwell_word = 'P';                     // seconds: the reader applies the decimal-point rule
+  c.dwell_seconds_per_unit = 1;
+  c.peck_word = 'Q';
+  c.cycle_level_word = 'R';
+  c.fanuc_cycles = true;                  // §8.21-§8.27
+  c.cycle_repeat_words = "LK";            // §8.23: K may stand for L
+  c.tool_offset_axes = "Z";               // §8.11: the length acts along Z only
+  c.axes = "XYZ";                         // a three-axis vertical machining centre
+  c.max_call_depth = 20;                  // §8.16: 20 nested macros; subprograms share it (decision 13)
+  c.arc_tolerance = 0.01;
+  if (auto v = p.number("iso.arc_tolerance", diags)) {
+    if (*v > 0 && *v <= 1) c.arc_tolerance = *v;
+    else ok = (p.report_value(diags, "iso.arc_tolerance", "must be a length in mm above 0 and at most 1"), false);
+  }
+  if (!ok) return std::nullopt;
+  return s;
+}
+
+}  // namespace ncc::iso

@@ -1,0 +1,26 @@
+// The iso dialect as data: the tables of stdlib/dialects/iso/ and the [iso] settings
+// of the machine profile (docs/profile.md), validated.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "runtime/program_semantics.h"
+#include "stdlib/profile.h"
+#include "stdlib/tables.h"
+
+namespace ncc::iso {
+
+struct Settings {
+  stdlib::DialectTables tables;
+  std::vector<std::string> power_on;
+  std::string library;  // where called O programs are ("" = beside the program)
+  Conventions conventions;
+};
+
+// Reads the tables and the profile's [iso] settings; problems are reported at their
+// place. Returns nothing if the dialect cannot be used.
+std::optional<Settings> load_settings(const stdlib::Profile& profile, Diagnostics& diags);
+
+}  // namespace ncc::iso
