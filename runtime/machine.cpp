@@ -726,15 +726,15 @@ void Machine::action() {
   }
   if (modal_.cycle >= 0) {
     if (conv_.cycle_two_levels) nc110_cycle();
-    else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) repeat_cycle();
+    else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) conv_.fanuc_cycles ? repeat_cycle() : cycle();
     else cycle_registers();
     if (block_.dwell_end) dwell_seconds(timer_dwell());
     return;
   }
-  // NC-110 §2.8.1.4: an arc with its centre and no axis word is a full circle.
-  const bool circle = conv_.centre_words == CentreWords::Plane &&
-                      (modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw) &&
-                      (has('I') || has('J'));
+  // An arc with its centre and no axis word is a full circle (NC-110 §2.8.1.4; GOST
+  // S-9.4, ISO: the end point is the start point).
+  const bool circle = (modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw) &&
+                      (has('I') || has('J') || (conv_.centre_words == CentreWords::PerAxis && has('K')));
   if (!axes && !circle) {
     if (parabola_middle_) {
       report(DiagId::ParabolaPair, 0, "this block has no dimension word");

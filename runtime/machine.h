@@ -322,6 +322,7 @@ class Machine {
   // Cycles (machine_cycles.cpp).
   void cycle();
   void repeat_cycle();  // ISO: L (or K) holes, the first's initial level for all
+  void iso_cycle();     // one ISO hole
   std::optional<double> repeat_start_;
   void cycle_registers();
   void nc110_cycle_registers(bool definition);

@@ -40,8 +40,154 @@ void Machine::repeat_cycle() {
     break;
   }
   if (count == 0) cycle_registers();  // L0: the cycle's words are stored, no hole is made
-  for (int i = 0; i < count && !block_.error; ++i) cycle();
+  for (int i = 0; i < count && !block_.error; ++i) iso_cycle();
   repeat_start_.reset();
+}
+
+void Machine::iso_cycle() {
+  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
+  using In = CyclePattern::In;
+  const std::string name = "canned cycle " + pattern.name;
+  const int d = modal_.plane.w;  // the drilling axis
+  const int u = modal_.plane.u;  // G76/G87 shift along the plane's first axis
+  cycle_registers();
+  AxisValues hole = target();
+  hole[d] = machine_[d];
+  bool ok = true;
+  if (!cycle_.depth) ok = (report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, kAxisLetters[d])), false);
+  if (!cycle_.level) ok = (report(DiagId::CycleNoRLevel, 0, pattern.name), false);
+  const bool pecks = pattern.in == In::Peck || pattern.in == In::ChipBreak;
+  const bool shifts = pattern.bottom == CyclePattern::Bottom::OrientShift;
+  if (ok && pecks && !cycle_.peck) ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q"), false);
+  if (ok && (pecks || (cycle_.peck && pattern.in != In::Feed && !shifts)) && cycle_.peck && *cycle_.peck <= 0)
+    ok = (report(DiagId::PeckNotPositive, 'Q', "peck depth", four_decimals(*cycle_.peck), "greater than zero", pattern.name), false);
+  if (ok && shifts && !cycle_.peck) ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q (the shift off the wall)"), false);
+  const double dwell = pattern.dwell && cycle_.dwell ? *cycle_.dwell : 0;
+  if (ok && dwell < 0) ok = (report(DiagId::DwellNegative, 'P', four_decimals(dwell)), false);
+  if (!ok || !need_feed(name.c_str(), hole)) {
+    move_to(hole);
+    return;
+  }
+  // G90: R and the bottom are coordinates; G91: R from the initial level, the bottom
+  // from R (§8.23).
+  const double start = repeat_start_.value_or(machine_[d]);
+  repeat_start_ = start;
+  const AxisValues off = target_frame();
+  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
+  const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
+  const double down = bottom < level ? -1 : 1;  // the direction into the hole (G87: out of it)
+  if (pattern.in == In::Back && bottom * down < level * down) {
+    // §8.27: G87 bores from R up to Z, so Z lies above R.
+    report(DiagId::CycleDefinition, 0, fmt::format("canned cycle G87 bores upwards from R: the bottom {} must lie above R {}",
+                                                   four_decimals(to_program(bottom - off[d])), four_decimals(to_program(level - off[d]))));
+    move_to(hole);
+    return;
+  }
+  // A start below R goes up to R first, and R is the initial level then; G87 always
+  // comes back to the initial level (decision 21).
+  const bool below_level = pattern.in != In::Back && (down < 0 ? start < level : start > level);
+  const double initial = below_level ? level : start;
+  const double back = modal_.cycle_return_level && pattern.in != In::Back ? level : initial;
+  auto at = [&](double z, double shift = 0) {
+    AxisValues p = hole;
+    p[d] = z;
+    p[u] += shift;
+    return p;
+  };
+  auto go = [&](const AxisValues& p, bool feed) {
+    if (p == machine_) return;
+    feed ? linear(p) : rapid(p);
+  };
+  if (below_level) {
+    AxisValues up = machine_;
+    up[d] = level;
+    go(up, false);
+  }
+  go(at(machine_[d]), false);
+  const int direction = spindle_direction_ ? spindle_direction_ : 1;
+  const double shift = shifts ? length_units(*cycle_.peck) * conv_.boring_shift : 0;
+  auto spindle = [&](Fn fn) {
+    if ((fn == Fn::SpindleCw && modal_.spindle == 1) || (fn == Fn::SpindleCcw && modal_.spindle == -1) ||
+        (fn == Fn::SpindleStop && modal_.spindle == 0))
+      return;
+    apply({fn}, Scope::Modal, true);
+  };
+  const Fn forward = direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw;
+  if (pattern.in == In::Back) {
+    // §8.27 G87: oriented stop, shift, down to R, shift back, spindle on, bore up.
+    spindle(Fn::SpindleOrient);
+    go(at(initial, shift), false);
+    go(at(level, shift), false);
+    go(at(level), true);
+    spindle(Fn::SpindleCw);
+    go(at(bottom), true);
+  } else {
+    go(at(level), false);
+    const bool tap = pattern.in == In::TapCw || pattern.in == In::TapCcw;
+    const Fn tap_in = pattern.in == In::TapCw ? Fn::SpindleCw : Fn::SpindleCcw;
+    const Fn tap_out = pattern.in == In::TapCw ? Fn::SpindleCcw : Fn::SpindleCw;
+    if (tap) spindle(tap_in);
+    if (pecks || (tap && cycle_.peck)) {
+      const double step = length_units(*cycle_.peck);
+      const double count = std::ceil(std::fabs(bottom - level) / step - 1e-9);
+      if (count > kMaxPecks) {
+        report(DiagId::CyclePecks, 'Q', pattern.name, four_decimals(count), four_decimals(*cycle_.peck), kMaxPecks);
+        return;
+      }
+      double reached = level;
+      while (true) {
+        double next = reached + down * step;
+        if (next * down >= bottom * down) next = bottom;
+        go(at(next), true);
+        if (next == bottom) break;
+        if (pattern.in == In::Peck) {
+          // G83: out to R, back at rapid to just above the depth reached (decision 19).
+          go(at(level), false);
+          go(at(next - down * conv_.peck_clearance), false);
+        } else if (pattern.in == In::ChipBreak) {
+          // G73 (§8.25): up to the depth of the pass before, or by the machine's retract.
+          go(at(conv_.chip_break_retract > 0 ? next - down * conv_.chip_break_retract : reached), false);
+        } else {
+          // Peck tapping (decision 20): out to R reversed, back in to the depth reached.
+          spindle(tap_out);
+          go(at(level), true);
+          spindle(tap_in);
+          go(at(next), true);
+        }
+        reached = next;
+      }
+    } else {
+      go(at(bottom), true);
+    }
+    if (dwell > 0) dwell_seconds(dwell);
+    if (tap) {
+      spindle(tap_out);
+      go(at(level), true);
+      spindle(tap_in);
+      if (back != level) go(at(back), false);
+      return;
+    }
+  }
+  if (pattern.in == In::Back && dwell > 0) dwell_seconds(dwell);
+  switch (pattern.bottom) {
+    case CyclePattern::Bottom::Stop: spindle(Fn::SpindleStop); break;
+    case CyclePattern::Bottom::OrientShift:
+      // §8.27 G76: oriented stop, shift off the wall at feed; G87 shifts at rapid.
+      spindle(Fn::SpindleOrient);
+      go(at(bottom, shift), pattern.in != In::Back);
+      break;
+    default: break;
+  }
+  const double sideways = pattern.bottom == CyclePattern::Bottom::OrientShift ? shift : 0;
+  if (pattern.out == CyclePattern::Out::Feed) {
+    go(at(level), true);  // §8.27 G85, G89: out to R at feed, then at rapid
+    go(at(back), false);
+  } else {
+    // G87 withdraws at feed (§8.27 step 11).
+    go(at(back, sideways), pattern.in == In::Back);
+  }
+  if (sideways != 0) go(at(back), false);
+  if (pattern.bottom != CyclePattern::Bottom::None) spindle(forward);  // restarted after the cycle
 }
 
 void Machine::cycle() {

@@ -24,8 +24,11 @@ struct CodeDesc {
 
 // A canned cycle as a pattern of moves (GOST 20999 Table 6 and its kin).
 struct CyclePattern {
-  enum class In : uint8_t { Feed, Peck, SpindleFeed };
-  enum class Bottom : uint8_t { None, Reverse, Stop };
+  // ISO adds: ChipBreak (G73), TapCw/TapCcw (G84/G74: the spindle set that way in,
+  // reversed out), Back (G87: back boring from R up to the bottom); OrientShift (G76:
+  // an oriented stop and a shift off the wall).
+  enum class In : uint8_t { Feed, Peck, SpindleFeed, ChipBreak, TapCw, TapCcw, Back };
+  enum class Bottom : uint8_t { None, Reverse, Stop, OrientShift };
   enum class Out : uint8_t { Rapid, Feed, Manual };
   std::string name;
   In in = In::Feed;
@@ -77,6 +80,9 @@ struct Conventions {
   bool cycle_needs_cancel = false;  // a new cycle needs the active one cancelled first
   bool fanuc_cycles = false;        // G98/G99 return, feed out to R then rapid, repeats (ISO)
   std::string cycle_repeat_words;   // the words that repeat a cycle block (ISO "LK")
+  double peck_clearance = 0;        // ISO G83: the rapid back down stops this far above the depth reached (mm)
+  double chip_break_retract = 0;    // ISO G73: the retract after a peck (mm); 0 = back to the depth before it
+  int8_t boring_shift = 1;          // ISO G76/G87: Q shifts along the plane's first axis, + or -
   char peck_factor_word = 0;        // G83: the factor on the peck, down to
   char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
   char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)

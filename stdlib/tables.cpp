@@ -281,10 +281,12 @@ DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) 
       CyclePattern p;
       p.name = c[0];
       using P = CyclePattern;
-      bool ok = pick(c[1], {{"feed", P::In::Feed}, {"peck", P::In::Peck}, {"spindle_feed", P::In::SpindleFeed}}, p.in);
+      bool ok = pick(c[1], {{"feed", P::In::Feed}, {"peck", P::In::Peck}, {"spindle_feed", P::In::SpindleFeed},
+                            {"chip_break", P::In::ChipBreak}, {"tap_cw", P::In::TapCw}, {"tap_ccw", P::In::TapCcw},
+                            {"back", P::In::Back}}, p.in);
       ok = ok && pick(c[2], {{"yes", true}, {"no", false}}, p.dwell);
-      ok = ok && pick(c[3], {{"-", P::Bottom::None}, {"reverse", P::Bottom::Reverse}, {"stop", P::Bottom::Stop}},
-                      p.bottom);
+      ok = ok && pick(c[3], {{"-", P::Bottom::None}, {"reverse", P::Bottom::Reverse}, {"stop", P::Bottom::Stop},
+                             {"orient_shift", P::Bottom::OrientShift}}, p.bottom);
       ok = ok && pick(c[4], {{"rapid", P::Out::Rapid}, {"feed", P::Out::Feed}, {"manual", P::Out::Manual}}, p.out);
       if (!ok) {
         report(diags, *table, row.line, "malformed cycle row");

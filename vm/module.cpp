@@ -64,6 +64,9 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.u8(c.helix_by_end);
   w.u8(c.fanuc_cycles);
   w.str(c.cycle_repeat_words);
+  w.f64(c.peck_clearance);
+  w.f64(c.chip_break_retract);
+  w.u8(static_cast<uint8_t>(c.boring_shift));
   w.u8(c.cycle_two_levels);
   w.u8(c.cycle_defines_only);
   w.u8(c.cycle_needs_cancel);
@@ -191,6 +194,9 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.helix_by_end = r.u8();
   c.fanuc_cycles = r.u8();
   c.cycle_repeat_words = r.str();
+  c.peck_clearance = r.f64();
+  c.chip_break_retract = r.f64();
+  c.boring_shift = static_cast<int8_t>(r.u8());
   c.cycle_two_levels = r.u8();
   c.cycle_defines_only = r.u8();
   c.cycle_needs_cancel = r.u8();
@@ -224,9 +230,9 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   s.cycles.resize(n);
   for (CyclePattern& p : s.cycles) {
     p.name = r.str();
-    if (!enum_value(r, CyclePattern::In::SpindleFeed, p.in)) return false;
+    if (!enum_value(r, CyclePattern::In::Back, p.in)) return false;
     p.dwell = r.u8();
-    if (!enum_value(r, CyclePattern::Bottom::Stop, p.bottom) || !enum_value(r, CyclePattern::Out::Manual, p.out))
+    if (!enum_value(r, CyclePattern::Bottom::OrientShift, p.bottom) || !enum_value(r, CyclePattern::Out::Manual, p.out))
       return false;
   }
   if (!count(r, 2, n)) return false;

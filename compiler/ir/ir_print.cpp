@@ -114,8 +114,8 @@ std::string print(const Program& p, const SourceManager& sources) {
   for (size_t i = 0; i < p.semantics.cycles.size(); ++i) {
     const CyclePattern& cy = p.semantics.cycles[i];
     out += fmt::format("cycle #{} {} in={} dwell={} bottom={} out={}\n", i, cy.name,
-                       pick(cy.in, {"feed", "peck", "spindle_feed"}), cy.dwell ? "yes" : "no",
-                       pick(cy.bottom, {"-", "reverse", "stop"}), pick(cy.out, {"rapid", "feed", "manual"}));
+                       pick(cy.in, {"feed", "peck", "spindle_feed", "chip_break", "tap_cw", "tap_ccw", "back"}), cy.dwell ? "yes" : "no",
+                       pick(cy.bottom, {"-", "reverse", "stop", "orient_shift"}), pick(cy.out, {"rapid", "feed", "manual"}));
   }
   for (size_t i = 0; i < p.semantics.codes.size(); ++i)
     out += fmt::format("code #{} {}\n", i, code_text(p.semantics.codes[i]));

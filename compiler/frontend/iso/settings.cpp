@@ -30,6 +30,20 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.cycle_level_word = 'R';
   c.fanuc_cycles = true;                  // §8.21-§8.27
   c.cycle_repeat_words = "LK";            // §8.23: K may stand for L
+  c.peck_clearance = 0.254;               // decision 19
+  c.chip_break_retract = 0;               // §8.25: back to the depth of the pass before
+  auto length = [&](const char* key, double& out) {
+    if (auto v = p.number(key, diags)) {
+      if (*v >= 0 && *v <= 100) out = *v;
+      else ok = (p.report_value(diags, key, "must be a length in mm from 0 to 100"), false);
+    }
+  };
+  length("iso.peck_clearance", c.peck_clearance);
+  length("iso.chip_break_retract", c.chip_break_retract);
+  if (auto v = p.string("iso.boring_shift", diags)) {
+    if (*v == "+" || *v == "-") c.boring_shift = *v == "+" ? 1 : -1;
+    else ok = (p.report_value(diags, "iso.boring_shift", "must be \"+\" or \"-\": the direction of the plane's first axis"), false);
+  }
   c.tool_offset_axes = "Z";               // §8.11: the length acts along Z only
   c.axes = "XYZ";                         // a three-axis vertical machining centre
   c.max_call_depth = 20;                  // §8.16: 20 nested macros; subprograms share it (decision 13)
