@@ -41,6 +41,8 @@ void Machine::reset_state() {
   local_offsets_.clear();
   intermediate_.reset();
   feed_.reset();
+  if (conv_.initial_feed > 0) feed_ = conv_.initial_feed;
+  last_rotation_ = 0;
   helix_pitch_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
@@ -219,7 +221,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       modal_.motion = call.fn;
       break;
     case Fn::Dwell: block_.dwell = true; break;
-    case Fn::SetPosition: block_.set_position = true; break;
+    case Fn::SetPosition:
+      if (emit_events && transform_locked(block_.code_name)) break;
+      block_.set_position = true;
+      break;
     case Fn::PathAccelerate: event(EventKind::PathMode, 0); break;
     case Fn::PathDecelerate:
       block_.decelerate = true;
@@ -229,6 +234,12 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PlaneXY:
     case Fn::PlaneZX:
     case Fn::PlaneYZ:
+      // ISO §8.10 (E-10): the plane stays while cutter compensation is on.
+      if (emit_events && conv_.fanuc_rules && modal_.comp != 0 &&
+          modal_.plane != kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2]) {
+        report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
+        break;
+      }
       modal_.plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
       if (emit_events) plane_event();
       break;
@@ -272,6 +283,12 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       }
       if (call.arg != 0 && !offsets_.count(call.arg)) {
         report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
+        break;
+      }
+      if (emit_events && transform_locked(block_.code_name)) break;
+      // ISO §8.14 (E-20): machine coordinates are absolute.
+      if (emit_events && conv_.fanuc_rules && scope == Scope::Block && call.arg == 0 && !modal_.absolute) {
+        report_code(DiagId::PlaneState, block_.code_name, "incremental positioning (G91)");
         break;
       }
       if (scope == Scope::Block) {
@@ -324,9 +341,27 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       event(EventKind::SpindleOrient, 0, 0);
       break;
     case Fn::ToolChange:
-      if (conv_.m06_stops_spindle) {
+      // ISO §8.31: no tool selected, or the one in the spindle: nothing happens.
+      if (conv_.tool_change_iso && tool_selected_ == tool_loaded_) break;
+      if (emit_events && transform_locked(block_.code_name)) break;
+      if (conv_.m06_stops_spindle || conv_.tool_change_iso) {
         if (modal_.spindle != 0) apply({Fn::SpindleStop}, scope, emit_events);
         if (modal_.mist || modal_.flood) apply({Fn::CoolantOff}, scope, emit_events);
+      }
+      if (conv_.tool_change_iso && emit_events) {
+        // ISO §8.31: the spindle goes up to the tool-change position along Z (the
+        // reference point) and both compensations end for good.
+        AxisValues up = machine_;
+        up[modal_.plane.w] = config_.reference_position[modal_.plane.w];
+        if (conv_.tool_change_retract && up != machine_) rapid(up);
+        if (modal_.comp != 0) {
+          modal_.comp = 0;
+          cutter_comp_event();
+        }
+        if (modal_.length != 0) {
+          modal_.length = 0;
+          tool_length_event();
+        }
       }
       tool_loaded_ = tool_selected_;
       // NC-110 §2.7.7: M06 brings the corrector T selected into force.
@@ -404,18 +439,37 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PartChange: event(EventKind::PartChange); break;
     case Fn::MotionReference: block_.reference = true; break;
     case Fn::ReferenceReturn:
-    case Fn::ReferenceLeave: block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2; break;
-    case Fn::OffsetLocal: block_.local_offset = true; break;
+    case Fn::ReferenceLeave:
+      if (emit_events && transform_locked(block_.code_name)) break;
+      block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2;
+      break;
+    case Fn::OffsetLocal:
+      if (emit_events && transform_locked(block_.code_name)) break;
+      block_.local_offset = true;
+      break;
     case Fn::CycleReturnInitial:
     case Fn::CycleReturnLevel: modal_.cycle_return_level = call.fn == Fn::CycleReturnLevel; break;
-    // G16, G51 and G68 are refused by the front end until the runtime has them
-    // (docs/dialects/iso.md): here they only switch their state off.
     case Fn::PolarOff:
-    case Fn::PolarOn: modal_.polar = false; break;
+    case Fn::PolarOn: modal_.polar = call.fn == Fn::PolarOn; break;
+    case Fn::ScalingOn: block_.scaling_on = true; break;
+    case Fn::RotationOn: block_.rotation_on = true; break;
     case Fn::ScalingOff:
-    case Fn::ScalingOn: modal_.scaling = false; break;
+      if (modal_.scaling) {
+        modal_.scaling = false;
+        frame_.scale.fill(1);
+        frame_.mirror.fill(false);
+        frame_.scale_centre = {};
+        if (emit_events) transform_event();
+      }
+      break;
     case Fn::RotationOff:
-    case Fn::RotationOn: modal_.rotation = false; break;
+      if (modal_.rotation) {
+        modal_.rotation = false;
+        frame_.rotation = 0;
+        frame_.rotation_centre = {};
+        if (emit_events) transform_event();
+      }
+      break;
     case Fn::OffsetLoad:
     case Fn::CompLoad: break;  // found before the block's codes apply (execute)
     case Fn::DiameterOn:
@@ -608,6 +662,7 @@ BlockResult Machine::execute(const BlockRequest& request) {
   block_ = BlockState{};
   block_.request = &request;
   block_.compensation = compensation();
+  block_.comp_before = modal_.comp;
   auto failed = [&] { return block_.error && stop_on_error_; };
   if (request.dynamic_codes) check_dynamic_codes();
   if (failed()) return BlockResult::Error;
@@ -627,6 +682,7 @@ BlockResult Machine::execute(const BlockRequest& request) {
   apply_codes(Timing::Before);
   // 4. The action of the block.
   action();
+  if (block_.set_position_after && !block_.error) set_position();
   if (failed()) return BlockResult::Error;
   // 5. Auxiliary functions that start after the motion, then stops and ends.
   apply_codes(Timing::After);
@@ -701,8 +757,12 @@ void Machine::action() {
     return;
   }
   if (block_.set_position) {
-    set_position();
-    return;
+    // ISO §8.19: G92 written after a motion shifts once the motion is made.
+    for (char letter : conv_.axes) block_.set_position_after = block_.set_position_after || has_slot(second_slot(letter));
+    if (!block_.set_position_after) {
+      set_position();
+      return;
+    }
   }
   if (block_.offset_load) {
     load_offset();
@@ -724,6 +784,11 @@ void Machine::action() {
     set_local_offset();
     return;
   }
+  if (block_.scaling_on || block_.rotation_on) {
+    block_.scaling_on ? scaling_on() : rotation_on();
+    return;
+  }
+  if (conv_.fanuc_rules) comp_on_arc_rules();
   if (modal_.cycle >= 0) {
     if (conv_.cycle_two_levels) nc110_cycle();
     else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) conv_.fanuc_cycles ? repeat_cycle() : cycle();

@@ -136,6 +136,9 @@ class Machine {
     AxisValues scale;
     std::array<bool, kAxisCount> mirror{};
     double rotation = 0;  // degrees, counter-clockwise in the plane
+    // ISO G51 and G68: the centres of scaling and rotation, program coordinates (the
+    // NC-110 transforms are about the origin).
+    AxisValues scale_centre{}, rotation_centre{};
     Frame() { scale.fill(1); }
     bool transformed() const;
   };
@@ -197,6 +200,9 @@ class Machine {
     int load_entry = -1;          // ... the one the block names (-1: the active one)
     int reference_iso = 0;        // ISO G28 (1) and G29 (2)
     bool local_offset = false;    // ISO G52: the axis words shift the work zero
+    bool set_position_after = false;  // ISO G92 after a motion: its values are the second words
+    bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
+    int comp_before = 0;          // the cutter compensation when the block started
   };
 
   // Words.
@@ -296,6 +302,10 @@ class Machine {
   void reference_return();    // ISO G28
   void reference_leave();     // ISO G29
   void set_local_offset();    // ISO G52
+  void scaling_on();          // ISO G51
+  void rotation_on();         // ISO G68
+  bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
+  void comp_on_arc_rules();   // ISO E-11, E-13, E-14
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
@@ -350,6 +360,7 @@ class Machine {
   AxisValues position_offset_{};  // G92
   std::map<int, AxisValues> local_offsets_;  // ISO G52: the local shift of each work offset
   std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
+  double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
   std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
   double speed_ = 0;

@@ -62,13 +62,15 @@ AxisValues Machine::to_machine(const AxisValues& p) const {
   AxisValues q = p;
   // G79 and G53 blocks are not transformed (NC-110 §2.13.1.5: "not rotated").
   if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
-    for (int i = 0; i < kAxisCount; ++i) q[i] *= frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i];
+    const AxisValues& cs = frame_.scale_centre;
+    const AxisValues& cr = frame_.rotation_centre;
+    for (int i = 0; i < kAxisCount; ++i) q[i] = cs[i] + (q[i] - cs[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
     const int u = modal_.plane.u, v = modal_.plane.v;
     if (frame_.rotation != 0) {
       const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
-      const double x = q[u], y = q[v];
-      q[u] = x * c - y * s;
-      q[v] = x * s + y * c;
+      const double x = q[u] - cr[u], y = q[v] - cr[v];
+      q[u] = cr[u] + x * c - y * s;
+      q[v] = cr[v] + x * s + y * c;
     }
   }
   AxisValues off = target_frame();
@@ -81,14 +83,16 @@ AxisValues Machine::to_frame(const AxisValues& m) const {
   AxisValues q{};
   for (int i = 0; i < kAxisCount; ++i) q[i] = m[i] - off[i];
   if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
+    const AxisValues& cs = frame_.scale_centre;
+    const AxisValues& cr = frame_.rotation_centre;
     const int u = modal_.plane.u, v = modal_.plane.v;
     if (frame_.rotation != 0) {
       const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
-      const double x = q[u], y = q[v];
-      q[u] = x * c + y * s;
-      q[v] = -x * s + y * c;
+      const double x = q[u] - cr[u], y = q[v] - cr[v];
+      q[u] = cr[u] + x * c + y * s;
+      q[v] = cr[v] - x * s + y * c;
     }
-    for (int i = 0; i < kAxisCount; ++i) q[i] /= frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i];
+    for (int i = 0; i < kAxisCount; ++i) q[i] = cs[i] + (q[i] - cs[i]) / (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
   }
   return q;
 }
@@ -118,6 +122,18 @@ AxisValues Machine::program_target() {
     double v = axis_units(i, written);
     p[i] = absolute ? v : base[i] + v;
   }
+  // ISO §8.6 (G16): the plane's first word is a radius, its second an angle in
+  // degrees from the first axis; about the work zero under G90, about the position
+  // under G91. A word not written keeps the position's value (decision 25).
+  const int u = modal_.plane.u, v = modal_.plane.v;
+  const char lu = kAxisLetters[u], lv = kAxisLetters[v];
+  if (modal_.polar && !block_.machine_frame && (has(lu) || has(lv))) {
+    const double ou = absolute ? 0 : base[u], ov = absolute ? 0 : base[v];
+    const double r = has(lu) ? axis_units(u, word(lu)) : absolute ? std::hypot(base[u], base[v]) : 0;
+    const double a = has(lv) ? word(lv) : absolute ? std::atan2(base[v], base[u]) / kDegree : 0;
+    p[u] = ou + r * std::cos(a * kDegree);
+    p[v] = ov + r * std::sin(a * kDegree);
+  }
   return p;
 }
 
@@ -129,10 +145,15 @@ AxisValues Machine::target() {
     t = to_machine(program_target());
     for (double& v : t) v = snap(v);
   } else {
-    // Untransformed: unwritten axes stay exactly where they are.
+    // Untransformed: unwritten axes stay exactly where they are (under G16 a radius or
+    // an angle moves both axes of the plane).
     AxisValues p = program_target();
-    for (char letter : conv_.axes)
-      if (has(letter)) t[axis_index(letter)] = snap(p[axis_index(letter)] + off[axis_index(letter)]);
+    const int u = modal_.plane.u, v = modal_.plane.v;
+    const bool polar = modal_.polar && !block_.machine_frame && (has(kAxisLetters[u]) || has(kAxisLetters[v]));
+    for (char letter : conv_.axes) {
+      const int i = axis_index(letter);
+      if (has(letter) || (polar && (i == u || i == v))) t[i] = snap(p[i] + off[i]);
+    }
   }
   // An endless rotary axis goes the way the target's sign says; 0 the short way
   // (NC-110 §2.8.4, decision 48), with or without a transform.
@@ -178,12 +199,15 @@ void Machine::set_position() {
   // The named axes take the programmed values as their current coordinates; nothing
   // moves (Table 5). Incremental values add to the current coordinates. ISO §8.19:
   // the G52 shifts end.
+  // After a motion in its block (ISO §8.19) the values are the axes' second words.
+  const bool after = block_.set_position_after;
   local_offsets_.clear();
   frame_.local.fill(0);
   for (char letter : conv_.axes) {
-    if (!has(letter)) continue;
+    const int slot = after ? second_slot(letter) : letter_slot(letter);
+    if (!has_slot(slot)) continue;
     int i = axis_index(letter);
-    double v = axis_units(i, word(letter));
+    double v = axis_units(i, slot_value(slot));
     double work = offset_value(modal_.work_offset, i);
     double current = machine_[i] - work - frame_.shift[i];
     double wanted = modal_.absolute ? v : current + v;
@@ -640,6 +664,110 @@ bool Machine::path_allowed(const std::vector<AxisValues>& path) {
     }
   }
   return true;
+}
+
+}  // namespace ncc
+
+namespace ncc {
+
+// ---- ISO scaling and rotation (§8.12, §8.17) -------------------------------------------
+
+bool Machine::transform_locked(const std::string& what) {
+  // §8.8-§8.31 (E-08, E-09, E-19, E-21, E-22, E-26, E-27).
+  if (!conv_.fanuc_rules || (!modal_.scaling && !modal_.rotation)) return false;
+  report_code(DiagId::PlaneState, what, modal_.scaling ? "scaling (G51)" : "coordinate rotation (G68)");
+  return true;
+}
+
+void Machine::scaling_on() {
+  // E-17, E-18: not under cutter compensation, nor under rotation.
+  if (modal_.comp != 0 || modal_.rotation) {
+    report_code(DiagId::PlaneState, block_.code_name,
+                modal_.comp != 0 ? "cutter radius compensation" : "coordinate rotation (G68)");
+    return;
+  }
+  // The centre: the axis words (G91: from the position), the position on the others.
+  const AxisValues here = to_frame(machine_);
+  AxisValues centre = here;
+  for (char letter : conv_.axes)
+    if (has(letter)) {
+      const int i = axis_index(letter);
+      const double v = axis_units(i, word(letter));
+      centre[i] = modal_.absolute ? v : here[i] + v;
+    }
+  // P for every axis; I J K for X Y Z (an integer is thousandths: the front end).
+  std::optional<double> all = word_if('P');
+  AxisValues factor;
+  factor.fill(1);
+  bool any = all.has_value();
+  for (char letter : conv_.axes)
+    if (is_linear(axis_index(letter))) factor[axis_index(letter)] = all.value_or(1);
+  for (char letter : std::string("XYZ")) {
+    const char word_letter = static_cast<char>('I' + (letter - 'X'));
+    if (auto f = word_if(word_letter); f && conv_.axes.find(letter) != std::string::npos) {
+      factor[axis_index(letter)] = *f;
+      any = true;
+    }
+  }
+  if (!any) {
+    report_code(DiagId::OperandValue, block_.code_name, "without a factor", "given by P, or by I J K per axis");
+    return;
+  }
+  for (int i = 0; i < kAxisCount; ++i)
+    if (!(std::fabs(factor[i]) >= 0.00001 && std::fabs(factor[i]) <= 99999)) {
+      report_code(DiagId::OperandValue, fmt::format("the scale factor of {}", kAxisLetters[i]), shortest(factor[i]),
+                  "from 0.00001 to 99999 in size (negative mirrors)");
+      return;
+    }
+  for (int i = 0; i < kAxisCount; ++i) {
+    frame_.scale[i] = std::fabs(factor[i]);
+    frame_.mirror[i] = factor[i] < 0;
+  }
+  frame_.scale_centre = centre;
+  modal_.scaling = true;
+  transform_event();
+}
+
+void Machine::rotation_on() {
+  if (modal_.comp != 0) {  // E-24
+    report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
+    return;
+  }
+  const int u = modal_.plane.u, v = modal_.plane.v;
+  const AxisValues here = to_frame(machine_);
+  // The centre in the plane: the words (G91: from the position), else the position.
+  AxisValues centre = here;
+  for (int axis : {u, v})
+    if (has(kAxisLetters[axis])) {
+      const double value = axis_units(axis, word(kAxisLetters[axis]));
+      centre[axis] = modal_.absolute ? value : here[axis] + value;
+    }
+  if (has('Z') && u != axis_index('Z') && v != axis_index('Z')) word('Z');  // §8.17 lists Z; the plane's normal has no use
+  if (!has('R')) {
+    report_code(DiagId::OperandValue, block_.code_name, "without R", "the angle in degrees");
+    return;
+  }
+  // §8.17: under G91 the angle adds to the last one, which G69 does not forget
+  // (decision 24).
+  const double angle = modal_.absolute ? word('R') : last_rotation_ + word('R');
+  // The centre is a programmed point: under scaling it is scaled as the path is.
+  for (int i = 0; i < kAxisCount; ++i)
+    centre[i] = frame_.scale_centre[i] + (centre[i] - frame_.scale_centre[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
+  frame_.rotation = angle;
+  frame_.rotation_centre = centre;
+  last_rotation_ = angle;
+  modal_.rotation = true;
+  transform_event();
+}
+
+void Machine::comp_on_arc_rules() {
+  // §8.10: compensation starts and ends on a straight move, and changes side only there.
+  const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
+  if (!arc || modal_.comp == block_.comp_before || !has_axis_word()) return;
+  const char* what = block_.comp_before == 0 ? "cutter radius compensation cannot start on an arc (E-11)"
+                     : modal_.comp == 0      ? "cutter radius compensation cannot end on an arc (E-13)"
+                                             : "cutter radius compensation changes side only on a straight move (E-14)";
+  report(DiagId::ArcForm, 0, std::string(what) + ": use a G00 or G01 move");
 }
 
 }  // namespace ncc

@@ -178,8 +178,11 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   }
   // NC-110 §2.13.1: the arc is computed where it is programmed, then the frame maps it;
   // a mirror on one axis of the plane turns it the other way (decision 2).
+  // ISO §8.12: an arc by R under different factors keeps its shape, R scaled by the
+  // larger one (decision 26); by I J K its end point leaves the circle (E-01).
+  const bool unequal = frame_.transformed() && !block_.machine_frame && frame_.scale[u] != frame_.scale[v];
   if (frame_.transformed() && !block_.machine_frame) {
-    if (frame_.scale[u] != frame_.scale[v]) {
+    if (unequal && !conv_.fanuc_rules) {
       report(DiagId::TransformArc, 0, four_decimals(frame_.scale[u]), std::string(1, kAxisLetters[u]),
              four_decimals(frame_.scale[v]), std::string(1, kAxisLetters[v]));
       move_to(t);
@@ -218,7 +221,17 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   const AxisValues centre_m = to_machine(centre_p);
   const Eigen::Vector2d p0(machine_[u], machine_[v]);
   const Eigen::Vector2d p1(t[u], t[v]);
-  const Eigen::Vector2d centre(centre_m[u], centre_m[v]);
+  Eigen::Vector2d centre(centre_m[u], centre_m[v]);
+  if (radius_form && unequal) {
+    const double r = length_units(word(conv_.radius_word)) * std::max(frame_.scale[u], frame_.scale[v]);
+    const double chord = (p1 - p0).norm();
+    if (chord > 2 * std::fabs(r) + conv_.arc_tolerance)
+      return fail(fmt::format("the scaled end point is {} away, more than the diameter {} of the scaled R",
+                              four_decimals(to_program(chord)), four_decimals(to_program(2 * std::fabs(r)))));
+    const double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4));
+    const Eigen::Vector2d along = (p1 - p0) / chord, left(-along.y(), along.x());
+    centre = (p0 + p1) / 2 + ((clockwise == (r < 0)) ? 1 : -1) * h * left;
+  }
   const double r0 = (p0 - centre).norm();
   const double r1 = (p1 - centre).norm();
   if (r0 < kSamePoint) {

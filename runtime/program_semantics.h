@@ -83,6 +83,11 @@ struct Conventions {
   double peck_clearance = 0;        // ISO G83: the rapid back down stops this far above the depth reached (mm)
   double chip_break_retract = 0;    // ISO G73: the retract after a peck (mm); 0 = back to the depth before it
   int8_t boring_shift = 1;          // ISO G76/G87: Q shifts along the plane's first axis, + or -
+  bool tool_change_iso = false;     // ISO M06: ignored for the tool in the spindle; stops spindle and
+                                    // coolant, ends both compensations
+  bool tool_change_retract = false; // ... and first rapids the tool axis to the reference point
+  double initial_feed = 0;          // the feed in force at the start (0: none until F is programmed)
+  bool fanuc_rules = false;         // ISO E-08..E-27: what G51/G68, G91 and cutter compensation forbid
   char peck_factor_word = 0;        // G83: the factor on the peck, down to
   char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
   char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)

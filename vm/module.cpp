@@ -67,6 +67,10 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.f64(c.peck_clearance);
   w.f64(c.chip_break_retract);
   w.u8(static_cast<uint8_t>(c.boring_shift));
+  w.u8(c.tool_change_iso);
+  w.u8(c.tool_change_retract);
+  w.f64(c.initial_feed);
+  w.u8(c.fanuc_rules);
   w.u8(c.cycle_two_levels);
   w.u8(c.cycle_defines_only);
   w.u8(c.cycle_needs_cancel);
@@ -197,6 +201,10 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.peck_clearance = r.f64();
   c.chip_break_retract = r.f64();
   c.boring_shift = static_cast<int8_t>(r.u8());
+  c.tool_change_iso = r.u8();
+  c.tool_change_retract = r.u8();
+  c.initial_feed = r.f64();
+  c.fanuc_rules = r.u8();
   c.cycle_two_levels = r.u8();
   c.cycle_defines_only = r.u8();
   c.cycle_needs_cancel = r.u8();

@@ -617,15 +617,24 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
                   "a chamfer or fillet (,C ,R)", "the corner is not inserted yet");
     block_.has_errors = true;
   }
-  // Not run by ncc yet (docs/dialects/iso.md, "Not yet supported").
-  static const std::map<int, const char*> kNotYet = {
-      {16, "polar coordinates"}, {51, "scaling about a centre"}, {68, "rotation about a centre"}};
-  for (const ir::Word& w : block_.words)
-    if (w.kind == ir::WordKind::Code && w.address == "G" && program_.is_constant(w.value))
-      if (auto it = kNotYet.find(static_cast<int>(program_.exprs[w.value].number)); it != kNotYet.end()) {
-        diags_.report(DiagId::Unsupported, w.range, "G" + w.text, std::string(it->second) + " are not run yet");
+  // §8.12, §8.13, §8.17 (E-16, E-19, E-24): G51, G52 and G68 stand in blocks of their
+  // own; the modal G90/G91 and G17-G19 may join them (decision 27).
+  for (int own : {51, 52, 68}) {
+    if (!g.count(own)) continue;
+    for (const ir::Word& w : block_.words) {
+      const bool code = w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Control;
+      const int n = code && program_.is_constant(w.value) ? static_cast<int>(program_.exprs[w.value].number) : -1;
+      const bool allowed = w.kind == ir::WordKind::BlockNumber || (w.kind == ir::WordKind::Parameter && w.address != "F" &&
+                           w.address != "S" && w.address != "T" && w.address != "D" && w.address != "H") ||
+                           (code && w.address == "G" && (n == own || n == 90 || n == 91 || (n >= 17 && n <= 19)));
+      if (!allowed) {
+        diags_.report(DiagId::ProgramStructure, w.range,
+                      fmt::format("{}{} cannot share the block of G{}: G{} and its words stand in a block of their own",
+                                  w.address, w.text, own, own));
         block_.has_errors = true;
       }
+    }
+  }
   // §8.8, §8.9, §8.19 (E-08, E-09, E-26): G53 does not share a block with G28, G29 or G92.
   if (g.count(53))
     for (int other : {28, 29, 92})
@@ -633,6 +642,7 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
         diags_.report(DiagId::CodesIncompatible, block_.range, "G53", fmt::format("G{}", other));
         block_.has_errors = true;
       }
+  if (g.count(92)) g92_words(first);
   if (g.count(65) || m.count(97) || m.count(98)) {
     call_words(cond);
     return;
@@ -679,6 +689,34 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
     main_done_ = true;
     end_block_ = unit_.blocks.size() - 1;
   }
+}
+
+// §8.19 (E-25): in a block with a motion G92 stands after the motion's words; the
+// axis words after it are its values (the axes' second words, read after the move).
+void Reader::g92_words(size_t first) {
+  size_t at = first;
+  while (at < block_.words.size() && !(block_.words[at].kind == ir::WordKind::Code && block_.words[at].address == "G" &&
+                                       program_.is_constant(block_.words[at].value) && program_.exprs[block_.words[at].value].number == 92))
+    ++at;
+  auto axis = [](const ir::Word& w) { return w.kind == ir::WordKind::Parameter && std::string_view("XYZ").find(w.address[0]) != std::string_view::npos; };
+  bool motion_before = false;
+  for (size_t i = first; i < at; ++i) motion_before = motion_before || axis(block_.words[i]);
+  for (size_t i = at + 1; i < block_.words.size(); ++i) {
+    const ir::Word& w = block_.words[i];
+    if (w.kind == ir::WordKind::Code && w.address == "G" && program_.is_constant(w.value) &&
+        program_.exprs[w.value].number <= 3) {
+      diags_.report(DiagId::ProgramStructure, w.range,
+                    fmt::format("G{} follows G92: in a block with a motion, G92 and its values stand after the motion's words", w.text));
+      block_.has_errors = true;
+      return;
+    }
+  }
+  if (!motion_before) return;
+  for (size_t i = at + 1; i < block_.words.size(); ++i)
+    if (ir::Word& w = block_.words[i]; axis(w)) {
+      w.slot = static_cast<uint8_t>(second_slot(w.address[0]));
+      w.address += "'";
+    }
 }
 
 // M97, M98, G65 (§8.16, §8.33): the block's other words run first (M97/M98), or are

@@ -70,6 +70,7 @@ class Reader {
   ir::Stmt go_to(IsoParser::GotoStmtContext* ctx);
   void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
   bool call_words(ir::ExprId cond);
+  void g92_words(size_t first);
   std::optional<uint32_t> whole(const ir::Word& w, uint32_t max, const char* what);
 
   // Structure.

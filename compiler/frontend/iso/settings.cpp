@@ -38,6 +38,15 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       else ok = (p.report_value(diags, key, "must be a length in mm from 0 to 100"), false);
     }
   };
+  c.tool_change_iso = true;               // §8.31
+  c.fanuc_rules = true;                   // §8.8-§8.31 (E-08..E-27)
+  c.tool_change_retract = true;
+  if (auto v = p.boolean("iso.tool_change_retract", diags)) c.tool_change_retract = *v;
+  if (auto v = p.number("iso.initial_feed", diags)) {
+    // the seed's examples feed without F; a machine may start with a feed.
+    if (*v >= 0 && *v <= 100000) c.initial_feed = *v;
+    else ok = (p.report_value(diags, "iso.initial_feed", "must be a feed from 0 (none) to 100000"), false);
+  }
   length("iso.peck_clearance", c.peck_clearance);
   length("iso.chip_break_retract", c.chip_break_retract);
   if (auto v = p.string("iso.boring_shift", diags)) {
