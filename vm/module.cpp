@@ -359,7 +359,7 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       s.types.resize(ranges);
       for (VarSpace::Range& range : s.types) {
         range.first = r.u32();
-        if (!enum_value(r, VarType::Thousandths, range.type)) return false;
+        if (!enum_value(r, VarType::Unavailable, range.type)) return false;
       }
     }
   } else if (t == kSrcs) {

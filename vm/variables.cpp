@@ -19,6 +19,7 @@ bool convert_value(VarType type, double limit, double& v) {
       if (!(std::fabs(v) <= std::numeric_limits<float>::max())) return false;
       v = static_cast<float>(v);
       return true;
+    case VarType::Unavailable: return false;
     case VarType::Thousandths: v = std::round(v * 1000) / 1000; [[fallthrough]];
     default: return std::isfinite(v) && (limit == 0 || std::fabs(v) < limit);
   }

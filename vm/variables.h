@@ -13,7 +13,8 @@ namespace ncc {
 // space sets one), Real a float, Byte 0..255, Integer and Long 16 and 32 bits,
 // Thousandths a LongReal rounded to 0.001 (pp R parameters, fixed point). Integer
 // types and Thousandths round half away from zero; a value out of range is an error.
-enum class VarType : uint8_t { LongReal, Real, Byte, Integer, Long, Thousandths, Count };
+// Unavailable: no variable has these numbers (Macro B #34-#99); using one is an error.
+enum class VarType : uint8_t { LongReal, Real, Byte, Integer, Long, Thousandths, Unavailable, Count };
 
 // The formats of a byte-addressed memory (NC-110 §2.10.5, Table 2.7): a bit, a byte,
 // 16 and 32-bit integers, IEEE float and double, little-endian. The index of a

@@ -81,6 +81,11 @@ double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
     ok = false;
     return 0;
   }
+  if (s.type_of(static_cast<uint32_t>(index)) == VarType::Unavailable) {
+    fail(pc, DiagId::VariableNumber, shortest(index));
+    ok = false;
+    return 0;
+  }
   return vars_[space][static_cast<size_t>(index)];
 }
 
@@ -93,6 +98,10 @@ bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
   double v = value;
   if (s.vacant && index == 0) {
     fail(pc, DiagId::VacantVariable, fmt::format("{}0", s.name));
+    return false;
+  }
+  if (s.type_of(static_cast<uint32_t>(index)) == VarType::Unavailable) {
+    fail(pc, DiagId::VariableNumber, shortest(index));
     return false;
   }
   if (s.vacant && std::isnan(v)) {

@@ -28,9 +28,9 @@ struct Command {
   std::string_view options;  // the command's own options, for --help
 };
 
-constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110, pp (default gost)
+constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110, pp, iso (default gost)
   --machine FILE            machine profile (TOML, docs/profile.md); default: built in
-  --lib DIR                 program library: where called programs are found (NC-110 CLS, pp G72)
+  --lib DIR                 program library: where called programs are found (NC-110 CLS, pp G72, iso M98 G65)
   --diagnostics-format F    text | json | sarif (default text)
   --error-limit N           stop after N errors (default 100, 0 = no limit)
   --color WHEN              auto | always | never (default auto)

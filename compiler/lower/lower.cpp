@@ -310,7 +310,7 @@ class Lowering {
       }
       if (b.main_block && b.number)
         m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
-      if (!b.label.empty()) labels[b.label] = pc();
+      if (!b.label.empty()) labels.emplace(b.label, pc());  // a label used twice (Macro B N): the first
       // A block a call names (Macro B M97) is an entry point of its own.
       if (!b.label.empty() && called_.count(unit.name + "/" + b.label))
         m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});

@@ -30,7 +30,8 @@ class IsoFrontend final : public Frontend {
     program.semantics.conventions = s_.conventions;
     program.semantics.cycles = s_.tables.cycles;
     // #0..#999 (decision 3): #1-#33 local to each macro call, all vacant at the start.
-    VarSpace vars{"#", 1000, {{0, VarType::LongReal}}};
+    VarSpace vars{"#", 1000, {{0, VarType::LongReal}, {34, VarType::Unavailable}, {100, VarType::LongReal},
+                              {200, VarType::Unavailable}, {500, VarType::LongReal}}};
     vars.locals = 34;
     vars.vacant = true;
     const auto space = static_cast<uint16_t>(program.spaces.size());
@@ -43,11 +44,12 @@ class IsoFrontend final : public Frontend {
     fs::path root = (!options.library.empty() ? fs::path(options.library)
                      : !s_.library.empty()    ? fs::path(s_.library)
                                               : fs::path(sources.file(file).path()).parent_path()).lexically_normal();
-    std::set<std::string> known;
+    std::set<std::string> known, missing;
     for (const ir::Unit& u : program.units) known.insert(u.name);
     while (!pending.empty() && !diags.limit_reached()) {
       ProgramCall call = pending.front();
       pending.pop_front();
+      if (missing.count(call.name)) program.units[call.unit].blocks[call.block].has_errors = true;
       if (!known.insert(call.name).second) continue;
       fs::path found;
       std::optional<std::string> text;
@@ -59,6 +61,7 @@ class IsoFrontend final : public Frontend {
       if (!text) {
         diags.report(DiagId::ProgramNotFound, call.range, call.name, (root / call.name).string() + "[.nc|.ngc|.tap|.txt]");
         program.units[call.unit].blocks[call.block].has_errors = true;
+        missing.insert(call.name);
         continue;
       }
       uint32_t f = sources.add(found.string(), std::move(*text));

@@ -79,7 +79,7 @@ class Reader::Errors final : public antlr4::BaseErrorListener {
       r_.diags_.report(DiagId::CharInvalid, {r_.file_, r_.line_, col, r_.line_, col + static_cast<uint32_t>(length)}, what);
       return;
     }
-    std::string what = eof ? std::string("end of the block") : fmt::format("'{}'", token->getText());
+    std::string what = eof ? std::string("end of text") : fmt::format("'{}'", token->getText());
     uint32_t len = eof ? 1 : static_cast<uint32_t>(token->getStopIndex() - token->getStartIndex() + 1);
     r_.diags_.report(DiagId::SyntaxError, {r_.file_, r_.line_, col, r_.line_, col + len}, what);
   }
@@ -217,42 +217,55 @@ void Reader::start_unit(ir::UnitKind kind, std::string name, SourceRange r) {
 }
 
 void Reader::end_unit() {
-  for (const Loop& l : loops_)
+  for (const Loop& l : loops_) {
     diags_.report(DiagId::RepeatUnbalanced, l.range, fmt::format("DO{} has no END{} in its program", l.index, l.index));
+    unit_.blocks[l.do_block].has_errors = true;  // its jump out has nowhere to go
+  }
   loops_.clear();
   // A multi-line IF still open at the end: its last '}' ends it, if it has one.
   while (!branches_.empty()) {
-    Branch& b = branches_.back();
-    if (b.closed) {
-      std::string end = label_of(*b.close_block);
-      if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = end;
-      for (auto [block, stmt] : b.exits) unit_.blocks[block].stmts[stmt].label = end;
-    } else {
-      diags_.report(DiagId::ProgramStructure, b.range, "this IF has no closing '}' in its program");
-      if (b.next) unit_.blocks[b.next->first].has_errors = true;
+    if (branches_.back().closed) {
+      finish_branch();
+      continue;
     }
+    diags_.report(DiagId::ProgramStructure, branches_.back().range, "this IF has no closing '}' in its program");
+    for (auto [block, stmt] : branches_.back().exits) unit_.blocks[block].has_errors = true;
+    if (branches_.back().next) unit_.blocks[branches_.back().next->first].has_errors = true;
     branches_.pop_back();
   }
   if (expect_brace_) diags_.report(DiagId::ProgramStructure, unit_.range, "a multi-line IF needs its '{'");
   expect_brace_ = false;
-  // §8.33 (E-29): M97 subprograms stand after M02/M30.
-  for (const auto& [label, r] : local_calls_) {
-    for (size_t i = 0; i < unit_.blocks.size(); ++i) {
-      if (unit_.blocks[i].label != label) continue;
-      if (unit_.kind == ir::UnitKind::Program && (!end_block_ || i <= *end_block_))
-        diags_.report(DiagId::ProgramStructure, r,
-                      fmt::format("M97 calls {}, which stands before M02/M30: an internal subprogram is written after the end of the main program", label));
-      break;
+  // §8.33 (E-29): M97 subprograms stand after M02/M30, at a block that exists.
+  for (const LocalCall& call : local_calls_) {
+    size_t i = 0;
+    while (i < unit_.blocks.size() && unit_.blocks[i].label != call.label) ++i;
+    if (i == unit_.blocks.size()) {
+      diags_.report(DiagId::LabelUndefined, call.range, "M97 to", call.label);
+      unit_.blocks[call.block].has_errors = true;
+    } else if (unit_.kind == ir::UnitKind::Program && (!end_block_ || i <= *end_block_)) {
+      diags_.report(DiagId::ProgramStructure, call.range,
+                    fmt::format("M97 calls {}, which stands before M02/M30: an internal subprogram is written after the end of the main program", call.label));
+      unit_.blocks[call.block].has_errors = true;
     }
   }
   local_calls_.clear();
   if (unit_.kind != ir::UnitKind::Program) {
-    // E-23, E-28: a subprogram or macro ends with M99.
-    bool returns = false;
+    // E-23, E-28: a subprogram or macro ends with M99 (its last block that does anything).
+    const ir::Block* last = nullptr;
     for (const ir::Block& b : unit_.blocks)
-      for (const ir::Stmt& s : b.stmts) returns = returns || s.kind == ir::StmtKind::Return;
-    if (!returns) diags_.report(DiagId::ProgramStructure, unit_.range, fmt::format("{} does not end with M99", unit_.name));
+      if (!b.stmts.empty()) last = &b;
+    const bool returns = last && std::any_of(last->stmts.begin(), last->stmts.end(), [](const ir::Stmt& s) {
+      return s.kind == ir::StmtKind::Return && s.cond == ir::kNoExpr;
+    });
+    if (!returns) diags_.report(DiagId::ProgramStructure, last ? last->range : unit_.range, fmt::format("{} does not end with M99", unit_.name));
   }
+  // §8.34.2: a block number used twice: jumps go to the first.
+  std::map<uint32_t, const ir::Block*> numbers;
+  for (const ir::Block& b : unit_.blocks)
+    if (b.number)
+      if (auto [it, fresh] = numbers.emplace(*b.number, &b); !fresh)
+        if (Diagnostic* d = diags_.report(DiagId::BlockNumberRepeated, b.range, *b.number, unit_.name))
+          d->notes.push_back({it->second->range, "a GOTO or M97 goes here"});
   program_.units.push_back(std::move(unit_));
   unit_ = ir::Unit{};
   in_unit_ = false;
@@ -286,8 +299,27 @@ void Reader::open_brace(const Piece& at) {
   branches_.back().in_body = true;
 }
 
+// An ELIF or ELSE that continues no IF (reported): its body is read as a body of
+// nothing, so that its braces raise no more errors.
+void Reader::orphan_head(SourceRange r) {
+  new_block(r).has_errors = true;
+  branches_.push_back({r, std::nullopt, {}, false, false, true, std::nullopt});
+  expect_brace_ = true;
+}
+
+// A closed multi-line IF that no ELIF or ELSE continues: its jumps land on its last '}'.
+void Reader::finish_branch() {
+  Branch& b = branches_.back();
+  std::string end = label_of(*b.close_block);
+  if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = end;
+  for (auto [block, stmt] : b.exits) unit_.blocks[block].stmts[stmt].label = end;
+  branches_.pop_back();
+}
+
 void Reader::close_brace(const Piece& at) {
   SourceRange r = SourceRange::point(file_, at.line, at.col);
+  // An IF that was the last thing of the body this brace closes ends with it.
+  while (!branches_.empty() && branches_.back().closed) finish_branch();
   if (branches_.empty() || !branches_.back().in_body) {
     diags_.report(DiagId::ProgramStructure, r, "'}' without the '{' of an IF, ELIF or ELSE body");
     return;
@@ -308,11 +340,9 @@ void Reader::read(const Piece& piece) {
   std::vector<std::string> comments;
   for (auto [from, to] : piece.comments) comments.emplace_back(source_.text().substr(from + 1, to - from - 2));
   if (trim(sanitized_).empty()) {
-    // A comment alone: kept for the listing, runs nothing.
-    if (branches_.empty() || !branches_.back().closed) {
-      new_block(whole).comments = std::move(comments);
-      return;
-    }
+    // A comment alone: kept for the listing, runs nothing (an ELSE may follow it).
+    new_block(whole).comments = std::move(comments);
+    return;
   }
 
   // E-32: brackets that do not pair up.
@@ -329,6 +359,7 @@ void Reader::read(const Piece& piece) {
   auto* head = body ? body->braceHead() : nullptr;
 
   // After a '}': ELIF or ELSE continues the IF; anything else ends it.
+  bool continues = false;
   if (!branches_.empty() && branches_.back().closed) {
     Branch& b = branches_.back();
     if (head && !head->IF() && !b.has_else) {
@@ -337,21 +368,29 @@ void Reader::read(const Piece& piece) {
       close.stmts.push_back({ir::StmtKind::Jump, close.range});
       b.exits.push_back({*b.close_block, close.stmts.size() - 1});
       b.closed = false;
+      continues = true;
     } else {
-      std::string end = label_of(*b.close_block);
-      if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = end;
-      for (auto [block, stmt] : b.exits) unit_.blocks[block].stmts[stmt].label = end;
-      branches_.pop_back();
+      finish_branch();
       if (head && !head->IF()) {
         diags_.report(DiagId::ProgramStructure, range(head),
-                      head->ELSE() ? std::string("ELSE follows the ELSE of its IF") : std::string("ELIF follows the ELSE of its IF"));
+                      fmt::format("{} follows the ELSE of its IF", head->ELSE() ? "ELSE" : "ELIF"));
+        orphan_head(whole);
         return;
       }
     }
   }
+  if (head && !head->IF() && !continues) {
+    diags_.report(DiagId::ProgramStructure, range(head),
+                  fmt::format("{} has no IF before it: it continues a multi-line IF right after its '}}'", head->ELSE() ? "ELSE" : "ELIF"));
+    orphan_head(whole);
+    return;
+  }
   if (expect_brace_) {
     diags_.report(DiagId::ProgramStructure, whole, "a multi-line IF needs its '{' before the next block");
     expect_brace_ = false;
+    // The IF is not one: its jump has nowhere to go.
+    if (branches_.back().next) unit_.blocks[branches_.back().next->first].has_errors = true;
+    branches_.pop_back();
   }
 
   ir::Block& block = new_block(whole);
@@ -398,7 +437,10 @@ void Reader::read(const Piece& piece) {
     }
     const std::string name = program_name(n);
     if (called_) {
-      if (name != *called_ || !unit_.blocks.empty())
+      const bool blocks_before = std::any_of(unit_.blocks.begin(), unit_.blocks.end(), [](const ir::Block& b) {
+        return !b.words.empty() || !b.stmts.empty();
+      });
+      if (name != *called_ || blocks_before)
         diags_.report(DiagId::ProgramStructure, r,
                       fmt::format("{} stands in the file of {}: a program file holds its own program", name, *called_));
       return;
@@ -414,7 +456,7 @@ void Reader::read(const Piece& piece) {
     }
     if (unit_.kind == ir::UnitKind::Program && !main_done_)
       diags_.report(DiagId::ProgramStructure, r,
-                    fmt::format("{} starts before the main program ends: subprograms and macros follow M02/M30 (decision 12)", name));
+                    fmt::format("{} starts before the main program ends: subprograms and macros follow M02/M30", name));
     for (const ir::Unit& u : program_.units)
       if (u.name == name) diags_.report(DiagId::ProgramStructure, r, fmt::format("{} is defined twice", name));
     if (unit_.name == name) diags_.report(DiagId::ProgramStructure, r, fmt::format("{} is defined twice", name));
@@ -484,6 +526,7 @@ void Reader::read(const Piece& piece) {
       } else {
         Loop loop = loops_.back();
         loops_.pop_back();
+        if (unit_.blocks[loop.do_block].has_errors) block_.has_errors = true;  // a broken WHILE does not loop
         const size_t body_start = loop.body.value_or(index);
         ir::Stmt back{ir::StmtKind::Jump, r};
         back.cond = loop.cond;
@@ -524,6 +567,7 @@ ir::Stmt Reader::go_to(IsoParser::GotoStmtContext* ctx) {
     if (n != std::trunc(n) || n < 0 || n > 99999) {
       diags_.report(DiagId::ValueForm, range(ctx->value()), "GOTO", "a block number 0 to 99999", shortest(n));
       block_.has_errors = true;
+      return s;  // no target: a block with errors does not jump
     }
     s.label = fmt::format("N{}", static_cast<int64_t>(n));
   } else {
@@ -553,15 +597,15 @@ ir::ExprId Reader::condition(IsoParser::ExprContext* ctx, const char* what) {
   return e;
 }
 
-std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t max, const char* what) {
+std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what) {
   if (!program_.is_constant(w.value)) {
     diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{} written as a number", what), w.address + w.text);
     block_.has_errors = true;
     return std::nullopt;
   }
   double v = program_.exprs[w.value].number;
-  if (v != std::trunc(v) || v < 0 || v > max) {
-    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{}, a whole number 0 to {}", what, max), w.address + w.text);
+  if (v != std::trunc(v) || v < min || v > max) {
+    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{}, a whole number {} to {}", what, min, max), w.address + w.text);
     block_.has_errors = true;
     return std::nullopt;
   }
@@ -571,6 +615,11 @@ std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t max, const cha
 void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
   std::set<int> g, m;  // the codes written as numbers
   const size_t first = block_.words.size();  // after the block number
+  // §8.16: in a G65 block M is argument #13, not an M code.
+  bool macro_call = false;
+  for (auto* wc : ctx->word())
+    macro_call = macro_call || (wc->LETTER()->getText() == "G" && wc->value()->NUMBER() && !wc->value()->MINUS() &&
+                                wc->value()->getText() == "65");
   std::vector<bool> literal_integer;         // of each word from `first` on
   for (auto* wc : ctx->word()) {
     const char letter = wc->LETTER()->getText()[0];
@@ -588,7 +637,7 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
       diags_.report(DiagId::BlockNumberPosition, w.range, w.address + w.text);
       w.kind = ir::WordKind::Ignored;
       block_.has_errors = true;
-    } else if (letter == 'G' || letter == 'M') {
+    } else if (letter == 'G' || (letter == 'M' && !macro_call)) {
       w.kind = ir::WordKind::Code;
       if (!program_.is_constant(e)) {
         w.code = ir::kDynamicCode;  // G#4 (§8.34.1): the code comes at run time
@@ -680,6 +729,8 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
     block_.stmts.push_back(std::move(s));
   }
   if (m.count(99)) {
+    if (unit_.kind == ir::UnitKind::Program && !main_done_)
+      diags_.report(DiagId::ReturnInMain, block_.range);
     ir::Stmt s{ir::StmtKind::Return, block_.range};
     s.cond = cond;
     block_.stmts.push_back(std::move(s));
@@ -784,7 +835,7 @@ bool Reader::call_words(ir::ExprId cond) {
     block_.has_errors = true;
     return false;
   }
-  std::optional<uint32_t> number = whole(*p, what == "M97" ? 99999 : what == "M98" ? 9999999 : 9999,
+  std::optional<uint32_t> number = whole(*p, 0, what == "M97" ? 99999 : what == "M98" ? 9999999 : 9999,
                                          what == "M97" ? "a block number" : "a program number");
   uint32_t count = 0;
   if (number && what == "M98" && *number > 9999) {
@@ -796,12 +847,10 @@ bool Reader::call_words(ir::ExprId cond) {
       diags_.report(DiagId::MacroArgument, l->range, fmt::format("{}{} already holds the count {}", p->address, p->text, count));
       block_.has_errors = true;
     } else if (program_.is_constant(l->value)) {
-      if (auto n = whole(*l, kMaxCount, "the number of calls"); n && *n == 0) {
-        diags_.report(DiagId::ValueForm, l->range, "L", "the number of calls, 1 to 999", "L0");
-        block_.has_errors = true;
-      }
+      whole(*l, 1, kMaxCount, "the number of calls");
     }
-    call.value = operand(l->value);
+    // From a variable, checked when the call runs (§8.16, §8.33: at most 999).
+    call.value = program_.is_constant(l->value) ? l->value : checked(operand(l->value), *l, "L", 1, kMaxCount);
   } else if (count) {
     call.value = program_.number(count, p->range);
   }
@@ -811,7 +860,7 @@ bool Reader::call_words(ir::ExprId cond) {
   if (what == "M97") {
     const std::string label = fmt::format("N{}", *number);
     call.label = unit_.name + "/" + label;
-    local_calls_.push_back({label, p->range});
+    local_calls_.push_back({label, p->range, unit_.blocks.size() - 1});
   } else {
     call.label = program_name(*number);
     calls_.push_back({call.label, p->range, program_.units.size(), unit_.blocks.size() - 1});
@@ -821,6 +870,21 @@ bool Reader::call_words(ir::ExprId cond) {
 }
 
 // ---- Expressions ------------------------------------------------------------------------
+
+// A value a run-time word gives, which must be a whole number lo..hi (ProgramSemantics::value_rules).
+ir::ExprId Reader::checked(ir::ExprId e, const ir::Word& w, const std::string& address, double lo, double hi) {
+  auto& rules = program_.semantics.value_rules;
+  ValueRule rule{address, lo, hi, true};
+  auto it = std::find_if(rules.begin(), rules.end(), [&](const ValueRule& r) {
+    return r.address == rule.address && r.lo == lo && r.hi == hi && r.whole;
+  });
+  const auto index = static_cast<uint8_t>(it - rules.begin());
+  if (it == rules.end()) rules.push_back(rule);
+  ir::ExprId c = program_.add({ir::ExprOp::Check, Builtin::Sin, 0, 0, e, ir::kNoExpr, w.range});
+  program_.exprs[c].slot = w.slot;
+  program_.exprs[c].rule = index;
+  return c;
+}
 
 // Macro B arithmetic reads a vacant variable as 0; a comparison EQ/NE, an assignment
 // and an address keep it vacant (decision 3).

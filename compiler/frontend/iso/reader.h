@@ -51,6 +51,8 @@ class Reader {
   void load(const Piece& piece);
   void open_brace(const Piece& at);
   void close_brace(const Piece& at);
+  void finish_branch();
+  void orphan_head(SourceRange r);
 
   // Parse-tree walking.
   SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
@@ -65,13 +67,14 @@ class Reader {
   ir::ExprId variable(IsoParser::VariableContext* ctx, bool target);
   ir::ExprId value(IsoParser::ValueContext* ctx, bool& literal_integer);
   ir::ExprId operand(ir::ExprId e);  // vacant reads as 0
+  ir::ExprId checked(ir::ExprId e, const ir::Word& w, const std::string& address, double lo, double hi);
   ir::ExprId condition(IsoParser::ExprContext* ctx, const char* what);
   ir::Stmt assignment(IsoParser::AssignmentContext* ctx);
   ir::Stmt go_to(IsoParser::GotoStmtContext* ctx);
   void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
   bool call_words(ir::ExprId cond);
   void g92_words(size_t first);
-  std::optional<uint32_t> whole(const ir::Word& w, uint32_t max, const char* what);
+  std::optional<uint32_t> whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what);
 
   // Structure.
   ir::Block& new_block(SourceRange r);
@@ -104,7 +107,12 @@ class Reader {
   bool expect_brace_ = false;  // a multi-line IF head waits for its '{'
   bool label_next_ = false;    // the next block starts a loop body: it needs a label
   std::vector<std::pair<size_t, size_t>> label_wanted_;  // (block, stmt) whose label is the next block's
-  std::vector<std::pair<std::string, SourceRange>> local_calls_;  // M97 targets of this unit
+  struct LocalCall {
+    std::string label;  // "N100"
+    SourceRange range;
+    size_t block = 0;
+  };
+  std::vector<LocalCall> local_calls_;  // the M97 calls of this unit
   size_t next_label_ = 0;
   bool in_word_ = false;       // reading an address's value (ROUND keeps decimals there)
   std::vector<ProgramCall> calls_;

@@ -1,0 +1,14 @@
+(the manual's header: the modal state the example assumes)
+G54 G90;
+N1 G00 X50 Y50 Z10;
+N2 G01 Z-5;
+N3 M97 P101;
+N4 G51 I500 J-1000;
+N5 M97 P101;
+N6 G50;
+N7 M30;
+N101 G41 G01 Y150;
+N102 X100;
+N103 G02 X200 Y50 R100;
+N104 G40 G01 X50;
+N105 M99;

@@ -1,0 +1,11 @@
+(G65: M is argument #13, not an M code: M13, M99, M98 and M30 here are values for #13)
+G90 G01 X0 Y0 Z0 F100;
+G65 P9002 M13;
+G65 P9002 M99;
+G65 P9002 M98;
+G65 P9002 M30;
+G01 X1;
+M30;
+O9002;
+G01 X#13;
+M99;

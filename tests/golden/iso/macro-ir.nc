@@ -1,0 +1,15 @@
+(the IR of Macro B control flow: GOTO, IF GOTO, IF THEN, WHILE DO END, multi-line IF, M98 and G65 calls)
+N10 #1=0;
+WHILE [#1 LT 2] DO1;
+#1=#1+1;
+IF [#1 EQ 1] THEN G01 X#1 F100;
+END1;
+IF [#1 GE 2 AND #1 NE #0] GOTO 20;
+GOTO#1;
+N20 IF [#1 EQ 2] {G01 Y1;} ELIF [#1 EQ 3] {G01 Y2;} ELSE {G01 Y3;}
+M98 P1000 L2;
+G65 P1000 A1 I2 J3 I4;
+G01 X[ROUND[#1/3]] Y-#1;
+M30;
+O1000;
+M99;
