@@ -123,7 +123,12 @@ void Machine::emit(Event e) {
   // rest does not (the machine's state still follows it in a dry run).
   if (block_.error) return;
   e.source = block_.request ? block_.request->source : 0;
-  trace_.event(e);
+  out(e);
+}
+
+void Machine::out(const Event& e) {
+  if (holding_) held_.push_back(e);
+  else trace_.event(e);
 }
 
 FnCall Machine::current(FnGroup group) const {
@@ -680,9 +685,16 @@ BlockResult Machine::execute(const BlockRequest& request) {
   if (failed()) return BlockResult::Error;
   // 3. Auxiliary functions that start before the motion (Table 7), in written order.
   apply_codes(Timing::Before);
-  // 4. The action of the block.
+  // 4. The action of the block; a corner before it is cut now, one after it waits.
+  const bool corner_here = corner_requested();
+  if (corner_) corner_codes();
+  const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
+  if (corner_here) holding_ = true;
+  const size_t block_from = held_.size();
   action();
   if (block_.set_position_after && !block_.error) set_position();
+  if (corner_) corner_finish(corner_here, block_from);
+  if (corner_here) corner_begin(start);
   if (failed()) return BlockResult::Error;
   // 5. Auxiliary functions that start after the motion, then stops and ends.
   apply_codes(Timing::After);
@@ -939,6 +951,11 @@ void Machine::emit_reset(const ResetState& before) {
 }
 
 void Machine::end_of_unit(uint32_t source) {
+  if (corner_) {
+    issues_.issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
+                   corner_->source, corner_->slot, -1});
+    release();
+  }
   if (!parabola_middle_ && !spline_.active) return;
   BlockWords none;
   BlockRequest request{nullptr, 0, &none, source};
@@ -954,20 +971,20 @@ void Machine::comment(const std::string& text, uint32_t source) {
   Event e{EventKind::Comment};
   e.text = text;
   e.source = source;
-  trace_.event(e);
+  out(e);
 }
 
 void Machine::block_start(uint32_t source) {
   Event e{EventKind::Block};
   e.source = source;
-  trace_.event(e);
+  out(e);
 }
 
 void Machine::message(const std::string& text, uint32_t source) {
   Event e{EventKind::Message};
   e.text = text;
   e.source = source;
-  trace_.event(e);
+  out(e);
 }
 
 }  // namespace ncc

@@ -361,6 +361,27 @@ class Machine {
   std::map<int, AxisValues> local_offsets_;  // ISO G52: the local shift of each work offset
   std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
   double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
+
+  // ISO ,C and ,R (§8.3): the move before a corner is held back (with every event
+  // after it) until the next block's move shows where the corner is cut.
+  struct Corner {
+    bool fillet = false;
+    double size = 0;         // program units
+    uint32_t source = 0;     // the block that asks for it
+    int slot = 0;            // its word
+    size_t incoming = 0;     // index in held_ of the move it ends
+    AxisValues start{};      // where that move starts (trace coordinates)
+  };
+  std::optional<Corner> corner_;
+  std::vector<Event> held_;
+  bool holding_ = false;
+  std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
+  void out(const Event& e);                   // to the trace, or held back
+  bool corner_requested() const;
+  void corner_begin(const AxisValues& start);
+  void corner_finish(bool another, size_t block_from);
+  void corner_codes();                        // E-06: what the block after a corner may hold
+  void release();
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
   std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
   double speed_ = 0;

@@ -761,9 +761,13 @@ void Machine::rotation_on() {
 }
 
 void Machine::comp_on_arc_rules() {
-  // §8.10: compensation starts and ends on a straight move, and changes side only there.
   const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
-  if (!arc || modal_.comp == block_.comp_before || !has_axis_word()) return;
+  if (!arc || !has_axis_word()) return;
+  // §8.11 (E-15): the length offset does not change on a helix.
+  if (has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.compensation.length)
+    report(DiagId::ArcForm, 0, "the tool length offset cannot change in a helical move (E-15): change it on a straight move");
+  // §8.10: compensation starts and ends on a straight move, and changes side only there.
+  if (modal_.comp == block_.comp_before) return;
   const char* what = block_.comp_before == 0 ? "cutter radius compensation cannot start on an arc (E-11)"
                      : modal_.comp == 0      ? "cutter radius compensation cannot end on an arc (E-13)"
                                              : "cutter radius compensation changes side only on a straight move (E-14)";

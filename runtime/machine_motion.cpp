@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "corner.h"
 #include "machine.h"
 #include "spline.h"
 #include "support/text.h"
@@ -676,6 +677,133 @@ double Machine::timer_dwell() {
 
 std::string Machine::dwell_address() const {
   return conv_.dwell_word ? std::string(1, conv_.dwell_word) : std::string("a dwell address, which this machine lacks");
+}
+
+}  // namespace ncc
+
+// ---- Chamfers and fillets (ISO §8.3) ---------------------------------------------------
+
+namespace ncc {
+
+namespace {
+bool is_move(const Event& e) { return e.kind == EventKind::Linear || e.kind == EventKind::Arc; }
+}  // namespace
+
+bool Machine::corner_requested() const {
+  return conv_.corners && (has_slot(second_slot('C')) || has_slot(second_slot('R')));
+}
+
+void Machine::release() {
+  holding_ = false;
+  corner_.reset();
+  chained_start_.reset();
+  for (const Event& e : held_) trace_.event(e);
+  held_.clear();
+}
+
+void Machine::corner_codes() {
+  // E-06: after a corner only G01-G03, G90/G91, G20/G21, G04 and M codes but M06.
+  for (size_t i = 0; i < block_.request->code_count; ++i)
+    for (const FnCall& call : sem_.codes[block_.request->codes[i]].calls) {
+      const FnGroup g = fn_group(call.fn);
+      const bool ok = call.fn == Fn::MotionLinear || call.fn == Fn::MotionArcCw || call.fn == Fn::MotionArcCcw ||
+                      g == FnGroup::Distance || g == FnGroup::Units || call.fn == Fn::Dwell ||
+                      (call.fn != Fn::ToolChange && sem_.codes[block_.request->codes[i]].name[0] == 'M');
+      if (!ok)
+        issue({DiagId::CornerForm,
+               diag_message(DiagId::CornerForm, fmt::format("{} cannot stand in the block after it (E-06)", sem_.codes[block_.request->codes[i]].name)),
+               block_.request->source, -1, static_cast<int>(block_.request->codes[i])});
+    }
+}
+
+void Machine::corner_begin(const AxisValues& start) {
+  const bool fillet = has_slot(second_slot('R'));
+  const int slot = second_slot(fillet ? 'R' : 'C');
+  const double size = slot_value(slot);
+  const bool feed = modal_.motion == Fn::MotionLinear || modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
+  size_t incoming = held_.size();
+  for (size_t i = 0; i < held_.size(); ++i)
+    if (is_move(held_[i])) incoming = i;
+  std::string why = !feed || modal_.cycle >= 0 ? "it follows a feed move G01, G02 or G03 only (E-03)"
+                    : modal_.polar            ? "it is not made in polar coordinates, G16 (E-07)"
+                    : incoming == held_.size() ? "its block makes no feed move (E-03)"
+                                               : "";
+  if (!why.empty()) {
+    report_slot(DiagId::CornerForm, slot, why);
+    release();
+    return;
+  }
+  corner_ = Corner{fillet, size, block_.request->source, slot, incoming, chained_start_.value_or(start)};
+  chained_start_.reset();
+}
+
+void Machine::corner_finish(bool another, size_t block_from) {
+  Corner c = *corner_;
+  size_t outgoing = c.incoming + 1;
+  while (outgoing < held_.size() && !is_move(held_[outgoing])) ++outgoing;
+  auto fail = [&](const std::string& why) {
+    issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, why), c.source, c.slot, -1});
+    if (!another) return release();
+    // This block's own corner still waits: only what came before it goes out.
+    for (size_t i = 0; i < block_from; ++i) trace_.event(held_[i]);
+    held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(block_from));
+    corner_.reset();
+  };
+  if (outgoing == held_.size() || modal_.motion == Fn::MotionRapid) return fail("the next block must make a feed move (E-04)");
+  const int u = modal_.plane.u, v = modal_.plane.v;
+  auto in_plane = [&](const AxisValues& p) { return corner::Vec(p[u], p[v]); };
+  auto element = [&](const AxisValues& from, const Event& e) {
+    corner::Element el{in_plane(from), in_plane(e.pos)};
+    if (e.kind == EventKind::Arc) {
+      el.arc = true;
+      el.c = {e.centre[0], e.centre[1]};
+      el.ccw = e.rotation > 0;
+      el.sweep = e.b * kPi / 180;
+    }
+    return el;
+  };
+  Event& in = held_[c.incoming];
+  Event& next = held_[outgoing];
+  const AxisValues corner_point = in.pos;
+  std::string why;
+  auto cut = corner::cut(element(c.start, in), element(corner_point, next), c.fillet, c.size, why);
+  if (!cut) return fail(why + " (E-02)");
+  // The other axes (a helix's) go along in proportion.
+  auto point = [&](const AxisValues& from, const AxisValues& to, double f, const corner::Vec& q) {
+    AxisValues p = from;
+    for (int i = 0; i < kAxisCount; ++i) p[i] = from[i] + (to[i] - from[i]) * f;
+    p[u] = q.x();
+    p[v] = q.y();
+    return p;
+  };
+  auto shorten = [&](Event& e, double radians) {
+    e.b -= radians * 180 / kPi;
+    const int turns = std::max(1, static_cast<int>(std::ceil(e.b / 360 - 1e-9)));
+    e.rotation = e.rotation < 0 ? -turns : turns;
+  };
+  const AxisValues t2 = point(corner_point, next.pos, cut->out_fraction, cut->t2);
+  in.pos = point(c.start, corner_point, cut->in_fraction, cut->t1);
+  if (in.kind == EventKind::Arc) shorten(in, cut->in_cut);
+  if (next.kind == EventKind::Arc) shorten(next, cut->out_cut);
+  Event joint{cut->fillet ? EventKind::Arc : EventKind::Linear};
+  joint.source = c.source;
+  joint.pos = t2;
+  if (cut->fillet) {
+    joint.plane = modal_.plane;
+    joint.centre[0] = cut->centre.x();
+    joint.centre[1] = cut->centre.y();
+    joint.rotation = cut->ccw ? 1 : -1;
+    joint.a = c.size;
+    joint.b = cut->fillet_sweep * 180 / kPi;
+  }
+  held_.insert(held_.begin() + static_cast<std::ptrdiff_t>(c.incoming) + 1, joint);
+  if (!another) {
+    release();
+    return;
+  }
+  // The outgoing move has a corner of its own: it stays held, starting at T2.
+  corner_.reset();
+  chained_start_ = t2;
 }
 
 }  // namespace ncc

@@ -339,6 +339,14 @@ void Reader::read(const Piece& piece) {
   SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
   std::vector<std::string> comments;
   for (auto [from, to] : piece.comments) comments.emplace_back(source_.text().substr(from + 1, to - from - 2));
+  // §8.3 (E-05): what follows a chamfer or fillet is a move, not an empty or comment block.
+  const bool after_corner = corner_.has_value();
+  if (after_corner && trim(sanitized_).empty()) {
+    diags_.report(DiagId::ProgramStructure, whole, "a comment block cannot follow a block with a chamfer or fillet (E-05)");
+    new_block(whole).has_errors = true;
+    corner_.reset();
+  }
+  corner_.reset();
   if (trim(sanitized_).empty()) {
     // A comment alone: kept for the listing, runs nothing (an ELSE may follow it).
     new_block(whole).comments = std::move(comments);
@@ -661,10 +669,25 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
     block_.words.push_back(std::move(w));
   }
   if (ctx->COMMA()) {
-    // §8.3: ,C chamfer and ,R fillet.
-    diags_.report(DiagId::Unsupported, range(ctx->COMMA()->getSymbol(), ctx->value()->getStop()),
-                  "a chamfer or fillet (,C ,R)", "the corner is not inserted yet");
-    block_.has_errors = true;
+    // §8.3: ,C chamfer and ,R fillet: the second C or R word, which the runtime reads.
+    const char letter = ctx->LETTER()->getText()[0];
+    bool literal = false;
+    ir::Word w;
+    w.kind = ir::WordKind::Parameter;
+    w.address = std::string(1, letter) + "'";
+    w.text = ctx->value()->getText();
+    w.range = range(ctx->COMMA()->getSymbol(), ctx->value()->getStop());
+    w.value = value(ctx->value(), literal);
+    if (letter == 'C' || letter == 'R') {
+      w.slot = static_cast<uint8_t>(second_slot(letter));
+      corner_ = w.range;
+    } else {
+      diags_.report(DiagId::ValueForm, w.range, "','", "C (a chamfer) or R (a fillet) after it", "," + w.address.substr(0, 1) + w.text);
+      w.kind = ir::WordKind::Ignored;
+      block_.has_errors = true;
+    }
+    literal_integer.push_back(literal);
+    block_.words.push_back(std::move(w));
   }
   // §8.12, §8.13, §8.17 (E-16, E-19, E-24): G51, G52 and G68 stand in blocks of their
   // own; the modal G90/G91 and G17-G19 may join them (decision 27).

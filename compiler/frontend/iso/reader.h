@@ -115,6 +115,7 @@ class Reader {
   std::vector<LocalCall> local_calls_;  // the M97 calls of this unit
   size_t next_label_ = 0;
   bool in_word_ = false;       // reading an address's value (ROUND keeps decimals there)
+  std::optional<SourceRange> corner_;  // the ,C or ,R of the block before (E-05)
   std::vector<ProgramCall> calls_;
   ir::Block block_;  // being read
 };
