@@ -36,6 +36,28 @@ std::optional<std::string> read_called_file(const std::string& path) {
   return buffer.str();
 }
 
+std::string library_root(const ReadOptions& options, const std::string& setting, const std::string& caller) {
+  namespace fs = std::filesystem;
+  fs::path root = !options.library.empty() ? fs::path(options.library)
+                  : !setting.empty()       ? fs::path(setting)
+                                           : fs::path(caller).parent_path();
+  return root.lexically_normal().string();
+}
+
+std::optional<uint32_t> load_called_file(SourceManager& sources, const std::string& root, const std::string& name,
+                                         std::initializer_list<std::string_view> extensions, const std::string& shown,
+                                         SourceRange at, Diagnostics& diags) {
+  const std::filesystem::path base = std::filesystem::path(root) / name;
+  std::string tried;
+  for (std::string_view ext : extensions) {
+    const std::string path = base.string() + std::string(ext);
+    if (auto text = read_called_file(path)) return sources.add(path, std::move(*text));
+    if (!ext.empty()) tried += (tried.empty() ? "" : "|") + std::string(ext);
+  }
+  diags.report(DiagId::ProgramNotFound, at, shown, base.string() + (tried.empty() ? "" : "[" + tried + "]"));
+  return std::nullopt;
+}
+
 std::string describe_char(std::string_view text, size_t at, size_t& length) {
   length = 1;
   unsigned char c = static_cast<unsigned char>(text[at]);

@@ -1,6 +1,7 @@
 // A dialect front end: source text to IR, plus the tables the checker reads.
 #pragma once
 
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <set>
@@ -33,6 +34,15 @@ std::vector<std::string_view> dialect_names();
 // The text of a program file a program calls (NC-110 CLS, pp G72): nothing if it is
 // not a regular file of at most 256 MiB or cannot be read.
 std::optional<std::string> read_called_file(const std::string& path);
+
+// Where the programs a program calls are: --lib, else the dialect's profile setting,
+// else the calling program's folder.
+std::string library_root(const ReadOptions& options, const std::string& setting, const std::string& caller);
+// The program file a call names: the first `<root>/<name><extension>` that is one,
+// added to the sources; nothing (reported at `at` as program `shown`) if none is.
+std::optional<uint32_t> load_called_file(SourceManager& sources, const std::string& root, const std::string& name,
+                                         std::initializer_list<std::string_view> extensions, const std::string& shown,
+                                         SourceRange at, Diagnostics& diags);
 
 // A character outside a comment, for a message: "'*'", "lower-case 'x'", "'Д'
 // (U+0414)", "byte 0xFF"; `length` is set to its bytes.

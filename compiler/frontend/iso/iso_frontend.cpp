@@ -4,7 +4,6 @@
 #include "iso_frontend.h"
 
 #include <deque>
-#include <filesystem>
 #include <set>
 
 #include "reader.h"
@@ -13,7 +12,6 @@ namespace ncc::iso {
 
 namespace {
 
-namespace fs = std::filesystem;
 
 class IsoFrontend final : public Frontend {
  public:
@@ -41,9 +39,7 @@ class IsoFrontend final : public Frontend {
     main.run();
     std::deque<ProgramCall> pending(main.calls().begin(), main.calls().end());
     // Called programs the file does not hold: O<nnnn>[.nc] in the library (decision 12).
-    fs::path root = (!options.library.empty() ? fs::path(options.library)
-                     : !s_.library.empty()    ? fs::path(s_.library)
-                                              : fs::path(sources.file(file).path()).parent_path()).lexically_normal();
+    const std::string root = library_root(options, s_.library, sources.file(file).path());
     std::set<std::string> known, missing;
     for (const ir::Unit& u : program.units) known.insert(u.name);
     while (!pending.empty() && !diags.limit_reached()) {
@@ -51,22 +47,14 @@ class IsoFrontend final : public Frontend {
       pending.pop_front();
       if (missing.count(call.name)) program.units[call.unit].blocks[call.block].has_errors = true;
       if (!known.insert(call.name).second) continue;
-      fs::path found;
-      std::optional<std::string> text;
-      for (const char* ext : {"", ".nc", ".ngc", ".tap", ".txt"})
-        if ((text = read_called_file((root / (call.name + ext)).string()))) {
-          found = root / (call.name + ext);
-          break;
-        }
-      if (!text) {
-        diags.report(DiagId::ProgramNotFound, call.range, call.name, (root / call.name).string() + "[.nc|.ngc|.tap|.txt]");
+      auto f = load_called_file(sources, root, call.name, {"", ".nc", ".ngc", ".tap", ".txt"}, call.name, call.range, diags);
+      if (!f) {
         program.units[call.unit].blocks[call.block].has_errors = true;
         missing.insert(call.name);
         continue;
       }
-      uint32_t f = sources.add(found.string(), std::move(*text));
-      program.files.push_back(f);
-      Reader called(s_, program, sources.file(f), f, diags, space, call.name);
+      program.files.push_back(*f);
+      Reader called(s_, program, sources.file(*f), *f, diags, space, call.name);
       called.run();
       for (const ProgramCall& c : called.calls()) pending.push_back(c);
     }

@@ -3,7 +3,6 @@
 #include "pp_frontend.h"
 
 #include <deque>
-#include <filesystem>
 #include <set>
 
 #include "reader.h"
@@ -12,7 +11,6 @@ namespace ncc::pp {
 
 namespace {
 
-namespace fs = std::filesystem;
 
 class PpFrontend final : public Frontend {
  public:
@@ -42,31 +40,20 @@ class PpFrontend final : public Frontend {
     main.run();
     std::deque<MacroCall> pending(main.macro_calls().begin(), main.macro_calls().end());
     // Macros live in files L<nnnn> of the library (§2.3.5, decision 13).
-    fs::path root = (!options.library.empty() ? fs::path(options.library)
-                     : !s_.library.empty()    ? fs::path(s_.library)
-                                              : fs::path(sources.file(file).path()).parent_path()).lexically_normal();
+    const std::string root = library_root(options, s_.library, sources.file(file).path());
     std::set<uint32_t> done;
     while (!pending.empty() && !diags.limit_reached()) {
       MacroCall call = pending.front();
       pending.pop_front();
       if (!done.insert(call.number).second) continue;
-      std::string name = Reader::macro_name(call.number);
-      fs::path found;
-      std::optional<std::string> text;
-      for (const fs::path& candidate : {root / name, root / (name + ".pp")})
-        if ((text = read_called_file(candidate.string()))) {
-          found = candidate;
-          break;
-        }
-      if (!text) {
-        diags.report(DiagId::ProgramNotFound, call.range, "L" + std::to_string(call.number),
-                     (root / name).string() + "[.pp]");
+      auto f = load_called_file(sources, root, Reader::macro_name(call.number), {"", ".pp"},
+                                "L" + std::to_string(call.number), call.range, diags);
+      if (!f) {
         program.units[call.unit].blocks[call.block].has_errors = true;
         continue;
       }
-      uint32_t f = sources.add(found.string(), std::move(*text));
-      program.files.push_back(f);
-      Reader macro(s_, program, sources.file(f), f, diags, spaces, call.number);
+      program.files.push_back(*f);
+      Reader macro(s_, program, sources.file(*f), *f, diags, spaces, call.number);
       macro.run();
       for (const MacroCall& c : macro.macro_calls()) pending.push_back(c);
     }
