@@ -13,13 +13,6 @@ Vec left(const Vec& d) { return {-d.y(), d.x()}; }
 double cross(const Vec& a, const Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
 double radius(const Element& e) { return (e.a - e.c).norm(); }
 
-// The direction of travel at point p of the element.
-Vec tangent(const Element& e, const Vec& p) {
-  if (!e.arc) return (e.b - e.a).normalized();
-  Vec t = left((p - e.c).normalized());
-  return e.ccw ? t : Vec(-t);
-}
-
 // The angle travelled along an arc from `from` to `to` (0..2pi in its direction).
 double travelled(const Element& e, const Vec& from, const Vec& to) {
   double a = std::atan2(cross(from - e.c, to - e.c), (from - e.c).dot(to - e.c));
@@ -104,6 +97,16 @@ double fraction(const Element& e, const Vec& p) {
 
 }  // namespace
 
+Vec tangent(const Element& e, const Vec& p) {
+  if (!e.arc) return (e.b - e.a).normalized();
+  Vec t = left((p - e.c).normalized());
+  return e.ccw ? t : Vec(-t);
+}
+
+std::vector<Vec> offsets_meet(const Element& a, const Element& b, double size, int side) {
+  return intersect(offset(a, size, side), offset(b, size, side));
+}
+
 std::optional<Cut> cut(const Element& in, const Element& out, bool fillet, double size, std::string& why) {
   const Vec p = in.b;
   const Vec din = tangent(in, p), dout = tangent(out, p);
@@ -133,7 +136,7 @@ std::optional<Cut> cut(const Element& in, const Element& out, bool fillet, doubl
   } else {
     // The centre lies on the inside of the turn, at the radius from both elements.
     const int side = turn > 0 ? 1 : -1;
-    std::vector<Vec> centres = intersect(offset(in, size, side), offset(out, size, side));
+    std::vector<Vec> centres = offsets_meet(in, out, size, side);
     if (centres.empty()) {
       why = "no circle of that radius touches both moves";
       return std::nullopt;

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace ncc::corner {
 
@@ -30,6 +31,12 @@ struct Cut {
   double fillet_sweep = 0;  // radians
   double in_fraction = 1, out_fraction = 0;  // where T1 and T2 lie along their elements (0..1)
 };
+
+// The direction of travel at point p of the element.
+Vec tangent(const Element& e, const Vec& p);
+// The points where the element's offset by `size` to `side` (+1 left of travel, -1
+// right: a line shifted, an arc's circle grown or shrunk) meets the other's.
+std::vector<Vec> offsets_meet(const Element& a, const Element& b, double size, int side);
 
 // A chamfer whose ends lie at the straight distance `size` from the corner on each
 // element, or a fillet of radius `size` tangent to both; the reason when there is none.

@@ -14,7 +14,18 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
-    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues) {}
+    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues),
+      path_(trace, &Machine::path_report, this) {}
+
+void Machine::path_report(void* self, uint32_t source, const std::string& what) {
+  auto* m = static_cast<Machine*>(self);
+  m->issues_.issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, "cutter compensation: " + what), source, -1, -1});
+}
+
+void Machine::end_run() {
+  if (holding_) release();
+  if (conv_.comp_path) path_.finish();
+}
 
 void Machine::power_on() {
   machine_ = config_.initial_position;
@@ -123,11 +134,21 @@ void Machine::emit(Event e) {
   // rest does not (the machine's state still follows it in a dry run).
   if (block_.error) return;
   e.source = block_.request ? block_.request->source : 0;
-  out(e);
+  // A move starts where the machine stands (it moves after its event).
+  const bool move = e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc;
+  if (!move) return out(e);
+  const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
+  out(e, &start);
 }
 
-void Machine::out(const Event& e) {
-  if (holding_) held_.push_back(e);
+void Machine::out(const Event& e, const AxisValues* start) {
+  if (!holding_) return to_path(e, start);
+  if (held_.empty() && start) hold_start_ = *start;
+  held_.push_back(e);
+}
+
+void Machine::to_path(const Event& e, const AxisValues* start) {
+  if (conv_.comp_path) path_.event(e, start);
   else trace_.event(e);
 }
 
@@ -789,6 +810,7 @@ void Machine::action() {
     return;
   }
   if (block_.reference_iso) {
+    if (conv_.comp_path) path_.suspend();  // §8.10: the vector is zeroed on the way
     block_.reference_iso == 1 ? reference_return() : reference_leave();
     return;
   }
@@ -801,6 +823,7 @@ void Machine::action() {
     return;
   }
   if (conv_.fanuc_rules) comp_on_arc_rules();
+  if (conv_.comp_path && (modal_.cycle >= 0 || block_.block_offset == 0) && axes) path_.suspend();  // G53, cycles (§8.10)
   if (modal_.cycle >= 0) {
     if (conv_.cycle_two_levels) nc110_cycle();
     else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) conv_.fanuc_cycles ? repeat_cycle() : cycle();
@@ -883,6 +906,7 @@ void Machine::finish() {
     // returns to its initial state (§8), which the trace shows as it changes.
     if (parabola_middle_) report(DiagId::ParabolaPair, 0, "the program ended");
     if (spline_.active) report(DiagId::SplineStructure, 0, "the program ended inside a spline: (ESP) is missing");
+    if (conv_.comp_path) path_.finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
     const ResetState before{modal_, frame_, position_offset_, limited_, zones_, tolerance_, turning_};

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "cutter_path.h"
 #include "machine_config.h"
 #include "program_semantics.h"
 #include "support/diagnostics.h"
@@ -76,6 +77,8 @@ class Machine {
   BlockResult execute(const BlockRequest& block);
   // The end of a program unit: pending multi-block constructs must be complete.
   void end_of_unit(uint32_t source);
+  // The run is over (ended, or stopped by an error): what waits goes to the trace.
+  void end_run();
   // Operator text of a block (a comment), shown when the block runs.
   void comment(const std::string& text, uint32_t source);
   // A block starts (the trace's `block` events, pp P-10.2).
@@ -375,8 +378,13 @@ class Machine {
   std::optional<Corner> corner_;
   std::vector<Event> held_;
   bool holding_ = false;
+  AxisValues hold_start_{};                   // where the first held move starts
   std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
-  void out(const Event& e);                   // to the trace, or held back
+  void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
+  void to_path(const Event& e, const AxisValues* start);        // through the cutter path (ISO)
+  void pass_on(size_t count);                 // the first `count` held events, on
+  CutterPath path_;
+  static void path_report(void* self, uint32_t source, const std::string& what);
   bool corner_requested() const;
   void corner_begin(const AxisValues& start);
   void corner_finish(bool another, size_t block_from);

@@ -693,12 +693,24 @@ bool Machine::corner_requested() const {
   return conv_.corners && (has_slot(second_slot('C')) || has_slot(second_slot('R')));
 }
 
+void Machine::pass_on(size_t count) {
+  // Each held move starts where the one before it ends.
+  AxisValues at = hold_start_;
+  for (size_t i = 0; i < count; ++i) {
+    const Event& e = held_[i];
+    const bool move = e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc;
+    to_path(e, move ? &at : nullptr);
+    if (move) at = e.pos;
+  }
+  hold_start_ = at;
+  held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(count));
+}
+
 void Machine::release() {
   holding_ = false;
   corner_.reset();
   chained_start_.reset();
-  for (const Event& e : held_) trace_.event(e);
-  held_.clear();
+  pass_on(held_.size());
 }
 
 void Machine::corner_codes() {
@@ -745,8 +757,7 @@ void Machine::corner_finish(bool another, size_t block_from) {
     issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, why), c.source, c.slot, -1});
     if (!another) return release();
     // This block's own corner still waits: only what came before it goes out.
-    for (size_t i = 0; i < block_from; ++i) trace_.event(held_[i]);
-    held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(block_from));
+    pass_on(block_from);
     corner_.reset();
   };
   if (outgoing == held_.size() || modal_.motion == Fn::MotionRapid) return fail("the next block must make a feed move (E-04)");

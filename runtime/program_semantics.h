@@ -89,6 +89,7 @@ struct Conventions {
   double initial_feed = 0;          // the feed in force at the start (0: none until F is programmed)
   bool fanuc_rules = false;         // ISO E-08..E-27: what G51/G68, G91 and cutter compensation forbid
   bool corners = false;             // ISO ,C and ,R (the second C and R words): a chamfer or fillet after the move
+  bool comp_path = false;           // ISO: the trace shows the tool centre's path under G41/G42
   char peck_factor_word = 0;        // G83: the factor on the peck, down to
   char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
   char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)

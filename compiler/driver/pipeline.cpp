@@ -138,6 +138,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
     }
     if (status == vm::RunStatus::EndOfInformation) break;
   }
+  machine.end_run();
   trace.flush();
   result.steps = vm.steps();
   if (s.diags.has_errors()) result.ok = false;

@@ -1,0 +1,268 @@
+#include "cutter_path.h"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "corner.h"
+
+namespace ncc {
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+bool is_move(const Event& e) { return e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc; }
+double cross(const corner::Vec& a, const corner::Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+}  // namespace
+
+struct CutterPath::State {
+  using Vec = corner::Vec;
+  State(TraceSink& o, Report r, void* c) : out_(o), report_(r), context_(c) {}
+  void send(const Event& e);
+  void event(const Event& e, const AxisValues* start);
+  void begin(const Event& move, const corner::Element& el, const AxisValues& from);
+  void join(const Event& move, const corner::Element& el);
+  void leave(bool right_angle);
+  void end_waiting(const Vec& end);
+  Vec normal(const corner::Element& el, const Vec& at, int side) const;
+
+  TraceSink& out_;
+  Report report_;
+  void* context_;
+  int side_ = 0;       // 1 left (G41), 2 right (G42), 0 off
+  double radius_ = 0;  // program units
+  uint32_t switched_at_ = 0;  // the block whose CutterComp event set side_
+  uint32_t leave_source_ = 0; // the block a right-angle leave belongs to
+  bool right_angle_ = false;  // compensation started in a block of its own
+  Plane plane_;
+  // The move waiting for the next one, and what came after it.
+  std::vector<Event> held_;
+  std::optional<size_t> waiting_;
+  corner::Element element_;   // its programmed element
+  int waiting_side_ = 0;
+  double waiting_radius_ = 0;
+  bool startup_ = false;      // the start-up line: it ends beside the next move's start
+  Vec from_{0, 0};            // where its offset path starts
+};
+
+CutterPath::CutterPath(TraceSink& out, Report report, void* context) : s_(std::make_unique<State>(out, report, context)) {}
+CutterPath::~CutterPath() = default;
+void CutterPath::event(const Event& e, const AxisValues* start) { s_->event(e, start); }
+
+void CutterPath::State::send(const Event& e) {
+  if (waiting_) held_.push_back(e);
+  else out_.event(e);
+}
+
+corner::Vec CutterPath::State::normal(const corner::Element& el, const Vec& at, int side) const {
+  const Vec t = corner::tangent(el, at);
+  const Vec left(-t.y(), t.x());
+  return side == 1 ? left : Vec(-left);
+}
+
+void CutterPath::State::event(const Event& e, const AxisValues* start) {
+  if (e.kind == EventKind::Plane) plane_ = e.plane;
+  if (e.kind == EventKind::CutterComp) {
+    if (e.n != side_ || e.a != radius_) {
+      if (side_ == 0) right_angle_ = true;  // until a move of the same block shows otherwise
+      if (e.n == 0) leave_source_ = e.source;
+      side_ = e.n;
+      radius_ = e.a;
+      switched_at_ = e.source;
+    }
+    send(e);
+    return;
+  }
+  if (!is_move(e) || !start) {
+    send(e);
+    return;
+  }
+  const int u = e.kind == EventKind::Arc ? e.plane.u : plane_.u, v = e.kind == EventKind::Arc ? e.plane.v : plane_.v;
+  corner::Element el{Vec((*start)[u], (*start)[v]), Vec(e.pos[u], e.pos[v])};
+  if (e.kind == EventKind::Arc) {
+    el.arc = true;
+    el.c = {e.centre[0], e.centre[1]};
+    el.ccw = e.rotation > 0;
+    el.sweep = e.b * kPi / 180;
+  }
+  const bool in_plane = (el.b - el.a).norm() > 1e-9 || el.arc;
+  if (!in_plane) {
+    // A move along the plane's normal keeps the offset it stands at.
+    if (waiting_) held_.push_back(e);
+    else out_.event(e);
+    return;
+  }
+  if (side_ == 0) {
+    // G40: leave along this move when it is in the block that cancels, else at a right
+    // angle first (§8.10, figures 32 and 33).
+    if (waiting_) leave(e.source != switched_at_);
+    out_.event(e);
+    return;
+  }
+  if (!waiting_) {
+    begin(e, el, *start);
+    return;
+  }
+  join(e, el);
+}
+
+void CutterPath::State::begin(const Event& move, const corner::Element& el, const AxisValues& from) {
+  // Type A (§8.10): with G41/G42 in this move's block the move is the start-up line and
+  // ends beside the next move's start; in a block of its own the tool first goes at a
+  // right angle to the offset of this move's start.
+  if (move.source == switched_at_) right_angle_ = false;
+  if (right_angle_) {
+    const Vec entry = el.a + radius_ * normal(el, el.a, side_);
+    const Plane p = move.kind == EventKind::Arc ? move.plane : plane_;
+    Event in{EventKind::Linear};
+    in.source = move.source;
+    in.pos = from;  // the other axes stay where the move starts
+    in.pos[p.u] = entry.x();
+    in.pos[p.v] = entry.y();
+    out_.event(in);
+    from_ = entry;
+    startup_ = false;
+    right_angle_ = false;
+  } else {
+    from_ = el.a;
+    startup_ = move.kind != EventKind::Arc;  // an arc cannot start it (E-11, reported by the runtime)
+  }
+  held_.push_back(move);
+  waiting_ = held_.size() - 1;
+  element_ = el;
+  waiting_side_ = side_;
+  waiting_radius_ = radius_;
+}
+
+void CutterPath::State::end_waiting(const Vec& end) {
+  Event& w = held_[*waiting_];
+  const int u = w.kind == EventKind::Arc ? w.plane.u : plane_.u, v = w.kind == EventKind::Arc ? w.plane.v : plane_.v;
+  w.pos[u] = end.x();
+  w.pos[v] = end.y();
+  if (w.kind == EventKind::Arc) {
+    // The same centre; the radius and the sweep of the offset arc.
+    const Vec c = element_.c;
+    w.a = (end - c).norm();
+    double sweep = std::atan2(cross(from_ - c, end - c), (from_ - c).dot(end - c));
+    if (!element_.ccw) sweep = -sweep;
+    if (sweep <= 1e-12) sweep += 2 * kPi;
+    // A full circle or a helix keeps its whole turns.
+    const double turns = std::floor(element_.sweep / (2 * kPi) + 1e-9);
+    if (element_.sweep - turns * 2 * kPi < 1e-9 && turns >= 1) sweep = element_.sweep;
+    w.b = sweep * 180 / kPi;
+    const int n = std::max(1, static_cast<int>(std::ceil(w.b / 360 - 1e-9)));
+    w.rotation = w.rotation < 0 ? -n : n;
+  }
+  // Moves along the normal after it stand at its end.
+  for (size_t i = *waiting_ + 1; i < held_.size(); ++i)
+    if (is_move(held_[i])) {
+      held_[i].pos[u] = end.x();
+      held_[i].pos[v] = end.y();
+    }
+}
+
+void CutterPath::State::join(const Event& move, const corner::Element& el) {
+  const Vec p = el.a;  // the programmed corner
+  const int side = waiting_side_;
+  const double r = waiting_radius_;
+  const Vec n1 = normal(element_, p, side);
+  Vec end = p + r * n1, next = end;
+  std::optional<Event> around;  // the arc around an outside corner
+  const int u = plane_.u, v = plane_.v;
+  if (startup_) {
+    // Type A start-up: beside the next move's start.
+    end = next = p + radius_ * normal(el, p, side_);
+  } else if (side_ == side && radius_ == r) {
+    const Vec d1 = corner::tangent(element_, p), d2 = corner::tangent(el, p);
+    const double turn = cross(d1, d2);
+    const bool inside = side == 1 ? turn > 1e-9 : turn < -1e-9;
+    const bool straight = std::fabs(turn) <= 1e-9 && d1.dot(d2) > 0;
+    if (straight) {
+      end = next = p + r * n1;
+    } else if (inside) {
+      // The offset moves meet at their intersection nearest the corner.
+      auto points = corner::offsets_meet(element_, el, r, side == 1 ? 1 : -1);
+      if (points.empty()) {
+        report_(context_, move.source, "the offset paths of this move and the one before do not meet: a move shorter than the tool radius or an arc smaller than it (E-12)");
+      } else {
+        Vec best = points.front();
+        for (const Vec& q : points)
+          if ((q - p).norm() < (best - p).norm()) best = q;
+        end = next = best;
+      }
+    } else {
+      // Outside: around the corner at the radius (§8.10, figure 31).
+      end = p + r * n1;
+      next = p + r * normal(el, p, side);
+      Event arc{EventKind::Arc};
+      arc.source = move.source;
+      arc.plane = plane_;
+      arc.pos = held_[*waiting_].pos;
+      arc.pos[u] = next.x();
+      arc.pos[v] = next.y();
+      arc.centre[0] = p.x();
+      arc.centre[1] = p.y();
+      arc.a = r;
+      double sweep = std::atan2(cross(end - p, next - p), (end - p).dot(next - p));
+      arc.rotation = sweep > 0 ? 1 : -1;
+      arc.b = std::fabs(sweep) * 180 / kPi;
+      around = arc;
+    }
+  }
+  // A side or radius change (G41 <-> G42, a new D): the move ends beside its own end
+  // and the next one starts there (§8.10, figure 34: only on straight moves, E-14).
+  if (el.arc && el.ccw == (side_ == 1)) {
+    // An arc turning towards the tool: its offset radius shrinks (E-12).
+    if ((el.a - el.c).norm() <= radius_ + 1e-9)
+      report_(context_, move.source, "the arc's radius is not larger than the tool radius on its inside (E-12)");
+  }
+  end_waiting(end);
+  if (around) {
+    around->pos = held_[*waiting_].pos;
+    around->pos[u] = next.x();
+    around->pos[v] = next.y();
+    held_.push_back(*around);
+  }
+  for (const Event& e : held_) out_.event(e);
+  held_.clear();
+  waiting_.reset();
+  from_ = next;
+  held_.push_back(move);
+  waiting_ = 0;
+  element_ = el;
+  waiting_side_ = side_;
+  waiting_radius_ = radius_;
+  startup_ = false;
+}
+
+void CutterPath::State::leave(bool right_angle) {
+  const Vec p = element_.b;
+  const Vec end = p + waiting_radius_ * normal(element_, p, waiting_side_);
+  end_waiting(startup_ ? p : end);
+  if (right_angle && !startup_) {
+    // Back to the programmed end at a right angle (§8.10, figure 33).
+    Event back{EventKind::Linear};
+    back.source = side_ == 0 ? leave_source_ : held_[*waiting_].source;
+    back.pos = held_[*waiting_].pos;
+    back.pos[plane_.u] = p.x();
+    back.pos[plane_.v] = p.y();
+    held_.push_back(back);
+  }
+  for (const Event& e : held_) out_.event(e);
+  held_.clear();
+  waiting_.reset();
+  startup_ = false;
+}
+
+void CutterPath::suspend() {
+  if (s_->waiting_) s_->leave(false);
+  if (s_->side_ != 0) s_->right_angle_ = false;  // the next move starts up again along itself
+}
+
+void CutterPath::finish() {
+  if (s_->waiting_) s_->leave(true);
+}
+
+}  // namespace ncc
