@@ -94,9 +94,9 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
     else out_.event(e);
     return;
   }
-  if (side_ == 0) {
-    // G40: leave along this move when it is in the block that cancels, else at a right
-    // angle first (§8.10, figures 32 and 33).
+  if (side_ == 0 || radius_ <= 0) {
+    // G40 (or D0): leave along this move when it is in the block that cancels, else at
+    // a right angle first (§8.10, figures 32 and 33).
     if (waiting_) leave(e.source != switched_at_);
     out_.event(e);
     return;

@@ -54,6 +54,7 @@ void Machine::reset_state() {
   feed_.reset();
   if (conv_.initial_feed > 0) feed_ = conv_.initial_feed;
   last_rotation_ = 0;
+  initial_level_.reset();
   helix_pitch_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
@@ -203,6 +204,8 @@ void Machine::tool_length_event() {
 void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
+  // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
+  if (conv_.comp_path && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
   if (auto it = tool_offsets_.find(offset_number_); it != tool_offsets_.end()) e.a = to_program(it->second.radius);
   emit(e);
 }
@@ -260,12 +263,6 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PlaneXY:
     case Fn::PlaneZX:
     case Fn::PlaneYZ:
-      // ISO §8.10 (E-10): the plane stays while cutter compensation is on.
-      if (emit_events && conv_.fanuc_rules && modal_.comp != 0 &&
-          modal_.plane != kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2]) {
-        report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
-        break;
-      }
       modal_.plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
       if (emit_events) plane_event();
       break;
@@ -322,6 +319,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       } else {
         modal_.work_offset = call.arg;
         frame_.base.fill(call.arg);
+        const AxisValues local_before = frame_.local;
         frame_.local = local_offsets_.count(call.arg) ? local_offsets_[call.arg] : AxisValues{};
         refresh_base_origin();
         if (emit_events) {
@@ -330,12 +328,14 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
           if (auto it = offsets_.find(call.arg); it != offsets_.end())
             for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(call.arg, i));
           emit(e);
+          if (frame_.local != local_before) position_offset_event();  // ISO G52: its own local shift
         }
       }
       break;
     case Fn::CycleCancel:
       modal_.cycle = -1;
       cycle_ = {};
+      initial_level_.reset();
       break;
     case Fn::Cycle:
       if (cycle_active()) break;
@@ -375,19 +375,14 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         if (modal_.mist || modal_.flood) apply({Fn::CoolantOff}, scope, emit_events);
       }
       if (conv_.tool_change_iso && emit_events) {
-        // ISO §8.31: the spindle goes up to the tool-change position along Z (the
-        // reference point) and both compensations end for good.
+        // ISO §8.31: both compensations end for good, and the spindle goes up to the
+        // tool-change position along Z (the reference point).
+        modal_.comp = 0;
+        modal_.length = 0;
+        flush_compensation();
         AxisValues up = machine_;
         up[modal_.plane.w] = config_.reference_position[modal_.plane.w];
         if (conv_.tool_change_retract && up != machine_) rapid(up);
-        if (modal_.comp != 0) {
-          modal_.comp = 0;
-          cutter_comp_event();
-        }
-        if (modal_.length != 0) {
-          modal_.length = 0;
-          tool_length_event();
-        }
       }
       tool_loaded_ = tool_selected_;
       // NC-110 §2.7.7: M06 brings the corrector T selected into force.
@@ -689,6 +684,8 @@ BlockResult Machine::execute(const BlockRequest& request) {
   block_.request = &request;
   block_.compensation = compensation();
   block_.comp_before = modal_.comp;
+  block_.length_before = block_.compensation.length;
+  block_.plane_before = modal_.plane;
   auto failed = [&] { return block_.error && stop_on_error_; };
   if (request.dynamic_codes) check_dynamic_codes();
   if (failed()) return BlockResult::Error;
@@ -780,11 +777,14 @@ void Machine::apply_codes(Timing timing) {
 void Machine::action() {
   if (block_.operands) return;
   const bool axes = has_axis_word();
+  if (conv_.fanuc_rules) comp_on_arc_rules();
   if (block_.measure != Fn::Count) {
     measure();
     return;
   }
-  if (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word))) {
+  // ISO §8.4: G04 shares its block with a move and dwells after it.
+  const bool dwell_after = conv_.fanuc_rules && block_.dwell && axes;
+  if (!dwell_after && (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word)))) {
     if (axes) report(DiagId::DwellWithMotion, 0);
     dwell();
     return;
@@ -822,7 +822,7 @@ void Machine::action() {
     block_.scaling_on ? scaling_on() : rotation_on();
     return;
   }
-  if (conv_.fanuc_rules) comp_on_arc_rules();
+
   if (conv_.comp_path && (modal_.cycle >= 0 || block_.block_offset == 0) && axes) path_.suspend();  // G53, cycles (§8.10)
   if (modal_.cycle >= 0) {
     if (conv_.cycle_two_levels) nc110_cycle();
@@ -886,6 +886,7 @@ void Machine::action() {
       break;
   }
   if (block_.dwell_end) dwell_seconds(timer_dwell());
+  if (dwell_after) dwell();
 }
 
 void Machine::finish() {
@@ -951,7 +952,9 @@ void Machine::emit_reset(const ResetState& before) {
   // Origins set per axis (NC-110) come back to origin 0; GOST shows its offsets' events.
   std::array<int, kAxisCount> uniform{};
   uniform.fill(was.work_offset);
-  if (before.frame.base != uniform || before.frame.shift != before.position_offset) origin_event();
+  AxisValues shifted = before.frame.shift;  // G92 and (ISO) G52 make the position offset
+  for (int i = 0; i < kAxisCount; ++i) shifted[i] += before.frame.local[i];
+  if (before.frame.base != uniform || shifted != before.position_offset) origin_event();
   if (before.frame.transformed()) transform_event();
   // NC-110 §2.13.5: RESET cancels the working limits and the zones and gives the axes
   // the machine's tolerance again; no axis stays clamped.

@@ -206,6 +206,8 @@ class Machine {
     bool set_position_after = false;  // ISO G92 after a motion: its values are the second words
     bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
     int comp_before = 0;          // the cutter compensation when the block started
+    AxisValues length_before{};   // ... and the tool length offset
+    Plane plane_before;           // ... and the plane
   };
 
   // Words.
@@ -305,6 +307,7 @@ class Machine {
   void reference_return();    // ISO G28
   void reference_leave();     // ISO G29
   void set_local_offset();    // ISO G52
+  void length_zeroed(bool zero);  // ISO G28/G29: the length offset's event, zero or back
   void scaling_on();          // ISO G51
   void rotation_on();         // ISO G68
   bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
@@ -334,9 +337,9 @@ class Machine {
 
   // Cycles (machine_cycles.cpp).
   void cycle();
-  void repeat_cycle();  // ISO: L (or K) holes, the first's initial level for all
+  void repeat_cycle();  // ISO: L (or K) holes
   void iso_cycle();     // one ISO hole
-  std::optional<double> repeat_start_;
+  std::optional<double> initial_level_;  // ISO: the drilling axis where the cycle mode began (G98 returns there)
   void cycle_registers();
   void nc110_cycle_registers(bool definition);
   void nc110_cycle();
@@ -374,6 +377,7 @@ class Machine {
     int slot = 0;            // its word
     size_t incoming = 0;     // index in held_ of the move it ends
     AxisValues start{};      // where that move starts (trace coordinates)
+    bool inch = false;       // the units of its block
   };
   std::optional<Corner> corner_;
   std::vector<Event> held_;

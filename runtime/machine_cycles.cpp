@@ -41,7 +41,6 @@ void Machine::repeat_cycle() {
   }
   if (count == 0) cycle_registers();  // L0: the cycle's words are stored, no hole is made
   for (int i = 0; i < count && !block_.error; ++i) iso_cycle();
-  repeat_start_.reset();
 }
 
 void Machine::iso_cycle() {
@@ -69,14 +68,15 @@ void Machine::iso_cycle() {
     return;
   }
   // G90: R and the bottom are coordinates; G91: R from the initial level, the bottom
-  // from R (§8.23).
-  const double start = repeat_start_.value_or(machine_[d]);
-  repeat_start_ = start;
+  // from R (§8.23). The initial level is where the tool stood when the cycle mode
+  // began (§8.21: "the position before the cycle").
+  if (!initial_level_) initial_level_ = machine_[d];
+  const double start = *initial_level_;
   const AxisValues off = target_frame();
   const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
   const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
   const double down = bottom < level ? -1 : 1;  // the direction into the hole (G87: out of it)
-  if (pattern.in == In::Back && bottom * down < level * down) {
+  if (pattern.in == In::Back && bottom < level) {
     // §8.27: G87 bores from R up to Z, so Z lies above R.
     report(DiagId::CycleDefinition, 0, fmt::format("canned cycle G87 bores upwards from R: the bottom {} must lie above R {}",
                                                    four_decimals(to_program(bottom - off[d])), four_decimals(to_program(level - off[d]))));
@@ -234,8 +234,7 @@ void Machine::cycle() {
   }
   // G90: R and the depth are coordinates; G91: R is measured from the initial level
   // and the depth from R.
-  // A repeat (ISO L) starts from the first hole's initial level.
-  const double start = repeat_start_.value_or(machine_[d]);
+  const double start = machine_[d];
   AxisValues off = target_frame();
   const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
   const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
@@ -245,7 +244,6 @@ void Machine::cycle() {
   const double initial = below_level ? level : start;
   // ISO G99: back to R; G98 (and every other dialect): back to the initial level.
   const double back = conv_.fanuc_cycles && modal_.cycle_return_level ? level : initial;
-  if (conv_.fanuc_cycles) repeat_start_ = start;
   auto at = [&](double z) {
     AxisValues p = hole;
     p[d] = z;

@@ -238,8 +238,10 @@ void Machine::set_local_offset() {
 void Machine::reference_return() {
   // ISO §8.8: the named axes go at rapid through the point the words give (read in
   // G90/G91, in the work system) to the reference point; without words every axis
-  // goes there directly.
+  // goes there directly. The length offset is zeroed on the way to the reference
+  // point (G49 in the block: already on the way to the intermediate point).
   AxisValues t = machine_;
+  const bool offset = compensation().length != AxisValues{};
   if (!has_axis_word()) {
     intermediate_.reset();
     t = config_.reference_position;
@@ -250,7 +252,15 @@ void Machine::reference_return() {
     for (char letter : conv_.axes)
       if (has(letter)) t[axis_index(letter)] = config_.reference_position[axis_index(letter)];
   }
+  if (offset) length_zeroed(true);
   if (t != machine_) rapid(t);
+  if (offset) length_zeroed(false);
+}
+
+void Machine::length_zeroed(bool zero) {
+  Event e{EventKind::ToolLengthOffset};
+  if (!zero) e.pos = in_program_units(compensation().length);
+  emit(e);
 }
 
 void Machine::reference_leave() {
@@ -262,12 +272,15 @@ void Machine::reference_leave() {
   }
   AxisValues mid = machine_;
   const bool words = has_axis_word();
+  // §8.9: the length offset comes back at the end point.
+  const bool offset = compensation().length != AxisValues{};
+  if (offset) length_zeroed(true);
   for (char letter : conv_.axes)
     if (!words || has(letter)) mid[axis_index(letter)] = (*intermediate_)[axis_index(letter)];
   if (mid != machine_) rapid(mid);
-  if (!words) return;
-  const AxisValues t = target();
+  const AxisValues t = words ? target() : machine_;
   if (t != machine_) rapid(t);
+  if (offset) length_zeroed(false);
 }
 
 void Machine::load_offset() {
@@ -761,10 +774,15 @@ void Machine::rotation_on() {
 }
 
 void Machine::comp_on_arc_rules() {
+  // §8.10 (E-10): the plane stays while cutter compensation is on (in any word order).
+  if (modal_.plane != block_.plane_before && block_.comp_before != 0 && modal_.comp != 0) {
+    report(DiagId::PlaneState, 0, plane_name(modal_.plane) + " plane", "cutter radius compensation");
+    modal_.plane = block_.plane_before;
+  }
   const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (!arc || !has_axis_word()) return;
   // §8.11 (E-15): the length offset does not change on a helix.
-  if (has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.compensation.length)
+  if (has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.length_before)
     report(DiagId::ArcForm, 0, "the tool length offset cannot change in a helical move (E-15): change it on a straight move");
   // §8.10: compensation starts and ends on a straight move, and changes side only there.
   if (modal_.comp == block_.comp_before) return;

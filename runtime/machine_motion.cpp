@@ -721,9 +721,11 @@ void Machine::corner_codes() {
       const bool ok = call.fn == Fn::MotionLinear || call.fn == Fn::MotionArcCw || call.fn == Fn::MotionArcCcw ||
                       g == FnGroup::Distance || g == FnGroup::Units || call.fn == Fn::Dwell ||
                       (call.fn != Fn::ToolChange && sem_.codes[block_.request->codes[i]].name[0] == 'M');
-      if (!ok)
+      // A unit change would put the two moves in different units: ncc refuses it.
+      if (!ok || (g == FnGroup::Units && (call.fn == Fn::UnitsInch) != corner_->inch))
         issue({DiagId::CornerForm,
-               diag_message(DiagId::CornerForm, fmt::format("{} cannot stand in the block after it (E-06)", sem_.codes[block_.request->codes[i]].name)),
+               diag_message(DiagId::CornerForm, fmt::format("{} cannot stand in the block after it ({})", sem_.codes[block_.request->codes[i]].name,
+                                                                  g == FnGroup::Units ? "ncc: a unit change across a corner" : "E-06")),
                block_.request->source, -1, static_cast<int>(block_.request->codes[i])});
     }
 }
@@ -745,7 +747,7 @@ void Machine::corner_begin(const AxisValues& start) {
     release();
     return;
   }
-  corner_ = Corner{fillet, size, block_.request->source, slot, incoming, chained_start_.value_or(start)};
+  corner_ = Corner{fillet, size, block_.request->source, slot, incoming, chained_start_.value_or(start), modal_.inch};
   chained_start_.reset();
 }
 
@@ -760,6 +762,7 @@ void Machine::corner_finish(bool another, size_t block_from) {
     pass_on(block_from);
     corner_.reset();
   };
+  if (block_.error) return release();  // reported already (E-06)
   if (outgoing == held_.size() || modal_.motion == Fn::MotionRapid) return fail("the next block must make a feed move (E-04)");
   const int u = modal_.plane.u, v = modal_.plane.v;
   auto in_plane = [&](const AxisValues& p) { return corner::Vec(p[u], p[v]); };

@@ -38,6 +38,7 @@ struct Reader::Piece {
   uint32_t line = 0, col = 0;  // 1-based, of its first character
   size_t begin = 0, end = 0;   // byte offsets in the file
   std::vector<std::pair<size_t, size_t>> comments;  // byte ranges of '(' ... ')'
+  bool semicolon = false;      // ends at ';' (an empty one is an empty block)
 };
 
 // An open WHILE/DO loop (§8.34.3).
@@ -142,6 +143,7 @@ void Reader::cut(std::vector<Piece>& pieces) {
     Piece piece{Piece::Text, line_no, 1, base, base, {}};
     auto close = [&](size_t at) {
       piece.end = at;
+      piece.semicolon = at < base + line.size() && line[at - base] == ';';
       pieces.push_back(piece);
       piece = Piece{Piece::Text, line_no, static_cast<uint32_t>(at - base + 2), at + 1, at + 1, {}};
     };
@@ -335,7 +337,16 @@ void Reader::close_brace(const Piece& at) {
 
 void Reader::read(const Piece& piece) {
   load(piece);
-  if (trim(sanitized_).empty() && piece.comments.empty()) return;
+  if (trim(sanitized_).empty() && piece.comments.empty()) {
+    // §8.3 (E-05): an empty block (a lone ';') cannot follow a chamfer or fillet.
+    if (corner_ && piece.semicolon) {
+      const uint32_t col = piece.col + static_cast<uint32_t>(piece.end - piece.begin);
+      diags_.report(DiagId::ProgramStructure, SourceRange::point(file_, piece.line, col),
+                    "an empty block cannot follow a block with a chamfer or fillet (E-05)");
+      corner_.reset();
+    }
+    return;
+  }
   SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
   std::vector<std::string> comments;
   for (auto [from, to] : piece.comments) comments.emplace_back(source_.text().substr(from + 1, to - from - 2));

@@ -1,0 +1,23 @@
+(G50 G51, spec 8.12 and decisions 1 26: P2000 is 2.0, P1.5 is 1.5, I500 is 0.5 and J2.0 is 2.0; points scale about the centre, end points, R and I J K alike; an omitted centre axis is the position, a G91 centre is from the position; expected: 40,20 and arcs about 40,0 R20; 30,30,-3; 30,10,0; 40,20,-5; 13,16,8)
+G90 G00 X10 Y10 Z0;
+G51 X0 Y0 P2000;
+G01 X20 Y10 F100;
+G02 X30 Y0 R10;
+G03 X20 Y-10 I-10 J0;
+G50;
+G00 X10 Y10;
+G51 X0 Y0 Z0 P1.5;
+G01 X20 Y20 Z-2;
+G50;
+G51 I500 J2.0 K1000;
+G01 X30 Y20 Z0;
+G50;
+G00 X10 Y10 Z5;
+G91 G51 X10 Y-10 P2.;
+G90 G01 X30 Y10 Z0;
+G50;
+G00 X10 Y10 Z5;
+G51 P3.;
+G01 X11 Y12 Z6;
+G50;
+M30;

@@ -1,0 +1,14 @@
+(codes forbidden under G68, spec 8.17 E-08 E-09 E-19 E-21 E-22 E-26 E-27 and decision 32: G28 G29 G52 G53 G54-G59 G92 and M06 are NC4064)
+G90 G00 X0 Y0 Z0;
+G28 X0;
+G68 R30.;
+G28 X0;
+G29 X0;
+G52 X10;
+G53 X0;
+G54;
+G55 X0;
+G92 X0;
+T2 M06;
+G69;
+M30;

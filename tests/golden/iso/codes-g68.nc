@@ -1,0 +1,20 @@
+(G68 G69, spec 8.17 and decisions 1 24: R90000 is 90 degrees, R10 is 0.01; the centre is the words' point or the position, under G91 the words are from the position; under G91 R adds to the last G68 angle, which G69 keeps; expected: 0,20 and arc about 0,30; 17.0711,17.0711; angle 75 to 31.7303,5.8226; angle 105 to 42.9788,-13.6603; 10,0.0017; the jsonl variant shows the end points on ncc's nanometre grid, 17.071067812, the arc centre off it, -8.3e-16)
+G90 G00 X10 Y10 Z0;
+G68 X0 Y0 R90000;
+G01 X20 Y0 F100;
+G02 X30 Y10 R10;
+G69;
+G01 X10 Y10;
+G68 R45.;
+G91 X10;
+G90 G69;
+G91 G68 X0 Y0 R30.;
+G90 G01 X10 Y0;
+G69;
+G91 G68 X0 Y0 R30.;
+G90 G01 X10 Y0;
+G69;
+G68 X0 Y0 R10;
+G01 X10 Y0;
+G69 G01 X0;
+M30;
