@@ -718,13 +718,6 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
       }
     }
   }
-  // §8.8, §8.9, §8.19 (E-08, E-09, E-26): G53 does not share a block with G28, G29 or G92.
-  if (g.count(53))
-    for (int other : {28, 29, 92})
-      if (g.count(other)) {
-        diags_.report(DiagId::CodesIncompatible, block_.range, "G53", fmt::format("G{}", other));
-        block_.has_errors = true;
-      }
   if (g.count(92)) g92_words(first);
   if (g.count(65) || m.count(97) || m.count(98)) {
     call_words(cond);
