@@ -25,6 +25,7 @@ struct CutterPath::State {
   void begin(const Event& move, const corner::Element& el, const AxisValues& from);
   void join(const Event& move, const corner::Element& el);
   void leave(bool right_angle);
+  void abandon();
   void end_waiting(const Vec& end);
   Vec normal(const corner::Element& el, const Vec& at, int side) const;
 
@@ -35,6 +36,18 @@ struct CutterPath::State {
   double radius_ = 0;  // program units
   uint32_t switched_at_ = 0;  // the block whose CutterComp event set side_
   uint32_t leave_source_ = 0; // the block a right-angle leave belongs to
+  bool leaving_ = false;      // compensation went off; the waiting move has not left yet
+  bool suspended_ = false;    // G28, G29, G53, a cycle: moves go as programmed
+  bool in_plane(const Event& e, const AxisValues& start) const {
+    const int u = e.kind == EventKind::Arc ? e.plane.u : plane_.u, v = e.kind == EventKind::Arc ? e.plane.v : plane_.v;
+    return e.kind == EventKind::Arc || std::hypot(e.pos[u] - start[u], e.pos[v] - start[v]) > 1e-9;
+  }
+  // The last held move: where the tool stands on the axes outside the plane.
+  const Event& last_move() const {
+    for (size_t i = held_.size(); i-- > 0;)
+      if (is_move(held_[i])) return held_[i];
+    return held_[*waiting_];
+  }
   bool right_angle_ = false;  // compensation started in a block of its own
   Plane plane_;
   // The move waiting for the next one, and what came after it.
@@ -63,11 +76,16 @@ corner::Vec CutterPath::State::normal(const corner::Element& el, const Vec& at, 
 }
 
 void CutterPath::State::event(const Event& e, const AxisValues* start) {
+  // G40 in a block of its own: the first event of a later block (or a move of its own
+  // block along the normal) shows that no move of the G40 block leaves the path, so
+  // the tool leaves at a right angle first (§8.10, figure 33).
+  if (leaving_ && waiting_ && (e.source != leave_source_ || (is_move(e) && start && !in_plane(e, *start)))) leave(true);
   if (e.kind == EventKind::Plane) plane_ = e.plane;
   if (e.kind == EventKind::CutterComp) {
     if (e.n != side_ || e.a != radius_) {
       if (side_ == 0) right_angle_ = true;  // until a move of the same block shows otherwise
-      if (e.n == 0) leave_source_ = e.source;
+      leaving_ = e.n == 0 || e.a <= 0;
+      if (leaving_) leave_source_ = e.source;
       side_ = e.n;
       radius_ = e.a;
       switched_at_ = e.source;
@@ -75,7 +93,7 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
     send(e);
     return;
   }
-  if (!is_move(e) || !start) {
+  if (!is_move(e) || !start || suspended_) {
     send(e);
     return;
   }
@@ -87,17 +105,19 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
     el.ccw = e.rotation > 0;
     el.sweep = e.b * kPi / 180;
   }
-  const bool in_plane = (el.b - el.a).norm() > 1e-9 || el.arc;
-  if (!in_plane) {
+  if (!in_plane(e, *start)) {
     // A move along the plane's normal keeps the offset it stands at.
     if (waiting_) held_.push_back(e);
     else out_.event(e);
     return;
   }
   if (side_ == 0 || radius_ <= 0) {
-    // G40 (or D0): leave along this move when it is in the block that cancels, else at
-    // a right angle first (§8.10, figures 32 and 33).
-    if (waiting_) leave(e.source != switched_at_);
+    // G40 (or D0) with this move: it leaves from beside the last end (figure 32).
+    if (waiting_) {
+      if (e.kind == EventKind::Arc && e.source != leave_source_)  // in G40's own block: the runtime's check
+        report_(context_, e.source, "cutter radius compensation cannot end on an arc (E-13): use a G00 or G01 move");
+      leave(false);
+    }
     out_.event(e);
     return;
   }
@@ -113,6 +133,8 @@ void CutterPath::State::begin(const Event& move, const corner::Element& el, cons
   // ends beside the next move's start; in a block of its own the tool first goes at a
   // right angle to the offset of this move's start.
   if (move.source == switched_at_) right_angle_ = false;
+  if (move.kind == EventKind::Arc && move.source != switched_at_)  // in G41/G42's own block: the runtime's check
+    report_(context_, move.source, "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move");
   if (right_angle_) {
     const Vec entry = el.a + radius_ * normal(el, el.a, side_);
     const Plane p = move.kind == EventKind::Arc ? move.plane : plane_;
@@ -148,9 +170,8 @@ void CutterPath::State::end_waiting(const Vec& end) {
     double sweep = std::atan2(cross(from_ - c, end - c), (from_ - c).dot(end - c));
     if (!element_.ccw) sweep = -sweep;
     if (sweep <= 1e-12) sweep += 2 * kPi;
-    // A full circle or a helix keeps its whole turns.
-    const double turns = std::floor(element_.sweep / (2 * kPi) + 1e-9);
-    if (element_.sweep - turns * 2 * kPi < 1e-9 && turns >= 1) sweep = element_.sweep;
+    // Whole turns as the programmed arc has them (a full circle, a helix).
+    while (sweep + 2 * kPi - element_.sweep < element_.sweep - sweep) sweep += 2 * kPi;
     w.b = sweep * 180 / kPi;
     const int n = std::max(1, static_cast<int>(std::ceil(w.b / 360 - 1e-9)));
     w.rotation = w.rotation < 0 ? -n : n;
@@ -185,7 +206,8 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
       // The offset moves meet at their intersection nearest the corner.
       auto points = corner::offsets_meet(element_, el, r, side == 1 ? 1 : -1);
       if (points.empty()) {
-        report_(context_, move.source, "the offset paths of this move and the one before do not meet: a move shorter than the tool radius or an arc smaller than it (E-12)");
+        report_(context_, move.source, "cutter compensation: the offset paths of this move and the one before do not meet: a move shorter than the tool radius or an arc smaller than it (E-12)");
+        return abandon();
       } else {
         Vec best = points.front();
         for (const Vec& q : points)
@@ -196,31 +218,38 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
       // Outside: around the corner at the radius (§8.10, figure 31).
       end = p + r * n1;
       next = p + r * normal(el, p, side);
+      // It turns the way the path turns away from the tool: clockwise beside a G41
+      // path, counter-clockwise beside a G42 one (a reversal included).
       Event arc{EventKind::Arc};
       arc.source = move.source;
       arc.plane = plane_;
-      arc.pos = held_[*waiting_].pos;
-      arc.pos[u] = next.x();
-      arc.pos[v] = next.y();
       arc.centre[0] = p.x();
       arc.centre[1] = p.y();
       arc.a = r;
+      const bool ccw = side == 2;
       double sweep = std::atan2(cross(end - p, next - p), (end - p).dot(next - p));
-      arc.rotation = sweep > 0 ? 1 : -1;
-      arc.b = std::fabs(sweep) * 180 / kPi;
+      if (!ccw) sweep = -sweep;
+      if (sweep < 0) sweep += 2 * kPi;
+      arc.rotation = ccw ? 1 : -1;
+      arc.b = sweep * 180 / kPi;
       around = arc;
     }
   }
   // A side or radius change (G41 <-> G42, a new D): the move ends beside its own end
   // and the next one starts there (§8.10, figure 34: only on straight moves, E-14).
-  if (el.arc && el.ccw == (side_ == 1)) {
-    // An arc turning towards the tool: its offset radius shrinks (E-12).
-    if ((el.a - el.c).norm() <= radius_ + 1e-9)
-      report_(context_, move.source, "the arc's radius is not larger than the tool radius on its inside (E-12)");
+  if (el.arc && el.ccw == (side_ == 1) && (el.a - el.c).norm() <= radius_ + 1e-9) {
+    // An arc turning towards the tool: its offset radius shrinks to nothing (E-12).
+    report_(context_, move.source, "cutter compensation: the arc's radius is not larger than the tool radius on its inside (E-12)");
+    return abandon();
+  }
+  // §8.10 (E-12): an offset line that would run backwards cuts into the part.
+  if (!element_.arc && !startup_ && (end - from_).dot(element_.b - element_.a) <= 0) {
+    report_(context_, move.source, "cutter compensation: the move before is shorter than the tool radius allows: its offset runs backwards (E-12)");
+    return abandon();
   }
   end_waiting(end);
   if (around) {
-    around->pos = held_[*waiting_].pos;
+    around->pos = last_move().pos;
     around->pos[u] = next.x();
     around->pos[v] = next.y();
     held_.push_back(*around);
@@ -237,19 +266,28 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
   startup_ = false;
 }
 
+// A path that would cut into the part (reported): nothing of it goes on.
+void CutterPath::State::abandon() {
+  held_.clear();
+  waiting_.reset();
+  startup_ = false;
+}
+
 void CutterPath::State::leave(bool right_angle) {
   const Vec p = element_.b;
   const Vec end = p + waiting_radius_ * normal(element_, p, waiting_side_);
   end_waiting(startup_ ? p : end);
   if (right_angle && !startup_) {
-    // Back to the programmed end at a right angle (§8.10, figure 33).
+    // Back to the programmed end at a right angle (§8.10, figure 33), at the height
+    // the tool stands at now.
     Event back{EventKind::Linear};
-    back.source = side_ == 0 ? leave_source_ : held_[*waiting_].source;
-    back.pos = held_[*waiting_].pos;
+    back.source = leaving_ ? leave_source_ : held_[*waiting_].source;
+    back.pos = last_move().pos;
     back.pos[plane_.u] = p.x();
     back.pos[plane_.v] = p.y();
     held_.push_back(back);
   }
+  leaving_ = false;
   for (const Event& e : held_) out_.event(e);
   held_.clear();
   waiting_.reset();
@@ -258,11 +296,16 @@ void CutterPath::State::leave(bool right_angle) {
 
 void CutterPath::suspend() {
   if (s_->waiting_) s_->leave(false);
-  if (s_->side_ != 0) s_->right_angle_ = false;  // the next move starts up again along itself
+  s_->suspended_ = true;
 }
 
-void CutterPath::finish() {
-  if (s_->waiting_) s_->leave(true);
+void CutterPath::resume() {
+  s_->suspended_ = false;
+  s_->right_angle_ = false;  // the next move starts up again along itself
+}
+
+void CutterPath::finish(bool exit) {
+  if (s_->waiting_) s_->leave(exit);
 }
 
 }  // namespace ncc

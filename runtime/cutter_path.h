@@ -23,10 +23,13 @@ class CutterPath {
   // An event of the runtime; `start`: where a move starts (trace coordinates).
   void event(const Event& e, const AxisValues* start);
   // G28, G29, G53 and the canned cycles move with the vector zeroed (§8.10): the path
-  // leaves the offset before them and enters it again after them.
+  // leaves the offset before their block's moves (suspend) and starts up again with
+  // the first move after them (resume).
   void suspend();
-  // The end of the run: a path still waiting leaves at a right angle.
-  void finish();
+  void resume();
+  // The end of the run: a path still waiting leaves at a right angle (`exit`), or just
+  // ends beside its last point (a run an error stopped).
+  void finish(bool exit = true);
 
   struct State;  // the geometry (Eigen) stays out of this header
 

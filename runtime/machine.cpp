@@ -18,13 +18,13 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
       path_(trace, &Machine::path_report, this) {}
 
 void Machine::path_report(void* self, uint32_t source, const std::string& what) {
-  auto* m = static_cast<Machine*>(self);
-  m->issues_.issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, "cutter compensation: " + what), source, -1, -1});
+  // An error of the path stops the run at the block being run, as any error does.
+  static_cast<Machine*>(self)->issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, what), source, -1, -1});
 }
 
-void Machine::end_run() {
+void Machine::end_run(bool stopped_by_error) {
   if (holding_) release();
-  if (conv_.comp_path) path_.finish();
+  if (conv_.comp_path) path_.finish(!stopped_by_error);
 }
 
 void Machine::power_on() {
@@ -144,7 +144,6 @@ void Machine::emit(Event e) {
 
 void Machine::out(const Event& e, const AxisValues* start) {
   if (!holding_) return to_path(e, start);
-  if (held_.empty() && start) hold_start_ = *start;
   held_.push_back(e);
 }
 
@@ -248,10 +247,16 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
           call.fn != Fn::MotionLinear && emit_events)
         report_code(DiagId::SplineStructure, fmt::format("{} cannot stand inside a spline: only G06 points and the G00 or G01 lead-out", block_.code_name));
       modal_.motion = call.fn;
+      // ISO: a code of the motion group ends the canned cycle of an earlier block.
+      if (conv_.fanuc_cycles && emit_events && modal_.cycle >= 0 && !block_.cycle_set) {
+        modal_.cycle = -1;
+        cycle_ = {};
+        initial_level_.reset();
+      }
       break;
     case Fn::Dwell: block_.dwell = true; break;
     case Fn::SetPosition:
-      if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && (transform_locked(block_.code_name) || comp_locked(true))) break;
       block_.set_position = true;
       break;
     case Fn::PathAccelerate: event(EventKind::PathMode, 0); break;
@@ -270,6 +275,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::DistanceIncremental: modal_.absolute = false; break;
     case Fn::UnitsMm:
     case Fn::UnitsInch:
+      if (emit_events && comp_locked(modal_.inch != (call.fn == Fn::UnitsInch))) break;
       modal_.inch = call.fn == Fn::UnitsInch;
       event(EventKind::Units, modal_.inch);
       break;
@@ -309,6 +315,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         break;
       }
       if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && scope == Scope::Modal && comp_locked(call.arg != modal_.work_offset)) break;
       // ISO §8.14 (E-20): machine coordinates are absolute.
       if (emit_events && conv_.fanuc_rules && scope == Scope::Block && call.arg == 0 && !modal_.absolute) {
         report_code(DiagId::PlaneState, block_.code_name, "incremental positioning (G91)");
@@ -340,6 +347,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::Cycle:
       if (cycle_active()) break;
       modal_.cycle = call.arg;
+      block_.cycle_set = true;
       // NC-110: the cycle's own block defines it anew (§2.8.9 note 1); GOST keeps the
       // registers (S-7.5).
       if (conv_.cycle_defines_only) {
@@ -465,7 +473,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2;
       break;
     case Fn::OffsetLocal:
-      if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && (transform_locked(block_.code_name) || comp_locked(true))) break;
       block_.local_offset = true;
       break;
     case Fn::CycleReturnInitial:
@@ -475,6 +483,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::ScalingOn: block_.scaling_on = true; break;
     case Fn::RotationOn: block_.rotation_on = true; break;
     case Fn::ScalingOff:
+      if (emit_events && comp_locked(modal_.scaling)) break;
       if (modal_.scaling) {
         modal_.scaling = false;
         frame_.scale.fill(1);
@@ -484,6 +493,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       }
       break;
     case Fn::RotationOff:
+      if (emit_events && comp_locked(modal_.rotation)) break;
       if (modal_.rotation) {
         modal_.rotation = false;
         frame_.rotation = 0;
@@ -685,6 +695,7 @@ BlockResult Machine::execute(const BlockRequest& request) {
   block_.compensation = compensation();
   block_.comp_before = modal_.comp;
   block_.length_before = block_.compensation.length;
+  block_.radius_before = block_.compensation.radius;
   block_.plane_before = modal_.plane;
   auto failed = [&] { return block_.error && stop_on_error_; };
   if (request.dynamic_codes) check_dynamic_codes();
@@ -707,9 +718,15 @@ BlockResult Machine::execute(const BlockRequest& request) {
   const bool corner_here = corner_requested();
   if (corner_) corner_codes();
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
+  if (corner_here && !holding_) hold_start_ = start;
   if (corner_here) holding_ = true;
   const size_t block_from = held_.size();
+  // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
+  const bool moves = has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word));
+  const bool zeroed = conv_.comp_path && moves && (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
+  if (zeroed) path_.suspend();
   action();
+  if (zeroed) path_.resume();
   if (block_.set_position_after && !block_.error) set_position();
   if (corner_) corner_finish(corner_here, block_from);
   if (corner_here) corner_begin(start);
@@ -810,7 +827,6 @@ void Machine::action() {
     return;
   }
   if (block_.reference_iso) {
-    if (conv_.comp_path) path_.suspend();  // §8.10: the vector is zeroed on the way
     block_.reference_iso == 1 ? reference_return() : reference_leave();
     return;
   }
@@ -823,7 +839,6 @@ void Machine::action() {
     return;
   }
 
-  if (conv_.comp_path && (modal_.cycle >= 0 || block_.block_offset == 0) && axes) path_.suspend();  // G53, cycles (§8.10)
   if (modal_.cycle >= 0) {
     if (conv_.cycle_two_levels) nc110_cycle();
     else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) conv_.fanuc_cycles ? repeat_cycle() : cycle();
@@ -907,6 +922,11 @@ void Machine::finish() {
     // returns to its initial state (§8), which the trace shows as it changes.
     if (parabola_middle_) report(DiagId::ParabolaPair, 0, "the program ended");
     if (spline_.active) report(DiagId::SplineStructure, 0, "the program ended inside a spline: (ESP) is missing");
+    if (corner_) {
+      issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
+             corner_->source, corner_->slot, -1});
+      release();
+    }
     if (conv_.comp_path) path_.finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);

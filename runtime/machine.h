@@ -77,8 +77,9 @@ class Machine {
   BlockResult execute(const BlockRequest& block);
   // The end of a program unit: pending multi-block constructs must be complete.
   void end_of_unit(uint32_t source);
-  // The run is over (ended, or stopped by an error): what waits goes to the trace.
-  void end_run();
+  // The run is over: what waits goes to the trace (after an error as it stands, no
+  // exit move made up for it).
+  void end_run(bool stopped_by_error);
   // Operator text of a block (a comment), shown when the block runs.
   void comment(const std::string& text, uint32_t source);
   // A block starts (the trace's `block` events, pp P-10.2).
@@ -205,8 +206,10 @@ class Machine {
     bool local_offset = false;    // ISO G52: the axis words shift the work zero
     bool set_position_after = false;  // ISO G92 after a motion: its values are the second words
     bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
+    bool cycle_set = false;       // a cycle code stands in the block
     int comp_before = 0;          // the cutter compensation when the block started
     AxisValues length_before{};   // ... and the tool length offset
+    double radius_before = 0;     // ... and the cutter radius
     Plane plane_before;           // ... and the plane
   };
 
@@ -311,6 +314,7 @@ class Machine {
   void scaling_on();          // ISO G51
   void rotation_on();         // ISO G68
   bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
+  bool comp_locked(bool changes);  // ISO: no frame or unit change while G41/G42 is on
   void comp_on_arc_rules();   // ISO E-11, E-13, E-14
   void position_offset_event();
 
@@ -422,6 +426,7 @@ class Machine {
   bool block_skip_ = false;
   bool optional_stop_ = false;
   double clock_ = 0;                   // seconds of the run so far
+  double clock_base_ = 0;              // ISO #3001/#3002: where the program set them to 0
   std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()
   std::vector<std::pair<uint32_t, double>> results_;
   std::string system_name(SysRef ref) const;

@@ -242,8 +242,6 @@ void Machine::cycle() {
   // first goes up to R, and R is then the initial level it returns to.
   const bool below_level = (bottom < level) ? start < level : start > level;
   const double initial = below_level ? level : start;
-  // ISO G99: back to R; G98 (and every other dialect): back to the initial level.
-  const double back = conv_.fanuc_cycles && modal_.cycle_return_level ? level : initial;
   auto at = [&](double z) {
     AxisValues p = hole;
     p[d] = z;
@@ -289,26 +287,16 @@ void Machine::cycle() {
     apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
   if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
   switch (pattern.out) {
-    case CyclePattern::Out::Rapid:
-      if (back != machine_[d]) rapid(at(back));
-      break;
-    case CyclePattern::Out::Feed:
-      // ISO §8.27: out at feed to R, then at rapid to the initial level (G98).
-      if (conv_.fanuc_cycles) {
-        linear(at(level));
-        if (back != level) rapid(at(back));
-      } else {
-        linear(at(initial));
-      }
-      break;
+    case CyclePattern::Out::Rapid: rapid(at(initial)); break;
+    case CyclePattern::Out::Feed: linear(at(initial)); break;
     case CyclePattern::Out::Manual: {
       // The operator retracts by hand: the run stops; on resume the tool is at the
       // initial level (S-7.5).
       Event stop{EventKind::Stop};
       stop.n = 3;
       emit(stop);
-      emit(motion_event(EventKind::OperatorMove, at(back)));
-      move_to(at(back));
+      emit(motion_event(EventKind::OperatorMove, at(initial)));
+      move_to(at(initial));
       break;
     }
   }

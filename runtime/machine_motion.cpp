@@ -735,10 +735,15 @@ void Machine::corner_begin(const AxisValues& start) {
   const int slot = second_slot(fillet ? 'R' : 'C');
   const double size = slot_value(slot);
   const bool feed = modal_.motion == Fn::MotionLinear || modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
-  size_t incoming = held_.size();
+  if (block_.error) return release();  // its block failed: reported already
+  size_t incoming = held_.size(), moves = 0;
   for (size_t i = 0; i < held_.size(); ++i)
-    if (is_move(held_[i])) incoming = i;
+    if (is_move(held_[i]) || held_[i].kind == EventKind::Rapid) {
+      incoming = i;
+      ++moves;
+    }
   std::string why = !feed || modal_.cycle >= 0 ? "it follows a feed move G01, G02 or G03 only (E-03)"
+                    : moves > 1 && !chained_start_ ? "its block makes more than the one feed move it follows (E-03)"
                     : modal_.polar            ? "it is not made in polar coordinates, G16 (E-07)"
                     : incoming == held_.size() ? "its block makes no feed move (E-03)"
                                                : "";
@@ -754,7 +759,7 @@ void Machine::corner_begin(const AxisValues& start) {
 void Machine::corner_finish(bool another, size_t block_from) {
   Corner c = *corner_;
   size_t outgoing = c.incoming + 1;
-  while (outgoing < held_.size() && !is_move(held_[outgoing])) ++outgoing;
+  while (outgoing < held_.size() && !is_move(held_[outgoing]) && held_[outgoing].kind != EventKind::Rapid) ++outgoing;
   auto fail = [&](const std::string& why) {
     issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, why), c.source, c.slot, -1});
     if (!another) return release();
@@ -763,7 +768,11 @@ void Machine::corner_finish(bool another, size_t block_from) {
     corner_.reset();
   };
   if (block_.error) return release();  // reported already (E-06)
-  if (outgoing == held_.size() || modal_.motion == Fn::MotionRapid) return fail("the next block must make a feed move (E-04)");
+  const int pu = modal_.plane.u, pv = modal_.plane.v;
+  if (outgoing == held_.size() || !is_move(held_[outgoing]) ||
+      (held_[outgoing].kind == EventKind::Linear &&
+       std::hypot(held_[outgoing].pos[pu] - held_[c.incoming].pos[pu], held_[outgoing].pos[pv] - held_[c.incoming].pos[pv]) < 1e-9))
+    return fail("the next block must make a feed move in the plane (E-04)");
   const int u = modal_.plane.u, v = modal_.plane.v;
   auto in_plane = [&](const AxisValues& p) { return corner::Vec(p[u], p[v]); };
   auto element = [&](const AxisValues& from, const Event& e) {

@@ -1,5 +1,7 @@
 // System variables: the runtime state a program reads and writes by name.
 #include <cmath>
+#include <cstdlib>
+#include <limits>
 
 #include "machine.h"
 #include "support/text.h"
@@ -18,6 +20,34 @@ double Machine::system(SysRef ref) const {
   switch (ref.var) {
     case SysVar::BlockEnable: return block_skip_ ? 0 : 1;
     case SysVar::InchMode: return modal_.inch ? 1 : 0;
+    case SysVar::ClockMs: return std::round(clock_ * 1000 - clock_base_ * 1000);
+    case SysVar::ClockHours: return (clock_ - clock_base_) / 3600;
+    case SysVar::ModalCode: {
+      // The number of the program's code that sets the group's state now.
+      const FnCall now = current(static_cast<FnGroup>(ref.index));
+      for (const CodeDesc& c : sem_.codes)
+        if (!c.calls.empty() && c.calls.front() == now && c.name.size() > 1) return std::atof(c.name.c_str() + 1);
+      return std::numeric_limits<double>::quiet_NaN();  // vacant: no code of the program sets it
+    }
+    case SysVar::ModalWord:
+      switch ('A' + ref.index) {
+        case 'D':
+        case 'H': return offset_number_;
+        case 'F': return feed_ ? *feed_ : std::numeric_limits<double>::quiet_NaN();
+        case 'S': return speed_;
+        case 'T': return tool_selected_;
+        default: return std::numeric_limits<double>::quiet_NaN();
+      }
+    case SysVar::Position: {
+      const int axis = ref.index % 16, kind = ref.index / 16;
+      if (axis >= kAxisCount) return 0;
+      const AxisValues p = kind == 1 ? machine_ : motion_event(EventKind::Linear, machine_).pos;
+      return kind == 1 ? program_axis(axis, p[axis]) : p[axis];
+    }
+    case SysVar::WorkOffsetValue: {
+      const int axis = ref.index % 16, n = ref.index / 16;
+      return axis < kAxisCount ? program_axis(axis, offset_value(n, axis)) : 0;
+    }
     case SysVar::OptionalStop: return optional_stop_ ? 1 : 0;
     case SysVar::FeedOverride: return modal_.override_enabled ? 1 : 0;
     case SysVar::Timer:
@@ -37,6 +67,7 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
                    -1, -1});
     return !stop_on_error_;  // a dry run goes on without the value
   };
+  if (std::isnan(value)) return fail("the value is vacant");
   if (auto why = sys_value_error(ref, value)) return fail(std::string(*why));
   switch (ref.var) {
     case SysVar::Timer:
@@ -47,12 +78,37 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
     case SysVar::OptionalStop:
       optional_stop_ = value == 1;
       return true;
+    case SysVar::Alarm:
+      issues_.issue({DiagId::Alarm, diag_message(DiagId::Alarm, shortest(value)), source, -1, -1});
+      return false;
+    case SysVar::ClockMs:
+    case SysVar::ClockHours:
+      clock_base_ = clock_ - (ref.var == SysVar::ClockMs ? value / 1000 : value * 3600);
+      return true;
+    case SysVar::WorkOffsetValue: {
+      // #5221...: the offset of G54-G59 on one axis, in the program's unit.
+      const int axis = ref.index % 16, n = ref.index / 16;
+      if (axis >= kAxisCount || n < 1 || n > 6) return fail("it names no work offset");
+      WorkOffset& w = offsets_[n];
+      w.values[axis] = w.inch && is_linear(axis) ? axis_units(axis, value) / 25.4 : axis_units(axis, value);
+      w.axes |= 1u << axis;
+      refresh_base_origin();
+      if (n == modal_.work_offset) {
+        // The active one: positions are measured from the new zero.
+        Event e{EventKind::WorkOffset};
+        e.n = n;
+        for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(n, i));
+        e.source = source;
+        out(e);
+      }
+      return true;
+    }
     case SysVar::FeedOverride: {
       modal_.override_enabled = value == 1;
       Event e{EventKind::Override};
       e.n = modal_.override_enabled;
       e.source = source;
-      trace_.event(e);
+      out(e);
       return true;
     }
     default: break;

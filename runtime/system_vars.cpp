@@ -32,7 +32,10 @@ std::optional<SysVar> sys_by_name(std::string_view name) {
 std::optional<std::string_view> sys_value_error(SysRef ref, double value) {
   const bool flag = value == 0 || value == 1;
   switch (ref.var) {
-    case SysVar::RemainingPath: return "it is read-only";
+    case SysVar::RemainingPath:
+    case SysVar::ModalCode:
+    case SysVar::ModalWord:
+    case SysVar::Position: return "it is read-only";
     case SysVar::Timer:
       if (ref.index == 0) return "it is the clock, read-only";
       break;

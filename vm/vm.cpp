@@ -222,6 +222,7 @@ RunStatus Vm::run(uint32_t entry) {
   p.pc = m_.entries[entry].pc;
   codes_.clear();
   words_.clear();
+  args_.clear();
   const uint8_t* code = m_.code.data();
   std::vector<double>& st = p.stack;
   auto pop = [&] {
@@ -419,6 +420,8 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::Unloop: landing_depth_ = operands[0]; break;
       case Op::CallEntry:
       case Op::CallShared: {
+        if (op == Op::CallShared && !args_.empty())
+          return fail(pc, DiagId::BytecodeInvalid, "program", "arguments to a call that keeps the caller's locals");
         double count = pop();
         if (!(count >= 1 && count <= kMaxCallCount) || count != std::trunc(count))
           return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
@@ -434,12 +437,18 @@ RunStatus Vm::run(uint32_t entry) {
         p.pc = start;
         break;
       }
-      case Op::Arg:
+      case Op::Arg: {
+        const VarSpace& s = m_.spaces[operands[0]];
+        const uint32_t index = u32_at(operands + 1);
         if (args_.size() >= 256) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 256 arguments to a call");
-        if (!m_.spaces[operands[0]].locals || u32_at(operands + 1) >= m_.spaces[operands[0]].locals)
-          return fail(pc, DiagId::BytecodeInvalid, "program", "an argument that is not a local variable");
-        args_.push_back({operands[0], u32_at(operands + 1), pop()});
+        if (index >= s.locals) return fail(pc, DiagId::BytecodeInvalid, "program", "an argument that is not a local variable");
+        double value = pop();
+        // As a store would keep it (a vacant value only where variables may be vacant).
+        if (!(s.vacant && std::isnan(value)) && !convert_value(s.type_of(index), s.limit, value))
+          return fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, index));
+        args_.push_back({operands[0], index, value});
         break;
+      }
       case Op::ZeroIfVacant:
         if (std::isnan(st.back())) st.back() = 0;
         break;

@@ -138,7 +138,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
     }
     if (status == vm::RunStatus::EndOfInformation) break;
   }
-  machine.end_run();
+  machine.end_run(!result.ok);
   trace.flush();
   result.steps = vm.steps();
   if (s.diags.has_errors()) result.ok = false;

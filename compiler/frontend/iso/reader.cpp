@@ -1038,7 +1038,22 @@ ir::ExprId Reader::variable(IsoParser::VariableContext* ctx, bool target) {
     std::string text = n->getText();
     double v = 0;
     std::from_chars(text.data(), text.data() + text.size(), v);
-    if (!variable_exists(v)) {
+    if (v >= 1000 && v == std::trunc(v)) {
+      // A system variable (decision 48).
+      auto it = s_.system.find(static_cast<uint32_t>(v));
+      if (it == s_.system.end()) {
+        diags_.report(DiagId::VariableNumber, r, text);
+        block_.has_errors = true;
+      } else if (target && !sys_writable(it->second)) {
+        diags_.report(DiagId::SystemNotWritable, r, "#" + text, "is read-only");
+        block_.has_errors = true;
+      } else {
+        ir::ExprId e = program_.add({ir::ExprOp::Sys, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, r});
+        program_.exprs[e].sys = it->second.packed();
+        return e;
+      }
+      v = 0;
+    } else if (!variable_exists(v)) {
       diags_.report(DiagId::VariableNumber, r, text);
       block_.has_errors = true;
       v = 0;

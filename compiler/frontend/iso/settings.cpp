@@ -1,11 +1,55 @@
 #include "settings.h"
 
+#include <charconv>
+
 namespace ncc::iso {
+
+namespace {
+
+// #first..#last onto the runtime's system variables; modal_code takes the runtime
+// group of a Fanuc group's codes, modal_word a letter's slot.
+void read_system(Settings& s, Diagnostics& diags) {
+  auto table = stdlib::load_table("iso", "system_variables.tsv", 5, diags);
+  if (!table) return;
+  for (const stdlib::TableRow& row : table->rows) {
+    const auto& c = row.cells;
+    uint32_t first = 0, last = 0, index = 0;
+    auto number = [](const std::string& t, uint32_t& out) {
+      auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+      return ec == std::errc() && end == t.data() + t.size();
+    };
+    auto var = sys_by_name(c[2]);
+    bool ok = number(c[0], first) && number(c[1], last) && first <= last && first >= 1000 && var;
+    if (ok && *var == SysVar::ModalCode) {
+      ok = false;
+      for (const auto& [n, code] : s.tables.g_codes)
+        if (code.group == c[3] && !code.desc.calls.empty()) {
+          index = static_cast<uint32_t>(fn_group(code.desc.calls.front().fn));
+          ok = true;
+          break;
+        }
+    } else if (ok && *var == SysVar::ModalWord) {
+      ok = c[3].size() == 1 && letter_slot(c[3][0]) >= 0 && letter_slot(c[3][0]) < 26;
+      if (ok) index = static_cast<uint32_t>(letter_slot(c[3][0]));
+    } else if (ok) {
+      ok = number(c[3], index);
+    }
+    for (uint32_t n = first; ok && n <= last; ++n) {
+      SysRef ref{*var, static_cast<uint8_t>(index + (n - first))};
+      ok = index + (n - first) < 256 && ref.valid();
+      if (ok) s.system[n] = ref;
+    }
+    if (!ok) report(diags, *table, row.line, fmt::format("malformed row for #{}", c[0]));
+  }
+}
+
+}  // namespace
 
 std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& diags) {
   Settings s;
   size_t errors = diags.error_count();
   s.tables = stdlib::load_dialect_tables("iso", diags);
+  read_system(s, diags);
   if (diags.error_count() != errors) return std::nullopt;
   diags.set_citations(s.tables.citations);
   s.power_on = s.tables.power_on.at("default");

@@ -2,11 +2,13 @@
 // of the machine profile (docs/profile.md), validated.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "runtime/program_semantics.h"
+#include "runtime/system_vars.h"
 #include "stdlib/profile.h"
 #include "stdlib/tables.h"
 
@@ -16,6 +18,7 @@ struct Settings {
   stdlib::DialectTables tables;
   std::vector<std::string> power_on;
   std::string library;  // where called O programs are ("" = beside the program)
+  std::map<uint32_t, SysRef> system;  // #3000...: the system variables (system_variables.tsv)
   Conventions conventions;
 };
 
