@@ -59,6 +59,7 @@ Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions 
   for (const VarSpace& s : m_.spaces) {
     vars_.emplace_back(s.memory ? 0 : s.size, s.vacant ? kVacant : 0.0);
     vacancy_ = vacancy_ || s.vacant;
+    holes_.push_back(std::any_of(s.types.begin(), s.types.end(), [](const VarSpace::Range& r) { return r.type == VarType::Unavailable; }));
     memories_.emplace_back(s.memory ? s.size : 0, uint8_t{0});
   }
 }
@@ -81,7 +82,7 @@ double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
     ok = false;
     return 0;
   }
-  if (s.type_of(static_cast<uint32_t>(index)) == VarType::Unavailable) {
+  if (holes_[space] && s.type_of(static_cast<uint32_t>(index)) == VarType::Unavailable) {
     fail(pc, DiagId::VariableNumber, shortest(index));
     ok = false;
     return 0;

@@ -93,6 +93,7 @@ class Vm {
   std::vector<uint8_t> dynamic_slots_;  // their words' slots, in order (GE1 GE2: G, G)
   std::vector<Arg> args_;        // the next call's arguments
   bool vacancy_ = false;         // a space holds vacant values: a vacant word value or code is omitted
+  std::vector<bool> holes_;      // per space: some numbers are no variable (Macro B #34-#99)
 };
 
 }  // namespace ncc::vm

@@ -562,5 +562,79 @@ TEST(Vm, ThousandthsRoundHalfAwayFromZero) {
   EXPECT_EQ(result.issues[0].id, DiagId::ValueOverflow);
 }
 
+// Macro B: a space whose variables start vacant. A vacant word value leaves the word
+// out, arithmetic reads vacant as 0, EQ tells vacant from 0.
+TEST(Vm, VacantVariables) {
+  Builder t;
+  VarSpace vars{"#", 10, {}};
+  vars.vacant = true;
+  t.p.spaces.push_back(vars);
+  const uint16_t s = static_cast<uint16_t>(t.p.spaces.size() - 1);
+  auto var = [&](double i) { return t.p.add({ir::ExprOp::Var, Builtin::Sin, s, 0, t.num(i), ir::kNoExpr, {}}); };
+  auto zero_if_vacant = [&](ir::ExprId e) { return t.p.add({ir::ExprOp::ZeroIfVacant, Builtin::Sin, 0, 0, e, ir::kNoExpr, {}}); };
+  t.move_x(t.block(), t.num(5));
+  t.move_x(t.block(), var(1));                                                     // left out: X stays 5
+  t.move_x(t.block(), t.bin(ir::ExprOp::Add, zero_if_vacant(var(1)), t.num(2)));  // 0 + 2
+  ir::Block& b = t.block();
+  t.assign(b, var(2), var(1));                                                     // a copy stays vacant
+  t.move_x(t.block(), t.bin(ir::ExprOp::Eq, var(2), var(0)));                     // 1: both vacant
+  t.move_x(t.block(), t.bin(ir::ExprOp::Eq, var(2), t.num(0)));                   // 0: vacant is not 0
+  ir::Block& set0 = t.block();
+  t.assign(set0, var(0), t.num(1));                                                // #0 cannot be set
+  auto r = t.run();
+  EXPECT_EQ(r.xs, (std::vector<double>{5, 2, 1, 0}));
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::VacantVariable);
+}
+
+// G65: arguments set the callee's locals, which start vacant; M98 (shared locals)
+// keeps the caller's.
+TEST(Vm, CallArgumentsAndSharedLocals) {
+  Builder t;
+  VarSpace vars{"#", 10, {}};
+  vars.vacant = true;
+  vars.locals = 5;
+  t.p.spaces.push_back(vars);
+  const uint16_t s = static_cast<uint16_t>(t.p.spaces.size() - 1);
+  auto var = [&](double i) { return t.p.add({ir::ExprOp::Var, Builtin::Sin, s, 0, t.num(i), ir::kNoExpr, {}}); };
+  ir::Block& set = t.block();
+  t.assign(set, var(1), t.num(7));
+  t.assign(set, var(3), t.num(9));
+  ir::Block& caller = t.block();
+  ir::Stmt macro(ir::StmtKind::Call, caller.range);
+  macro.label = "sub";
+  macro.args.push_back({s, 3, t.num(4)});  // #3 = 4 in the macro; #1 vacant there
+  caller.stmts.push_back(macro);
+  ir::Stmt shared(ir::StmtKind::Call, caller.range);
+  shared.label = "sub";
+  shared.shares_locals = true;  // #1 = 7 and #3 = 9 seen from the subprogram
+  caller.stmts.push_back(shared);
+  t.move_x(t.block(), var(3));  // 9: the caller's own after both calls
+  t.p.units.push_back({});
+  t.p.units.back().kind = ir::UnitKind::Subprogram;
+  t.p.units.back().name = "sub";
+  ir::Block& body = t.block();
+  t.move_x(body, var(3));
+  t.move_x(t.block(), var(1));
+  auto r = t.run();
+  EXPECT_TRUE(r.issues.empty());
+  EXPECT_EQ(r.xs, (std::vector<double>{4, 9, 7, 9}));
+}
+
+// A computed GOTO to a number no block has stops the run at the jump.
+TEST(Vm, ComputedJumpWithoutItsBlockIsAnError) {
+  Builder t;
+  ir::Block& target = t.block();
+  target.number = 10;
+  target.label = "N10";
+  ir::Block& b = t.block();
+  ir::Stmt jump(ir::StmtKind::Jump, b.range);
+  jump.value = t.num(20);
+  b.stmts.push_back(jump);
+  auto r = t.run();
+  ASSERT_EQ(r.issues.size(), 1u);
+  EXPECT_EQ(r.issues[0].id, DiagId::JumpTargetMissing);
+}
+
 }  // namespace
 }  // namespace ncc
