@@ -135,9 +135,10 @@ void Machine::emit(Event e) {
   // rest does not (the machine's state still follows it in a dry run).
   if (block_.error) return;
   e.source = block_.request ? block_.request->source : 0;
-  // A move starts where the machine stands (it moves after its event).
+  // A move starts where the machine stands (it moves after its event); only the
+  // cutter path needs to know.
   const bool move = e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc;
-  if (!move) return out(e);
+  if (!move || !conv_.comp_path) return out(e);
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
   out(e, &start);
 }
@@ -717,13 +718,17 @@ BlockResult Machine::execute(const BlockRequest& request) {
   // 4. The action of the block; a corner before it is cut now, one after it waits.
   const bool corner_here = corner_requested();
   if (corner_) corner_codes();
-  const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
-  if (corner_here && !holding_) hold_start_ = start;
-  if (corner_here) holding_ = true;
+  AxisValues start{};  // of this block's move, when a corner follows it
+  if (corner_here) {
+    start = motion_event(EventKind::Linear, machine_).pos;
+    if (!holding_) hold_start_ = start;
+    holding_ = true;
+  }
   const size_t block_from = held_.size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
-  const bool moves = has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word));
-  const bool zeroed = conv_.comp_path && moves && (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
+  const bool zeroed = conv_.comp_path &&
+                      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
+                      (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
   if (zeroed) path_.suspend();
   action();
   if (zeroed) path_.resume();
