@@ -920,25 +920,26 @@ ir::ExprId Reader::operand(ir::ExprId e) {
   return program_.add({ir::ExprOp::ZeroIfVacant, Builtin::Sin, 0, 0, e, ir::kNoExpr, program_.exprs[e].range});
 }
 
-ir::ExprId Reader::expr(IsoParser::ExprContext* ctx) {
-  auto parts = ctx->andExpr();
-  ir::ExprId e = and_expr(parts[0]);
+// A chain `a op b op c` of one precedence level, left to right; `op_of` gives the IR
+// operator of each operator token. Its operands are arithmetic: vacant reads as 0.
+template <typename Ctx, typename Part, typename Read, typename OpOf>
+ir::ExprId Reader::chain(Ctx* ctx, const std::vector<Part*>& parts, Read operand_of, OpOf op_of) {
+  ir::ExprId e = (this->*operand_of)(parts[0]);
   size_t k = 1;
-  for (auto* child : ctx->children) {
-    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
-    if (!t) continue;
-    ir::ExprOp op = t->getSymbol()->getType() == IsoLexer::XOR ? ir::ExprOp::Xor : ir::ExprOp::Or;
-    e = program_.add({op, Builtin::Sin, 0, 0, operand(e), operand(and_expr(parts[k++])), range(ctx)});
-  }
+  for (auto* child : ctx->children)
+    if (auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child))
+      e = program_.add({op_of(t->getSymbol()->getType()), Builtin::Sin, 0, 0, operand(e),
+                        operand((this->*operand_of)(parts[k++])), range(ctx)});
   return e;
 }
 
+ir::ExprId Reader::expr(IsoParser::ExprContext* ctx) {
+  return chain(ctx, ctx->andExpr(), &Reader::and_expr,
+               [](size_t t) { return t == IsoLexer::XOR ? ir::ExprOp::Xor : ir::ExprOp::Or; });
+}
+
 ir::ExprId Reader::and_expr(IsoParser::AndExprContext* ctx) {
-  auto parts = ctx->compare();
-  ir::ExprId e = compare(parts[0]);
-  for (size_t k = 1; k < parts.size(); ++k)
-    e = program_.add({ir::ExprOp::And, Builtin::Sin, 0, 0, operand(e), operand(compare(parts[k])), range(ctx)});
-  return e;
+  return chain(ctx, ctx->compare(), &Reader::compare, [](size_t) { return ir::ExprOp::And; });
 }
 
 ir::ExprId Reader::compare(IsoParser::CompareContext* ctx) {
@@ -957,30 +958,14 @@ ir::ExprId Reader::compare(IsoParser::CompareContext* ctx) {
 }
 
 ir::ExprId Reader::sum(IsoParser::SumContext* ctx) {
-  auto parts = ctx->term();
-  ir::ExprId e = term(parts[0]);
-  size_t k = 1;
-  for (auto* child : ctx->children) {
-    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
-    if (!t) continue;
-    ir::ExprOp op = t->getSymbol()->getType() == IsoLexer::PLUS ? ir::ExprOp::Add : ir::ExprOp::Sub;
-    e = program_.add({op, Builtin::Sin, 0, 0, operand(e), operand(term(parts[k++])), range(ctx)});
-  }
-  return e;
+  return chain(ctx, ctx->term(), &Reader::term,
+               [](size_t t) { return t == IsoLexer::PLUS ? ir::ExprOp::Add : ir::ExprOp::Sub; });
 }
 
 ir::ExprId Reader::term(IsoParser::TermContext* ctx) {
-  auto parts = ctx->factor();
-  ir::ExprId e = factor(parts[0]);
-  size_t k = 1;
-  for (auto* child : ctx->children) {
-    auto* t = dynamic_cast<antlr4::tree::TerminalNode*>(child);
-    if (!t) continue;
-    const size_t type = t->getSymbol()->getType();
-    ir::ExprOp op = type == IsoLexer::STAR ? ir::ExprOp::Mul : type == IsoLexer::SLASH ? ir::ExprOp::Div : ir::ExprOp::Mod;
-    e = program_.add({op, Builtin::Sin, 0, 0, operand(e), operand(factor(parts[k++])), range(ctx)});
-  }
-  return e;
+  return chain(ctx, ctx->factor(), &Reader::factor, [](size_t t) {
+    return t == IsoLexer::STAR ? ir::ExprOp::Mul : t == IsoLexer::SLASH ? ir::ExprOp::Div : ir::ExprOp::Mod;
+  });
 }
 
 ir::ExprId Reader::factor(IsoParser::FactorContext* ctx) {

@@ -57,6 +57,8 @@ class Reader {
   // Parse-tree walking.
   SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
   SourceRange range(antlr4::ParserRuleContext* ctx) const { return range(ctx->getStart(), ctx->getStop()); }
+  template <typename Ctx, typename Part, typename Read, typename OpOf>
+  ir::ExprId chain(Ctx* ctx, const std::vector<Part*>& parts, Read operand_of, OpOf op_of);
   ir::ExprId expr(IsoParser::ExprContext* ctx);
   ir::ExprId and_expr(IsoParser::AndExprContext* ctx);
   ir::ExprId compare(IsoParser::CompareContext* ctx);
