@@ -80,7 +80,16 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
   // block along the normal) shows that no move of the G40 block leaves the path, so
   // the tool leaves at a right angle first (§8.10, figure 33).
   if (leaving_ && waiting_ && (e.source != leave_source_ || (is_move(e) && start && !in_plane(e, *start)))) leave(true);
-  if (e.kind == EventKind::Plane) plane_ = e.plane;
+  if (e.kind == EventKind::Plane) {
+    // A plane change comes with G40 in its block (E-10 refuses it otherwise): the path
+    // leaves in its own plane first, at a right angle.
+    if (waiting_ && !(e.plane == plane_)) {
+      leaving_ = true;
+      leave_source_ = e.source;
+      leave(true);
+    }
+    plane_ = e.plane;
+  }
   if (e.kind == EventKind::CutterComp) {
     if (e.n != side_ || e.a != radius_) {
       if (side_ == 0) right_angle_ = true;  // until a move of the same block shows otherwise

@@ -143,6 +143,13 @@ void Machine::emit(Event e) {
   out(e, &start);
 }
 
+bool Machine::block_has(Fn fn) const {
+  for (size_t i = 0; i < block_.request->code_count; ++i)
+    for (const FnCall& call : sem_.codes[block_.request->codes[i]].calls)
+      if (call.fn == fn) return true;
+  return false;
+}
+
 void Machine::out(const Event& e, const AxisValues* start) {
   if (!holding_) return to_path(e, start);
   held_.push_back(e);
@@ -269,6 +276,13 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PlaneXY:
     case Fn::PlaneZX:
     case Fn::PlaneYZ:
+      // ISO §8.10 (E-10): the plane stays while cutter compensation is on, unless G40
+      // in the same block (in any word order) ends it.
+      if (emit_events && conv_.fanuc_rules && modal_.comp != 0 && block_.request &&
+          modal_.plane != kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2] && !block_has(Fn::CompOff)) {
+        report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
+        break;
+      }
       modal_.plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
       if (emit_events) plane_event();
       break;
@@ -697,7 +711,6 @@ BlockResult Machine::execute(const BlockRequest& request) {
   block_.comp_before = modal_.comp;
   block_.length_before = block_.compensation.length;
   block_.radius_before = block_.compensation.radius;
-  block_.plane_before = modal_.plane;
   auto failed = [&] { return block_.error && stop_on_error_; };
   if (request.dynamic_codes) check_dynamic_codes();
   if (failed()) return BlockResult::Error;

@@ -210,7 +210,6 @@ class Machine {
     int comp_before = 0;          // the cutter compensation when the block started
     AxisValues length_before{};   // ... and the tool length offset
     double radius_before = 0;     // ... and the cutter radius
-    Plane plane_before;           // ... and the plane
   };
 
   // Words.
@@ -315,6 +314,7 @@ class Machine {
   void rotation_on();         // ISO G68
   bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
   bool comp_locked(bool changes);  // ISO: no frame or unit change while G41/G42 is on
+  bool block_has(Fn fn) const;     // a code of the block calls fn
   void comp_on_arc_rules();   // ISO E-11, E-13, E-14
   void position_offset_event();
 

@@ -782,11 +782,6 @@ void Machine::rotation_on() {
 }
 
 void Machine::comp_on_arc_rules() {
-  // §8.10 (E-10): the plane stays while cutter compensation is on (in any word order).
-  if (modal_.plane != block_.plane_before && block_.comp_before != 0 && modal_.comp != 0) {
-    report(DiagId::PlaneState, 0, plane_name(modal_.plane) + " plane", "cutter radius compensation");
-    modal_.plane = block_.plane_before;
-  }
   const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (!arc || !has_axis_word()) return;
   // §8.11 (E-15): the length offset does not change on a helix.
