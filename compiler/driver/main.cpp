@@ -31,6 +31,7 @@ struct Command {
 constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110, pp, iso (default gost)
   --machine FILE            machine profile (TOML, docs/profile.md); default: built in
   --lib DIR                 program library: where called programs are found (NC-110 CLS, pp G72, iso M98 G65)
+  --no-fast-path            read every block with the ANTLR parser (the fast path must give the same IR)
   --diagnostics-format F    text | json | sarif (default text)
   --error-limit N           stop after N errors (default 100, 0 = no limit)
   --color WHEN              auto | always | never (default auto)
@@ -79,6 +80,7 @@ struct Options {
   std::string dialect = "gost";
   std::string machine;
   std::string library;
+  bool fast_path = true;
   std::string trace = "-";
   TraceFormat trace_format = TraceFormat::Text;
   DiagFormat diag_format = DiagFormat::Text;
@@ -115,6 +117,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(o.machine)) return "--machine needs a file";
     } else if (a == "--lib") {
       if (!value(o.library)) return "--lib needs a directory";
+    } else if (a == "--no-fast-path") {
+      o.fast_path = false;
     } else if (a == "--diagnostics-format") {
       if (!value(text)) return "--diagnostics-format needs text, json or sarif";
       if (text == "text") o.diag_format = DiagFormat::Text;
@@ -166,6 +170,7 @@ class Cli {
  public:
   explicit Cli(Options o) : o_(std::move(o)), s_(o_.error_limit) {
     s_.library = o_.library;
+    s_.fast_path = o_.fast_path;
     color_ = o_.color == "always" || (o_.color == "auto" && isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"));
   }
 

@@ -178,7 +178,7 @@ std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string&
   stdlib::load_machine_config(*s.profile, s.diags);
   s.profile->report_unused(s.diags);
   if (!frontend || s.diags.error_count() != errors) return std::nullopt;
-  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library});
+  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags);
   return program;
 }

@@ -20,6 +20,7 @@ struct Session {
   Diagnostics diags;
   std::optional<stdlib::Profile> profile;
   std::string library;  // --lib: where called programs are found
+  bool fast_path = true;  // --no-fast-path: every block through the ANTLR parser (to compare)
 
   explicit Session(uint32_t error_limit = 100) : diags(error_limit) {}
 };

@@ -17,6 +17,7 @@ namespace ncc {
 
 struct ReadOptions {
   std::string library;  // where called programs are looked for ("" = the dialect's default)
+  bool fast_path = true;  // plain word blocks by the hand-written scanner (false: every block by ANTLR)
 };
 
 class Frontend {

@@ -35,7 +35,7 @@ class IsoFrontend final : public Frontend {
     const auto space = static_cast<uint16_t>(program.spaces.size());
     program.spaces.push_back(vars);
 
-    Reader main(s_, program, sources.file(file), file, diags, space, std::nullopt);
+    Reader main(s_, program, sources.file(file), file, diags, space, std::nullopt, options.fast_path);
     main.run();
     std::deque<ProgramCall> pending(main.calls().begin(), main.calls().end());
     // Called programs the file does not hold: O<nnnn>[.nc] in the library (decision 12).
@@ -54,7 +54,7 @@ class IsoFrontend final : public Frontend {
         continue;
       }
       program.files.push_back(*f);
-      Reader called(s_, program, sources.file(*f), *f, diags, space, call.name);
+      Reader called(s_, program, sources.file(*f), *f, diags, space, call.name, options.fast_path);
       called.run();
       for (const ProgramCall& c : called.calls()) pending.push_back(c);
     }

@@ -92,9 +92,9 @@ class Reader::Errors final : public antlr4::BaseErrorListener {
 std::string Reader::program_name(uint32_t number) { return fmt::format("O{:04}", number); }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-               Diagnostics& diags, uint16_t space, std::optional<std::string> called)
+               Diagnostics& diags, uint16_t space, std::optional<std::string> called, bool fast_path)
     : s_(settings), program_(program), source_(source), file_(file), diags_(diags), space_(space),
-      called_(std::move(called)), errors_(std::make_unique<Errors>(*this)) {
+      called_(std::move(called)), fast_path_(fast_path), errors_(std::make_unique<Errors>(*this)) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.addErrorListener(errors_.get());
@@ -250,6 +250,7 @@ void Reader::end_unit() {
       unit_.blocks[call.block].has_errors = true;
     }
   }
+  const std::vector<LocalCall> local_calls = std::move(local_calls_);
   local_calls_.clear();
   if (unit_.kind != ir::UnitKind::Program) {
     // E-23, E-28: a subprogram or macro ends with M99 (its last block that does anything).
@@ -261,10 +262,16 @@ void Reader::end_unit() {
     });
     if (!returns) diags_.report(DiagId::ProgramStructure, last ? last->range : unit_.range, fmt::format("{} does not end with M99", unit_.name));
   }
-  // §8.34.2: a block number used twice: jumps go to the first.
+  // §8.34.2: a block number used twice that a GOTO or M97 names: it goes to the
+  // first. (CAM output numbers its blocks round and round: only a target matters.)
+  std::set<std::string> targets;
+  for (const ir::Block& b : unit_.blocks)
+    for (const ir::Stmt& s : b.stmts)
+      if (s.kind == ir::StmtKind::Jump && !s.label.empty()) targets.insert(s.label);
+  for (const LocalCall& call : local_calls) targets.insert(call.label);
   std::map<uint32_t, const ir::Block*> numbers;
   for (const ir::Block& b : unit_.blocks)
-    if (b.number)
+    if (b.number && targets.count(fmt::format("N{}", *b.number)))
       if (auto [it, fresh] = numbers.emplace(*b.number, &b); !fresh)
         if (Diagnostic* d = diags_.report(DiagId::BlockNumberRepeated, b.range, *b.number, unit_.name))
           d->notes.push_back({it->second->range, "a GOTO or M97 goes here"});
@@ -364,17 +371,21 @@ void Reader::read(const Piece& piece) {
     return;
   }
 
+  // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
+  // rest (both give the same IR: tests/fastpath).
+  FastBlock plain;
+  const bool fast = fast_path_ && scan_plain(plain);
   // E-32: brackets that do not pair up.
-  const auto open = std::count(sanitized_.begin(), sanitized_.end(), '[');
-  const auto shut = std::count(sanitized_.begin(), sanitized_.end(), ']');
+  const auto open = fast ? 0 : std::count(sanitized_.begin(), sanitized_.end(), '[');
+  const auto shut = fast ? 0 : std::count(sanitized_.begin(), sanitized_.end(), ']');
   IsoParser::BlockContext* ctx = nullptr;
   if (open != shut) {
     diags_.report(DiagId::BracketsUnbalanced, whole, open, shut);
-  } else {
+  } else if (!fast) {
     ctx = parser_.block();
   }
-  const bool bad = !ctx || errors_->any;
-  IsoParser::BodyContext* body = bad ? nullptr : ctx->body();
+  const bool bad = !fast && (!ctx || errors_->any);
+  IsoParser::BodyContext* body = bad || fast ? nullptr : ctx->body();
   auto* head = body ? body->braceHead() : nullptr;
 
   // After a '}': ELIF or ELSE continues the IF; anything else ends it.
@@ -421,27 +432,15 @@ void Reader::read(const Piece& piece) {
   }
   block_ = ir::Block{};
   block_.range = whole;
-  block_.skippable = ctx->SLASH() != nullptr;
-  if (auto* seq = ctx->SEQUENCE()) {
-    std::string digits(trim(seq->getText().substr(1)));
-    uint32_t n = 0;
-    auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
-    SourceRange r = range(seq->getSymbol(), seq->getSymbol());
-    if (ec != std::errc() || n > 99999) {
-      diags_.report(DiagId::ValueRange, r, "N" + digits, "N", 0, 99999);
-    } else {
-      block_.number = n;
-      unit_.blocks[index].label = fmt::format("N{}", n);  // §8.34.2 (decision 5): N01 is N1
-      ir::Word w;
-      w.kind = ir::WordKind::BlockNumber;
-      w.slot = static_cast<uint8_t>(letter_slot('N'));
-      w.address = "N";
-      w.text = digits;
-      w.value = program_.number(n, r);
-      w.range = r;
-      block_.words.push_back(std::move(w));
-    }
+  if (fast) {
+    block_.skippable = plain.skip;
+    if (plain.sequence) number_block(plain.sequence->first, plain.sequence->second, index);
+    words(plain.words, nullptr, ir::kNoExpr);
+    return finish_read(index);
   }
+  block_.skippable = ctx->SLASH() != nullptr;
+  if (auto* seq = ctx->SEQUENCE())
+    number_block(std::string(trim(seq->getText().substr(1))), range(seq->getSymbol(), seq->getSymbol()), index);
 
   if (auto* prog = ctx->PROGRAM()) {
     // §8.16, §8.33: OXXXX alone in its block starts a subprogram or macro.
@@ -557,6 +556,10 @@ void Reader::read(const Piece& piece) {
       words(ws, ir::kNoExpr);
     }
   }
+  finish_read(index);
+}
+
+void Reader::finish_read(size_t index) {
   // The block read into block_ is the one new_block() made (a label may have been
   // given to it meanwhile).
   ir::Block& target = unit_.blocks[index];
@@ -565,6 +568,121 @@ void Reader::read(const Piece& piece) {
   block_.has_errors = block_.has_errors || target.has_errors;
   target = std::move(block_);
   block_ = ir::Block{};
+}
+
+void Reader::number_block(const std::string& digits, SourceRange r, size_t index) {
+  uint32_t n = 0;
+  auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+  if (ec != std::errc() || n > 99999) {
+    diags_.report(DiagId::ValueRange, r, "N" + digits, "N", 0, 99999);
+    return;
+  }
+  block_.number = n;
+  unit_.blocks[index].label = fmt::format("N{}", n);  // §8.34.2 (decision 5): N01 is N1
+  ir::Word w;
+  w.kind = ir::WordKind::BlockNumber;
+  w.slot = static_cast<uint8_t>(letter_slot('N'));
+  w.address = "N";
+  w.text = digits;
+  w.value = program_.number(n, r);
+  w.range = r;
+  block_.words.push_back(std::move(w));
+}
+
+// ---- The fast path --------------------------------------------------------------------------
+
+// `[/] [N<digits>] {<letter> [sign] <number>}` with blanks anywhere between the parts,
+// as the grammar reads them; anything else (a variable, a bracket, a keyword, O, a
+// comma) is for the parser. Columns are those the parser would give.
+bool Reader::scan_plain(FastBlock& out) {
+  const std::string& t = sanitized_;
+  const size_t n = t.size();
+  size_t i = 0;
+  auto blanks = [&] {
+    while (i < n && (t[i] == ' ' || t[i] == '\t' || t[i] == '\r')) ++i;
+  };
+  auto digit = [&](size_t k) { return k < n && t[k] >= '0' && t[k] <= '9'; };
+  auto at = [&](size_t from, size_t to) {
+    return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_, base_ + static_cast<uint32_t>(to) + 1};
+  };
+  blanks();
+  if (i < n && t[i] == '/') {
+    out.skip = true;
+    ++i;
+    blanks();
+  }
+  if (i < n && t[i] == 'N') {
+    const size_t from = i++;
+    blanks();
+    if (!digit(i)) return false;
+    const size_t digits = i;
+    while (digit(i)) ++i;
+    out.sequence = {t.substr(digits, i - digits), at(from, i)};
+  }
+  while (true) {
+    blanks();
+    if (i == n) return true;
+    const char letter = t[i];
+    if (letter < 'A' || letter > 'Z' || letter == 'N' || letter == 'O') return false;
+    const size_t from = i++;
+    blanks();
+    const size_t value_from = i;
+    bool minus = false;
+    if (i < n && (t[i] == '+' || t[i] == '-')) {
+      minus = t[i] == '-';
+      ++i;
+      blanks();
+    }
+    // NUMBER: digits [. [digits]] | . digits
+    const size_t number_from = i;
+    while (digit(i)) ++i;
+    const bool point = i < n && t[i] == '.';
+    if (point) {
+      if (i == number_from && !digit(i + 1)) return false;
+      ++i;
+      while (digit(i)) ++i;
+    }
+    if (i == number_from) return false;
+    // The next thing is a blank, another word or the end: `X1.2.3` is for the parser.
+    if (i < n && !(t[i] == ' ' || t[i] == '\t' || t[i] == '\r' || (t[i] >= 'A' && t[i] <= 'Z'))) return false;
+    // A keyword (`GOTO`, `IF`) never follows a number, so a letter here starts a word.
+    std::string number = t.substr(number_from, i - number_from);
+    double v = 0;
+    std::from_chars(number.data(), number.data() + number.size(), v);
+    RawWord w;
+    w.letter = letter;
+    w.value = program_.number(minus ? -v : v, at(value_from, i));
+    w.text = (t[value_from] == '+' || t[value_from] == '-' ? std::string(1, t[value_from]) : std::string()) + number;
+    w.range = at(from, i);
+    w.literal = !point;
+    out.words.push_back(std::move(w));
+  }
+}
+
+Reader::RawWord Reader::raw_word(IsoParser::WordContext* wc) {
+  RawWord w;
+  w.letter = wc->LETTER()->getText()[0];
+  in_word_ = true;
+  w.value = value(wc->value(), w.literal);
+  in_word_ = false;
+  w.text = wc->value()->getText();
+  w.range = range(wc);
+  return w;
+}
+
+void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
+  std::vector<RawWord> list;
+  for (auto* wc : ctx->word()) list.push_back(raw_word(wc));
+  std::optional<RawWord> corner;
+  if (ctx->COMMA()) {
+    RawWord c;
+    c.letter = ctx->LETTER()->getText()[0];
+    c.value = value(ctx->value(), c.literal);
+    c.text = ctx->value()->getText();
+    c.range = range(ctx->COMMA()->getSymbol(), ctx->value()->getStop());
+    corner = c;
+  }
+  words(list, corner ? &*corner : nullptr, cond);
 }
 
 // ---- Statements ---------------------------------------------------------------------------
@@ -631,26 +749,22 @@ std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t 
   return static_cast<uint32_t>(v);
 }
 
-void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
+void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond) {
   std::set<int> g, m;  // the codes written as numbers
   const size_t first = block_.words.size();  // after the block number
   // §8.16: in a G65 block M is argument #13, not an M code.
   bool macro_call = false;
-  for (auto* wc : ctx->word())
-    macro_call = macro_call || (wc->LETTER()->getText() == "G" && wc->value()->NUMBER() && !wc->value()->MINUS() &&
-                                wc->value()->getText() == "65");
+  for (const RawWord& r : list) macro_call = macro_call || (r.letter == 'G' && r.literal && r.text == "65");
   std::vector<bool> literal_integer;         // of each word from `first` on
-  for (auto* wc : ctx->word()) {
-    const char letter = wc->LETTER()->getText()[0];
-    bool literal = false;
-    in_word_ = true;
-    ir::ExprId e = value(wc->value(), literal);
-    in_word_ = false;
+  for (const RawWord& raw : list) {
+    const char letter = raw.letter;
+    const bool literal = raw.literal;
+    const ir::ExprId e = raw.value;
     ir::Word w;
     w.slot = static_cast<uint8_t>(letter_slot(letter));
     w.address = std::string(1, letter);
-    w.text = wc->value()->getText();
-    w.range = range(wc);
+    w.text = raw.text;
+    w.range = raw.range;
     w.value = e;
     if (letter == 'N' || letter == 'O') {
       diags_.report(DiagId::BlockNumberPosition, w.range, w.address + w.text);
@@ -679,16 +793,16 @@ void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
     literal_integer.push_back(literal);
     block_.words.push_back(std::move(w));
   }
-  if (ctx->COMMA()) {
+  if (corner) {
     // §8.3: ,C chamfer and ,R fillet: the second C or R word, which the runtime reads.
-    const char letter = ctx->LETTER()->getText()[0];
-    bool literal = false;
+    const char letter = corner->letter;
+    const bool literal = corner->literal;
     ir::Word w;
     w.kind = ir::WordKind::Parameter;
     w.address = std::string(1, letter) + "'";
-    w.text = ctx->value()->getText();
-    w.range = range(ctx->COMMA()->getSymbol(), ctx->value()->getStop());
-    w.value = value(ctx->value(), literal);
+    w.text = corner->text;
+    w.range = corner->range;
+    w.value = corner->value;
     if (letter == 'C' || letter == 'R') {
       w.slot = static_cast<uint8_t>(second_slot(letter));
       corner_ = w.range;

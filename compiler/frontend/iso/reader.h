@@ -30,7 +30,7 @@ class Reader {
  public:
   // `called`: the file of a called program (its blocks form one subprogram named so).
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
-         uint16_t space, std::optional<std::string> called);
+         uint16_t space, std::optional<std::string> called, bool fast_path);
   ~Reader();
 
   // Appends the file's units to the program.
@@ -73,7 +73,25 @@ class Reader {
   ir::ExprId condition(IsoParser::ExprContext* ctx, const char* what);
   ir::Stmt assignment(IsoParser::AssignmentContext* ctx);
   ir::Stmt go_to(IsoParser::GotoStmtContext* ctx);
+  // An address word as the block writes it, from the parse tree or the fast path.
+  struct RawWord {
+    char letter = 0;
+    ir::ExprId value = ir::kNoExpr;
+    std::string text;     // the value as written, without blanks: "-10.5", "#1", "[#2+1]"
+    SourceRange range;    // the whole word
+    bool literal = false; // a number written without a decimal point
+  };
+  struct FastBlock {      // a block of address words only (the fast path)
+    bool skip = false;
+    std::optional<std::pair<std::string, SourceRange>> sequence;  // N's digits
+    std::vector<RawWord> words;
+  };
+  bool scan_plain(FastBlock& out);
+  RawWord raw_word(IsoParser::WordContext* wc);
+  void number_block(const std::string& digits, SourceRange r, size_t index);
+  void finish_read(size_t index);
   void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
+  void words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond);
   bool call_words(ir::ExprId cond);
   void g92_words(size_t first);
   std::optional<uint32_t> whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what);
@@ -91,6 +109,7 @@ class Reader {
   Diagnostics& diags_;
   uint16_t space_;  // the Macro B variables #0..#999
   std::optional<std::string> called_;
+  bool fast_path_;
 
   antlr4::ANTLRInputStream input_;
   IsoLexer lexer_{&input_};
