@@ -37,7 +37,7 @@ def ir_args(command):
 def both(ncc, args, cwd):
     results = []
     for extra in ([], ["--no-fast-path"]):
-        p = subprocess.run([ncc] + args + extra, cwd=cwd, capture_output=True, text=True)
+        p = subprocess.run([ncc] + args[:1] + extra + args[1:], cwd=cwd, capture_output=True, text=True)
         results.append((p.returncode, p.stdout, p.stderr))
     return results
 

@@ -64,8 +64,8 @@ class ErrorListener final : public antlr4::BaseErrorListener {
 class Reader final : public ncc_gost::GostParserBaseVisitor {
  public:
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-         Diagnostics& diags)
-      : s_(settings), program_(program), source_(source), file_(file), diags_(diags) {
+         Diagnostics& diags, bool fast_path)
+      : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(fast_path) {
     lexer_.removeErrorListeners();
     parser_.removeErrorListeners();
     parser_.addErrorListener(&listener_);
@@ -89,6 +89,10 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   antlrcpp::Any visitSkip(GostParser::SkipContext* ctx) override;
   antlrcpp::Any visitBlockNumber(GostParser::BlockNumberContext* ctx) override;
   antlrcpp::Any visitWord(GostParser::WordContext* ctx) override;
+  // A word or block number as written, from the parse tree or the fast path.
+  void block_number(bool main, const WrittenNumber& n, SourceRange r, const std::string& text);
+  void address_word(char letter, const WrittenNumber& n, SourceRange r, std::string text);
+  bool scan_plain(std::string_view line);
   antlrcpp::Any visitComment(GostParser::CommentContext* ctx) override;
   antlrcpp::Any visitElement(GostParser::ElementContext* ctx) override;
   void finish_block();
@@ -105,6 +109,7 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   const SourceFile& source_;
   uint32_t file_;
   Diagnostics& diags_;
+  bool fast_path_;
 
   antlr4::ANTLRInputStream input_;
   GostLexer lexer_{&input_};
@@ -257,14 +262,26 @@ void Reader::end_program(SourceRange at, bool terminated) {
 }
 
 void Reader::read_block(std::string_view line, uint32_t line_no) {
-  parse(line, line_no, 0);
+  line_text_ = line;
+  line_no_ = line_no;
+  base_ = 0;
   block_ = ir::Block{};
   seen_element_ = false;
   optional_rest_ = false;
   optional_comments_from_ = SIZE_MAX;
   uint32_t errors = diags_.error_count();
-  GostParser::BlockContext* ctx = parser_.block();
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+  // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
+  // rest (both give the same IR: tests/fastpath).
+  if (fast_path_ && scan_plain(line)) {
+    block_.has_errors = diags_.error_count() != errors;
+    finish_block();
+    return;
+  }
+  block_ = ir::Block{};
+  block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+  parse(line, line_no, 0);
+  GostParser::BlockContext* ctx = parser_.block();
   for (auto* element : ctx->element()) visit(element);
   block_.has_errors = diags_.error_count() != errors;
   finish_block();
@@ -414,7 +431,6 @@ WrittenNumber Reader::written_number(GostParser::SignContext* sign, GostParser::
 antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
   bool main = ctx->COLON() != nullptr;
   SourceRange r = range(ctx);
-  std::string address = main ? ":" : "N";
   if (seen_element_ || block_.number) {
     diags_.report(DiagId::BlockNumberPosition, r, ctx->getText());
     return nullptr;
@@ -424,32 +440,34 @@ antlrcpp::Any Reader::visitBlockNumber(GostParser::BlockNumberContext* ctx) {
     diags_.report(DiagId::FeatureNotInFormat, r, "the main block ':'", ":");
     return nullptr;
   }
+  block_number(main, written_number(ctx->sign(), ctx->number(), main ? ':' : 'N'), r, ctx->getText().substr(1));
+  return nullptr;
+}
+
+void Reader::block_number(bool main, const WrittenNumber& n, SourceRange r, const std::string& text) {
+  std::string address = main ? ":" : "N";
   const char letter = main ? ':' : 'N';
-  WrittenNumber n = written_number(ctx->sign(), ctx->number(), letter);
   if (main && n.before.empty() && n.after.empty()) {
     diags_.report(DiagId::MainBlockNoDigits, r);
-    return nullptr;
+    return;
   }
   const WordFormat* format = s_.format.word('N');
   if (!format) {
     diags_.report(DiagId::AddressUndefined, r, "N");
-    return nullptr;
+    return;
   }
   auto value = decode(letter, *format, n, s_.decode, r, diags_);
-  if (!value) {
-    return nullptr;
-  }
+  if (!value) return;
   block_.number = static_cast<uint32_t>(*value);
   block_.main_block = main;
   ir::Word w;
   w.kind = ir::WordKind::BlockNumber;
   w.slot = static_cast<uint8_t>(letter_slot('N'));
   w.address = address;
-  w.text = ctx->getText().substr(1);
+  w.text = text;
   w.value = program_.number(*value, r);
   w.range = r;
   block_.words.push_back(std::move(w));
-  return nullptr;
 }
 
 int32_t Reader::code_index(char letter, int number) {
@@ -461,12 +479,15 @@ int32_t Reader::code_index(char letter, int number) {
 antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
   seen_element_ = true;
   char letter = ctx->LETTER()->getText()[0];
-  SourceRange r = range(ctx);
-  WrittenNumber n = written_number(ctx->sign(), ctx->number(), letter);
+  address_word(letter, written_number(ctx->sign(), ctx->number(), letter), range(ctx), ctx->getText().substr(1));
+  return nullptr;
+}
+
+void Reader::address_word(char letter, const WrittenNumber& n, SourceRange r, std::string text) {
   ir::Word w;
   w.slot = static_cast<uint8_t>(letter_slot(letter));
   w.address = std::string(1, letter);
-  w.text = ctx->getText().substr(1);
+  w.text = std::move(text);
   w.range = r;
   w.optional = optional_rest_;
   // Table 1 note 2: the format of the NC says which addresses exist.
@@ -475,13 +496,13 @@ antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
     diags_.report(DiagId::AddressUndefined, r, std::string(1, letter));
     w.kind = ir::WordKind::Ignored;
     block_.words.push_back(std::move(w));
-    return nullptr;
+    return;
   }
   auto value = decode(letter, *format, n, s_.decode, r, diags_);
   if (!value) {
     w.kind = ir::WordKind::Ignored;
     block_.words.push_back(std::move(w));
-    return nullptr;
+    return;
   }
   w.value = program_.number(*value, r);
   if (letter == 'G' || letter == 'M') {
@@ -504,10 +525,57 @@ antlrcpp::Any Reader::visitWord(GostParser::WordContext* ctx) {
     d.text = std::to_string(offset);
     block_.words.push_back(std::move(w));
     block_.words.push_back(std::move(d));
-    return nullptr;
+    return;
   }
   block_.words.push_back(std::move(w));
-  return nullptr;
+  return;
+}
+
+// `[N<number>] {<letter>[sign]<number>}`, blanks between the words only: the common
+// block. A blank inside a word, '/', ':', a comment, a damaged number or anything
+// else is for the parser. Nothing is changed before the whole line is known plain.
+bool Reader::scan_plain(std::string_view t) {
+  struct Item {
+    char letter;
+    WrittenNumber number;
+    size_t from, to;
+  };
+  std::vector<Item> items;
+  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  size_t i = 0;
+  const size_t n = t.size();
+  while (true) {
+    while (i < n && blank(t[i])) ++i;
+    if (i == n) break;
+    const char letter = t[i];
+    if (letter < 'A' || letter > 'Z' || (letter == 'N' && !items.empty())) return false;
+    const size_t from = i++;
+    Item item{letter, {}, from, 0};
+    WrittenNumber& w = item.number;
+    if (i < n && (t[i] == '+' || t[i] == '-')) {
+      w.has_sign = true;
+      w.negative = t[i++] == '-';
+    }
+    while (i < n && digit(t[i])) w.before += t[i++];
+    if (i < n && t[i] == '.') {
+      w.has_point = true;
+      ++i;
+      while (i < n && digit(t[i])) w.after += t[i++];
+    }
+    if (w.before.empty() && w.after.empty()) return false;
+    if (i < n && !blank(t[i]) && !(t[i] >= 'A' && t[i] <= 'Z')) return false;
+    item.to = i;
+    items.push_back(std::move(item));
+  }
+  for (const Item& item : items) {
+    const SourceRange r{file_, line_no_, static_cast<uint32_t>(item.from + 1), line_no_, static_cast<uint32_t>(item.to + 1)};
+    const std::string text(t.substr(item.from + 1, item.to - item.from - 1));
+    seen_element_ = true;
+    if (item.letter == 'N') block_number(false, item.number, r, text);
+    else address_word(item.letter, item.number, r, text);
+  }
+  return true;
 }
 
 void Reader::check_comment_text(antlr4::Token* token) {
@@ -543,14 +611,14 @@ class GostFrontend final : public Frontend {
     rules_.pedantic = settings_.decode.mode == Mode::Pedantic;
   }
 
-  ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions&) override {
+  ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
     ir::Program program;
     program.dialect = "gost";
     program.files.push_back(file);
     program.semantics.dialect = "gost";
     program.semantics.conventions = settings_.conventions;
     program.semantics.cycles = settings_.tables.cycles;
-    Reader reader(settings_, program, sources.file(file), file, diags);
+    Reader reader(settings_, program, sources.file(file), file, diags, options.fast_path);
     reader.run();
     // §8: the functions set at power-on and after M02/M30 for the control type.
     set_power_on(program, settings_.tables, settings_.tables.power_on.at(settings_.control_type));
