@@ -3,6 +3,7 @@
 #include <bit>
 #include <map>
 #include <set>
+#include <unordered_map>
 
 #include "vm/opcodes.h"
 
@@ -501,7 +502,7 @@ class Lowering {
   const SourceManager& sources_;
   vm::Module m_;
   std::map<uint32_t, uint32_t> files_;
-  std::map<uint64_t, uint32_t> numbers_;
+  std::unordered_map<uint64_t, uint32_t> numbers_;  // lookups only: the constants keep their first-use order
   std::map<std::string, uint32_t> strings_;
   std::vector<std::pair<uint32_t, std::string>> calls_;  // (operand, entry name)
   std::set<std::string> called_;                          // every entry name a call names
