@@ -812,7 +812,7 @@ void Machine::apply_codes(Timing timing) {
 void Machine::action() {
   if (block_.operands) return;
   const bool axes = has_axis_word();
-  if (conv_.fanuc_rules) comp_on_arc_rules();
+  if (conv_.fanuc_rules) arc_block_rules();
   if (block_.measure != Fn::Count) {
     measure();
     return;

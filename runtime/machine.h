@@ -315,7 +315,7 @@ class Machine {
   bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
   bool comp_locked(bool changes);  // ISO: no frame or unit change while G41/G42 is on
   bool block_has(Fn fn) const;     // a code of the block calls fn
-  void comp_on_arc_rules();   // ISO E-11, E-13, E-14
+  void arc_block_rules();     // ISO E-11, E-13, E-14, E-15: what an arc block may change
   void position_offset_event();
 
   // Motions (machine_motion.cpp).

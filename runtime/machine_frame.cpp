@@ -781,7 +781,7 @@ void Machine::rotation_on() {
   transform_event();
 }
 
-void Machine::comp_on_arc_rules() {
+void Machine::arc_block_rules() {
   const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (!arc || !has_axis_word()) return;
   // §8.11 (E-15): the length offset does not change on a helix.

@@ -174,11 +174,14 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
   }
   for (const ir::Unit& u : program.units) {
     entries.insert(u.name);
-    for (const ir::Block& b : u.blocks) {
+    for (const ir::Block& b : u.blocks)
       if (b.main_block && b.number) entries.insert(fmt::format(":{}", *b.number));
-      if (!b.label.empty()) entries.insert(u.name + "/" + b.label);  // Macro B M97: a block of the unit
-    }
   }
+  // Macro B M97 calls a block of its own unit: "unit/label".
+  const std::string own = unit.name + "/";
+  auto callable = [&](const std::string& name) {
+    return name.starts_with(own) ? labels.count(name.substr(own.size())) > 0 : entries.count(name) > 0;
+  };
   for (ir::Block& b : unit.blocks) {
     uint32_t errors = diags.error_count();
     for (const ir::Stmt& s : b.stmts) {
@@ -188,7 +191,7 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
         if (!labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, "block range from", s.label);
         if (!labels.count(s.end_label)) diags.report(DiagId::LabelUndefined, s.end_range, "block range to", s.end_label);
       }
-      if (s.kind == ir::StmtKind::Call && !entries.count(s.label) && !b.has_errors)
+      if (s.kind == ir::StmtKind::Call && !callable(s.label) && !b.has_errors)
         diags.report(DiagId::CallUndefined, s.range, s.label);
     }
     if (diags.error_count() != errors) b.has_errors = true;

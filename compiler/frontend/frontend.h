@@ -30,6 +30,27 @@ class Frontend {
   virtual const CheckRules& rules() const = 0;
 };
 
+// A front end over its dialect's validated settings, whose tables the checks read.
+template <typename Settings>
+class DialectFrontend : public Frontend {
+ public:
+  explicit DialectFrontend(Settings settings) : s_(std::move(settings)) { rules_.tables = &s_.tables; }
+  DialectFrontend(const DialectFrontend&) = delete;  // rules_ points into s_
+  DialectFrontend& operator=(const DialectFrontend&) = delete;
+  const CheckRules& rules() const override { return rules_; }
+
+ protected:
+  Settings s_;
+  CheckRules rules_;
+};
+
+// The front end T over `settings`, or nothing when they are invalid (reported).
+template <typename T, typename Settings>
+std::unique_ptr<Frontend> make_dialect_frontend(std::optional<Settings> settings) {
+  if (!settings) return nullptr;
+  return std::make_unique<T>(std::move(*settings));
+}
+
 std::vector<std::string_view> dialect_names();
 
 // The text of a program file a program calls (NC-110 CLS, pp G72): nothing if it is

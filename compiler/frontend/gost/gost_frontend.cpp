@@ -604,11 +604,10 @@ antlrcpp::Any Reader::visitComment(GostParser::CommentContext* ctx) {
   return nullptr;
 }
 
-class GostFrontend final : public Frontend {
+class GostFrontend final : public DialectFrontend<Settings> {
  public:
-  explicit GostFrontend(Settings settings) : settings_(std::move(settings)) {
-    rules_.tables = &settings_.tables;
-    rules_.pedantic = settings_.decode.mode == Mode::Pedantic;
+  explicit GostFrontend(Settings settings) : DialectFrontend(std::move(settings)) {
+    rules_.pedantic = s_.decode.mode == Mode::Pedantic;
   }
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
@@ -616,29 +615,20 @@ class GostFrontend final : public Frontend {
     program.dialect = "gost";
     program.files.push_back(file);
     program.semantics.dialect = "gost";
-    program.semantics.conventions = settings_.conventions;
-    program.semantics.cycles = settings_.tables.cycles;
-    Reader reader(settings_, program, sources.file(file), file, diags, options.fast_path);
+    program.semantics.conventions = s_.conventions;
+    program.semantics.cycles = s_.tables.cycles;
+    Reader reader(s_, program, sources.file(file), file, diags, options.fast_path);
     reader.run();
     // §8: the functions set at power-on and after M02/M30 for the control type.
-    set_power_on(program, settings_.tables, settings_.tables.power_on.at(settings_.control_type));
+    set_power_on(program, s_.tables, s_.tables.power_on.at(s_.control_type));
     return program;
   }
-
-  const CheckRules& rules() const override { return rules_; }
-
- private:
-
-  Settings settings_;
-  CheckRules rules_;
 };
 
 }  // namespace
 
 std::unique_ptr<Frontend> make_gost_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
-  auto settings = load_settings(profile, diags);
-  if (!settings) return nullptr;
-  return std::make_unique<GostFrontend>(std::move(*settings));
+  return make_dialect_frontend<GostFrontend>(load_settings(profile, diags));
 }
 
 }  // namespace ncc::gost

@@ -12,11 +12,9 @@ namespace ncc::iso {
 
 namespace {
 
-
-class IsoFrontend final : public Frontend {
+class IsoFrontend final : public DialectFrontend<Settings> {
  public:
-  explicit IsoFrontend(Settings settings) : s_(std::move(settings)) {
-    rules_.tables = &s_.tables;
+  explicit IsoFrontend(Settings settings) : DialectFrontend(std::move(settings)) {
     rules_.block_number_order = false;  // any order; GOTO finds its block by number
     rules_.recursion = true;            // a macro may call itself until a condition stops it
   }
@@ -62,20 +60,12 @@ class IsoFrontend final : public Frontend {
     add_dynamic_codes(program, s_.tables, {"G65", "M97", "M98", "M99"});
     return program;
   }
-
-  const CheckRules& rules() const override { return rules_; }
-
- private:
-  Settings s_;
-  CheckRules rules_;
 };
 
 }  // namespace
 
 std::unique_ptr<Frontend> make_iso_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
-  auto settings = load_settings(profile, diags);
-  if (!settings) return nullptr;
-  return std::make_unique<IsoFrontend>(std::move(*settings));
+  return make_dialect_frontend<IsoFrontend>(load_settings(profile, diags));
 }
 
 }  // namespace ncc::iso

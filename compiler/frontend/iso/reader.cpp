@@ -121,7 +121,6 @@ void Reader::run() {
 // ---- Cutting the text -------------------------------------------------------------
 
 void Reader::cut(std::vector<Piece>& pieces) {
-  std::string_view text = source_.text();
   bool started = false;  // a '%' line was seen (the tape start)
   for (uint32_t line_no = 1; line_no <= source_.line_count(); ++line_no) {
     std::string_view line = source_.line(line_no);
@@ -168,7 +167,6 @@ void Reader::cut(std::vector<Piece>& pieces) {
     }
     close(base + line.size());
   }
-  (void)text;
 }
 
 void Reader::load(const Piece& piece) {
@@ -659,29 +657,25 @@ bool Reader::scan_plain(FastBlock& out) {
   }
 }
 
-Reader::RawWord Reader::raw_word(IsoParser::WordContext* wc) {
+// A word of the parse tree; `address`: its value is an address's (ROUND keeps decimals).
+Reader::RawWord Reader::raw_word(antlr4::tree::TerminalNode* letter, IsoParser::ValueContext* v, SourceRange r,
+                                 bool address) {
   RawWord w;
-  w.letter = wc->LETTER()->getText()[0];
-  in_word_ = true;
-  w.value = value(wc->value(), w.literal);
+  w.letter = letter->getText()[0];
+  in_word_ = address;
+  w.value = value(v, w.literal);
   in_word_ = false;
-  w.text = wc->value()->getText();
-  w.range = range(wc);
+  w.text = v->getText();
+  w.range = r;
   return w;
 }
 
 void Reader::words(IsoParser::WordsContext* ctx, ir::ExprId cond) {
   std::vector<RawWord> list;
-  for (auto* wc : ctx->word()) list.push_back(raw_word(wc));
+  for (auto* wc : ctx->word()) list.push_back(raw_word(wc->LETTER(), wc->value(), range(wc), true));
   std::optional<RawWord> corner;
-  if (ctx->COMMA()) {
-    RawWord c;
-    c.letter = ctx->LETTER()->getText()[0];
-    c.value = value(ctx->value(), c.literal);
-    c.text = ctx->value()->getText();
-    c.range = range(ctx->COMMA()->getSymbol(), ctx->value()->getStop());
-    corner = c;
-  }
+  if (ctx->COMMA())
+    corner = raw_word(ctx->LETTER(), ctx->value(), range(ctx->COMMA()->getSymbol(), ctx->value()->getStop()), false);
   words(list, corner ? &*corner : nullptr, cond);
 }
 

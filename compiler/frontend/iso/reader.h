@@ -87,7 +87,7 @@ class Reader {
     std::vector<RawWord> words;
   };
   bool scan_plain(FastBlock& out);
-  RawWord raw_word(IsoParser::WordContext* wc);
+  RawWord raw_word(antlr4::tree::TerminalNode* letter, IsoParser::ValueContext* v, SourceRange r, bool address);
   void number_block(const std::string& digits, SourceRange r, size_t index);
   void finish_read(size_t index);
   void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
@@ -126,8 +126,6 @@ class Reader {
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;
   bool expect_brace_ = false;  // a multi-line IF head waits for its '{'
-  bool label_next_ = false;    // the next block starts a loop body: it needs a label
-  std::vector<std::pair<size_t, size_t>> label_wanted_;  // (block, stmt) whose label is the next block's
   struct LocalCall {
     std::string label;  // "N100"
     SourceRange range;

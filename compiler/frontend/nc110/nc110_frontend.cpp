@@ -14,10 +14,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-class Nc110Frontend final : public Frontend {
+class Nc110Frontend final : public DialectFrontend<Settings> {
  public:
-  explicit Nc110Frontend(Settings settings) : s_(std::move(settings)) {
-    rules_.tables = &s_.tables;
+  explicit Nc110Frontend(Settings settings) : DialectFrontend(std::move(settings)) {
     rules_.max_repeat_depth = 3;    // §2.13.2.1: up to two RPT inside another
     rules_.unique_labels = true;    // decision 14
     rules_.block_number_order = false;  // N numbers may repeat and go down (decision 7)
@@ -82,8 +81,6 @@ class Nc110Frontend final : public Frontend {
     return program;
   }
 
-  const CheckRules& rules() const override { return rules_; }
-
  private:
   // E0..E(n-1) typed by Table 2.8, then the byte memories SA, SK, SYVAR.
   void declare_spaces(ir::Program& program) const {
@@ -99,17 +96,12 @@ class Nc110Frontend final : public Frontend {
       program.spaces.push_back(space);
     }
   }
-
-  Settings s_;
-  CheckRules rules_;
 };
 
 }  // namespace
 
 std::unique_ptr<Frontend> make_nc110_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
-  auto settings = load_settings(profile, diags);
-  if (!settings) return nullptr;
-  return std::make_unique<Nc110Frontend>(std::move(*settings));
+  return make_dialect_frontend<Nc110Frontend>(load_settings(profile, diags));
 }
 
 }  // namespace ncc::nc110

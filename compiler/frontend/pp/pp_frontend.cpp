@@ -11,11 +11,9 @@ namespace ncc::pp {
 
 namespace {
 
-
-class PpFrontend final : public Frontend {
+class PpFrontend final : public DialectFrontend<Settings> {
  public:
-  explicit PpFrontend(Settings settings) : s_(std::move(settings)) {
-    rules_.tables = &s_.tables;
+  explicit PpFrontend(Settings settings) : DialectFrontend(std::move(settings)) {
     rules_.block_number_order = false;  // unique in the file (the reader), in any order
   }
 
@@ -66,20 +64,12 @@ class PpFrontend final : public Frontend {
     add_dynamic_codes(program, s_.tables, fixed);
     return program;
   }
-
-  const CheckRules& rules() const override { return rules_; }
-
- private:
-  Settings s_;
-  CheckRules rules_;
 };
 
 }  // namespace
 
 std::unique_ptr<Frontend> make_pp_frontend(const stdlib::Profile& profile, Diagnostics& diags) {
-  auto settings = load_settings(profile, diags);
-  if (!settings) return nullptr;
-  return std::make_unique<PpFrontend>(std::move(*settings));
+  return make_dialect_frontend<PpFrontend>(load_settings(profile, diags));
 }
 
 }  // namespace ncc::pp
