@@ -42,13 +42,6 @@ bool split_row(std::string_view line, std::vector<std::string>& cells, std::stri
   return true;
 }
 
-std::optional<int> parse_int(std::string_view s) {
-  int v = 0;
-  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
-}
-
 template <typename E>
 bool pick(std::string_view cell, std::initializer_list<std::pair<std::string_view, E>> choices, E& out) {
   for (const auto& [name, value] : choices)
@@ -78,7 +71,7 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
                     a.word_class);
     std::string_view repeat = c[2];
     if (repeat.starts_with("several(") && repeat.ends_with(")")) {
-      auto n = parse_int(repeat.substr(8, repeat.size() - 9));
+      auto n = parse_number<int>(repeat.substr(8, repeat.size() - 9));
       ok = ok && n && *n > 0;
       a.max_count = n.value_or(0);
       repeat = "several";
@@ -87,21 +80,17 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
                     {{"once", Repeat::Once}, {"group", Repeat::Group}, {"several", Repeat::Several},
                      {"feed", Repeat::Feed}, {"twice", Repeat::Twice}},
                     a.repeat);
-    auto order = parse_int(c[3]);
+    auto order = parse_number<int>(c[3]);
     ok = ok && order && (c.size() == 5 || c.size() == 7);
     if (ok && c.size() == 7) {
       if (c[4] != "-") {
         size_t dots = c[4].find("..");
         std::string lo = c[4].substr(0, dots), hi = dots == std::string::npos ? "" : c[4].substr(dots + 2);
-        double min = 0, max = 0;
-        auto number = [](const std::string& text, double& v) {
-          auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-          return ec == std::errc() && p == text.data() + text.size();
-        };
-        ok = dots != std::string::npos && number(lo, min) && number(hi, max) && min <= max;
+        auto min = parse_number<double>(lo), max = parse_number<double>(hi);
+        ok = dots != std::string::npos && min && max && *min <= *max;
         a.ranged = true;
-        a.min = min;
-        a.max = max;
+        a.min = min.value_or(0);
+        a.max = max.value_or(0);
         size_t point = hi.find('.');
         a.decimals = point == std::string::npos ? 0 : static_cast<int>(hi.size() - point - 1);
       }
@@ -195,7 +184,7 @@ bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cyc
       }
       call.arg = static_cast<uint16_t>(i);
     } else if (*fn == Fn::WorkOffset || *fn == Fn::SpindleRangeForce) {
-      auto n = parse_int(arg);
+      auto n = parse_number<int>(arg);
       if (!n || *n < 0 || *n > 99) {
         error = fmt::format("'{}' needs a number 0..99, not '{}'", name, arg);
         return false;
@@ -219,7 +208,7 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
     const auto& c = row.cells;
     CodeEntry e;
     e.letter = letter;
-    auto number = c[0].size() > 1 && c[0][0] == letter ? parse_int(std::string_view(c[0]).substr(1)) : std::nullopt;
+    auto number = c[0].size() > 1 && c[0][0] == letter ? parse_number<int>(std::string_view(c[0]).substr(1)) : std::nullopt;
     if (!number || *number < 0 || *number > 999) {
       report(diags, table, row.line, fmt::format("'{}' is not a {} code", c[0], letter));
       continue;
@@ -310,7 +299,7 @@ DialectTables load_dialect_tables(std::string_view dialect, Diagnostics& diags) 
   if (embedded_file(fmt::format("dialects/{}/congruence.tsv", dialect))) {
     if (auto table = load_table(dialect, "congruence.tsv", 2, diags)) {
       auto g_number = [&](const std::string& cell, uint32_t line) -> std::optional<int> {
-        auto n = cell.size() > 1 && cell[0] == 'G' ? parse_int(std::string_view(cell).substr(1)) : std::nullopt;
+        auto n = cell.size() > 1 && cell[0] == 'G' ? parse_number<int>(std::string_view(cell).substr(1)) : std::nullopt;
         if (!n || !t.g_codes.count(*n)) report(diags, *table, line, fmt::format("'{}' is not a G code of the table", cell));
         return n && t.g_codes.count(*n) ? n : std::nullopt;
       };

@@ -1,6 +1,8 @@
 // How ncc writes numbers and untrusted text, the same way everywhere.
 #pragma once
 
+#include <charconv>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -18,5 +20,14 @@ std::string printable(std::string_view s);
 std::vector<std::string> split(std::string_view s, char sep);
 // `s` without the blanks (space, tab, CR) around it.
 std::string_view trim(std::string_view s);
+// The number all of `s` is, in std::from_chars' syntax (no blanks, no '+'); nothing
+// if it is not one or does not fit T.
+template <typename T>
+std::optional<T> parse_number(std::string_view s) {
+  T v{};
+  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;
+  return v;
+}
 
 }  // namespace ncc

@@ -40,6 +40,17 @@ class DialectFrontend : public Frontend {
   const CheckRules& rules() const override { return rules_; }
 
  protected:
+  // A program of `dialect` whose main file is `file`, with the settings' conventions
+  // and cycles.
+  ir::Program start_program(std::string_view dialect, uint32_t file) const {
+    ir::Program program;
+    program.dialect = program.semantics.dialect = dialect;
+    program.files.push_back(file);
+    program.semantics.conventions = s_.conventions;
+    program.semantics.cycles = s_.tables.cycles;
+    return program;
+  }
+
   Settings s_;
   CheckRules rules_;
 };

@@ -39,6 +39,14 @@ struct Builder {
   }
   ir::ExprId num(double v) { return p.number(v, {}); }
   ir::ExprId var(uint32_t index) { return p.add({ir::ExprOp::Var, Builtin::Sin, 0, 0, num(index), ir::kNoExpr, {}}); }
+  // A variable space of the test's own, and a variable of it.
+  uint16_t space(const VarSpace& vars) {
+    p.spaces.push_back(vars);
+    return static_cast<uint16_t>(p.spaces.size() - 1);
+  }
+  ir::ExprId var_in(uint16_t space, double index) {
+    return p.add({ir::ExprOp::Var, Builtin::Sin, space, 0, num(index), ir::kNoExpr, {}});
+  }
   ir::ExprId var_at(ir::ExprId index) { return p.add({ir::ExprOp::Var, Builtin::Sin, 0, 0, index, ir::kNoExpr, {}}); }
   ir::ExprId bin(ir::ExprOp op, ir::ExprId a, ir::ExprId b) { return p.add({op, Builtin::Sin, 0, 0, a, b, {}}); }
   ir::ExprId call(Builtin f, ir::ExprId a, ir::ExprId b = ir::kNoExpr) {
@@ -506,9 +514,8 @@ TEST(Vm, CallCountRepeatsTheSubprogramWithFreshLocals) {
   Builder t;
   VarSpace local{"C", 1, {}};
   local.locals = local.size;
-  t.p.spaces.push_back(local);
-  const uint16_t c = static_cast<uint16_t>(t.p.spaces.size() - 1);
-  auto counter = [&] { return t.p.add({ir::ExprOp::Var, Builtin::Sin, c, 0, t.num(0), ir::kNoExpr, {}}); };
+  const uint16_t c = t.space(local);
+  auto counter = [&] { return t.var_in(c, 0); };
   ir::Block& set = t.block();
   t.assign(set, counter(), t.num(7));
   ir::Block& caller = t.block();
@@ -546,9 +553,8 @@ TEST(Vm, ThousandthsRoundHalfAwayFromZero) {
   Builder t;
   VarSpace r{"R", 2, {{0, VarType::Thousandths}}};
   r.limit = 70000;
-  t.p.spaces.push_back(r);
-  const uint16_t space = static_cast<uint16_t>(t.p.spaces.size() - 1);
-  auto var = [&](double i) { return t.p.add({ir::ExprOp::Var, Builtin::Sin, space, 0, t.num(i), ir::kNoExpr, {}}); };
+  const uint16_t space = t.space(r);
+  auto var = [&](double i) { return t.var_in(space, i); };
   ir::Block& b = t.block();
   t.assign(b, var(0), t.bin(ir::ExprOp::Div, t.num(10), t.num(3)));
   t.assign(b, var(1), t.num(-0.0125));
@@ -568,9 +574,8 @@ TEST(Vm, VacantVariables) {
   Builder t;
   VarSpace vars{"#", 10, {}};
   vars.vacant = true;
-  t.p.spaces.push_back(vars);
-  const uint16_t s = static_cast<uint16_t>(t.p.spaces.size() - 1);
-  auto var = [&](double i) { return t.p.add({ir::ExprOp::Var, Builtin::Sin, s, 0, t.num(i), ir::kNoExpr, {}}); };
+  const uint16_t s = t.space(vars);
+  auto var = [&](double i) { return t.var_in(s, i); };
   auto zero_if_vacant = [&](ir::ExprId e) { return t.p.add({ir::ExprOp::ZeroIfVacant, Builtin::Sin, 0, 0, e, ir::kNoExpr, {}}); };
   t.move_x(t.block(), t.num(5));
   t.move_x(t.block(), var(1));                                                     // left out: X stays 5
@@ -594,9 +599,8 @@ TEST(Vm, CallArgumentsAndSharedLocals) {
   VarSpace vars{"#", 10, {}};
   vars.vacant = true;
   vars.locals = 5;
-  t.p.spaces.push_back(vars);
-  const uint16_t s = static_cast<uint16_t>(t.p.spaces.size() - 1);
-  auto var = [&](double i) { return t.p.add({ir::ExprOp::Var, Builtin::Sin, s, 0, t.num(i), ir::kNoExpr, {}}); };
+  const uint16_t s = t.space(vars);
+  auto var = [&](double i) { return t.var_in(s, i); };
   ir::Block& set = t.block();
   t.assign(set, var(1), t.num(7));
   t.assign(set, var(3), t.num(9));

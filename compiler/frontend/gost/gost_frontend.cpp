@@ -611,12 +611,7 @@ class GostFrontend final : public DialectFrontend<Settings> {
   }
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
-    ir::Program program;
-    program.dialect = "gost";
-    program.files.push_back(file);
-    program.semantics.dialect = "gost";
-    program.semantics.conventions = s_.conventions;
-    program.semantics.cycles = s_.tables.cycles;
+    ir::Program program = start_program("gost", file);
     Reader reader(s_, program, sources.file(file), file, diags, options.fast_path);
     reader.run();
     // §8: the functions set at power-on and after M02/M30 for the control type.

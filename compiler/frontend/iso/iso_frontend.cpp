@@ -20,11 +20,7 @@ class IsoFrontend final : public DialectFrontend<Settings> {
   }
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
-    ir::Program program;
-    program.dialect = program.semantics.dialect = "iso";
-    program.files.push_back(file);
-    program.semantics.conventions = s_.conventions;
-    program.semantics.cycles = s_.tables.cycles;
+    ir::Program program = start_program("iso", file);
     // #0..#999 (decision 3): #1-#33 local to each macro call, all vacant at the start.
     VarSpace vars{"#", 1000, {{0, VarType::LongReal}, {34, VarType::Unavailable}, {100, VarType::LongReal},
                               {200, VarType::Unavailable}, {500, VarType::LongReal}}};

@@ -1,6 +1,6 @@
 #include "settings.h"
 
-#include <charconv>
+#include "support/text.h"
 
 namespace ncc::iso {
 
@@ -13,13 +13,10 @@ void read_system(Settings& s, Diagnostics& diags) {
   if (!table) return;
   for (const stdlib::TableRow& row : table->rows) {
     const auto& c = row.cells;
-    uint32_t first = 0, last = 0, index = 0;
-    auto number = [](const std::string& t, uint32_t& out) {
-      auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
-      return ec == std::errc() && end == t.data() + t.size();
-    };
+    const auto first = parse_number<uint32_t>(c[0]), last = parse_number<uint32_t>(c[1]);
     auto var = sys_by_name(c[2]);
-    bool ok = number(c[0], first) && number(c[1], last) && first <= last && first >= 1000 && var;
+    bool ok = first && last && *first <= *last && *first >= 1000 && var;
+    uint32_t index = 0;
     if (ok && *var == SysVar::ModalCode) {
       ok = false;
       for (const auto& [n, code] : s.tables.g_codes)
@@ -32,12 +29,14 @@ void read_system(Settings& s, Diagnostics& diags) {
       ok = c[3].size() == 1 && letter_slot(c[3][0]) >= 0 && letter_slot(c[3][0]) < 26;
       if (ok) index = static_cast<uint32_t>(letter_slot(c[3][0]));
     } else if (ok) {
-      ok = number(c[3], index);
+      auto n = parse_number<uint32_t>(c[3]);
+      ok = n.has_value();
+      index = n.value_or(0);
     }
-    for (uint32_t n = first; ok && n <= last; ++n) {
-      SysRef ref{*var, static_cast<uint8_t>(index + (n - first))};
-      ok = index + (n - first) < 256 && ref.valid();
-      if (ok) s.system[n] = ref;
+    for (uint32_t k = 0; ok && k <= *last - *first; ++k) {
+      SysRef ref{*var, static_cast<uint8_t>(index + k)};
+      ok = index + k < 256 && ref.valid();
+      if (ok) s.system[*first + k] = ref;
     }
     if (!ok) report(diags, *table, row.line, fmt::format("malformed row for #{}", c[0]));
   }

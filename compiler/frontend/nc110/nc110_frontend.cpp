@@ -23,11 +23,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
   }
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
-    ir::Program program;
-    program.dialect = program.semantics.dialect = "nc110";
-    program.files.push_back(file);
-    program.semantics.conventions = s_.conventions;
-    program.semantics.cycles = s_.tables.cycles;
+    ir::Program program = start_program("nc110", file);
     declare_spaces(program);
     program.semantics.system_names.resize(static_cast<size_t>(SysVar::Count));
     for (const auto& [name, entry] : s_.system)

@@ -1,20 +1,13 @@
 #include "settings.h"
 
 #include <algorithm>
-#include <charconv>
 
 #include "frontend/frontend.h"
+#include "support/text.h"
 
 namespace ncc::nc110 {
 
 namespace {
-
-std::optional<uint32_t> whole(std::string_view s) {
-  uint32_t v = 0;
-  auto [p, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || p != s.data() + s.size()) return std::nullopt;
-  return v;
-}
 
 // "origin dim+", "[factor axis*]": the operand kinds of a code.
 bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
@@ -102,8 +95,8 @@ void read_system(Settings& s, Diagnostics& diags) {
     }
     if (c[2] != "-") {
       size_t dots = c[2].find("..");
-      uint32_t lo = whole(std::string_view(c[2]).substr(0, dots)).value_or(UINT32_MAX);
-      uint32_t hi = dots == std::string::npos ? UINT32_MAX : whole(std::string_view(c[2]).substr(dots + 2)).value_or(UINT32_MAX);
+      uint32_t lo = parse_number<uint32_t>(std::string_view(c[2]).substr(0, dots)).value_or(UINT32_MAX);
+      uint32_t hi = dots == std::string::npos ? UINT32_MAX : parse_number<uint32_t>(std::string_view(c[2]).substr(dots + 2)).value_or(UINT32_MAX);
       ok = ok && hi != UINT32_MAX && lo <= hi && (!n.var || hi < sys_indices(*n.var));
       n.numbered = true;
       n.first = lo;
@@ -131,12 +124,13 @@ void read_classes(Settings& s, Diagnostics& diags) {
     const auto& c = row.cells;
     ParameterClass p;
     p.name = c[0];
-    auto first = whole(c[1]);
+    auto first = parse_number<uint32_t>(c[1]);
     auto type = kTypes.find(c[2]);
     bool ok = first && type != kTypes.end() && (s.classes.empty() || *first > s.classes.back().first);
     if (ok && c[3] != "-") {
-      auto [end, ec] = std::from_chars(c[3].data(), c[3].data() + c[3].size(), p.limit);
-      ok = ec == std::errc() && end == c[3].data() + c[3].size() && p.limit > 0;
+      auto limit = parse_number<double>(c[3]);
+      ok = limit && *limit > 0;
+      p.limit = limit.value_or(0);
     }
     if (!ok) {
       report(diags, *table, row.line, "malformed parameter class row");
@@ -157,7 +151,7 @@ void read_memories(Settings& s, Diagnostics& diags) {
   for (const stdlib::TableRow& row : table->rows) {
     const auto& c = row.cells;
     auto format = kFormats.find(c[1]);
-    auto bytes = whole(c[2]);
+    auto bytes = parse_number<uint32_t>(c[2]);
     if (format == kFormats.end() || !bytes || *bytes == 0) {
       report(diags, *table, row.line, "malformed memory row");
       continue;
@@ -229,7 +223,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       std::string code = v->substr(at, end - at);
       at = end + 1;
       if (code.empty()) continue;
-      auto number = code.size() > 1 && code[0] == 'G' ? whole(std::string_view(code).substr(1)) : std::nullopt;
+      auto number = code.size() > 1 && code[0] == 'G' ? parse_number<uint32_t>(std::string_view(code).substr(1)) : std::nullopt;
       auto entry = number ? s.tables.g_codes.find(static_cast<int>(*number)) : s.tables.g_codes.end();
       if (entry == s.tables.g_codes.end()) {
         ok = (p.report_value(diags, "nc110.power_on", fmt::format("'{}' is not a G code of the NC-110", code)), false);
@@ -237,7 +231,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       }
       // It replaces the code of its class.
       std::erase_if(s.power_on, [&](const std::string& other) {
-        auto n = other.size() > 1 && other[0] == 'G' ? whole(std::string_view(other).substr(1)) : std::nullopt;
+        auto n = other.size() > 1 && other[0] == 'G' ? parse_number<uint32_t>(std::string_view(other).substr(1)) : std::nullopt;
         auto e = n ? s.tables.g_codes.find(static_cast<int>(*n)) : s.tables.g_codes.end();
         return e != s.tables.g_codes.end() && e->second.group == entry->second.group;
       });

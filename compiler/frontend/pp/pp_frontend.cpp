@@ -18,11 +18,7 @@ class PpFrontend final : public DialectFrontend<Settings> {
   }
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
-    ir::Program program;
-    program.dialect = program.semantics.dialect = "pp";
-    program.files.push_back(file);
-    program.semantics.conventions = s_.conventions;
-    program.semantics.cycles = s_.tables.cycles;
+    ir::Program program = start_program("pp", file);
     // R0..R95, one set for the whole run, fixed point to 0.001 (decision 9); the jump
     // counters of G73, local to each call (decision 14).
     Spaces spaces;

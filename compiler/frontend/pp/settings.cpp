@@ -1,7 +1,5 @@
 #include "settings.h"
 
-#include <charconv>
-
 #include "frontend/frontend.h"
 #include "support/text.h"
 
@@ -34,9 +32,8 @@ void read_control(Settings& s, Diagnostics& diags) {
       if (ok) code.action = it->second;
     }
     const auto& codes = c[0][0] == 'G' ? s.tables.g_codes : s.tables.m_codes;
-    int number = 0;
-    auto [end, ec] = std::from_chars(c[0].data() + 1, c[0].data() + c[0].size(), number);
-    ok = ok && ec == std::errc() && end == c[0].data() + c[0].size() && codes.count(number);
+    auto number = parse_number<int>(std::string_view(c[0]).substr(1));
+    ok = ok && number && codes.count(*number);
     if (!ok) {
       report(diags, *table, row.line, fmt::format("malformed row for '{}'", c[0]));
       continue;
@@ -85,11 +82,9 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
         if (item.empty()) continue;
         const bool basic = item.back() == '+';
         if (basic) item.remove_suffix(1);
-        int n = 0;
-        auto [stop, ec] = item.size() == 3 && item[0] == 'M' ? std::from_chars(item.data() + 1, item.data() + 3, n)
-                                                              : std::from_chars_result{item.data(), std::errc::invalid_argument};
+        const int n = item.size() == 3 && item[0] == 'M' ? parse_number<int>(item.substr(1)).value_or(0) : 0;
         std::string problem;
-        if (ec != std::errc() || stop != item.data() + item.size() || n < 10)
+        if (n < 10)
           problem = fmt::format("'{}' is not an M code 10..99", item);
         else if (auto it = s.tables.m_codes.find(n); it != s.tables.m_codes.end())
           problem = fmt::format("M{} is already in group {}", n, it->second.conflict_sets.front());
