@@ -8,6 +8,7 @@
 #include "GostLexer.h"
 #include "GostParser.h"
 #include "GostParserBaseVisitor.h"
+#include "frontend/plain_words.h"
 #include "settings.h"
 
 namespace ncc::gost {
@@ -535,45 +536,16 @@ void Reader::address_word(char letter, const WrittenNumber& n, SourceRange r, st
 // block. A blank inside a word, '/', ':', a comment, a damaged number or anything
 // else is for the parser. Nothing is changed before the whole line is known plain.
 bool Reader::scan_plain(std::string_view t) {
-  struct Item {
-    char letter;
-    WrittenNumber number;
-    size_t from, to;
-  };
-  std::vector<Item> items;
-  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r'; };
-  auto digit = [](char c) { return c >= '0' && c <= '9'; };
-  size_t i = 0;
-  const size_t n = t.size();
-  while (true) {
-    while (i < n && blank(t[i])) ++i;
-    if (i == n) break;
-    const char letter = t[i];
-    if (letter < 'A' || letter > 'Z' || (letter == 'N' && !items.empty())) return false;
-    const size_t from = i++;
-    Item item{letter, {}, from, 0};
-    WrittenNumber& w = item.number;
-    if (i < n && (t[i] == '+' || t[i] == '-')) {
-      w.has_sign = true;
-      w.negative = t[i++] == '-';
-    }
-    while (i < n && digit(t[i])) w.before += t[i++];
-    if (i < n && t[i] == '.') {
-      w.has_point = true;
-      ++i;
-      while (i < n && digit(t[i])) w.after += t[i++];
-    }
-    if (w.before.empty() && w.after.empty()) return false;
-    if (i < n && !blank(t[i]) && !(t[i] >= 'A' && t[i] <= 'Z')) return false;
-    item.to = i;
-    items.push_back(std::move(item));
-  }
-  for (const Item& item : items) {
-    const SourceRange r{file_, line_no_, static_cast<uint32_t>(item.from + 1), line_no_, static_cast<uint32_t>(item.to + 1)};
-    const std::string text(t.substr(item.from + 1, item.to - item.from - 1));
+  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNOPQRSTUVWXYZ"};
+  PlainBlock block;
+  if (!scan_plain_words(t, kRules, block)) return false;
+  for (const PlainWord& p : block.words) {
+    const SourceRange r{file_, line_no_, p.from + 1, line_no_, p.to + 1};
+    const std::string text(t.substr(p.from + 1, p.to - p.from - 1));
+    const WrittenNumber number{p.sign != 0, p.sign == '-', std::string(p.before), p.point, std::string(p.after)};
     seen_element_ = true;
-    if (item.letter == 'N') block_number(false, item.number, r, text);
-    else address_word(item.letter, item.number, r, text);
+    if (p.letter == 'N') block_number(false, number, r, text);
+    else address_word(p.letter, number, r, text);
   }
   return true;
 }

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "frontend/frontend.h"
+#include "frontend/plain_words.h"
 #include "support/text.h"
 
 namespace ncc::iso {
@@ -593,68 +594,30 @@ void Reader::number_block(const std::string& digits, SourceRange r, size_t index
 // as the grammar reads them; anything else (a variable, a bracket, a keyword, O, a
 // comma) is for the parser. Columns are those the parser would give.
 bool Reader::scan_plain(FastBlock& out) {
-  const std::string& t = sanitized_;
-  const size_t n = t.size();
-  size_t i = 0;
-  auto blanks = [&] {
-    while (i < n && (t[i] == ' ' || t[i] == '\t' || t[i] == '\r')) ++i;
-  };
-  auto digit = [&](size_t k) { return k < n && t[k] >= '0' && t[k] <= '9'; };
+  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true, true};
+  PlainBlock block;
+  if (!scan_plain_words(sanitized_, kRules, block)) return false;
   auto at = [&](size_t from, size_t to) {
     return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_, base_ + static_cast<uint32_t>(to) + 1};
   };
-  blanks();
-  if (i < n && t[i] == '/') {
-    out.skip = true;
-    ++i;
-    blanks();
-  }
-  if (i < n && t[i] == 'N') {
-    const size_t from = i++;
-    blanks();
-    if (!digit(i)) return false;
-    const size_t digits = i;
-    while (digit(i)) ++i;
-    out.sequence = {t.substr(digits, i - digits), at(from, i)};
-  }
-  while (true) {
-    blanks();
-    if (i == n) return true;
-    const char letter = t[i];
-    if (letter < 'A' || letter > 'Z' || letter == 'N' || letter == 'O') return false;
-    const size_t from = i++;
-    blanks();
-    const size_t value_from = i;
-    bool minus = false;
-    if (i < n && (t[i] == '+' || t[i] == '-')) {
-      minus = t[i] == '-';
-      ++i;
-      blanks();
+  out.skip = block.skip;
+  for (const PlainWord& p : block.words) {
+    if (p.letter == 'N') {
+      if (p.sign || p.point) return false;  // a sequence number is digits
+      out.sequence = {std::string(p.before), at(p.from, p.to)};
+      continue;
     }
-    // NUMBER: digits [. [digits]] | . digits
-    const size_t number_from = i;
-    while (digit(i)) ++i;
-    const bool point = i < n && t[i] == '.';
-    if (point) {
-      if (i == number_from && !digit(i + 1)) return false;
-      ++i;
-      while (digit(i)) ++i;
-    }
-    if (i == number_from) return false;
-    // The next thing is a blank, another word or the end: `X1.2.3` is for the parser.
-    if (i < n && !(t[i] == ' ' || t[i] == '\t' || t[i] == '\r' || (t[i] >= 'A' && t[i] <= 'Z'))) return false;
-    // A keyword (`GOTO`, `IF`) never follows a number, so a letter here starts a word.
-    std::string number = t.substr(number_from, i - number_from);
     double v = 0;
-    std::from_chars(number.data(), number.data() + number.size(), v);
+    std::from_chars(p.number.data(), p.number.data() + p.number.size(), v);
     RawWord w;
-    w.letter = letter;
-    w.value = program_.number(minus ? -v : v, at(value_from, i));
-    w.text = (t[value_from] == '+' || t[value_from] == '-' ? std::string(1, t[value_from]) : std::string()) + number;
-    w.range = at(from, i);
-    w.literal = !point;
+    w.letter = p.letter;
+    w.value = program_.number(p.sign == '-' ? -v : v, at(p.value_from, p.to));
+    w.text = (p.sign ? std::string(1, p.sign) : std::string()) + std::string(p.number);
+    w.range = at(p.from, p.to);
+    w.literal = !p.point;
     out.words.push_back(std::move(w));
   }
+  return true;
 }
 
 // A word of the parse tree; `address`: its value is an address's (ROUND keeps decimals).

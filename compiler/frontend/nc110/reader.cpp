@@ -205,8 +205,8 @@ void Reader::report_cyrillic(const SourceRange& range, const std::string& letter
 }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-               Diagnostics& diags)
-    : s_(settings), program_(program), source_(source), file_(file), diags_(diags) {
+               Diagnostics& diags, bool fast_path)
+    : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(fast_path) {
   listener_ = std::make_unique<Listener>(*this);
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
@@ -259,6 +259,9 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   line_no_ = line_no;
   block_ = ir::Block{};
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+  // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
+  // rest (both give the same IR: tests/fastpath).
+  if (fast_path_ && line.size() <= kMaxBlockLength && scan_plain(line)) return keep_block();
 
   // Code points for ANTLR; a byte that is not UTF-8 becomes U+0001 (INVALID), and
   // every character keeps its byte column.
@@ -332,6 +335,10 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
     }
   }
   block_.has_errors = block_.has_errors || diags_.error_count() != errors;
+  keep_block();
+}
+
+void Reader::keep_block() {
   bool empty = block_.words.empty() && block_.stmts.empty() && block_.label.empty() && !block_.number &&
                !block_.skippable && !block_.has_errors;
   if (!empty) unit_->blocks.push_back(std::move(block_));
@@ -403,21 +410,7 @@ void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
         std::string digits;
         for (char c : text(t, t))
           if (c >= '0' && c <= '9') digits += c;
-        std::string shown = "N" + digits;
-        if (digits.size() > 4) {
-          diags_.report(DiagId::TooManyDigits, r, shown, digits.size(), "N4", 4);
-          block_.has_errors = true;
-          break;
-        }
-        block_.number = static_cast<uint32_t>(std::stoul(digits));
-        ir::Word w;
-        w.kind = ir::WordKind::BlockNumber;
-        w.slot = static_cast<uint8_t>(letter_slot('N'));
-        w.address = "N";
-        w.text = digits;
-        w.value = program_.number(*block_.number, r);
-        w.range = r;
-        block_.words.push_back(std::move(w));
+        block_number(digits, r);
         break;
       }
       default:  // '#', '&'
@@ -491,6 +484,23 @@ std::optional<double> Reader::constant(char letter, std::string_view written, bo
   return v;
 }
 
+void Reader::block_number(std::string_view digits, SourceRange r) {
+  if (digits.size() > 4) {
+    diags_.report(DiagId::TooManyDigits, r, fmt::format("N{}", digits), digits.size(), "N4", 4);
+    block_.has_errors = true;
+    return;
+  }
+  block_.number = static_cast<uint32_t>(std::stoul(std::string(digits)));
+  ir::Word w;
+  w.kind = ir::WordKind::BlockNumber;
+  w.slot = static_cast<uint8_t>(letter_slot('N'));
+  w.address = "N";
+  w.text = digits;
+  w.value = program_.number(*block_.number, r);
+  w.range = r;
+  block_.words.push_back(std::move(w));
+}
+
 void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
   leading(ctx->leading(), !ctx->isoWord().empty());
   last_operand_.clear();
@@ -499,6 +509,36 @@ void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
     else if (auto* t = dynamic_cast<Nc110Parser::ToolWordContext*>(w)) tool_word(t);
     else if (auto* e = dynamic_cast<Nc110Parser::ResultWordContext*>(w)) result_word(e);
   }
+  finish_iso_block();
+}
+
+// `[/] [N<digits>] {<letter> [sign] <number>}`, blanks anywhere between the parts: the
+// common ISO block. Labels, '#'/'&', E parameters, T, lower case, a letter without
+// its value, anything else is for the parser; nothing is read before the whole line
+// is known plain.
+bool Reader::scan_plain(std::string_view line) {
+  static constexpr PlainRules kRules{"ABCDFGHIJKLMNOPQRSUVWXYZ", true, true, true, true};
+  if (!scan_plain_words(line, kRules, plain_)) return false;
+  if (!plain_.words.empty() && plain_.words.front().letter == 'N' && (plain_.words.front().sign || plain_.words.front().point))
+    return false;  // a block number is digits
+  const uint32_t errors = diags_.error_count();
+  block_.skippable = plain_.skip;
+  last_operand_.clear();
+  for (const PlainWord& p : plain_.words) {
+    const SourceRange r{file_, line_no_, p.from + 1, line_no_, p.to + 1};
+    if (p.letter == 'N') {
+      block_number(p.before, r);
+      continue;
+    }
+    WordValue v{p.sign, p.number, {}, std::string(line.substr(p.value_from, p.to - p.value_from))};
+    address_word(p.letter, &v, r);
+  }
+  finish_iso_block();
+  block_.has_errors = block_.has_errors || diags_.error_count() != errors;
+  return true;
+}
+
+void Reader::finish_iso_block() {
   check_iso_block();
   bool action = false;
   for (const ir::Word& w : block_.words) action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
@@ -506,11 +546,20 @@ void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
 }
 
 void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
-  const std::string letter_text = ctx->LETTER()->getText();
-  const char letter = letter_text[0];
-  SourceRange r = range(ctx);
   auto* v = ctx->wordValue();
-  const std::string written = v ? text(v->getStart(), v->getStop()) : std::string();
+  if (!v) return address_word(ctx->LETTER()->getText()[0], nullptr, range(ctx));
+  WordValue value;
+  value.sign = !v->sign() ? 0 : v->sign()->MINUS() ? '-' : '+';
+  const std::string number = v->NUMBER() ? v->NUMBER()->getText() : std::string();
+  const std::string eref = v->EREF() ? v->EREF()->getText() : std::string();
+  value.number = number;
+  value.eref = eref;
+  value.written = text(v->getStart(), v->getStop());
+  address_word(ctx->LETTER()->getText()[0], &value, range(ctx));
+}
+
+void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
+  const std::string written = v ? v->written : std::string();
   const std::string shown = letter + written;
   auto fail = [&](DiagId id, auto... args) {
     diags_.report(id, r, args...);
@@ -534,10 +583,10 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
   // §2.8: the G words after the block number, before any operand.
   if (letter == 'G' && !last_operand_.empty()) fail(DiagId::GAfterOperand, shown, last_operand_);
   if (letter != 'G') last_operand_ = shown;
-  const bool negative = v && v->sign() && v->sign()->MINUS();
-  if (v && v->EREF()) {
-    if (v->sign()) return fail(DiagId::SignedParameter, shown);
-    auto index = parameter(v->EREF()->getText(), r);
+  const bool negative = v && v->sign == '-';
+  if (v && !v->eref.empty()) {
+    if (v->sign) return fail(DiagId::SignedParameter, shown);
+    auto index = parameter(std::string(v->eref), r);
     if (!index) return;
     std::vector<std::string> allowed = a.params;
     if (!check_class(*index, allowed, r, std::string(1, letter))) return;
@@ -558,9 +607,9 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
   bool zero_allowed = letter == 'G' || a.word_class == stdlib::WordClass::Dimension || letter == 'I' || letter == 'J' ||
                       letter == 'K';
   if (!v && !zero_allowed) return fail(DiagId::ValueMissing, shown);
-  std::string number_text = v ? v->NUMBER()->getText() : "0";
+  std::string number_text = v ? std::string(v->number) : "0";
   if (letter == 'G' || letter == 'M') {
-    if (v && v->sign()) return fail(DiagId::SignNotAllowed, shown, "a code has no sign");
+    if (v && v->sign) return fail(DiagId::SignNotAllowed, shown, "a code has no sign");
     std::string_view digits = number_text;
     if (digits.find('.') != std::string_view::npos) return fail(DiagId::WholeNumber, shown);
     if (digits.size() > 2) return fail(DiagId::TooManyDigits, shown, digits.size(), std::string(1, letter) + "2", 2);

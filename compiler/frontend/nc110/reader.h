@@ -11,6 +11,7 @@
 #include "Nc110Parser.h"
 #include "ir/ir.h"
 #include "frontend/frontend.h"
+#include "frontend/plain_words.h"
 #include "settings.h"
 
 namespace ncc::nc110 {
@@ -35,7 +36,8 @@ inline constexpr std::string_view kGtlElements = "oplc";
 
 class Reader {
  public:
-  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags);
+  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
+         bool fast_path);
   ~Reader();
 
   // Reads the whole file into `unit`.
@@ -48,6 +50,7 @@ class Reader {
 
   // Lines and tokens.
   void read_line(std::string_view line, uint32_t line_no);
+  void keep_block();  // adds the block read to the unit, unless it is empty
   SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
   SourceRange range(antlr4::ParserRuleContext* ctx) const { return range(ctx->getStart(), ctx->getStop()); }
   SourceRange range(antlr4::tree::TerminalNode* t) const { return range(t->getSymbol(), t->getSymbol()); }
@@ -57,7 +60,17 @@ class Reader {
   // reader.cpp: the leading fields and ISO blocks.
   void leading(Nc110Parser::LeadingContext* ctx, bool has_body);
   void iso_block(Nc110Parser::IsoBlockContext* ctx);
+  bool scan_plain(std::string_view line);  // the fast path: an ISO block of address words only
+  void finish_iso_block();
+  void block_number(std::string_view digits, SourceRange r);
+  // An address word's value as written: `sign` 0, '+' or '-'; a NUMBER or an EREF.
+  struct WordValue {
+    char sign = 0;
+    std::string_view number, eref;
+    std::string written;  // the source from the sign to the end: "- 10.5"
+  };
   void address_word(Nc110Parser::AddressWordContext* ctx);
+  void address_word(char letter, const WordValue* v, SourceRange r);
   void tool_word(Nc110Parser::ToolWordContext* ctx);
   void result_word(Nc110Parser::ResultWordContext* ctx);
   void check_iso_block();
@@ -130,6 +143,8 @@ class Reader {
 
   std::string_view line_;
   uint32_t line_no_ = 0;
+  bool fast_path_;
+  PlainBlock plain_;
   std::vector<uint32_t> byte_of_;  // the byte offset of each code point of the line, and the end
   ir::Unit* unit_ = nullptr;
   ir::Block block_;

@@ -30,7 +30,7 @@ class PpFrontend final : public DialectFrontend<Settings> {
     spaces.counters = static_cast<uint16_t>(program.spaces.size());
     program.spaces.push_back(counters);
 
-    Reader main(s_, program, sources.file(file), file, diags, spaces, std::nullopt);
+    Reader main(s_, program, sources.file(file), file, diags, spaces, std::nullopt, options.fast_path);
     main.run();
     std::deque<MacroCall> pending(main.macro_calls().begin(), main.macro_calls().end());
     // Macros live in files L<nnnn> of the library (§2.3.5, decision 13).
@@ -47,7 +47,7 @@ class PpFrontend final : public DialectFrontend<Settings> {
         continue;
       }
       program.files.push_back(*f);
-      Reader macro(s_, program, sources.file(*f), *f, diags, spaces, call.number);
+      Reader macro(s_, program, sources.file(*f), *f, diags, spaces, call.number, options.fast_path);
       macro.run();
       for (const MacroCall& c : macro.macro_calls()) pending.push_back(c);
     }

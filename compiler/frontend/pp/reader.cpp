@@ -71,8 +71,15 @@ size_t significant_fraction_digits(const std::string& digits) {
 std::string Reader::macro_name(uint32_t number) { return fmt::format("L{:04}", number); }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-               Diagnostics& diags, Spaces& spaces, std::optional<uint32_t> macro)
-    : s_(settings), program_(program), source_(source), file_(file), diags_(diags), spaces_(spaces), macro_(macro) {
+               Diagnostics& diags, Spaces& spaces, std::optional<uint32_t> macro, bool fast_path)
+    : s_(settings),
+      program_(program),
+      source_(source),
+      file_(file),
+      diags_(diags),
+      spaces_(spaces),
+      macro_(macro),
+      fast_path_(fast_path) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
@@ -223,26 +230,55 @@ std::string Reader::comment_text(antlr4::Token* t) const {
 // ---- One block --------------------------------------------------------------------
 
 void Reader::read_block(const Piece& piece) {
-  load(piece);
   block_ = ir::Block{};
   assignments_.clear();
   slash_ = false;
   const size_t errors = diags_.error_count();
-  PpParser::BlockContext* ctx = parser_.block();
   std::string_view first_line = source_.line(piece.line);
   size_t end = first_line.size();
   while (end > piece.col - 1 && is_space(first_line[end - 1])) --end;
   block_.range = {file_, piece.line, piece.col, piece.line, static_cast<uint32_t>(end + 1)};
+  // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
+  // rest (both give the same IR: tests/fastpath).
+  if (!fast_path_ || !scan_plain(piece)) {
+    load(piece);
+    PpParser::BlockContext* ctx = parser_.block();
+    antlr4::Token* n = ctx->number;
+    block_number(trim_left(std::string_view(n->getText()).substr(1)), range(n, n), n->getType() == PpLexer::BARE_ADDRESS);
+    auto elements = ctx->element();
+    for (size_t i = 0; i < elements.size(); ++i) element(elements[i], i, elements);
+  }
+  block_.has_errors = diags_.error_count() != errors;
+  finish_block();
+}
 
-  // §2.2.1 d: the block number, 1..99999999, a written number.
-  antlr4::Token* n = ctx->number;
-  const std::string n_text = n->getText();
-  std::string_view digits = trim_left(std::string_view(n_text).substr(1));
-  SourceRange nr = range(n, n);
+// `N<number> {<address> <value>}` on one line, blanks between the words and after an
+// address: the common block. R words, '&', '/', comments, axes 4. 5. 6., a value
+// cut by a blank or anything damaged are for the parser.
+bool Reader::scan_plain(const Piece& piece) {
+  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNOPQSTUVWXYZ", true};
+  std::string_view text = source_.text().substr(piece.begin, piece.end - piece.begin);
+  // The piece runs to the next block: what follows its first line must be blank.
+  const size_t eol = std::min(text.find('\n'), text.size());
+  if (text.substr(eol).find_first_not_of(" \t\r\n") != std::string_view::npos) return false;
+  text = text.substr(0, eol);
+  if (!scan_plain_words(text, kRules, plain_) || plain_.words.empty() || plain_.words.front().letter != 'N') return false;
+  auto at = [&](uint32_t from, uint32_t to) { return SourceRange{file_, piece.line, piece.col + from, piece.line, piece.col + to}; };
+  const PlainWord& n = plain_.words.front();
+  block_number(text.substr(n.value_from, n.to - n.value_from), at(n.from, n.to), false);
+  for (size_t i = 1; i < plain_.words.size(); ++i) {
+    const PlainWord& w = plain_.words[i];
+    word(text.substr(w.from, w.to - w.from), at(w.from, w.to));
+  }
+  return true;
+}
+
+// §2.2.1 d: the block number, 1..99999999, a written number; `bare`: N without a value.
+void Reader::block_number(std::string_view digits, SourceRange nr, bool bare) {
   Written w = parse_written(digits);
   uint32_t number = 0;
   auto [stop, ec] = std::from_chars(w.before.data(), w.before.data() + w.before.size(), number);
-  if (n->getType() == PpLexer::BARE_ADDRESS) {
+  if (bare) {
     diags_.report(DiagId::NoDigits, nr, "N");
   } else if (w.param) {
     diags_.report(DiagId::ValueForm, nr, "N", "a written number", "a block number cannot be a parameter (§2.2.1 g)");
@@ -261,18 +297,14 @@ void Reader::read_block(const Piece& piece) {
     word.range = nr;
     block_.words.push_back(std::move(word));
   }
-  auto elements = ctx->element();
-  for (size_t i = 0; i < elements.size(); ++i) element(elements[i], i, elements);
-  block_.has_errors = diags_.error_count() != errors;
-  finish_block();
 }
 
 void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vector<PpParser::ElementContext*>& all) {
   antlr4::Token* t = ctx->getStart();
   switch (t->getType()) {
-    case PpLexer::WORD: word(t); return;
+    case PpLexer::WORD:
+    case PpLexer::LINK: word(t->getText(), range(t, t)); return;
     case PpLexer::PARAMETER: parameter(t); return;
-    case PpLexer::LINK: word(t); return;
     case PpLexer::BLOCK_SKIP: {
       // §2.2.1 i: anywhere after the block number, '/' marks the whole block.
       SourceRange r = range(t, t);
@@ -406,9 +438,8 @@ std::optional<ir::ExprId> Reader::value(std::string_view text, char letter, cons
   return program_.number(v, r);
 }
 
-void Reader::word(antlr4::Token* t) {
-  std::string text = t->getText();
-  SourceRange r = range(t, t);
+void Reader::word(std::string_view written, SourceRange r) {
+  const std::string text(written);
   const bool numbered = text[0] >= '4' && text[0] <= '6';
   // §2.2.1 a, b: axes 4. 5. 6. by number, or by the letters the machine gives them.
   char letter = numbered ? s_.axis_letters[static_cast<size_t>(text[0] - '4')] : text[0];

@@ -10,6 +10,7 @@
 
 #include "PpLexer.h"
 #include "PpParser.h"
+#include "frontend/plain_words.h"
 #include "ir/ir.h"
 #include "settings.h"
 
@@ -36,7 +37,7 @@ class Reader {
  public:
   // `macro`: the file of macro L`macro` (a G72 call), else the main file.
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
-         Spaces& spaces, std::optional<uint32_t> macro);
+         Spaces& spaces, std::optional<uint32_t> macro, bool fast_path);
 
   // Appends the file's units to the program.
   void run();
@@ -63,12 +64,14 @@ class Reader {
   void load(const Piece& piece);  // hands the text of `piece` to the parser
   void read_start(uint32_t line_no, size_t pct);
   void read_block(const Piece& piece);
+  bool scan_plain(const Piece& piece);  // the fast path: a block of address words only
+  void block_number(std::string_view digits, SourceRange r, bool bare);
   void build_units();
 
   // Token handling.
   SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
   void element(PpParser::ElementContext* ctx, size_t index, const std::vector<PpParser::ElementContext*>& all);
-  void word(antlr4::Token* t);
+  void word(std::string_view written, SourceRange r);  // "X 12.5"
   void parameter(antlr4::Token* t);
   void damaged(antlr4::Token* t, antlr4::Token* previous);
   std::optional<ir::ExprId> value(std::string_view text, char letter, const stdlib::AddressEntry& entry,
@@ -86,6 +89,8 @@ class Reader {
   Diagnostics& diags_;
   Spaces& spaces_;
   std::optional<uint32_t> macro_;
+  bool fast_path_;
+  PlainBlock plain_;
 
   antlr4::ANTLRInputStream input_;
   PpLexer lexer_{&input_};
