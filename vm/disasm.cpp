@@ -70,11 +70,17 @@ std::string disassemble(const Module& m) {
     const OpInfo& info = op_info(op);
     std::string operands;
     uint32_t at = pc + 1;
+    uint32_t places = 0;
     for (char f : info.format) {
       uint32_t v = read_operand(&m.code[at], operand_size(f));
       at += static_cast<uint32_t>(operand_size(f));
+      if (f == 'p') {  // shown with its digits: WORDDEC X, 12.5
+        places = v;
+        continue;
+      }
       if (!operands.empty()) operands += ", ";
       switch (f) {
+        case 'm': operands += shortest(static_cast<int32_t>(v) / kPowersOfTen[places]); break;
         case 'k': operands += fmt::format("{}", shortest(m.numbers[v])); break;
         case 's': operands += "\"" + json_escape(m.strings[v]) + "\""; break;
         case 'c': operands += m.semantics.codes[v].name; break;

@@ -625,6 +625,8 @@ std::string verify(const Module& m) {
         case 'n': ok = v > 0; break;
         case 'd': ok = true; break;
         case 'r': ok = v < m.semantics.value_rules.size(); break;
+        case 'p': ok = v <= kMaxDecimalPlaces; break;
+        case 'm': ok = true; break;
         case 'y': ok = SysRef::unpack(static_cast<uint16_t>(v)).valid(); break;
         case 'j':
           if (op == Op::CallRange && i == 1) range_ends.push_back(v);

@@ -11,6 +11,7 @@
 //   y  u16  system variable: its number << 8 | its index (runtime/system_vars.def)
 //   d  u8   a repeat-loop depth (0: outside every loop)
 //   r  u8   index into the program's value rules (ProgramSemantics::value_rules)
+//   p  u8   decimal places 0..9, then  m  i32  the digits: the number m / 10^p
 // `pop` and `push` are the fixed stack effects the verifier checks.
 //
 // A machine block is built up and then run: CODE and WORD/WORDPOP fill the pending
@@ -32,6 +33,7 @@ namespace ncc::vm {
 #define NCC_OPCODES(X)                                                                         \
   X(Nop, "", 0, 0, "do nothing")                                                               \
   X(Const, "k", 0, 1, "push numbers[k]")                                                       \
+  X(ConstDec, "pm", 0, 1, "push m / 10^p (a constant as written)")                             \
   X(Load, "vi", 0, 1, "push variable v[i]")                                                    \
   X(LoadX, "v", 1, 1, "pop an index; push variable v[index]")                                  \
   X(Store, "vi", 1, 0, "pop a value into variable v[i]")                                       \
@@ -63,6 +65,7 @@ namespace ncc::vm {
   X(Code, "c", 0, 0, "add G/M code c to the pending block")                                    \
   X(CodeOf, "w", 1, 0, "pop a number; add the code of letter slot w with that number")         \
   X(Word, "wk", 0, 0, "set word w of the pending block to numbers[k]")                         \
+  X(WordDec, "wpm", 0, 0, "set word w of the pending block to m / 10^p (a constant as written)") \
   X(WordPop, "w", 1, 0, "pop the value of word w of the pending block")                        \
   X(Exec, "", 0, 0, "run the pending block on the motion runtime, then clear it")              \
   X(Comment, "s", 0, 0, "show strings[s] to the operator")                                     \
@@ -111,9 +114,9 @@ const OpInfo& op_info(Op op);
 // Bytes an operand of this format character takes.
 constexpr int operand_size(char f) {
   switch (f) {
-    case 'k': case 's': case 'j': case 'i': return 4;
+    case 'k': case 's': case 'j': case 'i': case 'm': return 4;
     case 'c': case 'e': case 'y': return 2;
-    default: return 1;  // w v b f n t d r
+    default: return 1;  // w v b f n t d r p
   }
 }
 // The size of a whole instruction with opcode `op`.
@@ -123,6 +126,16 @@ inline uint32_t read_operand(const uint8_t* p, int size) {
   uint32_t v = 0;
   for (int i = 0; i < size; ++i) v |= uint32_t(p[i]) << (8 * i);
   return v;
+}
+
+// Powers of ten for WORDDEC: m / kPowersOfTen[p] is the correctly rounded value of
+// the decimal, the same double as reading its text.
+inline constexpr double kPowersOfTen[10] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
+constexpr uint32_t kMaxDecimalPlaces = 9;
+// The value of the operands `pm` at `p`.
+inline double decimal_at(const uint8_t* p) {
+  const auto digits = static_cast<int32_t>(read_operand(p + 1, 4));
+  return p[0] == 0 ? digits : digits / kPowersOfTen[p[0]];
 }
 
 }  // namespace ncc::vm

@@ -240,6 +240,7 @@ RunStatus Vm::run(uint32_t entry) {
     switch (op) {
       case Op::Nop: break;
       case Op::Const: st.push_back(m_.numbers[u32_at(operands)]); break;
+      case Op::ConstDec: st.push_back(decimal_at(operands)); break;
       case Op::Load: {
         bool ok = true;
         double v = load(operands[0], u32_at(operands + 1), pc, ok);
@@ -370,6 +371,7 @@ RunStatus Vm::run(uint32_t entry) {
         break;
       }
       case Op::Word: words_.set(operands[0], m_.numbers[u32_at(operands + 1)]); break;
+      case Op::WordDec: words_.set(operands[0], decimal_at(operands + 1)); break;
       case Op::WordPop: {
         double v = pop();
         if (vacancy_ && std::isnan(v)) break;  // X#1 with #1 vacant: no X word

@@ -1,6 +1,8 @@
 #include "lower.h"
 
 #include <bit>
+#include <climits>
+#include <cmath>
 #include <map>
 #include <set>
 #include <unordered_map>
@@ -67,6 +69,26 @@ class Lowering {
     if (fresh) m_.numbers.push_back(v);
     return it->second;
   }
+  // A constant as its decimal digits (operands `pm`) when it has at most 9 places and
+  // they fit 32 bits: the common case, with no constant table entry. -0 is not one.
+  std::optional<std::pair<uint32_t, int32_t>> decimal(double v) {
+    if (!std::isfinite(v) || (v == 0 && std::signbit(v))) return std::nullopt;
+    for (uint32_t places = 0; places <= vm::kMaxDecimalPlaces; ++places) {
+      const double digits = std::nearbyint(v * vm::kPowersOfTen[places]);
+      if (std::fabs(digits) > INT32_MAX) break;
+      if (digits / vm::kPowersOfTen[places] == v) return std::pair{places, static_cast<int32_t>(digits)};
+    }
+    return std::nullopt;
+  }
+  // CONST/WORD with a table entry, or CONSTDEC/WORDDEC with the digits.
+  void constant(Op table_op, Op decimal_op, std::optional<uint32_t> slot, double v) {
+    auto d = decimal(v);
+    op(d ? decimal_op : table_op);
+    if (slot) u8(*slot);
+    if (!d) return u32(number(v));
+    u8(d->first);
+    u32(static_cast<uint32_t>(d->second));
+  }
   uint32_t string(const std::string& s) {
     auto [it, fresh] = strings_.emplace(s, static_cast<uint32_t>(m_.strings.size()));
     if (fresh) m_.strings.push_back(s);
@@ -99,8 +121,7 @@ class Lowering {
     const ir::Expr& e = p_.exprs[id];
     switch (e.op) {
       case ir::ExprOp::Number:
-        op(Op::Const);
-        u32(number(e.number));
+        constant(Op::Const, Op::ConstDec, std::nullopt, e.number);
         return;
       case ir::ExprOp::Var:
         if (p_.is_constant(e.a)) {
@@ -190,9 +211,7 @@ class Lowering {
         u8(w.slot);
       } else if (w.kind == ir::WordKind::Parameter) {
         if (p_.is_constant(w.value)) {
-          op(Op::Word);
-          u8(w.slot);
-          u32(number(p_.exprs[w.value].number));
+          constant(Op::Word, Op::WordDec, w.slot, p_.exprs[w.value].number);
         } else {
           expr(w.value);
           op(Op::WordPop);
@@ -399,8 +418,7 @@ class Lowering {
             if (s.value != ir::kNoExpr) {
               expr(s.value);
             } else {
-              op(Op::Const);
-              u32(number(1));
+              constant(Op::Const, Op::ConstDec, std::nullopt, 1);
             }
             calls_.push_back({pc() + 1, s.label});
             op(s.shares_locals ? Op::CallShared : Op::CallEntry);
@@ -467,8 +485,7 @@ class Lowering {
     for (const ir::Block& target : unit.blocks) {
       if (!target.number || target.label.empty() || !seen.insert(*target.number).second) continue;
       expr(s.value);
-      op(Op::Const);
-      u32(number(*target.number));
+      constant(Op::Const, Op::ConstDec, std::nullopt, *target.number);
       op(Op::Eq);
       jumps.push_back({jump(Op::JumpIf), target.label});
     }

@@ -16,8 +16,8 @@ import zlib
 HEADER = 16
 # Opcodes, numbered in the order vm/opcodes.h lists them.
 OPCODES = re.findall(r"^  X\((\w+),", open(os.path.join(os.path.dirname(__file__), "../../../vm/opcodes.h")).read(), re.M)
-NOP, CONST, NEG, DIV, CALL1, CODE, WORD, WORD_POP, CALL_ENTRY = (
-    OPCODES.index(name) for name in ("Nop", "Const", "Neg", "Div", "Call1", "Code", "Word", "WordPop", "CallEntry"))
+NOP, CONST_DEC, NEG, DIV, CALL1, CODE, WORD_DEC, WORD_POP, CALL_ENTRY = (
+    OPCODES.index(name) for name in ("Nop", "ConstDec", "Neg", "Div", "Call1", "Code", "WordDec", "WordPop", "CallEntry"))
 SQRT = 7  # stdlib/builtins.h
 
 
@@ -59,21 +59,23 @@ def main():
     # The last four bytes cut off, the checksum recomputed: the last section is short.
     files["section"] = with_crc(good[:-4])
     # A sound file whose code divides by zero (GOST source never computes): block N1's
-    # "Code G01; Word X k0; Word Y k1" (15 bytes) becomes
-    # "Const k1; Const k0; Div; WordPop X; Nop x 2", X = 10 / 0.
-    words = bytes([CODE, 0, 0, WORD, ord("X") - ord("A")]) + struct.pack("<I", 0) + bytes([WORD, ord("Y") - ord("A")]) + struct.pack("<I", 1)
-    divide = (bytes([CONST]) + struct.pack("<I", 1) + bytes([CONST]) + struct.pack("<I", 0) +
-              bytes([DIV, WORD_POP, ord("X") - ord("A"), NOP, NOP]))
+    # "Code G01; WordDec X 0; WordDec Y 10" (17 bytes) becomes
+    # "ConstDec 10; ConstDec 0; Div; WordPop X; Nop x 2", X = 10 / 0.
+    def dec(places, digits):
+        return bytes([places]) + struct.pack("<i", digits)
+    x, y = ord("X") - ord("A"), ord("Y") - ord("A")
+    words = bytes([CODE, 0, 0, WORD_DEC, x]) + dec(0, 0) + bytes([WORD_DEC, y]) + dec(0, 10)
+    divide = bytes([CONST_DEC]) + dec(0, 10) + bytes([CONST_DEC]) + dec(0, 0) + bytes([DIV, WORD_POP, x, NOP, NOP])
     assert good.count(words) == 1 and len(words) == len(divide)
     files["divide"] = with_crc(good.replace(words, divide))
-    # The same bytes as "Const k1; Neg; Call1 sqrt; WordPop X; Nop x 5": X = the square
-    # root of -10.
-    domain = bytes([CONST]) + struct.pack("<I", 1) + bytes([NEG, CALL1, SQRT, WORD_POP, ord("X") - ord("A")]) + bytes([NOP] * 5)
+    # The same bytes as "ConstDec 10; Neg; Call1 sqrt; WordPop X; Nop x 6": X = the
+    # square root of -10.
+    domain = bytes([CONST_DEC]) + dec(0, 10) + bytes([NEG, CALL1, SQRT, WORD_POP, x]) + bytes([NOP] * 6)
     assert len(domain) == len(words)
     files["domain"] = with_crc(good.replace(words, domain))
-    # ... and as "Const k1; CallEntry 0; Nop x 7": block N1 calls its own program (ten
-    # times) without end.
-    recurse = bytes([CONST]) + struct.pack("<I", 1) + bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 7)
+    # ... and as "ConstDec 10; CallEntry 0; Nop x 8": block N1 calls its own program
+    # (ten times) without end.
+    recurse = bytes([CONST_DEC]) + dec(0, 10) + bytes([CALL_ENTRY]) + struct.pack("<H", 0) + bytes([NOP] * 8)
     assert len(recurse) == len(words)
     files["recursion"] = with_crc(good.replace(words, recurse))
 
