@@ -5,13 +5,18 @@
 //   nc110_mixed: NC-110 assignments with expressions, moves by E parameters and
 //     three-letter codes (URT, DIS), a quarter each;
 //   nc110_loops: NC-110 RPT loops three deep around an assignment and a move: the
-//     VM's cost per executed block (n/100 blocks, each run 100 times).
+//     VM's cost per executed block (n/100 blocks, each run 100 times);
+//   <dialect>_plain: the plain blocks of every dialect, for the front end with its
+//     hand-written fast path (second argument 1) and with ANTLR for every block (0);
+//   Scan: the bare plain-word scanner alone over the ISO plain blocks, the ceiling of
+//     the fast path.
 // Run: build/bench/ncc_bench (see bench/README.md for the numbers on our machine).
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
 
 #include "driver/pipeline.h"
+#include "frontend/plain_words.h"
 
 namespace ncc {
 namespace {
@@ -62,6 +67,21 @@ Generated nc110_loop_program(int blocks) {
   return {s + "M30\n", "nc110"};
 }
 
+// `head`, then X Y Z F moves (a bounded walk, three decimals), each numbered by `number`.
+Generated plain_blocks(int blocks, const char* dialect, std::string head, const char* number, std::string tail) {
+  std::string s = std::move(head);
+  for (int i = 1; i <= blocks; ++i)
+    s += fmt::format("{}G1 X{:.3f} Y{:.3f} Z{:.3f} F{}\n", number[0] ? fmt::format(fmt::runtime(number), i + 1) : "",
+                     (i % 500) * 0.25 - 60, (i % 333) * 0.125, -(i % 7) * 0.5, 800 + i % 5 * 100);
+  return {s + tail, dialect};
+}
+Generated iso_plain(int blocks) { return plain_blocks(blocks, "iso", "G17 G21 G90 G94\nS1000 M03\n", "", "M30\n"); }
+Generated gost_plain(int blocks) {
+  return plain_blocks(blocks, "gost", "%0001\nN0001 G90 G17 S1000 M03\n", "N{:04} ", "N9999 M30\n");
+}
+Generated pp_plain(int blocks) { return plain_blocks(blocks, "pp", "%1\nN1 G90 G17 S1000 M03\n", "N{} ", "N99999999 M30\n*\n"); }
+Generated nc110_plain(int blocks) { return plain_blocks(blocks, "nc110", "G17\nG90 S1000 M3\n", "", "M5\nM30\n"); }
+
 std::optional<ir::Program> front_end(Session& s, const Generated& g) {
   uint32_t file = s.sources.add("bench.nc", g.text);
   return analyse(s, file, g.dialect);
@@ -78,6 +98,37 @@ void FrontEnd(benchmark::State& state) {
   }
   state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * g.text.size()));
   state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+// Front end and checks with (range 1 = 1) or without the fast path.
+template <Generated (*make)(int)>
+void FrontEndPath(benchmark::State& state) {
+  Generated g = make(static_cast<int>(state.range(0)));
+  for (auto _ : state) {
+    Session s;
+    s.fast_path = state.range(1) != 0;
+    auto program = front_end(s, g);
+    if (s.diags.has_errors() || s.diags.warning_count()) state.SkipWithError("the generated program is not clean");
+    benchmark::DoNotOptimize(program);
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * g.text.size()));
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
+void Scan(benchmark::State& state) {
+  Generated g = iso_plain(static_cast<int>(state.range(0)));
+  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true, true};
+  PlainBlock block;
+  for (auto _ : state) {
+    size_t words = 0;
+    for (std::string_view rest = g.text; !rest.empty();) {
+      const size_t eol = std::min(rest.find('\n'), rest.size());
+      if (scan_plain_words(rest.substr(0, eol), kRules, block)) words += block.words.size();
+      rest.remove_prefix(std::min(eol + 1, rest.size()));
+    }
+    benchmark::DoNotOptimize(words);
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * g.text.size()));
 }
 
 template <Generated (*make)(int)>
@@ -123,6 +174,13 @@ BENCHMARK(RunWithTextTrace)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(FrontEnd<nc110_mixed_program>)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(Run<nc110_mixed_program>)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK(Run<nc110_loop_program>)->Arg(1000000)->Unit(benchmark::kMillisecond);
+BENCHMARK(Scan)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(FrontEndPath<iso_plain>)->Args({10000, 1})->Args({10000, 0})->Unit(benchmark::kMillisecond);
+// GOST numbers N0002..N9001 (the default format is N04).
+BENCHMARK(FrontEndPath<gost_plain>)->Args({9000, 1})->Args({9000, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(FrontEndPath<pp_plain>)->Args({10000, 1})->Args({10000, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(FrontEndPath<nc110_plain>)->Args({10000, 1})->Args({10000, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(Run<iso_plain>)->Arg(10000)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ncc

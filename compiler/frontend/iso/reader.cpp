@@ -193,10 +193,14 @@ void Reader::load(const Piece& piece) {
   line_ = piece.line;
   base_ = piece.col - 1;
   errors_->any = false;
+}
+
+IsoParser::BlockContext* Reader::parse() {
   input_.load(sanitized_);
   lexer_.setInputStream(&input_);
   tokens_.setTokenSource(&lexer_);
   parser_.setTokenStream(&tokens_);
+  return parser_.block();
 }
 
 SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
@@ -381,7 +385,7 @@ void Reader::read(const Piece& piece) {
   if (open != shut) {
     diags_.report(DiagId::BracketsUnbalanced, whole, open, shut);
   } else if (!fast) {
-    ctx = parser_.block();
+    ctx = parse();
   }
   const bool bad = !fast && (!ctx || errors_->any);
   IsoParser::BodyContext* body = bad || fast ? nullptr : ctx->body();

@@ -48,7 +48,8 @@ class Reader {
 
   void cut(std::vector<Piece>& pieces);
   void read(const Piece& piece);
-  void load(const Piece& piece);
+  void load(const Piece& piece);  // the block's text, as the lexer reads it, into sanitized_
+  IsoParser::BlockContext* parse();  // sanitized_ by the parser
   void open_brace(const Piece& at);
   void close_brace(const Piece& at);
   void finish_branch();
