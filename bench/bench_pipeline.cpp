@@ -117,7 +117,7 @@ void FrontEndPath(benchmark::State& state) {
 
 void Scan(benchmark::State& state) {
   Generated g = iso_plain(static_cast<int>(state.range(0)));
-  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true, true};
+  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true};
   PlainBlock block;
   for (auto _ : state) {
     size_t words = 0;

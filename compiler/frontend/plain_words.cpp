@@ -22,7 +22,6 @@ bool scan_plain_words(std::string_view t, const PlainRules& rules, PlainBlock& o
   if (rules.leading_skip && i < n && t[i] == '/') {
     out.skip = true;
     ++i;
-    if (rules.skip_blanks) blanks();
   }
   while (true) {
     blanks();
@@ -38,9 +37,9 @@ bool scan_plain_words(std::string_view t, const PlainRules& rules, PlainBlock& o
       w.sign = t[i++];
       if (rules.blank_after_sign) blanks();
     }
-    const size_t number = i, first = i;
+    const size_t number = i;
     while (i < n && digit(t[i])) ++i;
-    w.before = t.substr(first, i - first);
+    w.before = t.substr(number, i - number);
     if (i < n && t[i] == '.') {
       w.point = true;
       const size_t fraction = ++i;

@@ -13,27 +13,26 @@
 namespace ncc {
 
 struct PlainRules {
-  std::string_view letters;      // the addresses the scanner takes (capitals); any other is for the parser
+  std::string_view letters;         // the addresses it takes (capitals); any other is for the parser
   bool blank_after_letter = false;  // blanks may stand between an address and its value
   bool blank_after_sign = false;    // ... and between the sign and the digits
-  bool leading_skip = false;        // a '/' may come first (block skip)
-  bool skip_blanks = false;         // blanks may stand between '/' and the rest
+  bool leading_skip = false;        // a '/' may come first (block skip), blanks after it
 };
 
 // One address word as written: offsets into the scanned text.
 struct PlainWord {
   char letter = 0;
-  char sign = 0;                  // 0, '+' or '-'
-  bool point = false;             // a decimal point is written
-  std::string_view number;        // the unsigned number: "12.5", ".5", "12."
+  char sign = 0;                   // 0, '+' or '-'
+  bool point = false;              // a decimal point is written
+  std::string_view number;         // the unsigned number: "12.5", ".5", "12."
   std::string_view before, after;  // its digits before and after the point
-  uint32_t from = 0;              // the address
-  uint32_t value_from = 0;        // the sign, or the number
-  uint32_t to = 0;                // one past the number
+  uint32_t from = 0;               // the address
+  uint32_t value_from = 0;         // the sign, or the number
+  uint32_t to = 0;                 // one past the number
 };
 
 struct PlainBlock {
-  bool skip = false;  // a leading '/'
+  bool skip = false;             // a leading '/'
   std::vector<PlainWord> words;  // N, if written, is the first
 };
 

@@ -598,7 +598,7 @@ void Reader::number_block(const std::string& digits, SourceRange r, size_t index
 // as the grammar reads them; anything else (a variable, a bracket, a keyword, O, a
 // comma) is for the parser. Columns are those the parser would give.
 bool Reader::scan_plain(FastBlock& out) {
-  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true, true};
+  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true};
   PlainBlock block;
   if (!scan_plain_words(sanitized_, kRules, block)) return false;
   auto at = [&](size_t from, size_t to) {

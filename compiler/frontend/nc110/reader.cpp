@@ -517,7 +517,7 @@ void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
 // its value, anything else is for the parser; nothing is read before the whole line
 // is known plain.
 bool Reader::scan_plain(std::string_view line) {
-  static constexpr PlainRules kRules{"ABCDFGHIJKLMNOPQRSUVWXYZ", true, true, true, true};
+  static constexpr PlainRules kRules{"ABCDFGHIJKLMNOPQRSUVWXYZ", true, true, true};
   if (!scan_plain_words(line, kRules, plain_)) return false;
   if (!plain_.words.empty() && plain_.words.front().letter == 'N' && (plain_.words.front().sign || plain_.words.front().point))
     return false;  // a block number is digits
