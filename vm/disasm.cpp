@@ -80,7 +80,7 @@ std::string disassemble(const Module& m) {
       }
       if (!operands.empty()) operands += ", ";
       switch (f) {
-        case 'm': operands += shortest(static_cast<int32_t>(v) / kPowersOfTen[places]); break;
+        case 'm': operands += shortest(decimal(places, static_cast<int32_t>(v))); break;
         case 'k': operands += fmt::format("{}", shortest(m.numbers[v])); break;
         case 's': operands += "\"" + json_escape(m.strings[v]) + "\""; break;
         case 'c': operands += m.semantics.codes[v].name; break;

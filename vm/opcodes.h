@@ -132,10 +132,9 @@ inline uint32_t read_operand(const uint8_t* p, int size) {
 // the decimal, the same double as reading its text.
 inline constexpr double kPowersOfTen[10] = {1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9};
 constexpr uint32_t kMaxDecimalPlaces = 9;
-// The value of the operands `pm` at `p`.
-inline double decimal_at(const uint8_t* p) {
-  const auto digits = static_cast<int32_t>(read_operand(p + 1, 4));
-  return p[0] == 0 ? digits : digits / kPowersOfTen[p[0]];
-}
+// The number the operands `p m` stand for (the lowering, the VM and the disassembler
+// all read it here, so a constant comes back bit for bit).
+inline double decimal(uint32_t places, int32_t digits) { return places == 0 ? digits : digits / kPowersOfTen[places]; }
+inline double decimal_at(const uint8_t* p) { return decimal(p[0], static_cast<int32_t>(read_operand(p + 1, 4))); }
 
 }  // namespace ncc::vm

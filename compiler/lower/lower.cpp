@@ -76,7 +76,7 @@ class Lowering {
     for (uint32_t places = 0; places <= vm::kMaxDecimalPlaces; ++places) {
       const double digits = std::nearbyint(v * vm::kPowersOfTen[places]);
       if (std::fabs(digits) > INT32_MAX) break;
-      if (digits / vm::kPowersOfTen[places] == v) return std::pair{places, static_cast<int32_t>(digits)};
+      if (vm::decimal(places, static_cast<int32_t>(digits)) == v) return std::pair{places, static_cast<int32_t>(digits)};
     }
     return std::nullopt;
   }

@@ -139,6 +139,9 @@ TEST(Verifier, RejectsEachKindOfUnsoundCode) {
   EXPECT_NE(verify_code({kStep, op(Op::Nop)}), "");                                // runs off the end
   EXPECT_NE(verify_code({kStep, op(Op::Code), 0, 0, op(Op::End)}), "");            // no such G/M code
   EXPECT_NE(verify_code({kStep, op(Op::Word), kWordSlots, 0, 0, 0, 0, op(Op::End)}), "");  // no such word slot
+  // A decimal of 9 places is sound, one of 10 is not (m / 10^p: there is no 10^10).
+  EXPECT_EQ(verify_code({kStep, op(Op::WordDec), 23, 9, 1, 0, 0, 0, op(Op::End)}), "");
+  EXPECT_NE(verify_code({kStep, op(Op::WordDec), 23, 10, 1, 0, 0, 0, op(Op::End)}), "");
   EXPECT_NE(verify_code({kStep, op(Op::Load), 0, 0, 0, 0, 0, op(Op::End)}), "");   // no such variable space
   EXPECT_NE(verify_code({kStep, op(Op::Call1), 6, op(Op::End)}), "");              // atan2 takes two arguments
   EXPECT_NE(verify_code({op(Op::Nop), kStep, op(Op::End)}), "");                   // the entry is not a Step
