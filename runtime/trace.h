@@ -23,12 +23,14 @@ struct SourceBlock {
   uint32_t number = 0;
   uint32_t first_word = 0;  // into SourceMap::words
   uint32_t word_count = 0;
+  bool operator==(const SourceBlock&) const = default;
 };
 
 struct WordPosition {
   uint8_t slot = 0;
   int16_t code = -1;  // a G/M word: its index in ProgramSemantics::codes
   uint32_t line = 0, col = 0, end_col = 0;
+  bool operator==(const WordPosition&) const = default;
 };
 
 struct SourceMap {

@@ -25,6 +25,13 @@ class ByteWriter {
     u32(static_cast<uint32_t>(s.size()));
     bytes(s);
   }
+  // LEB128: 7 bits a byte, low first; small numbers (deltas, counts) take one byte.
+  void uvar(uint64_t v) {
+    for (; v >= 0x80; v >>= 7) u8(static_cast<uint8_t>(v | 0x80));
+    u8(static_cast<uint8_t>(v));
+  }
+  // Signed as zigzag LEB128: -1 is one byte, as 1 is.
+  void svar(int64_t v) { uvar((static_cast<uint64_t>(v) << 1) ^ static_cast<uint64_t>(v >> 63)); }
   void patch_u32(size_t at, uint32_t v) {
     for (int i = 0; i < 4; ++i) out_[at + i] = static_cast<char>((v >> (8 * i)) & 0xFF);
   }
@@ -59,6 +66,21 @@ class ByteReader {
     return s;
   }
   std::string_view str() { return bytes(u32()); }
+  // LEB128 (ByteWriter::uvar); more than 64 bits of it is a failure.
+  uint64_t uvar() {
+    uint64_t v = 0;
+    for (int shift = 0; shift < 64; shift += 7) {
+      uint64_t b = get(1);
+      if (failed_) return 0;
+      v |= (b & 0x7F) << shift;
+      if (!(b & 0x80)) return (shift == 63 && b > 1) ? fail() : v;
+    }
+    return fail();
+  }
+  int64_t svar() {
+    uint64_t v = uvar();
+    return static_cast<int64_t>(v >> 1) ^ -static_cast<int64_t>(v & 1);
+  }
   bool failed() const { return failed_; }
   bool at_end() const { return pos_ == data_.size(); }
   size_t pos() const { return pos_; }
@@ -66,15 +88,16 @@ class ByteReader {
 
  private:
   uint64_t get(int n) {
-    if (static_cast<size_t>(n) > data_.size() - pos_) {
-      failed_ = true;
-      pos_ = data_.size();
-      return 0;
-    }
+    if (static_cast<size_t>(n) > data_.size() - pos_) return fail();
     uint64_t v = 0;
     for (int i = 0; i < n; ++i) v |= static_cast<uint64_t>(static_cast<uint8_t>(data_[pos_ + i])) << (8 * i);
     pos_ += n;
     return v;
+  }
+  uint64_t fail() {
+    failed_ = true;
+    pos_ = data_.size();
+    return 0;
   }
   std::string_view data_;
   size_t pos_ = 0;

@@ -134,28 +134,86 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   }
 }
 
+// Each block as deltas from the one before (most are one line on), followed by its
+// words as deltas from the block and the word before: a few bytes a block.
 void write_sources(ByteWriter& w, const SourceMap& m) {
   w.u32(static_cast<uint32_t>(m.files.size()));
   for (const std::string& f : m.files) w.str(f);
   w.u32(static_cast<uint32_t>(m.blocks.size()));
+  uint32_t line = 0;
   for (const SourceBlock& b : m.blocks) {
-    w.u32(b.file);
-    w.u32(b.line);
-    w.u32(b.col);
-    w.u32(b.end_line);
-    w.u32(b.end_col);
+    w.uvar(b.file);
+    w.svar(int64_t(b.line) - line);
+    w.uvar(b.col);
+    w.svar(int64_t(b.end_line) - b.line);
+    w.uvar(b.end_col);
     w.u8(static_cast<uint8_t>(b.has_number | (b.main_block << 1) | (b.has_errors << 2)));
-    w.u32(b.number);
-    w.u32(b.first_word);
-    w.u32(b.word_count);
+    if (b.has_number) w.uvar(b.number);
+    const size_t first = std::min<size_t>(b.first_word, m.words.size());
+    const size_t end = std::min<size_t>(first + b.word_count, m.words.size());
+    w.uvar(end - first);
+    uint32_t col = b.col;
+    for (size_t i = first; i < end; ++i) {
+      const WordPosition& p = m.words[i];
+      w.u8(p.slot);
+      w.svar(p.code);
+      w.svar(int64_t(p.line) - b.line);
+      w.svar(int64_t(p.col) - col);
+      w.svar(int64_t(p.end_col) - p.col);
+      col = p.col;
+    }
+    line = b.line;
   }
-  w.u32(static_cast<uint32_t>(m.words.size()));
-  for (const WordPosition& p : m.words) {
-    w.u8(p.slot);
-    w.u16(static_cast<uint16_t>(p.code));
-    w.u32(p.line);
-    w.u32(p.col);
-    w.u32(p.end_col);
+}
+
+void write_section(uint32_t t, ByteWriter& w, const Module& m) {
+  if (t == kMeta) {
+    w.str(m.dialect);
+    w.str(m.profile_name);
+    w.str(m.profile_text);
+  } else if (t == kSema) {
+    write_semantics(w, m.semantics);
+  } else if (t == kNums) {
+    w.u32(static_cast<uint32_t>(m.numbers.size()));
+    for (double d : m.numbers) w.f64(d);
+  } else if (t == kStrs) {
+    w.u32(static_cast<uint32_t>(m.strings.size()));
+    for (const std::string& str : m.strings) w.str(str);
+  } else if (t == kCode) {
+    w.bytes({reinterpret_cast<const char*>(m.code.data()), m.code.size()});
+  } else if (t == kLine) {
+    // Deltas: the next block starts a few bytes on and is the next source block.
+    w.u32(static_cast<uint32_t>(m.lines.size()));
+    LineEntry previous;
+    for (const LineEntry& l : m.lines) {
+      w.svar(int64_t(l.pc) - previous.pc);
+      w.svar(int64_t(l.source) - previous.source);
+      previous = l;
+    }
+  } else if (t == kEntr) {
+    w.u32(static_cast<uint32_t>(m.entries.size()));
+    for (const Entry& e : m.entries) {
+      w.str(e.name);
+      w.u8(static_cast<uint8_t>(e.kind));
+      w.u32(e.pc);
+    }
+  } else if (t == kVars) {
+    w.u32(static_cast<uint32_t>(m.spaces.size()));
+    for (const VarSpace& space : m.spaces) {
+      w.str(space.name);
+      w.u32(space.size);
+      w.u8(space.memory);
+      w.u32(space.locals);
+      w.u8(space.vacant);
+      w.f64(space.limit);
+      w.u32(static_cast<uint32_t>(space.types.size()));
+      for (const VarSpace::Range& r : space.types) {
+        w.u32(r.first);
+        w.u8(static_cast<uint8_t>(r.type));
+      }
+    }
+  } else if (t == kSrcs) {
+    write_sources(w, m.source_map);
   }
 }
 
@@ -281,35 +339,59 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   return !r.failed();
 }
 
+// A 32-bit field written as a number (uvar) or as a delta from `base` (svar); a
+// value outside 32 bits clears `ok`.
+uint32_t field(ByteReader& r, bool& ok) {
+  uint64_t v = r.uvar();
+  if (v > UINT32_MAX) ok = false;
+  return static_cast<uint32_t>(v);
+}
+uint32_t field(ByteReader& r, uint32_t base, bool& ok) {
+  int64_t d = r.svar();
+  if (d < -int64_t(base) || d > int64_t(UINT32_MAX - base)) ok = false;
+  return static_cast<uint32_t>(base + d);
+}
+
 bool read_sources(ByteReader& r, SourceMap& m) {
   uint32_t n = 0;
   if (!count(r, 4, n)) return false;
   m.files.resize(n);
   for (std::string& f : m.files) f = r.str();
-  if (!count(r, 33, n)) return false;
+  if (!count(r, 7, n)) return false;
   m.blocks.resize(n);
+  bool ok = true;
+  uint32_t line = 0;
   for (SourceBlock& b : m.blocks) {
-    b.file = r.u32();
-    b.line = r.u32();
-    b.col = r.u32();
-    b.end_line = r.u32();
-    b.end_col = r.u32();
+    b.file = field(r, ok);
+    b.line = field(r, line, ok);
+    b.col = field(r, ok);
+    b.end_line = field(r, b.line, ok);
+    b.end_col = field(r, ok);
     uint8_t flags = r.u8();
+    if (flags > 7) return false;
     b.has_number = flags & 1;
     b.main_block = flags & 2;
     b.has_errors = flags & 4;
-    b.number = r.u32();
-    b.first_word = r.u32();
-    b.word_count = r.u32();
-  }
-  if (!count(r, 15, n)) return false;
-  m.words.resize(n);
-  for (WordPosition& p : m.words) {
-    p.slot = r.u8();
-    p.code = static_cast<int16_t>(r.u16());
-    p.line = r.u32();
-    p.col = r.u32();
-    p.end_col = r.u32();
+    b.number = b.has_number ? field(r, ok) : 0;
+    uint64_t words = r.uvar();
+    if (words * 5 > r.remaining()) return false;  // each word takes at least 5 bytes
+    b.first_word = static_cast<uint32_t>(m.words.size());
+    b.word_count = static_cast<uint32_t>(words);
+    uint32_t col = b.col;
+    for (uint64_t i = 0; i < words; ++i) {
+      WordPosition p;
+      p.slot = r.u8();
+      int64_t code = r.svar();
+      if (code < INT16_MIN || code > INT16_MAX) return false;
+      p.code = static_cast<int16_t>(code);
+      p.line = field(r, b.line, ok);
+      p.col = field(r, col, ok);
+      p.end_col = field(r, p.col, ok);
+      col = p.col;
+      m.words.push_back(p);
+    }
+    line = b.line;
+    if (!ok || r.failed()) return false;
   }
   return !r.failed();
 }
@@ -334,11 +416,15 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
     std::string_view bytes = r.bytes(r.remaining());
     m.code.assign(bytes.begin(), bytes.end());
   } else if (t == kLine) {
-    if (!count(r, 8, n)) return false;
+    if (!count(r, 2, n)) return false;
     m.lines.resize(n);
+    bool ok = true;
+    LineEntry previous;
     for (LineEntry& l : m.lines) {
-      l.pc = r.u32();
-      l.source = r.u32();
+      l.pc = field(r, previous.pc, ok);
+      l.source = field(r, previous.source, ok);
+      if (!ok) return false;
+      previous = l;
     }
   } else if (t == kEntr) {
     if (!count(r, 9, n)) return false;
@@ -380,74 +466,24 @@ uint32_t Module::source_of(uint32_t pc) const {
 }
 
 std::string write_module(const Module& m) {
-  std::map<uint32_t, std::string> sections;
+  // One buffer: the header, then each section as (tag, size, bytes) with its size
+  // filled in after it, then the checksum of all the sections.
   ByteWriter w;
-  w.str(m.dialect);
-  w.str(m.profile_name);
-  w.str(m.profile_text);
-  sections[kMeta] = std::move(w.data());
-  ByteWriter sema;
-  write_semantics(sema, m.semantics);
-  sections[kSema] = std::move(sema.data());
-  ByteWriter nums;
-  nums.u32(static_cast<uint32_t>(m.numbers.size()));
-  for (double d : m.numbers) nums.f64(d);
-  sections[kNums] = std::move(nums.data());
-  ByteWriter strs;
-  strs.u32(static_cast<uint32_t>(m.strings.size()));
-  for (const std::string& s : m.strings) strs.str(s);
-  sections[kStrs] = std::move(strs.data());
-  sections[kCode] = std::string(m.code.begin(), m.code.end());
-  ByteWriter line;
-  line.u32(static_cast<uint32_t>(m.lines.size()));
-  for (const LineEntry& l : m.lines) {
-    line.u32(l.pc);
-    line.u32(l.source);
-  }
-  sections[kLine] = std::move(line.data());
-  ByteWriter entr;
-  entr.u32(static_cast<uint32_t>(m.entries.size()));
-  for (const Entry& e : m.entries) {
-    entr.str(e.name);
-    entr.u8(static_cast<uint8_t>(e.kind));
-    entr.u32(e.pc);
-  }
-  sections[kEntr] = std::move(entr.data());
-  ByteWriter vars;
-  vars.u32(static_cast<uint32_t>(m.spaces.size()));
-  for (const VarSpace& s : m.spaces) {
-    vars.str(s.name);
-    vars.u32(s.size);
-    vars.u8(s.memory);
-    vars.u32(s.locals);
-    vars.u8(s.vacant);
-    vars.f64(s.limit);
-    vars.u32(static_cast<uint32_t>(s.types.size()));
-    for (const VarSpace::Range& r : s.types) {
-      vars.u32(r.first);
-      vars.u8(static_cast<uint8_t>(r.type));
-    }
-  }
-  sections[kVars] = std::move(vars.data());
-  ByteWriter srcs;
-  write_sources(srcs, m.source_map);
-  sections[kSrcs] = std::move(srcs.data());
-
-  ByteWriter body;
+  w.bytes(kMagic);
+  w.u16(kFormatVersion);
+  w.u16(0);
+  w.u32(static_cast<uint32_t>(kSections.size()));
+  w.u32(0);  // checksum
   for (uint32_t t : kSections) {
-    body.u32(t);
-    body.u32(static_cast<uint32_t>(sections[t].size()));
-    body.bytes(sections[t]);
+    w.u32(t);
+    const size_t at = w.size();
+    w.u32(0);
+    write_section(t, w, m);
+    w.patch_u32(at, static_cast<uint32_t>(w.size() - at - 4));
   }
-  ByteWriter out;
-  out.bytes(kMagic);
-  out.u16(kFormatVersion);
-  out.u16(0);
-  out.u32(static_cast<uint32_t>(kSections.size()));
-  const std::string& b = body.data();
-  out.u32(crc32({reinterpret_cast<const uint8_t*>(b.data()), b.size()}));
-  out.bytes(b);
-  return std::move(out.data());
+  const std::string& b = w.data();
+  w.patch_u32(12, crc32({reinterpret_cast<const uint8_t*>(b.data()) + kHeaderSize, b.size() - kHeaderSize}));
+  return std::move(w.data());
 }
 
 std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags) {

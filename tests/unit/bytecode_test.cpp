@@ -58,7 +58,14 @@ TEST(Bytecode, RoundTripKeepsEverything) {
   EXPECT_EQ(vm::disassemble(*back), vm::disassemble(m));
   EXPECT_EQ(back->code, m.code);
   EXPECT_EQ(back->numbers, m.numbers);
-  EXPECT_EQ(back->source_map.blocks.size(), m.source_map.blocks.size());
+  EXPECT_EQ(back->source_map.files, m.source_map.files);
+  EXPECT_EQ(back->source_map.blocks, m.source_map.blocks);
+  EXPECT_EQ(back->source_map.words, m.source_map.words);
+  ASSERT_EQ(back->lines.size(), m.lines.size());
+  for (size_t i = 0; i < m.lines.size(); ++i) {
+    EXPECT_EQ(back->lines[i].pc, m.lines[i].pc);
+    EXPECT_EQ(back->lines[i].source, m.lines[i].source);
+  }
   EXPECT_EQ(back->semantics.codes.size(), m.semantics.codes.size());
 }
 
@@ -105,6 +112,63 @@ TEST(Bytecode, CorruptionWithAValidChecksumNeverCrashes) {
     }
   // Many rewrites only change a number or a name, and those files are still sound.
   EXPECT_GT(accepted, 0u);
+}
+
+TEST(Bytes, Crc32IsZlibsOnEveryLength) {
+  // The standard check value, and every length around the 8-byte steps against a
+  // byte-at-a-time reference.
+  const std::string check = "123456789";
+  EXPECT_EQ(crc32({reinterpret_cast<const uint8_t*>(check.data()), check.size()}), 0xCBF43926u);
+  std::string data;
+  for (int i = 0; i < 40; ++i) data += static_cast<char>(i * 37 + 11);
+  for (size_t n = 0; n <= data.size(); ++n) {
+    uint32_t crc = 0;
+    for (size_t i = 0; i < n; ++i) crc = crc32({reinterpret_cast<const uint8_t*>(data.data()) + i, 1}, crc);
+    EXPECT_EQ(crc32({reinterpret_cast<const uint8_t*>(data.data()), n}), crc) << n;
+  }
+}
+
+TEST(Bytes, VariableLengthNumbersRoundTripAndRejectOverlongOnes) {
+  ByteWriter w;
+  const std::vector<uint64_t> u = {0, 1, 127, 128, 16383, 16384, UINT32_MAX, UINT64_MAX};
+  const std::vector<int64_t> sv = {0, -1, 1, -64, 64, INT32_MIN, INT64_MIN, INT64_MAX};
+  for (uint64_t v : u) w.uvar(v);
+  for (int64_t v : sv) w.svar(v);
+  ByteReader r(w.data());
+  for (uint64_t v : u) EXPECT_EQ(r.uvar(), v);
+  for (int64_t v : sv) EXPECT_EQ(r.svar(), v);
+  EXPECT_TRUE(r.at_end());
+  EXPECT_FALSE(r.failed());
+  EXPECT_EQ(std::string(w.data().substr(0, 3)), std::string("\x00\x01\x7F", 3));
+  // Eleven bytes, a tenth byte above 1, and a cut one are not numbers.
+  for (std::string bad : {std::string(10, '\x80') + '\x01', std::string(9, '\xFF') + '\x02', std::string("\x80")}) {
+    ByteReader b(bad);
+    b.uvar();
+    EXPECT_TRUE(b.failed());
+  }
+}
+
+TEST(Bytecode, SourceMapRoundTripsEdgeValues) {
+  // Lines going back (an included file), a block ending before it starts (the
+  // placeholder block of an empty program), a word on a later line, large values.
+  vm::Module m;
+  m.code = {static_cast<uint8_t>(vm::Op::Step), static_cast<uint8_t>(vm::Op::End)};
+  m.entries.push_back({"%1", vm::EntryKind::Program, 0});
+  m.semantics.codes.resize(301);
+  for (CodeDesc& c : m.semantics.codes) c.name = "G01";
+  m.source_map.files = {"a.nc", "b.nc"};
+  m.source_map.blocks = {{1, 4000000000u, 7, 4000000002u, 1, true, true, false, UINT32_MAX, 0, 2},
+                         {0, 3, 1, 0, 0, false, false, true, 0, 2, 0},
+                         {0, 2, 9, 2, 30, true, false, false, 10, 2, 1}};
+  m.source_map.words = {{3, 12, 4000000001u, 1, 9}, {0, -1, 4000000002u, 1, 0}, {25, 300, 2, 20, 30}};
+  m.lines = {{0, 0}, {1, 2}};
+  std::string bytes = vm::write_module(m);
+  Session s;
+  auto back = vm::read_module(bytes, "x.ncb", s.diags);
+  ASSERT_TRUE(back) << (s.diags.all().empty() ? "" : s.diags.all()[0].message);
+  EXPECT_EQ(back->source_map.blocks, m.source_map.blocks);
+  EXPECT_EQ(back->source_map.words, m.source_map.words);
+  EXPECT_EQ(vm::write_module(*back), bytes);
 }
 
 // A module with hand-written code, to reach the verifier's rules one by one. The
