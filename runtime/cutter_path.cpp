@@ -12,7 +12,7 @@ namespace ncc {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-bool is_move(const Event& e) { return e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc; }
+bool is_move(const Event& e) { return is_move(e.kind); }
 double cross(const corner::Vec& a, const corner::Vec& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 }  // namespace
@@ -63,6 +63,8 @@ struct CutterPath::State {
 CutterPath::CutterPath(TraceSink& out, Report report, void* context) : s_(std::make_unique<State>(out, report, context)) {}
 CutterPath::~CutterPath() = default;
 void CutterPath::event(const Event& e, const AxisValues* start) { s_->event(e, start); }
+
+bool CutterPath::passes_moves() const { return !s_->waiting_ && (s_->side_ == 0 || s_->radius_ <= 0); }
 
 void CutterPath::State::send(const Event& e) {
   if (waiting_) held_.push_back(e);

@@ -22,6 +22,9 @@ class CutterPath {
 
   // An event of the runtime; `start`: where a move starts (trace coordinates).
   void event(const Event& e, const AxisValues* start);
+  // True while moves only pass through (no compensation, nothing waiting): a runtime
+  // whose trace drops them need not send them.
+  bool passes_moves() const;
   // G28, G29, G53 and the canned cycles move with the vector zeroed (§8.10): the path
   // leaves the offset before their block's moves (suspend) and starts up again with
   // the first move after them (resume).

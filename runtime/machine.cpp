@@ -14,7 +14,8 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
-    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues),
+    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
+      events_wanted_(trace.wants_events()), issues_(issues),
       path_(trace, &Machine::path_report, this) {}
 
 void Machine::path_report(void* self, uint32_t source, const std::string& what) {
@@ -133,12 +134,11 @@ void Machine::path_event(int mode) {
 void Machine::emit(Event e) {
   // A block stops doing things at its first error: what it did before shows, the
   // rest does not (the machine's state still follows it in a dry run).
-  if (block_.error) return;
+  if (block_.error || !wanted(e.kind)) return;
   e.source = block_.request ? block_.request->source : 0;
   // A move starts where the machine stands (it moves after its event); only the
   // cutter path needs to know.
-  const bool move = e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc;
-  if (!move || !conv_.comp_path) return out(e);
+  if (!is_move(e.kind) || !conv_.comp_path) return out(e);
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
   out(e, &start);
 }

@@ -268,6 +268,12 @@ class Machine {
   void action();
   void finish();
   void emit(Event e);
+  // Whether an event of this kind goes anywhere: to the trace, the held events, or the
+  // cutter path (which follows every plane and compensation change, and moves while
+  // it offsets them).
+  bool wanted(EventKind kind) const {
+    return events_wanted_ || holding_ || (conv_.comp_path && (!is_move(kind) || !path_.passes_moves()));
+  }
   void plane_event();
   void path_event(int mode);
   void tool_length_event();
@@ -357,6 +363,7 @@ class Machine {
   const Conventions& conv_;
   const MachineConfig& config_;
   TraceSink& trace_;
+  const bool events_wanted_;
   RuntimeIssues& issues_;
   bool stop_on_error_ = true;
 

@@ -127,7 +127,7 @@ void Machine::rapid(const AxisValues& t) {
   for (int i = 0; i < kAxisCount; ++i)
     seconds = std::max(seconds, 60 * std::fabs(t[i] - machine_[i]) / config_.axes[static_cast<size_t>(i)].rapid);
   if (system_value(SysVar::AxesDisconnected) != 1) advance_clock(seconds);
-  emit(motion_event(EventKind::Rapid, t));
+  if (wanted(EventKind::Rapid)) emit(motion_event(EventKind::Rapid, t));
   move_to(t);
 }
 
@@ -147,7 +147,7 @@ void Machine::linear(const AxisValues& t) {
   } else {
     advance_clock(feed_time(length));
   }
-  emit(motion_event(EventKind::Linear, t));
+  if (wanted(EventKind::Linear)) emit(motion_event(EventKind::Linear, t));
   move_to(t);
 }
 

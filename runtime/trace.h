@@ -92,6 +92,8 @@ enum class EventKind : uint8_t {
   CompLoad,          // n: the compensation entry loaded; a: its length; b: its radius
 };
 
+inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }
+
 struct Event {
   Event() = default;
   explicit Event(EventKind k) : kind(k) {}
@@ -114,11 +116,14 @@ class TraceSink {
   virtual ~TraceSink() = default;
   virtual void event(const Event& e) = 0;
   virtual void flush() {}
+  // False when every event is dropped: the runtime then builds none it need not.
+  virtual bool wants_events() const { return true; }
 };
 
 class NullSink final : public TraceSink {
  public:
   void event(const Event&) override {}
+  bool wants_events() const override { return false; }
 };
 
 // Keeps every event (tests, the dry run of `ncc check`).

@@ -694,7 +694,8 @@ std::string verify(const Module& m) {
 
   // The stack: each instruction is reached with one depth, never below its pops,
   // never above kMaxStack, and no path runs off the end of the code.
-  std::vector<int> depth(code.size(), -1);
+  static_assert(kMaxStack < INT16_MAX);
+  std::vector<int16_t> depth(code.size(), -1);
   std::vector<uint32_t> work;
   for (const Entry& e : m.entries) {
     if (depth[e.pc] > 0) return fmt::format("entry point {} is reached with values on the stack", e.name);
@@ -712,25 +713,30 @@ std::string verify(const Module& m) {
     if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
     if ((op == Op::Return || op == Op::End || op == Op::CallRange || op == Op::RangeEnd) && d != 0)
       return fmt::format("{} at {} leaves {} values on the stack", info.name, pc, d);
-    uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
-    std::vector<uint32_t> successors;
+    const uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
+    uint32_t successors[2];
+    size_t count = 0;
     switch (op) {
-      case Op::Jump: successors = {read_operand(&code[pc + 1], 4)}; break;
+      case Op::Jump: successors[count++] = read_operand(&code[pc + 1], 4); break;
       case Op::JumpIf:
       case Op::JumpIfNot:
       case Op::JumpSkip:
       case Op::Repeat:
       case Op::EndRepeat:
-      case Op::CallRange: successors = {read_operand(&code[pc + 1], 4), next}; break;
+      case Op::CallRange:
+        successors[count++] = read_operand(&code[pc + 1], 4);
+        successors[count++] = next;
+        break;
       case Op::Return:
       case Op::End:
       case Op::NoBlock: break;
-      default: successors = {next};
+      default: successors[count++] = next;
     }
-    for (uint32_t to : successors) {
+    for (size_t i = 0; i < count; ++i) {
+      const uint32_t to = successors[i];
       if (to >= code.size()) return fmt::format("execution can run past the end of the code after {}", pc);
       if (depth[to] == -1) {
-        depth[to] = d;
+        depth[to] = static_cast<int16_t>(d);
         work.push_back(to);
       } else if (depth[to] != d) {
         return fmt::format("the stack depth at {} differs between paths ({} and {})", to, depth[to], d);

@@ -16,44 +16,6 @@ namespace {
 
 constexpr uint64_t kDefaultExtraSteps = 100'000'000;
 
-// Turns runtime issues into diagnostics at the block, or the word, they concern.
-// A loop meets the same problem again and again: each is reported once.
-class IssueReporter final : public RuntimeIssues {
- public:
-  IssueReporter(Session& s, const vm::Module& m, std::vector<uint32_t> file_ids, bool dry)
-      : s_(s), m_(m), file_ids_(std::move(file_ids)), dry_(dry) {}
-
-  void issue(const RuntimeIssue& i) override {
-    if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code, i.nth}).second) return;
-    // In a dry run a block the compiler already rejected would only repeat its errors.
-    if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
-    SourceRange range;
-    if (i.source < m_.source_map.blocks.size()) {
-      const SourceBlock& b = m_.source_map.blocks[i.source];
-      uint32_t file = b.file < file_ids_.size() ? file_ids_[b.file] : 0;
-      range = {file, b.line, b.col, b.end_line, b.end_col};
-      if (i.slot >= 0 || i.code >= 0) {
-        int skip = i.nth;
-        for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
-          const WordPosition& p = m_.source_map.words[w];
-          if ((i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.slot)) && skip-- == 0) {
-            range = {file, p.line, p.col, p.line, p.end_col};
-            break;
-          }
-        }
-      }
-    }
-    s_.diags.add({i.id, diag_info(i.id).severity, range, i.message, {}});
-  }
-
- private:
-  Session& s_;
-  const vm::Module& m_;
-  std::vector<uint32_t> file_ids_;
-  bool dry_;
-  std::set<std::tuple<int, uint32_t, int, int, int>> seen_;
-};
-
 std::optional<std::string> read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return std::nullopt;
@@ -87,6 +49,47 @@ std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
   return ids;
 }
 
+// Turns runtime issues into diagnostics at the block, or the word, they concern.
+// A loop meets the same problem again and again: each is reported once. The source
+// files are registered (and read, to quote their lines) at the first issue: a run
+// without one never reads source.
+class IssueReporter final : public RuntimeIssues {
+ public:
+  IssueReporter(Session& s, const vm::Module& m, bool dry) : s_(s), m_(m), dry_(dry) {}
+
+  void issue(const RuntimeIssue& i) override {
+    if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code, i.nth}).second) return;
+    // In a dry run a block the compiler already rejected would only repeat its errors.
+    if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
+    if (!file_ids_) file_ids_ = source_files(s_, m_);
+    const std::vector<uint32_t>& file_ids = *file_ids_;
+    SourceRange range;
+    if (i.source < m_.source_map.blocks.size()) {
+      const SourceBlock& b = m_.source_map.blocks[i.source];
+      uint32_t file = b.file < file_ids.size() ? file_ids[b.file] : 0;
+      range = {file, b.line, b.col, b.end_line, b.end_col};
+      if (i.slot >= 0 || i.code >= 0) {
+        int skip = i.nth;
+        for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
+          const WordPosition& p = m_.source_map.words[w];
+          if ((i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.slot)) && skip-- == 0) {
+            range = {file, p.line, p.col, p.line, p.end_col};
+            break;
+          }
+        }
+      }
+    }
+    s_.diags.add({i.id, diag_info(i.id).severity, range, i.message, {}});
+  }
+
+ private:
+  Session& s_;
+  const vm::Module& m_;
+  std::optional<std::vector<uint32_t>> file_ids_;
+  bool dry_;
+  std::set<std::tuple<int, uint32_t, int, int, int>> seen_;
+};
+
 // The profile a module runs with: --machine if given, else the one it was compiled with.
 const stdlib::Profile* run_profile(Session& s, const vm::Module& m) {
   if (!s.profile) {
@@ -106,7 +109,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   if (s.diags.error_count() != errors) return {false, true, 0};
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
-  IssueReporter reporter(s, m, source_files(s, m), dry);
+  IssueReporter reporter(s, m, dry);
   Machine machine(m.semantics, config, trace, reporter);
   machine.set_stop_on_error(!dry);
   vm::VmOptions options;
