@@ -105,24 +105,27 @@ Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile&
 Reader::~Reader() = default;
 
 void Reader::run() {
-  std::vector<Piece> pieces;
-  cut(pieces);
   if (called_) start_unit(ir::UnitKind::Subprogram, *called_, SourceRange::point(file_, 1, 1));
-  for (const Piece& p : pieces) {
-    if (diags_.limit_reached()) return;
-    switch (p.kind) {
-      case Piece::Text: read(p); break;
-      case Piece::Open: open_brace(p); break;
-      case Piece::Close: close_brace(p); break;
-    }
-  }
+  cut();
   if (in_unit_) end_unit();
+}
+
+void Reader::take(const Piece& p) {
+  if (diags_.limit_reached()) return;
+  switch (p.kind) {
+    case Piece::Text: read(p); break;
+    case Piece::Open: open_brace(p); break;
+    case Piece::Close: close_brace(p); break;
+  }
 }
 
 // ---- Cutting the text -------------------------------------------------------------
 
-void Reader::cut(std::vector<Piece>& pieces) {
+// Cuts the text into blocks at ';' and line ends, and braces, and reads each as it
+// is cut: nothing of the whole text is held.
+void Reader::cut() {
   bool started = false;  // a '%' line was seen (the tape start)
+  Piece piece;
   for (uint32_t line_no = 1; line_no <= source_.line_count(); ++line_no) {
     std::string_view line = source_.line(line_no);
     const size_t base = source_.line_offset(line_no);
@@ -140,12 +143,19 @@ void Reader::cut(std::vector<Piece>& pieces) {
       started = true;
       continue;
     }
-    Piece piece{Piece::Text, line_no, 1, base, base, {}};
+    auto start = [&](uint32_t col, size_t at) {
+      piece.kind = Piece::Text;
+      piece.line = line_no;
+      piece.col = col;
+      piece.begin = piece.end = at;
+      piece.comments.clear();
+    };
+    start(1, base);
     auto close = [&](size_t at) {
       piece.end = at;
       piece.semicolon = at < base + line.size() && line[at - base] == ';';
-      pieces.push_back(piece);
-      piece = Piece{Piece::Text, line_no, static_cast<uint32_t>(at - base + 2), at + 1, at + 1, {}};
+      take(piece);
+      start(static_cast<uint32_t>(at - base + 2), at + 1);
     };
     for (size_t i = 0; i < line.size(); ++i) {
       const char c = line[i];
@@ -163,7 +173,7 @@ void Reader::cut(std::vector<Piece>& pieces) {
         close(base + i);
       } else if (c == '{' || c == '}') {
         close(base + i);
-        pieces.push_back({c == '{' ? Piece::Open : Piece::Close, line_no, static_cast<uint32_t>(i + 1), base + i, base + i + 1, {}});
+        take({c == '{' ? Piece::Open : Piece::Close, line_no, static_cast<uint32_t>(i + 1), base + i, base + i + 1, {}});
       }
     }
     close(base + line.size());

@@ -46,7 +46,8 @@ class Reader {
   struct Branch;
   class Errors;
 
-  void cut(std::vector<Piece>& pieces);
+  void cut();
+  void take(const Piece& piece);
   void read(const Piece& piece);
   void load(const Piece& piece);  // the block's text, as the lexer reads it, into sanitized_
   IsoParser::BlockContext* parse();  // sanitized_ by the parser
