@@ -723,6 +723,7 @@ std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t 
 void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond) {
   std::set<int> g, m;  // the codes written as numbers
   const size_t first = block_.words.size();  // after the block number
+  block_.words.reserve(first + list.size() + (corner ? 1 : 0));  // the block keeps them: no spare room
   // §8.16: in a G65 block M is argument #13, not an M code.
   bool macro_call = false;
   for (const RawWord& r : list) macro_call = macro_call || (r.letter == 'G' && r.literal && r.text == "65");

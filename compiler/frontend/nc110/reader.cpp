@@ -524,6 +524,7 @@ bool Reader::scan_plain(std::string_view line) {
   const uint32_t errors = diags_.error_count();
   block_.skippable = plain_.skip;
   last_operand_.clear();
+  block_.words.reserve(plain_.words.size());  // the block keeps them: no spare room
   for (const PlainWord& p : plain_.words) {
     const SourceRange r{file_, line_no_, p.from + 1, line_no_, p.to + 1};
     if (p.letter == 'N') {

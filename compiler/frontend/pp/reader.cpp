@@ -265,6 +265,7 @@ bool Reader::scan_plain(const Piece& piece) {
   if (!scan_plain_words(text, kRules, plain_) || plain_.words.empty() || plain_.words.front().letter != 'N') return false;
   auto at = [&](uint32_t from, uint32_t to) { return SourceRange{file_, piece.line, piece.col + from, piece.line, piece.col + to}; };
   const PlainWord& n = plain_.words.front();
+  block_.words.reserve(plain_.words.size());  // the block keeps them: no spare room
   block_number(text.substr(n.value_from, n.to - n.value_from), at(n.from, n.to), false);
   for (size_t i = 1; i < plain_.words.size(); ++i) {
     const PlainWord& w = plain_.words[i];
