@@ -119,8 +119,18 @@ constexpr int operand_size(char f) {
     default: return 1;  // w v b f n t d r p
   }
 }
-// The size of a whole instruction with opcode `op`.
-int instruction_size(Op op);
+// The size of a whole instruction with opcode `op` (inline: the VM steps by it).
+constexpr int operand_bytes(std::string_view format) {
+  int size = 0;
+  for (char f : format) size += operand_size(f);
+  return size;
+}
+inline constexpr uint8_t kInstructionSizes[] = {
+#define NCC_OP_SIZE(name, format, pop, push, doc) static_cast<uint8_t>(1 + operand_bytes(format)),
+    NCC_OPCODES(NCC_OP_SIZE)
+#undef NCC_OP_SIZE
+};
+constexpr int instruction_size(Op op) { return kInstructionSizes[static_cast<size_t>(op)]; }
 // An operand of `size` bytes at `p`, little-endian.
 inline uint32_t read_operand(const uint8_t* p, int size) {
   uint32_t v = 0;

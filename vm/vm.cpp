@@ -59,7 +59,13 @@ Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions 
   for (const VarSpace& s : m_.spaces) {
     vars_.emplace_back(s.memory ? 0 : s.size, s.vacant ? kVacant : 0.0);
     vacancy_ = vacancy_ || s.vacant;
-    holes_.push_back(std::any_of(s.types.begin(), s.types.end(), [](const VarSpace::Range& r) { return r.type == VarType::Unavailable; }));
+    // Later ranges override earlier ones, as in type_of.
+    std::vector<VarType>& types = types_.emplace_back();
+    if (!s.memory && !s.types.empty()) {
+      types.assign(s.size, VarType::LongReal);
+      for (const VarSpace::Range& r : s.types)
+        if (r.first < s.size) std::fill(types.begin() + r.first, types.end(), r.type);
+    }
     memories_.emplace_back(s.memory ? s.size : 0, uint8_t{0});
   }
 }
@@ -82,7 +88,7 @@ double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
     ok = false;
     return 0;
   }
-  if (holes_[space] && s.type_of(static_cast<uint32_t>(index)) == VarType::Unavailable) {
+  if (type_at(space, static_cast<uint32_t>(index)) == VarType::Unavailable) {
     fail(pc, DiagId::VariableNumber, shortest(index));
     ok = false;
     return 0;
@@ -101,7 +107,8 @@ bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
     fail(pc, DiagId::VacantVariable, fmt::format("{}0", s.name));
     return false;
   }
-  if (s.type_of(static_cast<uint32_t>(index)) == VarType::Unavailable) {
+  const VarType type = type_at(space, static_cast<uint32_t>(index));
+  if (type == VarType::Unavailable) {
     fail(pc, DiagId::VariableNumber, shortest(index));
     return false;
   }
@@ -109,7 +116,7 @@ bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
     vars_[space][static_cast<size_t>(index)] = kVacant;
     return true;
   }
-  if (!convert_value(s.type_of(static_cast<uint32_t>(index)), s.limit, v)) {
+  if (!convert_value(type, s.limit, v)) {
     fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, shortest(index)));
     return false;
   }
@@ -447,7 +454,7 @@ RunStatus Vm::run(uint32_t entry) {
         if (index >= s.locals) return fail(pc, DiagId::BytecodeInvalid, "program", "an argument that is not a local variable");
         double value = pop();
         // As a store would keep it (a vacant value only where variables may be vacant).
-        if (!(s.vacant && std::isnan(value)) && !convert_value(s.type_of(index), s.limit, value))
+        if (!(s.vacant && std::isnan(value)) && !convert_value(type_at(operands[0], index), s.limit, value))
           return fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, index));
         args_.push_back({operands[0], index, value});
         break;

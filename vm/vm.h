@@ -93,7 +93,12 @@ class Vm {
   std::vector<uint8_t> dynamic_slots_;  // their words' slots, in order (GE1 GE2: G, G)
   std::vector<Arg> args_;        // the next call's arguments
   bool vacancy_ = false;         // a space holds vacant values: a vacant word value or code is omitted
-  std::vector<bool> holes_;      // per space: some numbers are no variable (Macro B #34-#99)
+  // Per numbered space, the type of each variable (VarSpace::type_of, looked up once);
+  // empty when all are long reals.
+  std::vector<std::vector<VarType>> types_;
+  VarType type_at(uint8_t space, uint32_t index) const {
+    return types_[space].empty() ? VarType::LongReal : types_[space][index];
+  }
 };
 
 }  // namespace ncc::vm
