@@ -52,7 +52,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
     auto addr = rules.tables->addresses.find(w.address.size() == 1 ? w.address[0] : 0);
     if (addr == rules.tables->addresses.end() || addr->second.repeat != stdlib::Repeat::Several || !addr->second.max_count)
       return;
-    if (++counts[w.address] == addr->second.max_count + 1)
+    if (++counts[w.address.str()] == addr->second.max_count + 1)
       diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
   };
   for (const ir::Word& w : block.words) {

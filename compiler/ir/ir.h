@@ -9,10 +9,14 @@
 // means to the runtime. `ncc ir` prints all of it as stable text (ir_print.cpp).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "runtime/program_semantics.h"
 #include "runtime/system_vars.h"
@@ -69,15 +73,44 @@ enum class WordKind : uint8_t {
 // A Code word whose code is found at run time from its value (NC-110 `GE1`).
 constexpr int32_t kDynamicCode = -2;
 
+// A word's address as written, held in the word itself: a letter ("X", "N"), a
+// letter and a mark ("R'"), an operand slot ("#12") or an NC-110 three-letter code
+// ("RPT"): at most kMax characters (the NC-110 settings take codes of three letters;
+// a unit test checks the slot names).
+class Address {
+ public:
+  static constexpr size_t kMax = 7;
+  Address() = default;
+  Address(std::string_view s) : size_(static_cast<uint8_t>(std::min(s.size(), kMax))) { s.copy(chars_, size_); }
+  Address(const char* s) : Address(std::string_view(s)) {}
+  Address(const std::string& s) : Address(std::string_view(s)) {}
+  operator std::string_view() const { return {chars_, size_}; }
+  std::string str() const { return std::string(std::string_view(*this)); }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  char operator[](size_t i) const { return chars_[i]; }
+  Address& operator+=(std::string_view s) { return *this = Address(str() + std::string(s)); }
+  friend bool operator==(const Address& a, std::string_view b) { return std::string_view(a) == b; }
+  friend bool operator==(const Address& a, const char* b) { return std::string_view(a) == b; }
+  friend std::string operator+(const Address& a, std::string_view b) { return a.str() + std::string(b); }
+  friend std::string operator+(const Address& a, const std::string& b) { return a.str() + b; }
+  friend std::string operator+(const Address& a, const char* b) { return a.str() + b; }
+
+ private:
+  char chars_[kMax] = {};
+  uint8_t size_ = 0;
+};
+
+// (Fields ordered to pack: a CAM block holds several words, a program millions.)
 struct Word {
   WordKind kind = WordKind::Parameter;
   uint8_t slot = 0;
-  std::string address;  // as written: "X", "G", ":"
-  std::string text;     // the value as written: "-10.5", "01"
+  bool optional = false;  // after a mid-block '/': dropped when block skip is on
+  Address address;        // as written: "X", "G", ":"
   ExprId value = kNoExpr;
   int32_t code = -1;
-  bool optional = false;  // after a mid-block '/': dropped when block skip is on
   SourceRange range;
+  std::string text;       // the value as written: "-10.5", "01"
 };
 
 enum class StmtKind : uint8_t {
@@ -106,23 +139,24 @@ struct CallArg {
   ExprId value = kNoExpr;
 };
 
+// (Fields ordered to pack: every block holds at least one.)
 struct Stmt {
   Stmt() = default;
   Stmt(StmtKind k, SourceRange r) : kind(k), range(r) {}
 
   StmtKind kind = StmtKind::Machine;
+  bool optional = false;       // Comment after a mid-block '/': dropped when block skip is on
+  bool shares_locals = false;  // Call: the called code keeps the caller's locals (Macro B M98)
   SourceRange range;
   ExprId target = kNoExpr;  // Assign: a Var expression
   ExprId value = kNoExpr;   // Assign value; RepeatBegin count; Call count (none: once)
   ExprId cond = kNoExpr;    // Jump condition; any other statement runs only if it is true
-  std::string label;        // Jump target label; Call target; Comment text
-  bool optional = false;    // Comment after a mid-block '/': dropped when block skip is on
-  double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
-  std::string end_label;    // CallRange
   SourceRange end_range;    // CallRange: where end_label is written
+  double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
+  std::string label;        // Jump target label; Call target; Comment text
+  std::string end_label;    // CallRange
   std::vector<DisplayItem> items;  // Display
   std::vector<CallArg> args;       // Call
-  bool shares_locals = false;      // Call: the called code keeps the caller's locals (Macro B M98)
 };
 
 struct Block {
@@ -170,3 +204,10 @@ std::string print(const Program& program, const SourceManager& sources);
 std::string print_expr(const Program& program, ExprId id);
 
 }  // namespace ncc::ir
+
+template <>
+struct fmt::formatter<ncc::ir::Address> : fmt::formatter<std::string_view> {
+  auto format(const ncc::ir::Address& a, format_context& ctx) const {
+    return fmt::formatter<std::string_view>::format(std::string_view(a), ctx);
+  }
+};

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "driver/pipeline.h"
+#include "runtime/word_slots.h"
 #include "stdlib/tables.h"
 
 namespace ncc {
@@ -25,6 +26,22 @@ struct Read {
   const ir::Block& block(size_t unit, size_t index) const { return program->units.at(unit).blocks.at(index); }
   double value(const ir::Word& w) const { return program->exprs[w.value].number; }
 };
+
+TEST(IrAddress, HoldsEveryAddressAWordCanHave) {
+  // The names of the word slots (NC-110 operands "#12", second words "R'") and the
+  // three-letter codes (NC-110 settings take three letters only) fit a word's address.
+  for (int slot = 0; slot < kWordSlots; ++slot) {
+    const std::string name = slot_name(slot);
+    EXPECT_LE(name.size(), ir::Address::kMax) << name;
+    EXPECT_EQ(ir::Address(name), name);
+  }
+  ir::Address a = "R";
+  a += "'";
+  EXPECT_EQ(a, "R'");
+  EXPECT_EQ(a.size(), 2u);
+  EXPECT_EQ(a + "10", "R'10");
+  EXPECT_EQ(fmt::format("{}", ir::Address("RPT")), "RPT");
+}
 
 TEST(Frontend, BlocksWordsAndStatements) {
   Read r("leader text\n%0001 (PART)\nN001 G90 G00 X-1.5 (GO) M03\n/N2 X1. / Y2.\n:3 M30\nafter\n");

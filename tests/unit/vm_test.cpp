@@ -91,8 +91,16 @@ struct Builder {
   }
   // A rapid to X = value.
   void move_x(ir::Block& b, ir::ExprId value, bool optional = false) {
-    ir::Word g{ir::WordKind::Code, 0, "G", "00", num(0), 0, false, {}};
-    ir::Word x{ir::WordKind::Parameter, 'X' - 'A', "X", "", value, -1, optional, {}};
+    ir::Word g, x;
+    g.kind = ir::WordKind::Code;
+    g.address = "G";
+    g.text = "00";
+    g.value = num(0);
+    g.code = 0;
+    x.slot = 'X' - 'A';
+    x.optional = optional;
+    x.address = "X";
+    x.value = value;
     b.words.push_back(g);
     b.words.push_back(x);
     b.stmts.emplace_back(ir::StmtKind::Machine, b.range);

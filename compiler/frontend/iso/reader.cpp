@@ -779,7 +779,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       w.slot = static_cast<uint8_t>(second_slot(letter));
       corner_ = w.range;
     } else {
-      diags_.report(DiagId::ValueForm, w.range, "','", "C (a chamfer) or R (a fillet) after it", "," + w.address.substr(0, 1) + w.text);
+      diags_.report(DiagId::ValueForm, w.range, "','", "C (a chamfer) or R (a fillet) after it", fmt::format(",{}{}", w.address[0], w.text));
       w.kind = ir::WordKind::Ignored;
       block_.has_errors = true;
     }
