@@ -9,7 +9,9 @@
 //   <dialect>_plain: the plain blocks of every dialect, for the front end with its
 //     hand-written fast path (second argument 1) and with ANTLR for every block (0);
 //   Scan: the bare plain-word scanner alone over the ISO plain blocks, the ceiling of
-//     the fast path.
+//     the fast path;
+//   Bytecode: writing the .ncb of the ISO plain blocks (second argument 0), reading
+//     and verifying it (1).
 // Run: build/bench/ncc_bench (see bench/README.md for the numbers on our machine).
 #include <benchmark/benchmark.h>
 
@@ -150,6 +152,25 @@ void Run(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * state.range(0));
 }
 
+// The bytecode file: writing it (range 1 = 0), or reading and verifying it (1), as
+// `ncc compile` and `ncc run X.ncb` do.
+template <Generated (*make)(int)>
+void Bytecode(benchmark::State& state) {
+  Session s;
+  auto program = front_end(s, make(static_cast<int>(state.range(0))));
+  const vm::Module m = lower_program(s, *program);
+  const std::string bytes = vm::write_module(m);
+  for (auto _ : state) {
+    if (state.range(1) == 0) {
+      benchmark::DoNotOptimize(vm::write_module(m));
+    } else if (!vm::read_module(bytes, "bench.ncb", s.diags)) {
+      state.SkipWithError("the module does not load");
+    }
+  }
+  state.SetBytesProcessed(static_cast<int64_t>(state.iterations() * bytes.size()));
+  state.SetItemsProcessed(state.iterations() * state.range(0));
+}
+
 void RunWithTextTrace(benchmark::State& state) {
   Session s;
   auto program = front_end(s, plain_program(static_cast<int>(state.range(0))));
@@ -181,6 +202,7 @@ BENCHMARK(FrontEndPath<gost_plain>)->Args({9000, 1})->Args({9000, 0})->Unit(benc
 BENCHMARK(FrontEndPath<pp_plain>)->Args({10000, 1})->Args({10000, 0})->Unit(benchmark::kMillisecond);
 BENCHMARK(FrontEndPath<nc110_plain>)->Args({10000, 1})->Args({10000, 0})->Unit(benchmark::kMillisecond);
 BENCHMARK(Run<iso_plain>)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(Bytecode<iso_plain>)->Args({10000, 0})->Args({10000, 1})->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ncc
