@@ -1,6 +1,7 @@
 #include "check.h"
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <map>
 #include <set>
@@ -37,22 +38,54 @@ void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const
     d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
 }
 
-void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block& block, Diagnostics& diags) {
-  std::map<std::string, const ir::Word*> once;    // address -> first word
-  std::map<std::string, int> counts;              // address -> words so far
-  std::map<std::string, const ir::Word*> groups;  // G group -> first code
-  std::map<std::string, const ir::Word*> sets;    // M conflict set -> first code
-  std::vector<const ir::Word*> g_codes;           // for a compatibility matrix
+// What check_block remembers while it reads one block, kept from block to block so
+// that checking a block allocates nothing (CAM programs have millions).
+struct BlockScratch {
+  std::array<const ir::Word*, 256> first{};  // a letter's first word
+  std::array<int, 256> count{};              // a letter's words so far
+  std::string letters;                       // the letters to clear
+  std::vector<std::pair<std::string_view, const ir::Word*>> groups;  // G group -> first code
+  std::vector<std::pair<std::string_view, const ir::Word*>> sets;    // M conflict set -> first code
+  std::vector<std::pair<int, const ir::Word*>> codes;                // M code number -> its word
+  std::vector<const ir::Word*> g_codes;                              // for a compatibility matrix
+
+  void clear() {
+    for (char c : letters) {
+      first[static_cast<uint8_t>(c)] = nullptr;
+      count[static_cast<uint8_t>(c)] = 0;
+    }
+    letters.clear();
+    groups.clear();
+    sets.clear();
+    codes.clear();
+    g_codes.clear();
+  }
+  int& count_of(char letter) {
+    if (!first[static_cast<uint8_t>(letter)] && !count[static_cast<uint8_t>(letter)]) letters += letter;
+    return count[static_cast<uint8_t>(letter)];
+  }
+  // The word of `key` seen first, after making `w` it if there was none.
+  template <typename Key>
+  static const ir::Word* first_of(std::vector<std::pair<Key, const ir::Word*>>& seen, Key key, const ir::Word* w) {
+    for (const auto& [k, word] : seen)
+      if (k == key) return word;
+    seen.push_back({key, w});
+    return w;
+  }
+};
+
+void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block& block, BlockScratch& seen,
+                 Diagnostics& diags) {
+  seen.clear();
   const ir::Word* feed = nullptr;
   const ir::Word* previous = nullptr;  // for the word order
   const bool matrix = !rules.tables->incompatible.empty();
-  std::map<int, const ir::Word*> codes;           // M code number -> its word
   // At most n words of an address that may stand several times (NC-110: 4 M words).
   auto count_several = [&](const ir::Word& w) {
     auto addr = rules.tables->addresses.find(w.address.size() == 1 ? w.address[0] : 0);
     if (addr == rules.tables->addresses.end() || addr->second.repeat != stdlib::Repeat::Several || !addr->second.max_count)
       return;
-    if (++counts[w.address.str()] == addr->second.max_count + 1)
+    if (++seen.count_of(addr->first) == addr->second.max_count + 1)
       diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
   };
   for (const ir::Word& w : block.words) {
@@ -70,7 +103,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         addr = rules.tables->addresses.end();
     }
     if (addr == rules.tables->addresses.end()) continue;
-    const std::string key(1, addr->first);
+    const char key = addr->first;
     if (rules.pedantic && previous) {
       auto prev = rules.tables->addresses.find(previous->address[0]);
       if (prev != rules.tables->addresses.end() && prev->second.order > addr->second.order)
@@ -80,10 +113,12 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
     switch (addr->second.repeat) {
       case stdlib::Repeat::Once:
       case stdlib::Repeat::Twice: {
-        auto [it, fresh] = once.emplace(key, &w);
+        int& count = seen.count_of(key);
+        const ir::Word*& first = seen.first[static_cast<uint8_t>(key)];
+        if (!first) first = &w;
         int allowed = addr->second.repeat == stdlib::Repeat::Twice ? 2 : 1;
-        if (++counts[key] == allowed + 1)
-          report_with_note(p, diags, DiagId::WordRepeated, w, *it->second, key, allowed == 1 ? "once" : "twice");
+        if (++count == allowed + 1)
+          report_with_note(p, diags, DiagId::WordRepeated, w, *first, std::string(1, key), allowed == 1 ? "once" : "twice");
         break;
       }
       case stdlib::Repeat::Feed:
@@ -100,29 +135,27 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         }
         if (addr->second.repeat == stdlib::Repeat::Group && matrix) {
           // A compatibility matrix says which codes may share a block (NC-110 Table 2.4).
-          for (const ir::Word* other : g_codes)
+          for (const ir::Word* other : seen.g_codes)
             if (rules.tables->incompatible.count({code_number(p, *other), code_number(p, w)})) {
               report_with_note(p, diags, DiagId::CodesIncompatible, w, *other, word_text(p, *other), word_text(p, w));
               break;
             }
-          g_codes.push_back(&w);
+          seen.g_codes.push_back(&w);
         } else if (addr->second.repeat == stdlib::Repeat::Group) {
           // Block-only codes without a group letter count as their own group (§2.5).
-          std::string group = entry->group == "-" ? entry->desc.name : entry->group;
-          auto [it, fresh] = groups.emplace(group, &w);
-          if (!fresh) report_with_note(p, diags, DiagId::GroupConflict, w, *it->second, word_text(p, *it->second), word_text(p, w), group);
+          std::string_view group = entry->group == "-" ? entry->desc.name : entry->group;
+          if (const ir::Word* other = BlockScratch::first_of(seen.groups, group, &w); other != &w)
+            report_with_note(p, diags, DiagId::GroupConflict, w, *other, word_text(p, *other), word_text(p, w), std::string(group));
         } else {
           count_several(w);
           // The same code twice is a word too many; two codes of one set contradict.
-          auto [same, fresh] = codes.emplace(code_number(p, w), &w);
-          if (!fresh) {
-            report_with_note(p, diags, DiagId::WordRepeated, w, *same->second, word_text(p, w), "once");
+          if (const ir::Word* same = BlockScratch::first_of(seen.codes, code_number(p, w), &w); same != &w) {
+            report_with_note(p, diags, DiagId::WordRepeated, w, *same, word_text(p, w), "once");
             break;
           }
           for (const std::string& set : entry->conflict_sets) {
-            auto [it, first] = sets.emplace(set, &w);
-            if (!first) {
-              report_with_note(p, diags, DiagId::MCodeConflict, w, *it->second, word_text(p, *it->second), word_text(p, w), set);
+            if (const ir::Word* other = BlockScratch::first_of(seen.sets, std::string_view(set), &w); other != &w) {
+              report_with_note(p, diags, DiagId::MCodeConflict, w, *other, word_text(p, *other), word_text(p, w), set);
               break;
             }
           }
@@ -311,10 +344,11 @@ void check_calls(const ir::Program& program, const CheckRules& rules, Diagnostic
 
 void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
   // A block with an error is marked: the dry run would only repeat it.
+  BlockScratch scratch;
   for (ir::Unit& unit : program.units) {
     for (ir::Block& block : unit.blocks) {
       uint32_t errors = diags.error_count();
-      check_block(program, rules, block, diags);
+      check_block(program, rules, block, scratch, diags);
       if (diags.error_count() != errors) block.has_errors = true;
       if (diags.limit_reached()) return;
     }
