@@ -1,11 +1,11 @@
 #include "reader.h"
 
+#include <bitset>
 #include <charconv>
 #include <cmath>
 #include <set>
 
 #include "frontend/frontend.h"
-#include "frontend/plain_words.h"
 #include "support/text.h"
 
 namespace ncc::iso {
@@ -386,7 +386,7 @@ void Reader::read(const Piece& piece) {
 
   // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
   // rest (both give the same IR: tests/fastpath).
-  FastBlock plain;
+  FastBlock& plain = fast_;
   const bool fast = fast_path_ && scan_plain(plain);
   // E-32: brackets that do not pair up.
   const auto open = fast ? 0 : std::count(sanitized_.begin(), sanitized_.end(), '[');
@@ -609,7 +609,9 @@ void Reader::number_block(const std::string& digits, SourceRange r, size_t index
 // comma) is for the parser. Columns are those the parser would give.
 bool Reader::scan_plain(FastBlock& out) {
   static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true};
-  PlainBlock block;
+  PlainBlock& block = plain_words_;
+  out.words.clear();
+  out.sequence.reset();
   if (!scan_plain_words(sanitized_, kRules, block)) return false;
   auto at = [&](size_t from, size_t to) {
     return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_, base_ + static_cast<uint32_t>(to) + 1};
@@ -721,13 +723,15 @@ std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t 
 }
 
 void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond) {
-  std::set<int> g, m;  // the codes written as numbers
+  // The codes written as numbers: only those below 1000 are asked about.
+  std::bitset<1000> g, m;
   const size_t first = block_.words.size();  // after the block number
   block_.words.reserve(first + list.size() + (corner ? 1 : 0));  // the block keeps them: no spare room
   // §8.16: in a G65 block M is argument #13, not an M code.
   bool macro_call = false;
   for (const RawWord& r : list) macro_call = macro_call || (r.letter == 'G' && r.literal && r.text == "65");
-  std::vector<bool> literal_integer;         // of each word from `first` on
+  std::vector<bool>& literal_integer = literal_integer_;  // of each word from `first` on
+  literal_integer.clear();
   for (const RawWord& raw : list) {
     const char letter = raw.letter;
     const bool literal = raw.literal;
@@ -752,7 +756,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
         block_.has_errors = true;
       } else {
         const int n = static_cast<int>(v);
-        (letter == 'G' ? g : m).insert(n);
+        if (n >= 0 && n < 1000) (letter == 'G' ? g : m).set(static_cast<size_t>(n));
         const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
         auto it = table.find(n);
         if (it == table.end()) w.code = -1;  // the checks report it
@@ -789,7 +793,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
   // §8.12, §8.13, §8.17 (E-16, E-19, E-24): G51, G52 and G68 stand in blocks of their
   // own; the modal G90/G91 and G17-G19 may join them (decision 27).
   for (int own : {51, 52, 68}) {
-    if (!g.count(own)) continue;
+    if (!g.test(own)) continue;
     for (const ir::Word& w : block_.words) {
       const bool code = w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Control;
       const int n = code && program_.is_constant(w.value) ? static_cast<int>(program_.exprs[w.value].number) : -1;
@@ -804,8 +808,8 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       }
     }
   }
-  if (g.count(92)) g92_words(first);
-  if (g.count(65) || m.count(97) || m.count(98)) {
+  if (g.test(92)) g92_words(first);
+  if (g.test(65) || m.test(97) || m.test(98)) {
     call_words(cond);
     return;
   }
@@ -815,7 +819,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     ir::Word& w = block_.words[i];
     if (literal_integer[i - first]) w.value = program_.number(program_.exprs[w.value].number / 1000, w.range);
   };
-  const bool dwell_block = g.count(4) > 0;
+  const bool dwell_block = g.test(4);
   bool has_p = false;
   for (size_t i = first; i < block_.words.size(); ++i) {
     const char a = block_.words[i].address[0];
@@ -824,7 +828,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       has_p = true;
       thousandths(i);
     }
-    if ((g.count(51) && (a == 'I' || a == 'J' || a == 'K')) || (g.count(68) && a == 'R')) thousandths(i);
+    if ((g.test(51) && (a == 'I' || a == 'J' || a == 'K')) || (g.test(68) && a == 'R')) thousandths(i);
   }
   // §8.4 (decision 8): G04 X or U is the dwell when no P gives it.
   if (dwell_block && !has_p)
@@ -841,14 +845,14 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     s.cond = cond;
     block_.stmts.push_back(std::move(s));
   }
-  if (m.count(99)) {
+  if (m.test(99)) {
     if (unit_.kind == ir::UnitKind::Program && !main_done_)
       diags_.report(DiagId::ReturnInMain, block_.range);
     ir::Stmt s{ir::StmtKind::Return, block_.range};
     s.cond = cond;
     block_.stmts.push_back(std::move(s));
   }
-  if ((m.count(2) || m.count(30)) && unit_.kind == ir::UnitKind::Program && !main_done_ && !block_.skippable &&
+  if ((m.test(2) || m.test(30)) && unit_.kind == ir::UnitKind::Program && !main_done_ && !block_.skippable &&
       cond == ir::kNoExpr) {
     main_done_ = true;
     end_block_ = unit_.blocks.size() - 1;

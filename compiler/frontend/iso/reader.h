@@ -11,6 +11,7 @@
 
 #include "IsoLexer.h"
 #include "IsoParser.h"
+#include "frontend/plain_words.h"
 #include "ir/ir.h"
 #include "settings.h"
 
@@ -89,6 +90,10 @@ class Reader {
     std::vector<RawWord> words;
   };
   bool scan_plain(FastBlock& out);
+  // Kept from block to block, so that reading a plain block allocates little.
+  FastBlock fast_;
+  PlainBlock plain_words_;
+  std::vector<bool> literal_integer_;
   RawWord raw_word(antlr4::tree::TerminalNode* letter, IsoParser::ValueContext* v, SourceRange r, bool address);
   void number_block(const std::string& digits, SourceRange r, size_t index);
   void finish_read(size_t index);
