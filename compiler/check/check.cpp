@@ -4,39 +4,10 @@
 #include <array>
 #include <functional>
 #include <map>
+#include <memory>
 #include <set>
 
 namespace ncc {
-
-namespace {
-
-// A code written without digits (NC-110 "G" is G00, decision 4) is named by its number.
-std::string word_text(const ir::Program& p, const ir::Word& w) {
-  if (w.text.empty() && w.kind == ir::WordKind::Code && w.value != ir::kNoExpr)
-    return fmt::format("{}{:02}", w.address, static_cast<int>(p.exprs[w.value].number));
-  return w.address + w.text;
-}
-
-// Both labels of a block range, where they are written.
-SourceRange range_operands(const ir::Stmt& s) {
-  SourceRange r = s.range;
-  if (s.end_range.line == r.line && s.end_range.end_col > r.end_col) r.end_col = s.end_range.end_col;
-  return r;
-}
-
-const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rules, const ir::Word& w) {
-  const auto& table = w.address == "G" ? rules.tables->g_codes : rules.tables->m_codes;
-  auto it = table.find(static_cast<int>(p.exprs[w.value].number));
-  return it == table.end() ? nullptr : &it->second;
-}
-
-int code_number(const ir::Program& p, const ir::Word& w) { return static_cast<int>(p.exprs[w.value].number); }
-
-void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
-                      const std::string& a, const std::string& b = {}, const std::string& c = {}) {
-  if (Diagnostic* d = diags.report(id, second.range, a, b, c))
-    d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
-}
 
 // What check_block remembers while it reads one block, kept from block to block so
 // that checking a block allocates nothing (CAM programs have millions).
@@ -73,6 +44,36 @@ struct BlockScratch {
     return w;
   }
 };
+
+namespace {
+
+// A code written without digits (NC-110 "G" is G00, decision 4) is named by its number.
+std::string word_text(const ir::Program& p, const ir::Word& w) {
+  if (w.text.empty() && w.kind == ir::WordKind::Code && w.value != ir::kNoExpr)
+    return fmt::format("{}{:02}", w.address, static_cast<int>(p.exprs[w.value].number));
+  return w.address + w.text;
+}
+
+// Both labels of a block range, where they are written.
+SourceRange range_operands(const ir::Stmt& s) {
+  SourceRange r = s.range;
+  if (s.end_range.line == r.line && s.end_range.end_col > r.end_col) r.end_col = s.end_range.end_col;
+  return r;
+}
+
+const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rules, const ir::Word& w) {
+  const auto& table = w.address == "G" ? rules.tables->g_codes : rules.tables->m_codes;
+  auto it = table.find(static_cast<int>(p.exprs[w.value].number));
+  return it == table.end() ? nullptr : &it->second;
+}
+
+int code_number(const ir::Program& p, const ir::Word& w) { return static_cast<int>(p.exprs[w.value].number); }
+
+void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
+                      const std::string& a, const std::string& b = {}, const std::string& c = {}) {
+  if (Diagnostic* d = diags.report(id, second.range, a, b, c))
+    d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
+}
 
 void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block& block, BlockScratch& seen,
                  Diagnostics& diags) {
@@ -172,29 +173,30 @@ const ir::Word& number_word(const ir::Block& b) {
   return b.words.front();
 }
 
-void check_block_numbers(const ir::Unit& unit, Diagnostics& diags) {
-  std::map<uint32_t, const ir::Block*> seen;
-  const ir::Block* last = nullptr;
-  for (const ir::Block& b : unit.blocks) {
-    if (!b.number) continue;
-    auto [it, fresh] = seen.emplace(*b.number, &b);
-    const ir::Word& word = number_word(b);
-    if (!fresh) {
-      if (Diagnostic* d = diags.report(DiagId::BlockNumberOrder, word.range, *b.number, "is used again"))
-        d->notes.push_back({number_word(*it->second).range, "first used here"});
-    } else if (last && *b.number < *last->number) {
-      diags.report(DiagId::BlockNumberOrder, word.range, *b.number,
-                   fmt::format("is lower than the previous block number {}", *last->number));
-    }
-    last = &b;
+}  // namespace
+
+void BlockNumbers::add(const ir::Block& b, Diagnostics& diags) {
+  if (!b.number) return;
+  const SourceRange at = number_word(b).range;
+  auto [it, fresh] = first_.emplace(*b.number, at);
+  if (!fresh) {
+    if (Diagnostic* d = diags.report(DiagId::BlockNumberOrder, at, *b.number, "is used again"))
+      d->notes.push_back({it->second, "first used here"});
+  } else if (last_ && *b.number < *last_) {
+    diags.report(DiagId::BlockNumberOrder, at, *b.number, fmt::format("is lower than the previous block number {}", *last_));
   }
+  last_ = *b.number;
 }
+
+namespace {
 
 // Jumps stay within their unit; calls name a unit or main block of the medium (the
 // names lowering gives entry points). A call the front end could not resolve it has
 // reported already.
-void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules& rules, Diagnostics& diags) {
+void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules& rules, const StreamChecks* streamed,
+                   Diagnostics& diags) {
   std::set<std::string> labels, entries;
+  if (streamed) entries = streamed->entries();
   std::map<std::string, const ir::Block*> defined;
   for (const ir::Block& b : unit.blocks) {
     if (!b.label.empty()) {
@@ -342,18 +344,36 @@ void check_calls(const ir::Program& program, const CheckRules& rules, Diagnostic
 
 }  // namespace
 
-void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags) {
+StreamChecks::StreamChecks(const CheckRules& rules) : rules_(rules), scratch_(std::make_unique<BlockScratch>()) {}
+StreamChecks::~StreamChecks() = default;
+
+void StreamChecks::block(const ir::Program& program, ir::Block& b, Diagnostics& diags) {
+  const uint32_t errors = diags.error_count();
+  check_block(program, rules_, b, *scratch_, diags);
+  if (diags.error_count() != errors) b.has_errors = true;
+  if (rules_.block_number_order) numbers_.add(b, diags);
+  if (b.main_block && b.number) entries_.insert(fmt::format(":{}", *b.number));
+}
+
+void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags, StreamChecks* streamed) {
   // A block with an error is marked: the dry run would only repeat it.
-  BlockScratch scratch;
-  for (ir::Unit& unit : program.units) {
+  BlockScratch own;
+  BlockScratch& scratch = streamed ? *streamed->scratch_ : own;
+  for (size_t u = 0; u < program.units.size(); ++u) {
+    ir::Unit& unit = program.units[u];
     for (ir::Block& block : unit.blocks) {
       uint32_t errors = diags.error_count();
       check_block(program, rules, block, scratch, diags);
       if (diags.error_count() != errors) block.has_errors = true;
       if (diags.limit_reached()) return;
     }
-    if (rules.block_number_order) check_block_numbers(unit, diags);
-    check_targets(program, unit, rules, diags);
+    // The first unit's numbers go on from those of its streamed blocks.
+    if (rules.block_number_order) {
+      BlockNumbers fresh;
+      BlockNumbers& numbers = u == 0 && streamed ? streamed->numbers_ : fresh;
+      for (const ir::Block& block : unit.blocks) numbers.add(block, diags);
+    }
+    check_targets(program, unit, rules, streamed, diags);
     check_structure(unit, rules, diags);
   }
   check_calls(program, rules, diags);

@@ -4,6 +4,12 @@
 // see compiler/driver/pipeline.h), so they are written once.
 #pragma once
 
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
 #include "ir/ir.h"
 #include "stdlib/tables.h"
 
@@ -18,7 +24,41 @@ struct CheckRules {
   bool recursion = false;           // a unit may call itself (Macro B: a condition ends it)
 };
 
-// Reports every problem and marks the blocks that have one.
-void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags);
+// The block numbers of a unit in order: a number used again, or lower than the one
+// before, is reported (when the dialect's rules ask for it).
+class BlockNumbers {
+ public:
+  void add(const ir::Block& b, Diagnostics& diags);
+
+ private:
+  std::map<uint32_t, SourceRange> first_;  // each number's first use
+  std::optional<uint32_t> last_;
+};
+
+struct BlockScratch;
+
+// The checks of blocks compiled while the program is still being read (a stream:
+// the leading blocks of its first unit that have no label and no flow statement):
+// each block's own checks now, and what the whole-unit checks need of it later (its
+// block number, its main block as an entry point).
+class StreamChecks {
+ public:
+  explicit StreamChecks(const CheckRules& rules);
+  ~StreamChecks();
+  // Checks the block and marks it if it has an error.
+  void block(const ir::Program& program, ir::Block& b, Diagnostics& diags);
+  const std::set<std::string>& entries() const { return entries_; }
+
+ private:
+  friend void check(ir::Program&, const CheckRules&, Diagnostics&, StreamChecks*);
+  const CheckRules& rules_;
+  std::unique_ptr<BlockScratch> scratch_;
+  BlockNumbers numbers_;
+  std::set<std::string> entries_;  // ":N" of the main blocks
+};
+
+// Reports every problem and marks the blocks that have one; `streamed`: the checks
+// of the first unit's blocks that were compiled and dropped while it was read.
+void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags, StreamChecks* streamed = nullptr);
 
 }  // namespace ncc

@@ -32,6 +32,8 @@ constexpr std::string_view kCommonOptions = R"(  --dialect NAME            sourc
   --machine FILE            machine profile (TOML, docs/profile.md); default: built in
   --lib DIR                 program library: where called programs are found (NC-110 CLS, pp G72, iso M98 G65)
   --no-fast-path            read every block with the ANTLR parser (the fast path must give the same IR)
+  --no-stream               hold the whole program's IR before checking and lowering it (the stream
+                            must give the same module and diagnostics)
   --diagnostics-format F    text | json | sarif (default text)
   --error-limit N           stop after N errors (default 100, 0 = no limit)
   --color WHEN              auto | always | never (default auto)
@@ -81,6 +83,7 @@ struct Options {
   std::string machine;
   std::string library;
   bool fast_path = true;
+  bool stream = true;
   std::string trace = "-";
   TraceFormat trace_format = TraceFormat::Text;
   DiagFormat diag_format = DiagFormat::Text;
@@ -119,6 +122,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(o.library)) return "--lib needs a directory";
     } else if (a == "--no-fast-path") {
       o.fast_path = false;
+    } else if (a == "--no-stream") {
+      o.stream = false;
     } else if (a == "--diagnostics-format") {
       if (!value(text)) return "--diagnostics-format needs text, json or sarif";
       if (text == "text") o.diag_format = DiagFormat::Text;
@@ -171,6 +176,7 @@ class Cli {
   explicit Cli(Options o) : o_(std::move(o)), s_(o_.error_limit) {
     s_.library = o_.library;
     s_.fast_path = o_.fast_path;
+    s_.stream = o_.stream;
     color_ = o_.color == "always" || (o_.color == "auto" && isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"));
   }
 
@@ -219,20 +225,20 @@ class Cli {
       if (!m) status = kUsage;
       return m;
     }
-    auto program = analyse(s_, file, o_.dialect);
-    if (!program || s_.diags.has_errors()) {
-      status = program ? kProgramErrors : kUsage;
+    auto m = compile_source(s_, file, o_.dialect);
+    if (!m || s_.diags.has_errors()) {
+      status = m ? kProgramErrors : kUsage;
       return std::nullopt;
     }
-    return lower_program(s_, *program);
+    return m;
   }
 
   int check(FileKind kind, uint32_t file) {
     // The report goes to stdout; when the check cannot run at all, stderr.
     if (int st = source_only(kind)) return finish(st, stderr);
-    auto program = analyse(s_, file, o_.dialect);
-    if (!program) return finish(kUsage, stderr);
-    if (!s_.diags.limit_reached()) dry_run(s_, lower_program(s_, *program), o_.run);
+    auto m = compile_source(s_, file, o_.dialect);
+    if (!m) return finish(kUsage, stderr);
+    if (!s_.diags.limit_reached()) dry_run(s_, *m, o_.run);
     int status = finish(kOk, stdout);
     if (o_.diag_format == DiagFormat::Text)
       std::printf("%s: %u error%s, %u warning%s\n", o_.input.c_str(), s_.diags.error_count(),
@@ -243,9 +249,9 @@ class Cli {
 
   int compile(FileKind kind, uint32_t file) {
     if (int st = source_only(kind)) return finish(st, stderr);
-    auto program = analyse(s_, file, o_.dialect);
-    if (!program) return finish(kUsage, stderr);
-    vm::Module m = lower_program(s_, *program);
+    auto compiled = compile_source(s_, file, o_.dialect);
+    if (!compiled) return finish(kUsage, stderr);
+    const vm::Module& m = *compiled;
     if (!s_.diags.limit_reached()) dry_run(s_, m, o_.run);
     if (s_.diags.has_errors()) return finish(kProgramErrors, stderr);
     std::string bytes = vm::write_module(m);

@@ -172,18 +172,91 @@ std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::s
   return std::pair{kind, s.sources.add(path, std::move(*text))};
 }
 
-std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect) {
-  if (!s.profile && !load_profile(s, "")) return std::nullopt;
-  // The whole profile is read and checked here, machine data too: a profile with
-  // errors stops the command (exit status 2) before the program is read.
+namespace {
+
+// The front end of `dialect` over the session's profile, read and checked in full
+// (machine data too: a profile with errors stops the command, exit status 2, before
+// the program is read).
+std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
+  if (!s.profile && !load_profile(s, "")) return nullptr;
   uint32_t errors = s.diags.error_count();
   auto frontend = make_frontend(dialect, *s.profile, s.diags);
   stdlib::load_machine_config(*s.profile, s.diags);
   s.profile->report_unused(s.diags);
-  if (!frontend || s.diags.error_count() != errors) return std::nullopt;
+  if (!frontend || s.diags.error_count() != errors) return nullptr;
+  return frontend;
+}
+
+// Checks and lowers the first unit's leading blocks as the reader hands them over,
+// and drops them. It stops for good at the first block with a label or a flow
+// statement (jumps, loops, calls, returns: what is decided by blocks read later), and
+// at the first error, so that what follows is checked and lowered as a whole
+// program would be and the error limit counts as it does then.
+class Stream final : public BlockSink {
+ public:
+  Stream(Session& s, const CheckRules& rules) : s_(s), checks(rules), lowering(s.sources) {}
+
+  void take(ir::Program& program, ir::Unit& unit) override {
+    if (stopped_ || !program.units.empty()) return;
+    size_t n = 0;
+    for (; n < unit.blocks.size(); ++n) {
+      ir::Block& b = unit.blocks[n];
+      if (s_.diags.error_count() || !settled(b)) {
+        stopped_ = true;
+        break;
+      }
+      checks.block(program, b, s_.diags);
+      lowering.block(program, unit, b);
+    }
+    unit.blocks.erase(unit.blocks.begin(), unit.blocks.begin() + static_cast<std::ptrdiff_t>(n));
+    unit.streamed += static_cast<uint32_t>(n);
+    // The expressions made since the last time belong to the blocks just dropped
+    // (the reader holds none of them when it calls): they go too.
+    if (stopped_) return;
+    if (expressions_ != SIZE_MAX) program.exprs.resize(expressions_);
+    expressions_ = program.exprs.size();
+  }
+
+  StreamChecks checks;
+  StreamLowering lowering;
+
+ private:
+  // Nothing read later changes how this block is checked or lowered. (A code chosen
+  // at run time, NC-110 GE1, is not: the codes it may be are added once the whole
+  // program is read.)
+  static bool settled(const ir::Block& b) {
+    if (!b.label.empty()) return false;
+    for (const ir::Word& w : b.words)
+      if (w.code == ir::kDynamicCode) return false;
+    for (const ir::Stmt& s : b.stmts)
+      if (s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Assign && s.kind != ir::StmtKind::Comment &&
+          s.kind != ir::StmtKind::Display)
+        return false;
+    return true;
+  }
+
+  Session& s_;
+  bool stopped_ = false;
+  size_t expressions_ = SIZE_MAX;  // the program's expressions after the last blocks taken
+};
+
+}  // namespace
+
+std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect) {
+  auto frontend = frontend_for(s, dialect);
+  if (!frontend) return std::nullopt;
   ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags);
   return program;
+}
+
+std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect) {
+  auto frontend = frontend_for(s, dialect);
+  if (!frontend) return std::nullopt;
+  Stream stream(s, frontend->rules());
+  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr});
+  if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
+  return stream.lowering.finish(program, *s.profile);
 }
 
 vm::Module lower_program(Session& s, const ir::Program& program) { return lower(program, s.sources, *s.profile); }

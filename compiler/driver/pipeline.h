@@ -21,6 +21,7 @@ struct Session {
   std::optional<stdlib::Profile> profile;
   std::string library;  // --lib: where called programs are found
   bool fast_path = true;  // --no-fast-path: every block through the ANTLR parser (to compare)
+  bool stream = true;     // --no-stream: hold the whole IR before checking and lowering (to compare)
 
   explicit Session(uint32_t error_limit = 100) : diags(error_limit) {}
 };
@@ -43,6 +44,12 @@ std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::s
 // Front end and checks. The program is returned even with errors (for `ncc ir`).
 std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect);
 vm::Module lower_program(Session& s, const ir::Program& program);
+// Front end, checks and lowering at once: the leading blocks of the first unit
+// without a label or a flow statement (most of a CAM file) are checked, lowered and
+// dropped as they are read, so that compiling holds little of the file's IR; the
+// module is the one analyse + lower_program make. Blocks with errors are lowered as
+// lower_program does; nothing if the program cannot be read at all.
+std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect);
 // Runs the module with a null trace, reporting what the runtime finds.
 void dry_run(Session& s, const vm::Module& module, const RunSettings& settings);
 // Loads a bytecode file (and registers its source files for diagnostics).

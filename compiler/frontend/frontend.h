@@ -15,9 +15,22 @@
 
 namespace ncc {
 
+// Takes the blocks of the first unit as a front end reads them, to compile them
+// while the rest is read (and drop them: compiling a file then holds no IR of it).
+// A reader calls it at a block's end when it holds nothing of the blocks read so
+// far: no index into them, no expression of theirs. The sink takes each block that
+// comes first and has no label and no flow statement, removes them from the unit
+// (counting them in Unit::streamed) and may drop their expressions.
+class BlockSink {
+ public:
+  virtual ~BlockSink() = default;
+  virtual void take(ir::Program& program, ir::Unit& unit) = 0;
+};
+
 struct ReadOptions {
   std::string library;  // where called programs are looked for ("" = the dialect's default)
   bool fast_path = true;  // plain word blocks by the hand-written scanner (false: every block by ANTLR)
+  BlockSink* sink = nullptr;  // none: the whole program is held
 };
 
 class Frontend {

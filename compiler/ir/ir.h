@@ -180,6 +180,7 @@ struct Unit {
   std::string title;  // the comment of the program-start line
   SourceRange range;
   std::vector<Block> blocks;
+  uint32_t streamed = 0;  // blocks before `blocks`, compiled and dropped while reading (BlockSink)
   bool ends_information = false;  // terminated by end of information (M30)
 };
 

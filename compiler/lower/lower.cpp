@@ -4,6 +4,7 @@
 #include <climits>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 #include <unordered_map>
 
@@ -17,21 +18,49 @@ using vm::Op;
 
 constexpr double kMaxRepeatCount = 2147483647;
 
+// What lowering a unit keeps from block to block.
+struct UnitState {
+  std::map<std::string, uint32_t> labels;
+  std::vector<std::pair<uint32_t, std::string>> jumps;  // (operand, label)
+  std::vector<uint32_t> repeats;    // Repeat operands whose loop has not ended
+  std::vector<uint32_t> loop_start; // where each open loop's body starts
+  size_t starting_loops = 0;        // loops whose body starts at the next block
+  bool entry_added = false;
+  // The repeat loops open at each label (a jump out of loops closes them), and the
+  // labels that end a range (a RangeEnd follows their block).
+  std::map<std::string, size_t> label_depth;
+  std::set<std::string> range_ends;
+  std::vector<std::pair<uint32_t, std::string>> ranges;  // (CallRange operands, start label)
+  size_t depth = 0;
+};
+
 class Lowering {
  public:
-  Lowering(const ir::Program& program, const SourceManager& sources) : p_(program), sources_(sources) {
+  explicit Lowering(const SourceManager& sources) : sources_(sources) {}
+
+  // A block of the first unit lowered while the program is still being read: one
+  // without a label or a flow statement, so that nothing after it changes its code.
+  void stream(const ir::Program& program, const ir::Unit& unit, const ir::Block& b) {
+    p_ = &program;
+    for (uint32_t file : program.files) file_index(file);
+    lower_block(unit, b, first_unit_);
+  }
+
+  // The rest of the program, once it is read and checked.
+  vm::Module finish(const ir::Program& program) {
+    p_ = &program;
     m_.dialect = program.dialect;
     m_.semantics = program.semantics;
     m_.spaces = program.spaces;
     for (uint32_t file : program.files) file_index(file);
-  }
-
-  vm::Module run() {
-    for (const ir::Unit& unit : p_.units)
+    for (const ir::Unit& unit : program.units)
       for (const ir::Block& b : unit.blocks)
         for (const ir::Stmt& s : b.stmts)
           if (s.kind == ir::StmtKind::Call) called_.insert(s.label);
-    for (const ir::Unit& unit : p_.units) lower_unit(unit);
+    for (size_t u = 0; u < program.units.size(); ++u) {
+      UnitState fresh;
+      lower_unit(program.units[u], u == 0 ? first_unit_ : fresh);
+    }
     resolve_calls();
     return std::move(m_);
   }
@@ -118,16 +147,16 @@ class Lowering {
   }
 
   void expr(ir::ExprId id) {
-    const ir::Expr& e = p_.exprs[id];
+    const ir::Expr& e = p_->exprs[id];
     switch (e.op) {
       case ir::ExprOp::Number:
         constant(Op::Const, Op::ConstDec, std::nullopt, e.number);
         return;
       case ir::ExprOp::Var:
-        if (p_.is_constant(e.a)) {
+        if (p_->is_constant(e.a)) {
           op(Op::Load);
           u8(e.space);
-          u32(static_cast<uint32_t>(p_.exprs[e.a].number));
+          u32(static_cast<uint32_t>(p_->exprs[e.a].number));
         } else {
           expr(e.a);
           op(Op::LoadX);
@@ -156,13 +185,13 @@ class Lowering {
         u16(e.sys);
         return;
       case ir::ExprOp::TextEq: {
-        const ir::Expr& a = p_.exprs[e.a];
-        const ir::Expr& b = p_.exprs[e.b];
+        const ir::Expr& a = p_->exprs[e.a];
+        const ir::Expr& b = p_->exprs[e.b];
         expr(a.a);
         if (b.op == ir::ExprOp::String) {
           op(Op::EqText);
           u8(a.space);
-          u32(string(p_.texts[b.text]));
+          u32(string(p_->texts[b.text]));
         } else {
           expr(b.a);
           op(Op::EqMem);
@@ -210,8 +239,8 @@ class Lowering {
         op(Op::CodeOf);
         u8(w.slot);
       } else if (w.kind == ir::WordKind::Parameter) {
-        if (p_.is_constant(w.value)) {
-          constant(Op::Word, Op::WordDec, w.slot, p_.exprs[w.value].number);
+        if (p_->is_constant(w.value)) {
+          constant(Op::Word, Op::WordDec, w.slot, p_->exprs[w.value].number);
         } else {
           expr(w.value);
           op(Op::WordPop);
@@ -224,14 +253,14 @@ class Lowering {
   }
 
   void assign(const ir::Stmt& s) {
-    const ir::Expr& target = p_.exprs[s.target];
+    const ir::Expr& target = p_->exprs[s.target];
     switch (target.op) {
       case ir::ExprOp::Var:
-        if (p_.is_constant(target.a)) {
+        if (p_->is_constant(target.a)) {
           expr(s.value);
           op(Op::Store);
           u8(target.space);
-          u32(static_cast<uint32_t>(p_.exprs[target.a].number));
+          u32(static_cast<uint32_t>(p_->exprs[target.a].number));
         } else {
           expr(target.a);
           expr(s.value);
@@ -252,12 +281,12 @@ class Lowering {
         u16(target.sys);
         return;
       case ir::ExprOp::Text: {
-        const ir::Expr& value = p_.exprs[s.value];
+        const ir::Expr& value = p_->exprs[s.value];
         expr(target.a);
         if (value.op == ir::ExprOp::String) {
           op(Op::StoreText);
           u8(target.space);
-          u32(string(p_.texts[value.text]));
+          u32(string(p_->texts[value.text]));
         } else {
           expr(value.a);
           op(Op::CopyText);
@@ -273,10 +302,10 @@ class Lowering {
 
   void display(const ir::Stmt& s) {
     for (const ir::DisplayItem& item : s.items) {
-      const ir::Expr& e = p_.exprs[item.value];
+      const ir::Expr& e = p_->exprs[item.value];
       if (e.op == ir::ExprOp::String) {
         op(Op::Show);
-        u32(string(p_.texts[e.text]));
+        u32(string(p_->texts[e.text]));
       } else if (e.op == ir::ExprOp::Text) {
         expr(e.a);
         op(Op::ShowText);
@@ -298,143 +327,18 @@ class Lowering {
     return unit.kind == ir::UnitKind::Program ? vm::EntryKind::Program : vm::EntryKind::Subprogram;
   }
 
-  void lower_unit(const ir::Unit& unit) {
-    std::map<std::string, uint32_t> labels;
-    std::vector<std::pair<uint32_t, std::string>> jumps;  // (operand, label)
-    std::vector<uint32_t> repeats;    // Repeat operands whose loop has not ended
-    std::vector<uint32_t> loop_start; // where each open loop's body starts
-    size_t starting_loops = 0;        // loops whose body starts at the next block
-    bool entry_added = false;
-    // The repeat loops open at each label (a jump out of loops closes them), and the
-    // labels that end a range (a RangeEnd follows their block).
-    std::map<std::string, size_t> label_depth;
-    std::set<std::string> range_ends;
-    size_t depth = 0;
+  void lower_unit(const ir::Unit& unit, UnitState& st) {
     for (const ir::Block& b : unit.blocks) {
-      if (!b.label.empty()) label_depth.emplace(b.label, depth);
+      if (!b.label.empty()) st.label_depth.emplace(b.label, st.depth);
       for (const ir::Stmt& s : b.stmts) {
-        if (s.kind == ir::StmtKind::RepeatBegin) ++depth;
-        if (s.kind == ir::StmtKind::RepeatEnd && depth > 0) --depth;
-        if (s.kind == ir::StmtKind::CallRange) range_ends.insert(s.end_label);
+        if (s.kind == ir::StmtKind::RepeatBegin) ++st.depth;
+        if (s.kind == ir::StmtKind::RepeatEnd && st.depth > 0) --st.depth;
+        if (s.kind == ir::StmtKind::CallRange) st.range_ends.insert(s.end_label);
       }
     }
-    std::vector<std::pair<uint32_t, std::string>> ranges;  // (CallRange operands, start label)
-    depth = 0;
-    for (const ir::Block& b : unit.blocks) {
-      uint32_t source = source_block(b);
-      m_.lines.push_back({pc(), source});
-      for (; starting_loops > 0; --starting_loops) loop_start.push_back(pc());
-      if (!entry_added) {
-        m_.entries.push_back({unit.name, entry_kind(unit), pc()});
-        entry_added = true;
-      }
-      if (b.main_block && b.number)
-        m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
-      if (!b.label.empty()) labels.emplace(b.label, pc());  // a label used twice (Macro B N): the first
-      // A block a call names (Macro B M97) is an entry point of its own.
-      if (!b.label.empty() && called_.count(unit.name + "/" + b.label))
-        m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});
-      op(Op::Step);
-      uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
-      for (const ir::Stmt& s : b.stmts) {
-        // A block the compiler rejected does not jump or call: where to is in doubt (a
-        // dry run goes on past it, its other errors already reported).
-        if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange))
-          continue;
-        // A statement with a condition (Macro B `IF [...] THEN`) runs only when it holds.
-        uint32_t unless = 0;
-        if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) {
-          expr(s.cond);
-          unless = jump(Op::JumpIfNot);
-        }
-        switch (s.kind) {
-          case ir::StmtKind::Comment: {
-            uint32_t skip_comment = s.optional ? jump(Op::JumpSkip) : 0;
-            op(Op::Comment);
-            u32(string(s.label));
-            if (skip_comment) patch(skip_comment, pc());
-            break;
-          }
-          case ir::StmtKind::Machine: machine(b); break;
-          case ir::StmtKind::Assign: assign(s); break;
-          case ir::StmtKind::Display: display(s); break;
-          case ir::StmtKind::Jump: {
-            if (s.label.empty()) {
-              computed_jump(unit, s, jumps);
-              break;
-            }
-            // A jump out of repeat loops closes them (the checks reject jumps into
-            // one): it lands at its target's loop depth. So does a jump where a range
-            // may run the code, which may leave the range.
-            auto it = label_depth.find(s.label);
-            const size_t landing = it != label_depth.end() ? it->second : depth;
-            if (landing >= depth && range_ends.empty()) {
-              if (s.cond != ir::kNoExpr) expr(s.cond);
-              jumps.push_back({jump(s.cond != ir::kNoExpr ? Op::JumpIf : Op::Jump), s.label});
-              break;
-            }
-            uint32_t not_taken = 0;
-            if (s.cond != ir::kNoExpr) {
-              expr(s.cond);
-              not_taken = jump(Op::JumpIfNot);
-            }
-            op(Op::Unloop);
-            u8(static_cast<uint32_t>(landing));
-            jumps.push_back({jump(Op::Jump), s.label});
-            if (not_taken) patch(not_taken, pc());
-            break;
-          }
-          case ir::StmtKind::RepeatBegin:
-            // The loop body starts at the next block (RepeatBegin ends its block).
-            expr(s.value);
-            repeats.push_back(jump(Op::Repeat));
-            u32(number(s.limit ? s.limit : kMaxRepeatCount));
-            ++starting_loops;
-            ++depth;
-            break;
-          case ir::StmtKind::RepeatEnd:
-            if (loop_start.empty()) break;  // without its repeat: the checks report it
-            jump(Op::EndRepeat, loop_start.back());
-            loop_start.pop_back();
-            patch(repeats.back(), pc());
-            repeats.pop_back();
-            --depth;
-            break;
-          case ir::StmtKind::CallRange:
-            ranges.push_back({pc() + 1, s.label});
-            range_ends_at_.push_back({pc() + 5, s.end_label});
-            op(Op::CallRange);
-            u32(0);
-            u32(0);
-            u8(static_cast<uint32_t>(label_depth.count(s.label) ? label_depth.at(s.label) : 0));
-            break;
-          case ir::StmtKind::Call:
-            for (const ir::CallArg& a : s.args) {
-              expr(a.value);
-              op(Op::Arg);
-              u8(a.space);
-              u32(a.index);
-            }
-            if (s.value != ir::kNoExpr) {
-              expr(s.value);
-            } else {
-              constant(Op::Const, Op::ConstDec, std::nullopt, 1);
-            }
-            calls_.push_back({pc() + 1, s.label});
-            op(s.shares_locals ? Op::CallShared : Op::CallEntry);
-            u16(0);
-            break;
-          case ir::StmtKind::Return: op(Op::Return); break;
-        }
-        if (unless) patch(unless, pc());
-      }
-      if (skip) patch(skip, pc());
-      if (!b.label.empty() && range_ends.count(b.label)) {
-        labels_end_[b.label] = pc();
-        op(Op::RangeEnd);
-      }
-    }
-    if (!entry_added) {
+    st.depth = 0;
+    for (const ir::Block& b : unit.blocks) lower_block(unit, b, st);
+    if (!st.entry_added) {
       // An empty program still gets its entry point, so it can be run (and end).
       SourceBlock s;
       s.file = file_index(unit.range.file);
@@ -446,24 +350,24 @@ class Lowering {
       op(Op::Step);
     }
     uint32_t end = pc();
-    for (uint32_t at : repeats) patch(at, end);  // repeats without their end (the checks report them)
+    for (uint32_t at : st.repeats) patch(at, end);  // repeats without their end (the checks report them)
     // A subprogram returns at its end (NC-110 §2.13.2.2); a program ends there.
     op(unit.kind == ir::UnitKind::Program ? Op::End : Op::Return);
     // The checks report labels that do not exist; should one slip through, the jump
     // ends the unit rather than going anywhere else.
-    for (const auto& [at, label] : jumps) {
-      auto it = labels.find(label);
-      patch(at, it != labels.end() ? it->second : end);
+    for (const auto& [at, label] : st.jumps) {
+      auto it = st.labels.find(label);
+      patch(at, it != st.labels.end() ? it->second : end);
     }
     // A range whose labels do not exist (the checks report it) runs nothing.
     uint32_t nothing = pc();
-    if (!ranges.empty()) {
+    if (!st.ranges.empty()) {
       op(Op::RangeEnd);
       op(Op::End);
     }
-    for (const auto& [at, label] : ranges) {
-      auto it = labels.find(label);
-      patch(at, it != labels.end() ? it->second : nothing);
+    for (const auto& [at, label] : st.ranges) {
+      auto it = st.labels.find(label);
+      patch(at, it != st.labels.end() ? it->second : nothing);
     }
     for (const auto& [at, label] : range_ends_at_) {
       auto it = labels_end_.find(label);
@@ -471,6 +375,121 @@ class Lowering {
     }
     range_ends_at_.clear();
     labels_end_.clear();
+  }
+
+  void lower_block(const ir::Unit& unit, const ir::Block& b, UnitState& st) {
+    uint32_t source = source_block(b);
+    m_.lines.push_back({pc(), source});
+    for (; st.starting_loops > 0; --st.starting_loops) st.loop_start.push_back(pc());
+    if (!st.entry_added) {
+      m_.entries.push_back({unit.name, entry_kind(unit), pc()});
+      st.entry_added = true;
+    }
+    if (b.main_block && b.number)
+      m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
+    if (!b.label.empty()) st.labels.emplace(b.label, pc());  // a label used twice (Macro B N): the first
+    // A block a call names (Macro B M97) is an entry point of its own.
+    if (!b.label.empty() && called_.count(unit.name + "/" + b.label))
+      m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});
+    op(Op::Step);
+    uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
+    for (const ir::Stmt& s : b.stmts) {
+      // A block the compiler rejected does not jump or call: where to is in doubt (a
+      // dry run goes on past it, its other errors already reported).
+      if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange))
+        continue;
+      // A statement with a condition (Macro B `IF [...] THEN`) runs only when it holds.
+      uint32_t unless = 0;
+      if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) {
+        expr(s.cond);
+        unless = jump(Op::JumpIfNot);
+      }
+      switch (s.kind) {
+        case ir::StmtKind::Comment: {
+          uint32_t skip_comment = s.optional ? jump(Op::JumpSkip) : 0;
+          op(Op::Comment);
+          u32(string(s.label));
+          if (skip_comment) patch(skip_comment, pc());
+          break;
+        }
+        case ir::StmtKind::Machine: machine(b); break;
+        case ir::StmtKind::Assign: assign(s); break;
+        case ir::StmtKind::Display: display(s); break;
+        case ir::StmtKind::Jump: {
+          if (s.label.empty()) {
+            computed_jump(unit, s, st.jumps);
+            break;
+          }
+          // A jump out of repeat loops closes them (the checks reject jumps into
+          // one): it lands at its target's loop depth. So does a jump where a range
+          // may run the code, which may leave the range.
+          auto it = st.label_depth.find(s.label);
+          const size_t landing = it != st.label_depth.end() ? it->second : st.depth;
+          if (landing >= st.depth && st.range_ends.empty()) {
+            if (s.cond != ir::kNoExpr) expr(s.cond);
+            st.jumps.push_back({jump(s.cond != ir::kNoExpr ? Op::JumpIf : Op::Jump), s.label});
+            break;
+          }
+          uint32_t not_taken = 0;
+          if (s.cond != ir::kNoExpr) {
+            expr(s.cond);
+            not_taken = jump(Op::JumpIfNot);
+          }
+          op(Op::Unloop);
+          u8(static_cast<uint32_t>(landing));
+          st.jumps.push_back({jump(Op::Jump), s.label});
+          if (not_taken) patch(not_taken, pc());
+          break;
+        }
+        case ir::StmtKind::RepeatBegin:
+          // The loop body starts at the next block (RepeatBegin ends its block).
+          expr(s.value);
+          st.repeats.push_back(jump(Op::Repeat));
+          u32(number(s.limit ? s.limit : kMaxRepeatCount));
+          ++st.starting_loops;
+          ++st.depth;
+          break;
+        case ir::StmtKind::RepeatEnd:
+          if (st.loop_start.empty()) break;  // without its repeat: the checks report it
+          jump(Op::EndRepeat, st.loop_start.back());
+          st.loop_start.pop_back();
+          patch(st.repeats.back(), pc());
+          st.repeats.pop_back();
+          --st.depth;
+          break;
+        case ir::StmtKind::CallRange:
+          st.ranges.push_back({pc() + 1, s.label});
+          range_ends_at_.push_back({pc() + 5, s.end_label});
+          op(Op::CallRange);
+          u32(0);
+          u32(0);
+          u8(static_cast<uint32_t>(st.label_depth.count(s.label) ? st.label_depth.at(s.label) : 0));
+          break;
+        case ir::StmtKind::Call:
+          for (const ir::CallArg& a : s.args) {
+            expr(a.value);
+            op(Op::Arg);
+            u8(a.space);
+            u32(a.index);
+          }
+          if (s.value != ir::kNoExpr) {
+            expr(s.value);
+          } else {
+            constant(Op::Const, Op::ConstDec, std::nullopt, 1);
+          }
+          calls_.push_back({pc() + 1, s.label});
+          op(s.shares_locals ? Op::CallShared : Op::CallEntry);
+          u16(0);
+          break;
+        case ir::StmtKind::Return: op(Op::Return); break;
+      }
+      if (unless) patch(unless, pc());
+    }
+    if (skip) patch(skip, pc());
+    if (!b.label.empty() && st.range_ends.count(b.label)) {
+      labels_end_[b.label] = pc();
+      op(Op::RangeEnd);
+    }
   }
 
   // A jump to the block whose number an expression gives (Macro B `GOTO #1`): each
@@ -515,7 +534,7 @@ class Lowering {
     }
   }
 
-  const ir::Program& p_;
+  const ir::Program* p_ = nullptr;
   const SourceManager& sources_;
   vm::Module m_;
   std::map<uint32_t, uint32_t> files_;
@@ -525,15 +544,31 @@ class Lowering {
   std::set<std::string> called_;                          // every entry name a call names
   std::vector<std::pair<uint32_t, std::string>> range_ends_at_;  // (CallRange end operand, end label)
   std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd
+  UnitState first_unit_;  // of the first unit, whose leading blocks may come streamed
 };
 
 }  // namespace
 
-vm::Module lower(const ir::Program& program, const SourceManager& sources, const stdlib::Profile& profile) {
-  vm::Module m = Lowering(program, sources).run();
+struct StreamLowering::Impl : Lowering {
+  using Lowering::Lowering;
+};
+
+StreamLowering::StreamLowering(const SourceManager& sources) : impl_(std::make_unique<Impl>(sources)) {}
+StreamLowering::~StreamLowering() = default;
+
+void StreamLowering::block(const ir::Program& program, const ir::Unit& unit, const ir::Block& b) {
+  impl_->stream(program, unit, b);
+}
+
+vm::Module StreamLowering::finish(const ir::Program& program, const stdlib::Profile& profile) {
+  vm::Module m = impl_->finish(program);
   m.profile_name = profile.text().empty() ? "" : profile.name();
   m.profile_text = profile.text();
   return m;
+}
+
+vm::Module lower(const ir::Program& program, const SourceManager& sources, const stdlib::Profile& profile) {
+  return StreamLowering(sources).finish(program, profile);
 }
 
 }  // namespace ncc

@@ -65,8 +65,9 @@ class ErrorListener final : public antlr4::BaseErrorListener {
 class Reader final : public ncc_gost::GostParserBaseVisitor {
  public:
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-         Diagnostics& diags, bool fast_path)
-      : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(fast_path) {
+         Diagnostics& diags, const ReadOptions& options)
+      : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(options.fast_path),
+        sink_(options.sink) {
     lexer_.removeErrorListeners();
     parser_.removeErrorListeners();
     parser_.addErrorListener(&listener_);
@@ -111,6 +112,7 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   uint32_t file_;
   Diagnostics& diags_;
   bool fast_path_;
+  BlockSink* sink_;  // takes each finished block (the reader keeps nothing of them)
 
   antlr4::ANTLRInputStream input_;
   GostLexer lexer_{&input_};
@@ -256,7 +258,7 @@ void Reader::end_program(SourceRange at, bool terminated) {
                   at.line > source_.line_count() || at.col > source_.line(at.line).size()
                       ? std::string("the end of the file")
                       : std::string("the next program start '%'"));
-  if (unit_.blocks.empty()) diags_.report(DiagId::EmptyProgram, unit_.range, unit_.name);
+  if (unit_.blocks.empty() && !unit_.streamed) diags_.report(DiagId::EmptyProgram, unit_.range, unit_.name);
   program_.units.push_back(std::move(unit_));
   unit_ = ir::Unit{};
   state_ = State::Leader;
@@ -276,16 +278,16 @@ void Reader::read_block(std::string_view line, uint32_t line_no) {
   // rest (both give the same IR: tests/fastpath).
   if (fast_path_ && scan_plain(line)) {
     block_.has_errors = diags_.error_count() != errors;
-    finish_block();
-    return;
+  } else {
+    block_ = ir::Block{};
+    block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+    parse(line, line_no, 0);
+    GostParser::BlockContext* ctx = parser_.block();
+    for (auto* element : ctx->element()) visit(element);
+    block_.has_errors = diags_.error_count() != errors;
   }
-  block_ = ir::Block{};
-  block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
-  parse(line, line_no, 0);
-  GostParser::BlockContext* ctx = parser_.block();
-  for (auto* element : ctx->element()) visit(element);
-  block_.has_errors = diags_.error_count() != errors;
   finish_block();
+  if (sink_ && state_ == State::Program) sink_->take(program_, unit_);
 }
 
 void Reader::finish_block() {
@@ -584,7 +586,7 @@ class GostFrontend final : public DialectFrontend<Settings> {
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
     ir::Program program = start_program("gost", file);
-    Reader reader(s_, program, sources.file(file), file, diags, options.fast_path);
+    Reader reader(s_, program, sources.file(file), file, diags, options);
     reader.run();
     // §8: the functions set at power-on and after M02/M30 for the control type.
     set_power_on(program, s_.tables, s_.tables.power_on.at(s_.control_type));

@@ -29,7 +29,7 @@ class IsoFrontend final : public DialectFrontend<Settings> {
     const auto space = static_cast<uint16_t>(program.spaces.size());
     program.spaces.push_back(vars);
 
-    Reader main(s_, program, sources.file(file), file, diags, space, std::nullopt, options.fast_path);
+    Reader main(s_, program, sources.file(file), file, diags, space, std::nullopt, options.fast_path, options.sink);
     main.run();
     std::deque<ProgramCall> pending(main.calls().begin(), main.calls().end());
     // Called programs the file does not hold: O<nnnn>[.nc] in the library (decision 12).

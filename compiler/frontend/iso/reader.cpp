@@ -93,9 +93,9 @@ class Reader::Errors final : public antlr4::BaseErrorListener {
 std::string Reader::program_name(uint32_t number) { return fmt::format("O{:04}", number); }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-               Diagnostics& diags, uint16_t space, std::optional<std::string> called, bool fast_path)
+               Diagnostics& diags, uint16_t space, std::optional<std::string> called, bool fast_path, BlockSink* sink)
     : s_(settings), program_(program), source_(source), file_(file), diags_(diags), space_(space),
-      called_(std::move(called)), fast_path_(fast_path), errors_(std::make_unique<Errors>(*this)) {
+      called_(std::move(called)), fast_path_(fast_path), sink_(sink), errors_(std::make_unique<Errors>(*this)) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.addErrorListener(errors_.get());
@@ -117,6 +117,11 @@ void Reader::take(const Piece& p) {
     case Piece::Open: open_brace(p); break;
     case Piece::Close: close_brace(p); break;
   }
+  // The blocks read so far go to the sink when nothing refers back to them: no loop
+  // or IF open, no chamfer waiting for its move, the main program's end not yet read.
+  if (sink_ && in_unit_ && unit_.kind == ir::UnitKind::Program && loops_.empty() && branches_.empty() &&
+      !expect_brace_ && !corner_ && !end_block_)
+    sink_->take(program_, unit_);
 }
 
 // ---- Cutting the text -------------------------------------------------------------
@@ -476,7 +481,7 @@ void Reader::read(const Piece& piece) {
                       fmt::format("{} stands in the file of {}: a program file holds its own program", name, *called_));
       return;
     }
-    if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && in_unit_ && unit_.name == "%" ) {
+    if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && !unit_.streamed && in_unit_ && unit_.name == "%") {
       unit_.name = name;  // the main program's own number
       unit_.range = r;
       return;

@@ -11,6 +11,7 @@
 
 #include "IsoLexer.h"
 #include "IsoParser.h"
+#include "frontend/frontend.h"
 #include "frontend/plain_words.h"
 #include "ir/ir.h"
 #include "settings.h"
@@ -30,8 +31,9 @@ struct ProgramCall {
 class Reader {
  public:
   // `called`: the file of a called program (its blocks form one subprogram named so).
+  // `sink` takes the main program's blocks as they are finished (see BlockSink).
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
-         uint16_t space, std::optional<std::string> called, bool fast_path);
+         uint16_t space, std::optional<std::string> called, bool fast_path, BlockSink* sink = nullptr);
   ~Reader();
 
   // Appends the file's units to the program.
@@ -117,6 +119,7 @@ class Reader {
   uint16_t space_;  // the Macro B variables #0..#999
   std::optional<std::string> called_;
   bool fast_path_;
+  BlockSink* sink_;
 
   antlr4::ANTLRInputStream input_;
   IsoLexer lexer_{&input_};

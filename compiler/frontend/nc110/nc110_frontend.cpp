@@ -38,7 +38,8 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       unit.kind = kind;
       unit.name = std::move(name);
       unit.range = SourceRange::point(f, 1, 1);
-      Reader reader(s_, program, sources.file(f), f, diags, options.fast_path);
+      Reader reader(s_, program, sources.file(f), f, diags, options.fast_path,
+                    kind == ir::UnitKind::Program ? options.sink : nullptr);
       reader.run(unit);
       program.units.push_back(std::move(unit));
       for (const CallSite& c : reader.calls()) pending.push_back(c);

@@ -205,8 +205,8 @@ void Reader::report_cyrillic(const SourceRange& range, const std::string& letter
 }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-               Diagnostics& diags, bool fast_path)
-    : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(fast_path) {
+               Diagnostics& diags, bool fast_path, BlockSink* sink)
+    : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(fast_path), sink_(sink) {
   listener_ = std::make_unique<Listener>(*this);
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
@@ -251,6 +251,7 @@ void Reader::run(ir::Unit& unit) {
     // '%', the ISO tape mark, alone on the first or the last line (§2.4.1, decision 28).
     if (l.substr(begin) == "%" && (n == first || n == last)) continue;
     read_line(l, n);
+    if (sink_) sink_->take(program_, *unit_);
   }
 }
 

@@ -36,8 +36,9 @@ inline constexpr std::string_view kGtlElements = "oplc";
 
 class Reader {
  public:
+  // `sink` takes each block as it is finished (see BlockSink).
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
-         bool fast_path);
+         bool fast_path, BlockSink* sink = nullptr);
   ~Reader();
 
   // Reads the whole file into `unit`.
@@ -144,6 +145,7 @@ class Reader {
   std::string_view line_;
   uint32_t line_no_ = 0;
   bool fast_path_;
+  BlockSink* sink_;
   PlainBlock plain_;
   std::vector<uint32_t> byte_of_;  // the byte offset of each code point of the line, and the end
   ir::Unit* unit_ = nullptr;
