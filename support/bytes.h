@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <span>
 #include <string>
@@ -13,14 +14,30 @@ namespace ncc {
 
 uint32_t crc32(std::span<const uint8_t> data, uint32_t crc = 0);
 
+// Little-endian values into a buffer: kept in memory (data()), or passed on to a file
+// in pieces as they come (a stream: only the piece being filled is held).
 class ByteWriter {
  public:
-  void u8(uint8_t v) { out_.push_back(static_cast<char>(v)); }
+  ByteWriter() = default;
+  // A stream to `out`; nullptr: nowhere, only counting the bytes.
+  explicit ByteWriter(std::FILE* out) : stream_(true), file_(out) {}
+
+  void u8(uint8_t v) {
+    out_.push_back(static_cast<char>(v));
+    if (stream_ && out_.size() >= kPiece) pass_on();
+  }
   void u16(uint16_t v) { put(v, 2); }
   void u32(uint32_t v) { put(v, 4); }
   void u64(uint64_t v) { put(v, 8); }
   void f64(double v) { u64(std::bit_cast<uint64_t>(v)); }
-  void bytes(std::string_view s) { out_.append(s); }
+  void bytes(std::string_view s) {
+    if (stream_ && out_.size() + s.size() >= kPiece) {
+      pass_on();
+      emit(s);  // a large block goes as it is
+      return;
+    }
+    out_.append(s);
+  }
   void str(std::string_view s) {
     u32(static_cast<uint32_t>(s.size()));
     bytes(s);
@@ -38,11 +55,35 @@ class ByteWriter {
   size_t size() const { return out_.size(); }
   std::string& data() { return out_; }
 
+  // A stream: passes the rest on; false if a write failed.
+  bool finish() {
+    pass_on();
+    return ok_;
+  }
+  uint64_t written() const { return passed_ + out_.size(); }
+  uint32_t crc() const { return crc_; }  // of the bytes passed on
+
  private:
+  static constexpr size_t kPiece = 1 << 16;
   void put(uint64_t v, int n) {
-    for (int i = 0; i < n; ++i) out_.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
+    for (int i = 0; i < n; ++i) u8(static_cast<uint8_t>((v >> (8 * i)) & 0xFF));
+  }
+  void pass_on() {
+    emit(out_);
+    out_.clear();
+  }
+  void emit(std::string_view s) {
+    if (s.empty()) return;
+    crc_ = crc32({reinterpret_cast<const uint8_t*>(s.data()), s.size()}, crc_);
+    passed_ += s.size();
+    if (file_ && std::fwrite(s.data(), 1, s.size(), file_) != s.size()) ok_ = false;
   }
   std::string out_;
+  bool stream_ = false;
+  std::FILE* file_ = nullptr;
+  uint64_t passed_ = 0;
+  uint32_t crc_ = 0;
+  bool ok_ = true;
 };
 
 // Reads fixed-width little-endian values; any read past the end sets failed() and

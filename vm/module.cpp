@@ -465,25 +465,49 @@ uint32_t Module::source_of(uint32_t pc) const {
   return it == lines.begin() ? 0 : std::prev(it)->source;
 }
 
-std::string write_module(const Module& m) {
-  // One buffer: the header, then each section as (tag, size, bytes) with its size
-  // filled in after it, then the checksum of all the sections.
-  ByteWriter w;
+namespace {
+
+// The header with the checksum left 0, then each section as (tag, size, bytes): the
+// sizes come first, so the sections are measured by writing them to nowhere.
+void write_header(ByteWriter& w) {
   w.bytes(kMagic);
   w.u16(kFormatVersion);
   w.u16(0);
   w.u32(static_cast<uint32_t>(kSections.size()));
   w.u32(0);  // checksum
+}
+void write_body(ByteWriter& w, const Module& m) {
   for (uint32_t t : kSections) {
+    ByteWriter count(nullptr);
+    write_section(t, count, m);
+    count.finish();
     w.u32(t);
-    const size_t at = w.size();
-    w.u32(0);
+    w.u32(static_cast<uint32_t>(count.written()));
     write_section(t, w, m);
-    w.patch_u32(at, static_cast<uint32_t>(w.size() - at - 4));
   }
+}
+
+}  // namespace
+
+std::string write_module(const Module& m) {
+  ByteWriter w;
+  write_header(w);
+  write_body(w, m);
   const std::string& b = w.data();
   w.patch_u32(12, crc32({reinterpret_cast<const uint8_t*>(b.data()) + kHeaderSize, b.size() - kHeaderSize}));
   return std::move(w.data());
+}
+
+bool write_module(const Module& m, std::FILE* out) {
+  ByteWriter header;
+  write_header(header);
+  if (std::fwrite(header.data().data(), 1, kHeaderSize, out) != kHeaderSize) return false;
+  ByteWriter body(out);
+  write_body(body, m);
+  if (!body.finish()) return false;
+  header.patch_u32(12, body.crc());
+  return std::fseek(out, 12, SEEK_SET) == 0 && std::fwrite(header.data().data() + 12, 1, 4, out) == 4 &&
+         std::fseek(out, 0, SEEK_END) == 0;
 }
 
 std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags) {

@@ -4,6 +4,7 @@
 // Loading verifies every instruction, operand and jump before anything runs.
 #pragma once
 
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -51,6 +52,9 @@ struct Module {
 };
 
 std::string write_module(const Module& m);
+// The same bytes to a file opened for writing (seekable: the checksum goes in last),
+// holding only a small buffer; false if a write failed.
+bool write_module(const Module& m, std::FILE* out);
 // Parses, checks the checksum and verifies; reports and returns nothing on failure.
 std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags);
 // "" when the module is sound, else the first problem found.

@@ -254,11 +254,10 @@ class Cli {
     const vm::Module& m = *compiled;
     if (!s_.diags.limit_reached()) dry_run(s_, m, o_.run);
     if (s_.diags.has_errors()) return finish(kProgramErrors, stderr);
-    std::string bytes = vm::write_module(m);
     // Write the whole file or nothing: a temporary file renamed into place.
     std::string temp = o_.output + ".tmp";
     std::FILE* f = std::fopen(temp.c_str(), "wb");
-    bool ok = f && std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
+    bool ok = f && vm::write_module(m, f);
     ok = f && std::fclose(f) == 0 && ok;
     ok = ok && std::rename(temp.c_str(), o_.output.c_str()) == 0;
     if (!ok) {

@@ -69,6 +69,22 @@ TEST(Bytecode, RoundTripKeepsEverything) {
   EXPECT_EQ(back->semantics.codes.size(), m.semantics.codes.size());
 }
 
+TEST(Bytecode, WritingToAFileGivesTheSameBytes) {
+  // In pieces through a small buffer, the checksum put in last.
+  Session s;
+  vm::Module m = compile_example(s);
+  m.code.insert(m.code.end() - 1, 200000, static_cast<uint8_t>(vm::Op::Nop));  // beyond one piece
+  const std::string bytes = vm::write_module(m);
+  std::FILE* f = std::tmpfile();
+  ASSERT_TRUE(f);
+  ASSERT_TRUE(vm::write_module(m, f));
+  std::string back(bytes.size() + 1, '\0');
+  std::rewind(f);
+  back.resize(std::fread(back.data(), 1, back.size(), f));
+  std::fclose(f);
+  EXPECT_EQ(back, bytes);
+}
+
 TEST(Bytecode, WritingIsDeterministic) {
   Session a, b;
   EXPECT_EQ(vm::write_module(compile_example(a)), vm::write_module(compile_example(b)));
