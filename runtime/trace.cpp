@@ -83,10 +83,7 @@ class BufferedSink : public TraceSink {
       buffer_.clear();
     }
   }
-  const SourceBlock& block(const Event& e) const {
-    static const SourceBlock none;
-    return e.source < map_.blocks.size() ? map_.blocks[e.source] : none;
-  }
+  SourceBlock block(const Event& e) const { return e.source < map_.size() ? map_.block(e.source) : SourceBlock{}; }
   bool has_axis(char letter) const { return axes_.find(letter) != std::string::npos; }
 
   static constexpr size_t kFlushAt = 1 << 16;
@@ -101,7 +98,7 @@ class TextSink final : public BufferedSink {
   using BufferedSink::BufferedSink;
 
   void event(const Event& e) override {
-    const SourceBlock& b = block(e);
+    const SourceBlock b = block(e);
     std::string s = b.file == 0 ? fmt::format("{}", b.line)
                                 : fmt::format("{}:{}", printable(b.file < map_.files.size() ? map_.files[b.file] : "?"), b.line);
     s += b.has_number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', b.number) : std::string(" - ");
@@ -225,7 +222,7 @@ class JsonlSink final : public BufferedSink {
   using BufferedSink::BufferedSink;
 
   void event(const Event& e) override {
-    const SourceBlock& b = block(e);
+    const SourceBlock b = block(e);
     std::string s = fmt::format(R"({{"seq":{},"file":{},"line":{},"col":{})", ++seq_,
                                 quoted(b.file < map_.files.size() ? map_.files[b.file] : ""), b.line, b.col);
     if (b.has_number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', b.number);

@@ -10,34 +10,9 @@
 #include <vector>
 
 #include "machine_config.h"
+#include "source_map.h"
 
 namespace ncc {
-
-// Where each block of a program came from; the bytecode file stores it.
-struct SourceBlock {
-  uint32_t file = 0;
-  uint32_t line = 0, col = 0, end_line = 0, end_col = 0;
-  bool has_number = false;
-  bool main_block = false;
-  bool has_errors = false;  // the compiler reported errors here (the dry run stays quiet)
-  uint32_t number = 0;
-  uint32_t first_word = 0;  // into SourceMap::words
-  uint32_t word_count = 0;
-  bool operator==(const SourceBlock&) const = default;
-};
-
-struct WordPosition {
-  uint8_t slot = 0;
-  int16_t code = -1;  // a G/M word: its index in ProgramSemantics::codes
-  uint32_t line = 0, col = 0, end_col = 0;
-  bool operator==(const WordPosition&) const = default;
-};
-
-struct SourceMap {
-  std::vector<std::string> files;
-  std::vector<SourceBlock> blocks;
-  std::vector<WordPosition> words;
-};
 
 enum class EventKind : uint8_t {
   Units,             // n: 0 mm, 1 inch

@@ -6,8 +6,6 @@
 #include <bit>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "embedded.h"
 
@@ -72,14 +70,12 @@ std::optional<Profile> Profile::parse(SourceManager& sources, std::string name, 
 
 std::optional<Profile> Profile::load(SourceManager& sources, const std::string& path, Diagnostics& diags) {
   if (path.empty()) return parse(sources, "", "", diags);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
+  auto read = read_file(path);
+  if (!read) {
     diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno));
     return std::nullopt;
   }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  std::string text = buffer.str();
+  std::string text = std::move(*read);
   if (text.empty()) text = "\n";  // an empty profile is valid: everything is the default
   return parse(sources, path, std::move(text), diags);
 }

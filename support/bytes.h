@@ -122,10 +122,23 @@ class ByteReader {
     uint64_t v = uvar();
     return static_cast<int64_t>(v >> 1) ^ -static_cast<int64_t>(v & 1);
   }
+  // A 32-bit field written as a uvar, or as an svar from `base`; a value outside 32
+  // bits clears `ok`.
+  uint32_t var32(bool& ok) {
+    uint64_t v = uvar();
+    if (v > UINT32_MAX) ok = false;
+    return static_cast<uint32_t>(v);
+  }
+  uint32_t delta32(uint32_t base, bool& ok) {
+    int64_t d = svar();
+    if (d < -int64_t(base) || d > int64_t(UINT32_MAX - base)) ok = false;
+    return static_cast<uint32_t>(base + d);
+  }
   bool failed() const { return failed_; }
   bool at_end() const { return pos_ == data_.size(); }
   size_t pos() const { return pos_; }
   size_t remaining() const { return data_.size() - pos_; }
+  std::string_view data() const { return data_; }
 
  private:
   uint64_t get(int n) {

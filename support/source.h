@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -51,5 +52,9 @@ class SourceManager {
  private:
   std::deque<SourceFile> files_;
 };
+
+// The bytes of the file at `path` in one string, read straight into it (a pipe or a
+// device too, piece by piece); nothing if it cannot be opened or read (errno says why).
+std::optional<std::string> read_file(const std::string& path);
 
 }  // namespace ncc

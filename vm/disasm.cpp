@@ -19,8 +19,8 @@ constexpr std::string_view kTypeNames[] = {"long_real", "real", "byte", "integer
 
 
 std::string source_text(const Module& m, uint32_t source) {
-  if (source >= m.source_map.blocks.size()) return "?";
-  const SourceBlock& b = m.source_map.blocks[source];
+  if (source >= m.source_map.size()) return "?";
+  const SourceBlock b = m.source_map.block(source);
   std::string s = fmt::format("{}:{}:{}", m.source_map.files[b.file], b.line, b.col);
   if (b.has_number) s += fmt::format(" {}{}", b.main_block ? ':' : 'N', b.number);
   return s;
@@ -42,7 +42,7 @@ std::string disassemble(const Module& m) {
   std::string out = fmt::format("; ncc bytecode format {}, dialect {}, profile {}\n", kFormatVersion, m.dialect,
                                 m.profile_name.empty() ? "default" : m.profile_name);
   out += fmt::format("; {} bytes of code, {} numbers, {} strings, {} codes, {} source blocks\n", m.code.size(),
-                     m.numbers.size(), m.strings.size(), m.semantics.codes.size(), m.source_map.blocks.size());
+                     m.numbers.size(), m.strings.size(), m.semantics.codes.size(), m.source_map.size());
   out += "; codes\n";
   for (size_t i = 0; i < m.semantics.codes.size(); ++i) {
     const CodeDesc& c = m.semantics.codes[i];

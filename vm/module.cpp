@@ -134,36 +134,11 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   }
 }
 
-// Each block as deltas from the one before (most are one line on), followed by its
-// words as deltas from the block and the word before: a few bytes a block.
 void write_sources(ByteWriter& w, const SourceMap& m) {
   w.u32(static_cast<uint32_t>(m.files.size()));
   for (const std::string& f : m.files) w.str(f);
-  w.u32(static_cast<uint32_t>(m.blocks.size()));
-  uint32_t line = 0;
-  for (const SourceBlock& b : m.blocks) {
-    w.uvar(b.file);
-    w.svar(int64_t(b.line) - line);
-    w.uvar(b.col);
-    w.svar(int64_t(b.end_line) - b.line);
-    w.uvar(b.end_col);
-    w.u8(static_cast<uint8_t>(b.has_number | (b.main_block << 1) | (b.has_errors << 2)));
-    if (b.has_number) w.uvar(b.number);
-    const size_t first = std::min<size_t>(b.first_word, m.words.size());
-    const size_t end = std::min<size_t>(first + b.word_count, m.words.size());
-    w.uvar(end - first);
-    uint32_t col = b.col;
-    for (size_t i = first; i < end; ++i) {
-      const WordPosition& p = m.words[i];
-      w.u8(p.slot);
-      w.svar(p.code);
-      w.svar(int64_t(p.line) - b.line);
-      w.svar(int64_t(p.col) - col);
-      w.svar(int64_t(p.end_col) - p.col);
-      col = p.col;
-    }
-    line = b.line;
-  }
+  w.u32(m.size());
+  w.bytes(m.encoded());
 }
 
 void write_section(uint32_t t, ByteWriter& w, const Module& m) {
@@ -339,61 +314,13 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   return !r.failed();
 }
 
-// A 32-bit field written as a number (uvar) or as a delta from `base` (svar); a
-// value outside 32 bits clears `ok`.
-uint32_t field(ByteReader& r, bool& ok) {
-  uint64_t v = r.uvar();
-  if (v > UINT32_MAX) ok = false;
-  return static_cast<uint32_t>(v);
-}
-uint32_t field(ByteReader& r, uint32_t base, bool& ok) {
-  int64_t d = r.svar();
-  if (d < -int64_t(base) || d > int64_t(UINT32_MAX - base)) ok = false;
-  return static_cast<uint32_t>(base + d);
-}
-
 bool read_sources(ByteReader& r, SourceMap& m) {
   uint32_t n = 0;
   if (!count(r, 4, n)) return false;
   m.files.resize(n);
   for (std::string& f : m.files) f = r.str();
   if (!count(r, 7, n)) return false;
-  m.blocks.resize(n);
-  bool ok = true;
-  uint32_t line = 0;
-  for (SourceBlock& b : m.blocks) {
-    b.file = field(r, ok);
-    b.line = field(r, line, ok);
-    b.col = field(r, ok);
-    b.end_line = field(r, b.line, ok);
-    b.end_col = field(r, ok);
-    uint8_t flags = r.u8();
-    if (flags > 7) return false;
-    b.has_number = flags & 1;
-    b.main_block = flags & 2;
-    b.has_errors = flags & 4;
-    b.number = b.has_number ? field(r, ok) : 0;
-    uint64_t words = r.uvar();
-    if (words * 5 > r.remaining()) return false;  // each word takes at least 5 bytes
-    b.first_word = static_cast<uint32_t>(m.words.size());
-    b.word_count = static_cast<uint32_t>(words);
-    uint32_t col = b.col;
-    for (uint64_t i = 0; i < words; ++i) {
-      WordPosition p;
-      p.slot = r.u8();
-      int64_t code = r.svar();
-      if (code < INT16_MIN || code > INT16_MAX) return false;
-      p.code = static_cast<int16_t>(code);
-      p.line = field(r, b.line, ok);
-      p.col = field(r, col, ok);
-      p.end_col = field(r, p.col, ok);
-      col = p.col;
-      m.words.push_back(p);
-    }
-    line = b.line;
-    if (!ok || r.failed()) return false;
-  }
-  return !r.failed();
+  return m.read(r, n) && !r.failed();
 }
 
 bool read_section(uint32_t t, ByteReader& r, Module& m) {
@@ -421,8 +348,8 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
     bool ok = true;
     LineEntry previous;
     for (LineEntry& l : m.lines) {
-      l.pc = field(r, previous.pc, ok);
-      l.source = field(r, previous.source, ok);
+      l.pc = r.delta32(previous.pc, ok);
+      l.source = r.delta32(previous.source, ok);
       if (!ok) return false;
       previous = l;
     }
@@ -636,13 +563,14 @@ std::string verify(const Module& m) {
 
   // Source map.
   const SourceMap& map = m.source_map;
-  for (const SourceBlock& b : map.blocks) {
-    if (b.file >= map.files.size()) return "a source block names a file that is not listed";
-    if (uint64_t(b.first_word) + b.word_count > map.words.size()) return "a source block names missing words";
-  }
-  for (const WordPosition& w : map.words)
-    if (w.slot >= kWordSlots || w.code < -1 || w.code >= static_cast<int>(s.codes.size()))
-      return "the source map names a word that does not exist";
+  std::string source_problem;
+  map.visit([&](const SourceBlock& b, const std::vector<WordPosition>& words) {
+    if (b.file >= map.files.size()) source_problem = "a source block names a file that is not listed";
+    for (const WordPosition& w : words)
+      if (w.slot >= kWordSlots || w.code < -1 || w.code >= static_cast<int>(s.codes.size()))
+        source_problem = "the source map names a word that does not exist";
+  });
+  if (!source_problem.empty()) return source_problem;
 
   // Instructions: every opcode known, every operand in range.
   const std::vector<uint8_t>& code = m.code;
@@ -713,7 +641,7 @@ std::string verify(const Module& m) {
   for (size_t i = 0; i < m.lines.size(); ++i) {
     if (!at_boundary(m.lines[i].pc)) return "the line table points between instructions";
     if (i > 0 && m.lines[i].pc <= m.lines[i - 1].pc) return "the line table is not in code order";
-    if (m.lines[i].source >= map.blocks.size()) return "the line table names a block that does not exist";
+    if (m.lines[i].source >= map.size()) return "the line table names a block that does not exist";
   }
 
   // The stack: each instruction is reached with one depth, never below its pops,

@@ -1,9 +1,7 @@
 #include "pipeline.h"
 
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include "check/check.h"
 #include "frontend/frontend.h"
@@ -15,15 +13,6 @@ namespace ncc {
 namespace {
 
 constexpr uint64_t kDefaultExtraSteps = 100'000'000;
-
-std::optional<std::string> read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return buffer.str();
-}
 
 // A source file named by a bytecode file, read only to quote its lines: never a
 // device, a pipe or something huge.
@@ -60,18 +49,18 @@ class IssueReporter final : public RuntimeIssues {
   void issue(const RuntimeIssue& i) override {
     if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code, i.nth}).second) return;
     // In a dry run a block the compiler already rejected would only repeat its errors.
-    if (dry_ && i.source < m_.source_map.blocks.size() && m_.source_map.blocks[i.source].has_errors) return;
+    const SourceMap& map = m_.source_map;
+    if (dry_ && i.source < map.size() && map.block(i.source).has_errors) return;
     if (!file_ids_) file_ids_ = source_files(s_, m_);
     const std::vector<uint32_t>& file_ids = *file_ids_;
     SourceRange range;
-    if (i.source < m_.source_map.blocks.size()) {
-      const SourceBlock& b = m_.source_map.blocks[i.source];
+    if (i.source < map.size()) {
+      const SourceBlock b = map.block(i.source);
       uint32_t file = b.file < file_ids.size() ? file_ids[b.file] : 0;
       range = {file, b.line, b.col, b.end_line, b.end_col};
       if (i.slot >= 0 || i.code >= 0) {
         int skip = i.nth;
-        for (uint32_t w = b.first_word; w < b.first_word + b.word_count; ++w) {
-          const WordPosition& p = m_.source_map.words[w];
+        for (const WordPosition& p : map.words(i.source)) {
           if ((i.code >= 0 ? p.code == i.code : (p.code < 0 && p.slot == i.slot)) && skip-- == 0) {
             range = {file, p.line, p.col, p.line, p.end_col};
             break;
@@ -113,7 +102,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   Machine machine(m.semantics, config, trace, reporter);
   machine.set_stop_on_error(!dry);
   vm::VmOptions options;
-  options.max_steps = settings.max_steps.value_or(m.source_map.blocks.size() + kDefaultExtraSteps);
+  options.max_steps = settings.max_steps.value_or(m.source_map.size() + kDefaultExtraSteps);
   options.trace_blocks = settings.trace_blocks;
   vm::Vm vm(m, machine, reporter, options);
   machine.power_on();

@@ -1,8 +1,6 @@
 #include "frontend.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include "gost/gost_frontend.h"
 #include "nc110/nc110_frontend.h"
@@ -29,11 +27,7 @@ std::optional<std::string> read_called_file(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxFileSize || ec)
     return std::nullopt;
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (!in && !in.eof()) return std::nullopt;
-  return buffer.str();
+  return read_file(path);
 }
 
 std::string library_root(const ReadOptions& options, const std::string& setting, const std::string& caller) {
@@ -161,15 +155,13 @@ bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std:
     auto file = p.string(key, diags);
     if (!file || file->empty()) continue;
     std::string path = p.resolve_path(*file);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
+    auto text = read_file(path);
+    if (!text) {
       ok = (p.report_value(diags, key, "names a file that cannot be read"), false);
       continue;
     }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
     size_t errors = diags.error_count();
-    auto table = stdlib::parse_table(path, buffer.str(), letter == 'G' ? 5 : 6, diags);
+    auto table = stdlib::parse_table(path, *text, letter == 'G' ? 5 : 6, diags);
     stdlib::read_code_table(table, letter, tables.cycles, letter == 'G' ? tables.g_codes : tables.m_codes, diags);
     ok &= diags.error_count() == errors;
   }

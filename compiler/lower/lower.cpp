@@ -135,15 +135,14 @@ class Lowering {
     s.main_block = b.main_block;
     s.has_errors = b.has_errors;
     s.number = b.number.value_or(0);
-    s.first_word = static_cast<uint32_t>(m_.source_map.words.size());
     // A code chosen at run time (GE1) is found by its slot, as a parameter word is.
+    words_.clear();
     for (const ir::Word& w : b.words)
       if (w.kind == ir::WordKind::Parameter || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Control)
-        m_.source_map.words.push_back({w.slot, static_cast<int16_t>(w.kind == ir::WordKind::Code && w.code >= 0 ? w.code : -1),
-                                       w.range.line, w.range.col, w.range.end_col});
-    s.word_count = static_cast<uint32_t>(m_.source_map.words.size()) - s.first_word;
-    m_.source_map.blocks.push_back(s);
-    return static_cast<uint32_t>(m_.source_map.blocks.size() - 1);
+        words_.push_back({w.slot, static_cast<int16_t>(w.kind == ir::WordKind::Code && w.code >= 0 ? w.code : -1),
+                          w.range.line, w.range.col, w.range.end_col});
+    m_.source_map.add(s, words_);
+    return m_.source_map.size() - 1;
   }
 
   void expr(ir::ExprId id) {
@@ -344,8 +343,8 @@ class Lowering {
       s.file = file_index(unit.range.file);
       s.line = unit.range.line;
       s.col = unit.range.col;
-      m_.source_map.blocks.push_back(s);
-      m_.lines.push_back({pc(), static_cast<uint32_t>(m_.source_map.blocks.size() - 1)});
+      m_.source_map.add(s, {});
+      m_.lines.push_back({pc(), m_.source_map.size() - 1});
       m_.entries.push_back({unit.name, entry_kind(unit), pc()});
       op(Op::Step);
     }
@@ -545,6 +544,7 @@ class Lowering {
   std::vector<std::pair<uint32_t, std::string>> range_ends_at_;  // (CallRange end operand, end label)
   std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd
   UnitState first_unit_;  // of the first unit, whose leading blocks may come streamed
+  std::vector<WordPosition> words_;  // of the block being lowered
 };
 
 }  // namespace

@@ -58,9 +58,7 @@ TEST(Bytecode, RoundTripKeepsEverything) {
   EXPECT_EQ(vm::disassemble(*back), vm::disassemble(m));
   EXPECT_EQ(back->code, m.code);
   EXPECT_EQ(back->numbers, m.numbers);
-  EXPECT_EQ(back->source_map.files, m.source_map.files);
-  EXPECT_EQ(back->source_map.blocks, m.source_map.blocks);
-  EXPECT_EQ(back->source_map.words, m.source_map.words);
+  EXPECT_TRUE(back->source_map == m.source_map);
   ASSERT_EQ(back->lines.size(), m.lines.size());
   for (size_t i = 0; i < m.lines.size(); ++i) {
     EXPECT_EQ(back->lines[i].pc, m.lines[i].pc);
@@ -173,18 +171,48 @@ TEST(Bytecode, SourceMapRoundTripsEdgeValues) {
   m.semantics.codes.resize(301);
   for (CodeDesc& c : m.semantics.codes) c.name = "G01";
   m.source_map.files = {"a.nc", "b.nc"};
-  m.source_map.blocks = {{1, 4000000000u, 7, 4000000002u, 1, true, true, false, UINT32_MAX, 0, 2},
-                         {0, 3, 1, 0, 0, false, false, true, 0, 2, 0},
-                         {0, 2, 9, 2, 30, true, false, false, 10, 2, 1}};
-  m.source_map.words = {{3, 12, 4000000001u, 1, 9}, {0, -1, 4000000002u, 1, 0}, {25, 300, 2, 20, 30}};
+  const std::vector<SourceBlock> blocks = {{1, 4000000000u, 7, 4000000002u, 1, true, true, false, UINT32_MAX},
+                                           {0, 3, 1, 0, 0, false, false, true, 0},
+                                           {0, 2, 9, 2, 30, true, false, false, 10}};
+  const std::vector<std::vector<WordPosition>> words = {
+      {{3, 12, 4000000001u, 1, 9}, {0, -1, 4000000002u, 1, 0}}, {}, {{25, 300, 2, 20, 30}}};
+  for (size_t i = 0; i < blocks.size(); ++i) m.source_map.add(blocks[i], words[i]);
   m.lines = {{0, 0}, {1, 2}};
   std::string bytes = vm::write_module(m);
   Session s;
   auto back = vm::read_module(bytes, "x.ncb", s.diags);
   ASSERT_TRUE(back) << (s.diags.all().empty() ? "" : s.diags.all()[0].message);
-  EXPECT_EQ(back->source_map.blocks, m.source_map.blocks);
-  EXPECT_EQ(back->source_map.words, m.source_map.words);
+  ASSERT_EQ(back->source_map.size(), 3u);
+  for (uint32_t i : {2u, 0u, 1u, 2u}) {  // out of order too
+    EXPECT_EQ(back->source_map.block(i), blocks[i]) << i;
+    EXPECT_EQ(back->source_map.words(i), words[i]) << i;
+  }
   EXPECT_EQ(vm::write_module(*back), bytes);
+}
+
+TEST(SourceMap, AnyBlockInAnyOrder) {
+  // Blocks are held encoded: asked in order, backwards, or across checkpoints, each
+  // decodes to what was added.
+  SourceMap map;
+  std::vector<SourceBlock> blocks;
+  for (uint32_t i = 0; i < 100; ++i) {
+    SourceBlock b{i % 3, 10 + i * 2 - (i % 7 == 0 ? 5 : 0), 1 + i % 4, 10 + i * 2, 40, i % 2 == 0, false, i % 5 == 0, i % 2 == 0 ? i * 10 : 0};
+    std::vector<WordPosition> w;
+    for (uint32_t k = 0; k < i % 6; ++k) w.push_back({static_cast<uint8_t>(k), static_cast<int16_t>(k) - 1, b.line, 3 + 4 * k, 6 + 4 * k});
+    map.add(b, w);
+    blocks.push_back(b);
+  }
+  for (uint32_t i : {0u, 1u, 2u, 99u, 50u, 15u, 16u, 17u, 3u, 98u}) {
+    EXPECT_EQ(map.block(i), blocks[i]) << i;
+    EXPECT_EQ(map.words(i).size(), i % 6) << i;
+  }
+  uint32_t seen = 0;
+  map.visit([&](const SourceBlock& b, const std::vector<WordPosition>& w) {
+    EXPECT_EQ(b, blocks[seen]);
+    EXPECT_EQ(w.size(), seen % 6);
+    ++seen;
+  });
+  EXPECT_EQ(seen, 100u);
 }
 
 // A module with hand-written code, to reach the verifier's rules one by one. The
@@ -194,7 +222,7 @@ std::string verify_code(std::vector<uint8_t> code, size_t numbers = 1) {
   m.numbers.assign(numbers, 1.0);
   m.code = std::move(code);
   m.source_map.files.push_back("x.nc");
-  m.source_map.blocks.push_back({});
+  m.source_map.add({}, {});
   m.entries.push_back({"%1", vm::EntryKind::Program, 0});
   return vm::verify(m);
 }

@@ -1,8 +1,6 @@
 #include "settings.h"
 
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "frontend/frontend.h"
 
@@ -69,14 +67,12 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   std::string format_key = "gost.format";
   if (auto file = p.string("gost.format_file", diags); file && !file->empty()) {
     format_key = "gost.format_file";
-    std::ifstream in(p.resolve_path(*file), std::ios::binary);
-    if (!in) {
+    auto text = read_file(p.resolve_path(*file));
+    if (!text) {
       p.report_value(diags, "gost.format_file", "names a file that cannot be read");
       return std::nullopt;
     }
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    format_text = std::string(format_line_of_file(buffer.str()));
+    format_text = std::string(format_line_of_file(*text));
   } else if (auto text = p.string("gost.format", diags)) {
     format_text = *text;
   }
