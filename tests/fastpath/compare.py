@@ -20,18 +20,26 @@ RUN_ONLY = {"--trace-format": 1, "--trace": 1, "--max-steps": 1, "--start-block"
             "--block-skip": 0, "--optional-stop": 0, "--trace-blocks": 0}
 
 
-def ir_args(command):
-    """The golden's `$ ncc CMD ARGS` as `ir ARGS` without the options only a run takes."""
-    words = shlex.split(command)[2:]
-    out, i = ["ir"], 1
-    while i < len(words):
-        w = words[i]
-        if w in RUN_ONLY:
-            i += 1 + RUN_ONLY[w]
+def golden_cases(golden_dir):
+    """(name, ARGS) of each golden case `$ ncc CMD ARGS` that reads a source program,
+    without the options only a run takes."""
+    for name in sorted(os.listdir(golden_dir)):
+        if not name.endswith(".out"):
             continue
-        out.append(w)
-        i += 1
-    return out
+        with open(os.path.join(golden_dir, name), encoding="utf-8") as f:
+            command = f.readline().strip()
+        if not command.startswith("$ ncc ") or len(shlex.split(command)) < 4:
+            continue
+        words = shlex.split(command)[3:]
+        args, i = [], 0
+        while i < len(words):
+            if words[i] in RUN_ONLY:
+                i += 1 + RUN_ONLY[words[i]]
+                continue
+            args.append(words[i])
+            i += 1
+        if any(a.endswith((".nc", ".ngc", ".pp", ".txt", ".tap")) for a in args):
+            yield name, args  # not a bytecode file, not without a program
 
 
 def both(ncc, args, cwd):
@@ -99,18 +107,9 @@ def main():
     blocks = int(sys.argv[sys.argv.index("--blocks") + 1]) if "--blocks" in sys.argv else 3000
     seed = int(sys.argv[sys.argv.index("--seed") + 1]) if "--seed" in sys.argv else 1
     failures = cases = 0
-    for name in sorted(os.listdir(golden_dir)):
-        if not name.endswith(".out"):
-            continue
-        with open(os.path.join(golden_dir, name), encoding="utf-8") as f:
-            command = f.readline().strip()
-        if not command.startswith("$ ncc ") or len(shlex.split(command)) < 4:
-            continue
-        args = ir_args(command)
-        if not any(a.endswith((".nc", ".ngc", ".pp", ".txt", ".tap")) for a in args):
-            continue  # a bytecode file or no program
+    for name, args in golden_cases(golden_dir):
         cases += 1
-        failures += differs(name, both(ncc, args, golden_dir))
+        failures += differs(name, both(ncc, ["ir"] + args, golden_dir))
     # The generated corpus, in one file: blocks end at the end of the line.
     rng = random.Random(seed)
     header = {"iso": "", "gost": "%\n", "pp": "%1\n", "nc110": ""}[dialect]

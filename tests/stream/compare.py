@@ -11,29 +11,12 @@ usage: compare.py NCC GOLDEN_DIR DIALECT [--blocks N] [--seed S]
 """
 import os
 import random
-import shlex
 import subprocess
 import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fastpath"))
-from compare import RUN_ONLY, random_block  # noqa: E402
-
-SOURCES = (".nc", ".ngc", ".pp", ".txt", ".tap")
-
-
-def options(command):
-    """The golden's `$ ncc CMD ARGS` without the command and the options only a run takes."""
-    words = shlex.split(command)[2:]
-    out, i = [], 1
-    while i < len(words):
-        w = words[i]
-        if w in RUN_ONLY:
-            i += 1 + RUN_ONLY[w]
-            continue
-        out.append(w)
-        i += 1
-    return out
+from compare import golden_cases, random_block  # noqa: E402
 
 
 def run_both(ncc, args, cwd, tmp):
@@ -80,16 +63,7 @@ def main():
     seed = int(sys.argv[sys.argv.index("--seed") + 1]) if "--seed" in sys.argv else 1
     failures = cases = 0
     with tempfile.TemporaryDirectory() as tmp:
-        for name in sorted(os.listdir(golden_dir)):
-            if not name.endswith(".out"):
-                continue
-            with open(os.path.join(golden_dir, name), encoding="utf-8") as f:
-                command = f.readline().strip()
-            if not command.startswith("$ ncc ") or len(shlex.split(command)) < 4:
-                continue
-            args = options(command)
-            if not any(a.endswith(SOURCES) for a in args):
-                continue  # a bytecode file or no program
+        for name, args in golden_cases(golden_dir):
             cases += 1
             failures += differs(name, run_both(ncc, args, golden_dir, tmp))
         # Generated: plain blocks the stream takes, then blocks that stop it.
