@@ -10,7 +10,7 @@ namespace ncc {
 // on), then its words as deltas from the block and the word before.
 void SourceMap::add(const SourceBlock& b, std::span<const WordPosition> words) {
   if (count_ % kCheckpointEvery == 0) checkpoints_.push_back({count_, bytes_.size(), last_line_});
-  ByteWriter w;
+  ByteWriter& w = bytes_;
   w.uvar(b.file);
   w.svar(int64_t(b.line) - last_line_);
   w.uvar(b.col);
@@ -28,7 +28,6 @@ void SourceMap::add(const SourceBlock& b, std::span<const WordPosition> words) {
     w.svar(int64_t(p.end_col) - p.col);
     col = p.col;
   }
-  bytes_ += w.data();
   last_line_ = b.line;
   ++count_;
 }
@@ -76,7 +75,7 @@ bool SourceMap::read(ByteReader& r, uint32_t count) {
     SourceBlock b;
     if (!decode_block(r, last_line_, b, nullptr)) return false;
     if (count_ % kCheckpointEvery == 0) checkpoints_.push_back({count_, bytes_.size(), last_line_});
-    bytes_ += r.data().substr(from, r.pos() - from);
+    bytes_.bytes(r.data().substr(from, r.pos() - from));
     last_line_ = b.line;
     ++count_;
   }
@@ -92,7 +91,7 @@ SourceMap::Cursor SourceMap::seek(uint32_t i) const {
 
 SourceBlock SourceMap::decode(Cursor& c, std::vector<WordPosition>* words) const {
   // The map's own bytes: add() wrote them, or read() checked them.
-  ByteReader r(std::string_view(bytes_).substr(c.offset));
+  ByteReader r(encoded().substr(c.offset));
   SourceBlock b;
   decode_block(r, c.line, b, words);
   c = {c.index + 1, c.offset + r.pos(), b.line};

@@ -13,9 +13,9 @@
 #include <string_view>
 #include <vector>
 
-namespace ncc {
+#include "support/bytes.h"
 
-class ByteReader;
+namespace ncc {
 
 struct SourceBlock {
   uint32_t file = 0;
@@ -46,9 +46,11 @@ class SourceMap {
   void visit(const std::function<void(const SourceBlock&, const std::vector<WordPosition>&)>& f) const;
   // The blocks as the file stores them after their count; read() takes `count` of
   // them from a file, checked (false if they are not well formed).
-  std::string_view encoded() const { return bytes_; }
+  std::string_view encoded() const { return bytes_.data(); }
   bool read(ByteReader& r, uint32_t count);
-  bool operator==(const SourceMap& o) const { return files == o.files && count_ == o.count_ && bytes_ == o.bytes_; }
+  bool operator==(const SourceMap& o) const {
+    return files == o.files && count_ == o.count_ && encoded() == o.encoded();
+  }
 
  private:
   struct Cursor {  // before block `index`
@@ -61,7 +63,7 @@ class SourceMap {
   SourceBlock decode(Cursor& c, std::vector<WordPosition>* words) const;
   Cursor seek(uint32_t i) const;
 
-  std::string bytes_;
+  ByteWriter bytes_;
   uint32_t count_ = 0;
   uint32_t last_line_ = 0;
   std::vector<Cursor> checkpoints_;  // before blocks 0, 16, 32...

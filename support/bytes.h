@@ -54,6 +54,7 @@ class ByteWriter {
   }
   size_t size() const { return out_.size(); }
   std::string& data() { return out_; }
+  const std::string& data() const { return out_; }
 
   // A stream: passes the rest on; false if a write failed.
   bool finish() {

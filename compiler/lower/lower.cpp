@@ -41,8 +41,9 @@ class Lowering {
   // A block of the first unit lowered while the program is still being read: one
   // without a label or a flow statement, so that nothing after it changes its code.
   void stream(const ir::Program& program, const ir::Unit& unit, const ir::Block& b) {
+    if (!p_)  // the files so far, in their order (finish() adds the others)
+      for (uint32_t file : program.files) file_index(file);
     p_ = &program;
-    for (uint32_t file : program.files) file_index(file);
     lower_block(unit, b, first_unit_);
   }
 
