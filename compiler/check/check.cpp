@@ -347,11 +347,11 @@ void check_calls(const ir::Program& program, const CheckRules& rules, Diagnostic
 StreamChecks::StreamChecks(const CheckRules& rules) : rules_(rules), scratch_(std::make_unique<BlockScratch>()) {}
 StreamChecks::~StreamChecks() = default;
 
-void StreamChecks::block(const ir::Program& program, ir::Block& b, Diagnostics& diags) {
-  const uint32_t errors = diags.error_count();
-  check_block(program, rules_, b, *scratch_, diags);
-  if (diags.error_count() != errors) b.has_errors = true;
-  if (rules_.block_number_order) numbers_.add(b, diags);
+void StreamChecks::block(const ir::Program& program, ir::Block& b) {
+  const uint32_t errors = block_diags_.error_count();
+  check_block(program, rules_, b, *scratch_, block_diags_);
+  if (block_diags_.error_count() != errors) b.has_errors = true;
+  if (rules_.block_number_order) numbers_.add(b, number_diags_);
   if (b.main_block && b.number) entries_.insert(fmt::format(":{}", *b.number));
 }
 
@@ -361,6 +361,10 @@ void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags, St
   BlockScratch& scratch = streamed ? *streamed->scratch_ : own;
   for (size_t u = 0; u < program.units.size(); ++u) {
     ir::Unit& unit = program.units[u];
+    if (u == 0 && streamed) {
+      for (const Diagnostic& d : streamed->block_diags_.all()) diags.add(d);
+      if (diags.limit_reached()) return;
+    }
     for (ir::Block& block : unit.blocks) {
       uint32_t errors = diags.error_count();
       check_block(program, rules, block, scratch, diags);
@@ -371,6 +375,8 @@ void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags, St
     if (rules.block_number_order) {
       BlockNumbers fresh;
       BlockNumbers& numbers = u == 0 && streamed ? streamed->numbers_ : fresh;
+      if (u == 0 && streamed)
+        for (const Diagnostic& d : streamed->number_diags_.all()) diags.add(d);
       for (const ir::Block& block : unit.blocks) numbers.add(block, diags);
     }
     check_targets(program, unit, rules, streamed, diags);

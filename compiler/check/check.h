@@ -40,13 +40,16 @@ struct BlockScratch;
 // The checks of blocks compiled while the program is still being read (a stream:
 // the leading blocks of its first unit that have no label and no flow statement):
 // each block's own checks now, and what the whole-unit checks need of it later (its
-// block number, its main block as an entry point).
+// block number, its main block as an entry point). What they find is held and
+// reported by check(), where it would have reported it: the diagnostics and the
+// error limit come out as without a stream.
 class StreamChecks {
  public:
   explicit StreamChecks(const CheckRules& rules);
   ~StreamChecks();
   // Checks the block and marks it if it has an error.
-  void block(const ir::Program& program, ir::Block& b, Diagnostics& diags);
+  void block(const ir::Program& program, ir::Block& b);
+  bool found_errors() const { return block_diags_.has_errors() || number_diags_.has_errors(); }
   const std::set<std::string>& entries() const { return entries_; }
 
  private:
@@ -55,6 +58,7 @@ class StreamChecks {
   std::unique_ptr<BlockScratch> scratch_;
   BlockNumbers numbers_;
   std::set<std::string> entries_;  // ":N" of the main blocks
+  Diagnostics block_diags_, number_diags_;  // found, not yet reported
 };
 
 // Reports every problem and marks the blocks that have one; `streamed`: the checks

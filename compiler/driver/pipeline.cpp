@@ -179,8 +179,8 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
 // Checks and lowers the first unit's leading blocks as the reader hands them over,
 // and drops them. It stops for good at the first block with a label or a flow
 // statement (jumps, loops, calls, returns: what is decided by blocks read later), and
-// at the first error, so that what follows is checked and lowered as a whole
-// program would be and the error limit counts as it does then.
+// at the first error, so that what follows is checked and lowered as a whole program
+// would be; what its checks find is reported with the others (StreamChecks).
 class Stream final : public BlockSink {
  public:
   Stream(Session& s, const CheckRules& rules) : s_(s), checks(rules), lowering(s.sources) {}
@@ -190,11 +190,11 @@ class Stream final : public BlockSink {
     size_t n = 0;
     for (; n < unit.blocks.size(); ++n) {
       ir::Block& b = unit.blocks[n];
-      if (s_.diags.error_count() || !settled(b)) {
+      if (s_.diags.error_count() || checks.found_errors() || !settled(b)) {
         stopped_ = true;
         break;
       }
-      checks.block(program, b, s_.diags);
+      checks.block(program, b);
       lowering.block(program, unit, b);
     }
     unit.blocks.erase(unit.blocks.begin(), unit.blocks.begin() + static_cast<std::ptrdiff_t>(n));

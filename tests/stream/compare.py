@@ -4,8 +4,9 @@
 For every golden case of a dialect that names a source program, `ncc compile` (with
 the case's options) runs with and without --no-stream: exit status, diagnostics and
 the bytes of the .ncb must be identical; so must `ncc check` (its report includes the
-dry run). Then generated programs: a clean run of plain blocks (what the stream takes)
-followed by the near-plain and damaged blocks of tests/fastpath, compared the same way.
+dry run). Then a generated program: plain blocks (what the stream takes; one with a
+word twice, an error its checks find) followed by the near-plain and damaged blocks of
+tests/fastpath, compared the same way with no error limit and with a limit of 5.
 
 usage: compare.py NCC GOLDEN_DIR DIALECT [--blocks N] [--seed S]
 """
@@ -70,14 +71,18 @@ def main():
         rng = random.Random(seed)
         header = {"iso": "", "gost": "%\n", "pp": "%1\n", "nc110": "G17\n"}[dialect]
         clean = [plain_block(rng, dialect, k + 1) for k in range(blocks // 2)]
+        # A word twice: an error the checks find in a block the stream has taken.
+        clean[len(clean) // 2] += " X1"
         mixed = [random_block(rng, dialect) for _ in range(blocks - blocks // 2)]
         if dialect == "pp":
             mixed = [f"N{len(clean) + k + 1} " + l.replace("N", "") for k, l in enumerate(mixed)]
         corpus = os.path.join(tmp, "corpus.nc")
         with open(corpus, "w", encoding="utf-8") as f:
             f.write(header + "\n".join(clean + mixed) + "\nM30\n")
-        failures += differs(f"generated program ({blocks} blocks, seed {seed})",
-                            run_both(ncc, [corpus, "--dialect", dialect, "--error-limit", "0"], golden_dir, tmp))
+        # With no error limit, and with one the reader's errors reach after the stream's.
+        for limit in ("0", "5"):
+            failures += differs(f"generated program ({blocks} blocks, seed {seed}, error limit {limit})",
+                                run_both(ncc, [corpus, "--dialect", dialect, "--error-limit", limit], golden_dir, tmp))
     print(f"{cases} golden cases and a generated program of {blocks} blocks: {failures} differ")
     return 1 if failures else 0
 
