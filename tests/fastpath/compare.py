@@ -50,17 +50,23 @@ def both(ncc, args, cwd):
     return results
 
 
+def print_first_difference(a, b, a_name, b_name):
+    """The first line where two outputs differ, each under its name."""
+    a, b = a.splitlines(), b.splitlines()
+    for k in range(max(len(a), len(b))):
+        la, lb = a[k] if k < len(a) else "<none>", b[k] if k < len(b) else "<none>"
+        if la != lb:
+            width = max(len(a_name), len(b_name)) + 1
+            print(f"  line {k + 1}\n    {(a_name + ':').ljust(width)} {la}\n    {(b_name + ':').ljust(width)} {lb}")
+            return
+
+
 def differs(name, results):
     (rc1, out1, err1), (rc2, out2, err2) = results
     if (rc1, out1, err1) == (rc2, out2, err2):
         return False
     print(f"DIFFER {name}: exit {rc1} vs {rc2}")
-    a, b = (out1 + err1).splitlines(), (out2 + err2).splitlines()
-    for k in range(max(len(a), len(b))):
-        la, lb = a[k] if k < len(a) else "<none>", b[k] if k < len(b) else "<none>"
-        if la != lb:
-            print(f"  line {k + 1}\n    fast:  {la}\n    antlr: {lb}")
-            break
+    print_first_difference(out1 + err1, out2 + err2, "fast", "antlr")
     return True
 
 

@@ -17,7 +17,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "fastpath"))
-from compare import golden_cases, random_block  # noqa: E402
+from compare import golden_cases, print_first_difference, random_block  # noqa: E402
 
 
 def run_both(ncc, args, cwd, tmp):
@@ -44,12 +44,7 @@ def differs(name, results):
         print(f"DIFFER {name}: ncc {what}: exit {a[0]} vs {b[0]}")
         if len(a) > 3 and a[3] != b[3]:
             print(f"  the .ncb files differ ({len(a[3])} and {len(b[3])} bytes)")
-        la, lb = (a[1] + a[2]).splitlines(), (b[1] + b[2]).splitlines()
-        for k in range(max(len(la), len(lb))):
-            x, y = la[k] if k < len(la) else "<none>", lb[k] if k < len(lb) else "<none>"
-            if x != y:
-                print(f"  line {k + 1}\n    stream: {x}\n    whole:  {y}")
-                break
+        print_first_difference(a[1] + a[2], b[1] + b[2], "stream", "whole")
     return True
 
 
