@@ -197,6 +197,7 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
                    Diagnostics& diags) {
   std::set<std::string> labels, entries;
   if (streamed) entries = streamed->entries();
+  for (const ir::Unit::StreamedLabel& l : unit.streamed_labels) labels.insert(l.label);
   std::map<std::string, const ir::Block*> defined;
   for (const ir::Block& b : unit.blocks) {
     if (!b.label.empty()) {

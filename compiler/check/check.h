@@ -22,6 +22,7 @@ struct CheckRules {
   bool unique_labels = false;       // a label names one block of its unit
   uint32_t max_repeat_depth = 0;    // repeat loops that may nest (0: no limit)
   bool recursion = false;           // a unit may call itself (Macro B: a condition ends it)
+  bool block_ranges = false;        // a label may end a block range (NC-110 EPP): code follows its block
 };
 
 // The block numbers of a unit in order: a number used again, or lower than the one
@@ -38,7 +39,7 @@ class BlockNumbers {
 struct BlockScratch;
 
 // The checks of blocks compiled while the program is still being read (a stream:
-// the leading blocks of its first unit that have no label and no flow statement):
+// the leading blocks of its first unit that have no flow statement):
 // each block's own checks now, and what the whole-unit checks need of it later (its
 // block number, its main block as an entry point). What they find is held and
 // reported by check(), where it would have reported it: the diagnostics and the

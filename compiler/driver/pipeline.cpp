@@ -177,13 +177,13 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
 }
 
 // Checks and lowers the first unit's leading blocks as the reader hands them over,
-// and drops them. It stops for good at the first block with a label or a flow
-// statement (jumps, loops, calls, returns: what is decided by blocks read later), and
+// and drops them. It stops for good at the first block with a flow statement (jumps,
+// loops, calls, returns: what is decided by blocks read later), and
 // at the first error, so that what follows is checked and lowered as a whole program
 // would be; what its checks find is reported with the others (StreamChecks).
 class Stream final : public BlockSink {
  public:
-  Stream(Session& s, const CheckRules& rules) : s_(s), checks(rules), lowering(s.sources) {}
+  Stream(Session& s, const CheckRules& rules) : s_(s), rules_(rules), checks(rules), lowering(s.sources) {}
 
   void take(ir::Program& program, ir::Unit& unit) override {
     if (stopped_ || !program.units.empty()) return;
@@ -196,6 +196,7 @@ class Stream final : public BlockSink {
       }
       checks.block(program, b);
       lowering.block(program, unit, b);
+      if (!b.label.empty()) unit.streamed_labels.push_back({b.label, b.number, b.range});
     }
     unit.blocks.erase(unit.blocks.begin(), unit.blocks.begin() + static_cast<std::ptrdiff_t>(n));
     unit.streamed += static_cast<uint32_t>(n);
@@ -212,9 +213,10 @@ class Stream final : public BlockSink {
  private:
   // Nothing read later changes how this block is checked or lowered. (A code chosen
   // at run time, NC-110 GE1, is not: the codes it may be are added once the whole
-  // program is read.)
-  static bool settled(const ir::Block& b) {
-    if (!b.label.empty()) return false;
+  // program is read. Nor is a label that may end a block range, or that must be
+  // unique: the unit keeps the others, Unit::streamed_labels.)
+  bool settled(const ir::Block& b) const {
+    if (!b.label.empty() && (rules_.block_ranges || rules_.unique_labels)) return false;
     for (const ir::Word& w : b.words)
       if (w.code == ir::kDynamicCode) return false;
     for (const ir::Stmt& s : b.stmts)
@@ -225,6 +227,7 @@ class Stream final : public BlockSink {
   }
 
   Session& s_;
+  const CheckRules& rules_;
   bool stopped_ = false;
   size_t expressions_ = SIZE_MAX;  // the program's expressions after the last blocks taken
 };

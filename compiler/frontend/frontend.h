@@ -19,8 +19,9 @@ namespace ncc {
 // while the rest is read (and drop them: compiling a file then holds no IR of it).
 // A reader calls it at a block's end when it holds nothing of the blocks read so
 // far: no index into them, no expression of theirs. The sink takes each block that
-// comes first and has no label and no flow statement, removes them from the unit
-// (counting them in Unit::streamed) and may drop their expressions.
+// comes first and has no flow statement, removes them from the unit (counting them
+// in Unit::streamed, their labels in Unit::streamed_labels) and may drop their
+// expressions.
 class BlockSink {
  public:
   virtual ~BlockSink() = default;

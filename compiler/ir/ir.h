@@ -181,6 +181,14 @@ struct Unit {
   SourceRange range;
   std::vector<Block> blocks;
   uint32_t streamed = 0;  // blocks before `blocks`, compiled and dropped while reading (BlockSink)
+  // Of those, the ones with a label, in order: what later jumps, calls and checks
+  // need of them.
+  struct StreamedLabel {
+    std::string label;
+    std::optional<uint32_t> number;
+    SourceRange range;
+  };
+  std::vector<StreamedLabel> streamed_labels;
   bool ends_information = false;  // terminated by end of information (M30)
 };
 

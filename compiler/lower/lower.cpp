@@ -1,5 +1,6 @@
 #include "lower.h"
 
+#include <algorithm>
 #include <bit>
 #include <climits>
 #include <cmath>
@@ -39,12 +40,17 @@ class Lowering {
   explicit Lowering(const SourceManager& sources) : sources_(sources) {}
 
   // A block of the first unit lowered while the program is still being read: one
-  // without a label or a flow statement, so that nothing after it changes its code.
+  // without a flow statement, so that nothing after it changes its code (a call to
+  // its label adds an entry point in finish()).
   void stream(const ir::Program& program, const ir::Unit& unit, const ir::Block& b) {
     if (!p_)  // the files so far, in their order (finish() adds the others)
       for (uint32_t file : program.files) file_index(file);
     p_ = &program;
+    const uint32_t at = pc();
     lower_block(unit, b, first_unit_);
+    if (b.label.empty()) return;
+    first_unit_.label_depth.emplace(b.label, 0);  // no loop is open in a stream
+    streamed_label_pcs_.push_back(at);            // of Unit::streamed_labels, in order
   }
 
   // The rest of the program, once it is read and checked.
@@ -58,10 +64,20 @@ class Lowering {
       for (const ir::Block& b : unit.blocks)
         for (const ir::Stmt& s : b.stmts)
           if (s.kind == ir::StmtKind::Call) called_.insert(s.label);
+    // A streamed block a call names (Macro B M97) is an entry point too; put where
+    // lower_block would have put it (entries stand in code order).
+    if (!program.units.empty()) {
+      const ir::Unit& first = program.units.front();
+      for (size_t i = 0; i < first.streamed_labels.size(); ++i)
+        if (called_.count(first.name + "/" + first.streamed_labels[i].label))
+          m_.entries.push_back({first.name + "/" + first.streamed_labels[i].label, vm::EntryKind::Subprogram,
+                                streamed_label_pcs_[i]});
+    }
     for (size_t u = 0; u < program.units.size(); ++u) {
       UnitState fresh;
       lower_unit(program.units[u], u == 0 ? first_unit_ : fresh);
     }
+    std::stable_sort(m_.entries.begin(), m_.entries.end(), [](const vm::Entry& a, const vm::Entry& b) { return a.pc < b.pc; });
     resolve_calls();
     return std::move(m_);
   }
@@ -501,13 +517,15 @@ class Lowering {
       not_taken = jump(Op::JumpIfNot);
     }
     std::set<uint32_t> seen;
-    for (const ir::Block& target : unit.blocks) {
-      if (!target.number || target.label.empty() || !seen.insert(*target.number).second) continue;
+    auto target = [&](const std::optional<uint32_t>& number, const std::string& label) {
+      if (!number || label.empty() || !seen.insert(*number).second) return;
       expr(s.value);
-      constant(Op::Const, Op::ConstDec, std::nullopt, *target.number);
+      constant(Op::Const, Op::ConstDec, std::nullopt, *number);
       op(Op::Eq);
-      jumps.push_back({jump(Op::JumpIf), target.label});
-    }
+      jumps.push_back({jump(Op::JumpIf), label});
+    };
+    for (const ir::Unit::StreamedLabel& l : unit.streamed_labels) target(l.number, l.label);
+    for (const ir::Block& b : unit.blocks) target(b.number, b.label);
     expr(s.value);
     op(Op::NoBlock);
     if (not_taken) patch(not_taken, pc());
@@ -546,6 +564,7 @@ class Lowering {
   std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd
   UnitState first_unit_;  // of the first unit, whose leading blocks may come streamed
   std::vector<WordPosition> words_;  // of the block being lowered
+  std::vector<uint32_t> streamed_label_pcs_;  // where each of Unit::streamed_labels starts
 };
 
 }  // namespace

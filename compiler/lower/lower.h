@@ -14,8 +14,8 @@ namespace ncc {
 vm::Module lower(const ir::Program& program, const SourceManager& sources, const stdlib::Profile& profile);
 
 // Lowering while the program is read: the leading blocks of its first unit that have
-// no label and no flow statement (nothing read later changes their code) as they
-// come, the rest once it is read and checked. The module is the one lower() makes.
+// no flow statement (nothing read later changes their code) as they come, the rest
+// once it is read and checked. The module is the one lower() makes.
 class StreamLowering {
  public:
   explicit StreamLowering(const SourceManager& sources);

@@ -255,14 +255,19 @@ void Reader::end_unit() {
   }
   if (expect_brace_) diags_.report(DiagId::ProgramStructure, unit_.range, "a multi-line IF needs its '{'");
   expect_brace_ = false;
-  // §8.33 (E-29): M97 subprograms stand after M02/M30, at a block that exists.
+  // §8.33 (E-29): M97 subprograms stand after M02/M30, at a block that exists. (A
+  // block compiled while it was read stands before them.)
+  std::set<std::string> streamed;
+  if (!local_calls_.empty())
+    for (const ir::Unit::StreamedLabel& l : unit_.streamed_labels) streamed.insert(l.label);
   for (const LocalCall& call : local_calls_) {
+    const bool was_streamed = streamed.count(call.label) > 0;
     size_t i = 0;
-    while (i < unit_.blocks.size() && unit_.blocks[i].label != call.label) ++i;
-    if (i == unit_.blocks.size()) {
+    while (!was_streamed && i < unit_.blocks.size() && unit_.blocks[i].label != call.label) ++i;
+    if (!was_streamed && i == unit_.blocks.size()) {
       diags_.report(DiagId::LabelUndefined, call.range, "M97 to", call.label);
       unit_.blocks[call.block].has_errors = true;
-    } else if (unit_.kind == ir::UnitKind::Program && (!end_block_ || i <= *end_block_)) {
+    } else if (was_streamed || (unit_.kind == ir::UnitKind::Program && (!end_block_ || i <= *end_block_))) {
       diags_.report(DiagId::ProgramStructure, call.range,
                     fmt::format("M97 calls {}, which stands before M02/M30: an internal subprogram is written after the end of the main program", call.label));
       unit_.blocks[call.block].has_errors = true;
@@ -287,12 +292,15 @@ void Reader::end_unit() {
     for (const ir::Stmt& s : b.stmts)
       if (s.kind == ir::StmtKind::Jump && !s.label.empty()) targets.insert(s.label);
   for (const LocalCall& call : local_calls) targets.insert(call.label);
-  std::map<uint32_t, const ir::Block*> numbers;
-  for (const ir::Block& b : unit_.blocks)
-    if (b.number && targets.count(fmt::format("N{}", *b.number)))
-      if (auto [it, fresh] = numbers.emplace(*b.number, &b); !fresh)
-        if (Diagnostic* d = diags_.report(DiagId::BlockNumberRepeated, b.range, *b.number, unit_.name))
-          d->notes.push_back({it->second->range, "a GOTO or M97 goes here"});
+  std::map<uint32_t, SourceRange> numbers;
+  auto repeated = [&](const std::optional<uint32_t>& number, SourceRange range) {
+    if (number && targets.count(fmt::format("N{}", *number)))
+      if (auto [it, fresh] = numbers.emplace(*number, range); !fresh)
+        if (Diagnostic* d = diags_.report(DiagId::BlockNumberRepeated, range, *number, unit_.name))
+          d->notes.push_back({it->second, "a GOTO or M97 goes here"});
+  };
+  for (const ir::Unit::StreamedLabel& l : unit_.streamed_labels) repeated(l.number, l.range);
+  for (const ir::Block& b : unit_.blocks) repeated(b.number, b.range);
   program_.units.push_back(std::move(unit_));
   unit_ = ir::Unit{};
   in_unit_ = false;

@@ -19,6 +19,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
   explicit Nc110Frontend(Settings settings) : DialectFrontend(std::move(settings)) {
     rules_.max_repeat_depth = 3;    // §2.13.2.1: up to two RPT inside another
     rules_.unique_labels = true;    // decision 14
+    rules_.block_ranges = true;     // (EPP,from,to) §2.13.2.3
     rules_.block_number_order = false;  // N numbers may repeat and go down (decision 7)
   }
 
