@@ -45,7 +45,7 @@ std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::s
 std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect);
 vm::Module lower_program(Session& s, const ir::Program& program);
 // Front end, checks and lowering at once: the leading blocks of the first unit
-// without a label or a flow statement (most of a CAM file) are checked, lowered and
+// without a flow statement (most of a CAM file) are checked, lowered and
 // dropped as they are read, so that compiling holds little of the file's IR; the
 // module is the one analyse + lower_program make. Blocks with errors are lowered as
 // lower_program does; nothing if the program cannot be read at all.
