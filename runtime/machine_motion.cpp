@@ -350,19 +350,21 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     path.back() = t;
     if (!path_allowed(path)) return move_to(t);
   }
-  Event e = motion_event(EventKind::Arc, t);
-  e.plane = modal_.plane;
-  AxisValues off = origins();
-  e.centre[0] = program_axis(u, centre.x() - off[u]);
-  e.centre[1] = program_axis(v, centre.y() - off[v]);
-  int turns = std::max(1, static_cast<int>(std::ceil(sweep / kTwoPi - 1e-9)));
-  e.rotation = clockwise ? -turns : turns;
-  e.a = to_program(r0);
-  e.b = sweep * 180 / kPi;
   double length = std::hypot((r0 + r1) / 2 * sweep, dw);
   const double own = block_seconds();
   advance_clock(own ? own : system_value(SysVar::RapidRun) == 1 ? 0 : feed_time(length));
-  emit(e);
+  if (wanted(EventKind::Arc)) {
+    Event e = motion_event(EventKind::Arc, t);
+    e.plane = modal_.plane;
+    AxisValues off = origins();
+    e.centre[0] = program_axis(u, centre.x() - off[u]);
+    e.centre[1] = program_axis(v, centre.y() - off[v]);
+    int turns = std::max(1, static_cast<int>(std::ceil(sweep / kTwoPi - 1e-9)));
+    e.rotation = clockwise ? -turns : turns;
+    e.a = to_program(r0);
+    e.b = sweep * 180 / kPi;
+    emit(e);
+  }
   move_to(t);
 }
 

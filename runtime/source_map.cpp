@@ -1,16 +1,13 @@
 #include "source_map.h"
 
-#include <algorithm>
-
-#include "support/bytes.h"
-
 namespace ncc {
 
 // docs/bytecode.md, SRCS: the block as deltas from the one before (most are a line
 // on), then its words as deltas from the block and the word before.
 void SourceMap::add(const SourceBlock& b, std::span<const WordPosition> words) {
-  if (count_ % kCheckpointEvery == 0) checkpoints_.push_back({count_, bytes_.size(), last_line_});
-  ByteWriter& w = bytes_;
+  checkpoint();
+  ByteWriter& w = block_;
+  w.data().clear();
   w.uvar(b.file);
   w.svar(int64_t(b.line) - last_line_);
   w.uvar(b.col);
@@ -28,7 +25,16 @@ void SourceMap::add(const SourceBlock& b, std::span<const WordPosition> words) {
     w.svar(int64_t(p.end_col) - p.col);
     col = p.col;
   }
-  last_line_ = b.line;
+  bytes_ += w.data();
+  added(b.line);
+}
+
+void SourceMap::checkpoint() {
+  if (count_ % kCheckpointEvery == 0) checkpoints_.push_back({count_, bytes_.size(), last_line_});
+}
+
+void SourceMap::added(uint32_t line) {
+  last_line_ = line;
   ++count_;
 }
 
@@ -74,10 +80,9 @@ bool SourceMap::read(ByteReader& r, uint32_t count) {
     const size_t from = r.pos();
     SourceBlock b;
     if (!decode_block(r, last_line_, b, nullptr)) return false;
-    if (count_ % kCheckpointEvery == 0) checkpoints_.push_back({count_, bytes_.size(), last_line_});
-    bytes_.bytes(r.data().substr(from, r.pos() - from));
-    last_line_ = b.line;
-    ++count_;
+    checkpoint();
+    bytes_ += r.data().substr(from, r.pos() - from);
+    added(b.line);
   }
   return true;
 }

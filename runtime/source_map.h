@@ -46,7 +46,7 @@ class SourceMap {
   void visit(const std::function<void(const SourceBlock&, const std::vector<WordPosition>&)>& f) const;
   // The blocks as the file stores them after their count; read() takes `count` of
   // them from a file, checked (false if they are not well formed).
-  std::string_view encoded() const { return bytes_.data(); }
+  std::string_view encoded() const { return bytes_; }
   bool read(ByteReader& r, uint32_t count);
   bool operator==(const SourceMap& o) const {
     return files == o.files && count_ == o.count_ && encoded() == o.encoded();
@@ -62,8 +62,11 @@ class SourceMap {
   // Decodes the block at `c` (its words too, if asked) and moves `c` past it.
   SourceBlock decode(Cursor& c, std::vector<WordPosition>* words) const;
   Cursor seek(uint32_t i) const;
+  void checkpoint();            // before a block is appended
+  void added(uint32_t line);    // after it, on `line`
 
-  ByteWriter bytes_;
+  std::string bytes_;
+  ByteWriter block_;  // the block being added
   uint32_t count_ = 0;
   uint32_t last_line_ = 0;
   std::vector<Cursor> checkpoints_;  // before blocks 0, 16, 32...

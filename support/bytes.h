@@ -62,7 +62,7 @@ class ByteWriter {
     return ok_;
   }
   uint64_t written() const { return passed_ + out_.size(); }
-  uint32_t crc() const { return crc_; }  // of the bytes passed on
+  uint32_t crc() const { return crc_; }  // of the bytes passed on to a file
 
  private:
   static constexpr size_t kPiece = 1 << 16;
@@ -74,10 +74,10 @@ class ByteWriter {
     out_.clear();
   }
   void emit(std::string_view s) {
-    if (s.empty()) return;
-    crc_ = crc32({reinterpret_cast<const uint8_t*>(s.data()), s.size()}, crc_);
     passed_ += s.size();
-    if (file_ && std::fwrite(s.data(), 1, s.size(), file_) != s.size()) ok_ = false;
+    if (!file_ || s.empty()) return;  // counting only: no checksum wanted
+    crc_ = crc32({reinterpret_cast<const uint8_t*>(s.data()), s.size()}, crc_);
+    if (std::fwrite(s.data(), 1, s.size(), file_) != s.size()) ok_ = false;
   }
   std::string out_;
   bool stream_ = false;

@@ -31,9 +31,11 @@ struct BlockScratch {
     codes.clear();
     g_codes.clear();
   }
+  // The count of a letter, which the caller raises: a letter is noted at its first.
   int& count_of(char letter) {
-    if (!first[static_cast<uint8_t>(letter)] && !count[static_cast<uint8_t>(letter)]) letters += letter;
-    return count[static_cast<uint8_t>(letter)];
+    int& c = count[static_cast<uint8_t>(letter)];
+    if (c == 0) letters += letter;
+    return c;
   }
   // The word of `key` seen first, after making `w` it if there was none.
   template <typename Key>
@@ -362,8 +364,9 @@ void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags, St
   BlockScratch& scratch = streamed ? *streamed->scratch_ : own;
   for (size_t u = 0; u < program.units.size(); ++u) {
     ir::Unit& unit = program.units[u];
-    if (u == 0 && streamed) {
-      for (const Diagnostic& d : streamed->block_diags_.all()) diags.add(d);
+    StreamChecks* stream = u == 0 ? streamed : nullptr;  // the checks of its dropped blocks
+    if (stream) {
+      for (const Diagnostic& d : stream->block_diags_.all()) diags.add(d);
       if (diags.limit_reached()) return;
     }
     for (ir::Block& block : unit.blocks) {
@@ -375,9 +378,9 @@ void check(ir::Program& program, const CheckRules& rules, Diagnostics& diags, St
     // The first unit's numbers go on from those of its streamed blocks.
     if (rules.block_number_order) {
       BlockNumbers fresh;
-      BlockNumbers& numbers = u == 0 && streamed ? streamed->numbers_ : fresh;
-      if (u == 0 && streamed)
-        for (const Diagnostic& d : streamed->number_diags_.all()) diags.add(d);
+      BlockNumbers& numbers = stream ? stream->numbers_ : fresh;
+      if (stream)
+        for (const Diagnostic& d : stream->number_diags_.all()) diags.add(d);
       for (const ir::Block& block : unit.blocks) numbers.add(block, diags);
     }
     check_targets(program, unit, rules, streamed, diags);

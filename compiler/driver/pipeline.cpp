@@ -50,12 +50,13 @@ class IssueReporter final : public RuntimeIssues {
     if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code, i.nth}).second) return;
     // In a dry run a block the compiler already rejected would only repeat its errors.
     const SourceMap& map = m_.source_map;
-    if (dry_ && i.source < map.size() && map.block(i.source).has_errors) return;
+    const std::optional<SourceBlock> block = i.source < map.size() ? std::optional(map.block(i.source)) : std::nullopt;
+    if (dry_ && block && block->has_errors) return;
     if (!file_ids_) file_ids_ = source_files(s_, m_);
     const std::vector<uint32_t>& file_ids = *file_ids_;
     SourceRange range;
-    if (i.source < map.size()) {
-      const SourceBlock b = map.block(i.source);
+    if (block) {
+      const SourceBlock& b = *block;
       uint32_t file = b.file < file_ids.size() ? file_ids[b.file] : 0;
       range = {file, b.line, b.col, b.end_line, b.end_col};
       if (i.slot >= 0 || i.code >= 0) {
@@ -183,7 +184,7 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
 // would be; what its checks find is reported with the others (StreamChecks).
 class Stream final : public BlockSink {
  public:
-  Stream(Session& s, const CheckRules& rules) : s_(s), rules_(rules), checks(rules), lowering(s.sources) {}
+  Stream(Session& s, const CheckRules& rules) : checks(rules), lowering(s.sources), s_(s), rules_(rules) {}
 
   void take(ir::Program& program, ir::Unit& unit) override {
     if (stopped_ || !program.units.empty()) return;

@@ -198,7 +198,7 @@ TEST(SourceMap, AnyBlockInAnyOrder) {
   for (uint32_t i = 0; i < 100; ++i) {
     SourceBlock b{i % 3, 10 + i * 2 - (i % 7 == 0 ? 5 : 0), 1 + i % 4, 10 + i * 2, 40, i % 2 == 0, false, i % 5 == 0, i % 2 == 0 ? i * 10 : 0};
     std::vector<WordPosition> w;
-    for (uint32_t k = 0; k < i % 6; ++k) w.push_back({static_cast<uint8_t>(k), static_cast<int16_t>(k) - 1, b.line, 3 + 4 * k, 6 + 4 * k});
+    for (uint32_t k = 0; k < i % 6; ++k) w.push_back({static_cast<uint8_t>(k), static_cast<int16_t>(int(k) - 1), b.line, 3 + 4 * k, 6 + 4 * k});
     map.add(b, w);
     blocks.push_back(b);
   }

@@ -112,6 +112,7 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   uint32_t file_;
   Diagnostics& diags_;
   bool fast_path_;
+  PlainBlock plain_;  // the fast path's words, kept from line to line
   BlockSink* sink_;  // takes each finished block (the reader keeps nothing of them)
 
   antlr4::ANTLRInputStream input_;
@@ -539,7 +540,7 @@ void Reader::address_word(char letter, const WrittenNumber& n, SourceRange r, st
 // else is for the parser. Nothing is changed before the whole line is known plain.
 bool Reader::scan_plain(std::string_view t) {
   static constexpr PlainRules kRules{"ABCDEFGHIJKLMNOPQRSTUVWXYZ"};
-  PlainBlock block;
+  PlainBlock& block = plain_;
   if (!scan_plain_words(t, kRules, block)) return false;
   for (const PlainWord& p : block.words) {
     const SourceRange r{file_, line_no_, p.from + 1, line_no_, p.to + 1};
