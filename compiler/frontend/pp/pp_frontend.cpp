@@ -30,7 +30,7 @@ class PpFrontend final : public DialectFrontend<Settings> {
     spaces.counters = static_cast<uint16_t>(program.spaces.size());
     program.spaces.push_back(counters);
 
-    Reader main(s_, program, sources.file(file), file, diags, spaces, std::nullopt, options.fast_path);
+    Reader main(s_, program, sources.file(file), file, diags, spaces, std::nullopt, options.fast_path, options.sink);
     main.run();
     std::deque<MacroCall> pending(main.macro_calls().begin(), main.macro_calls().end());
     // Macros live in files L<nnnn> of the library (§2.3.5, decision 13).

@@ -71,7 +71,7 @@ size_t significant_fraction_digits(const std::string& digits) {
 std::string Reader::macro_name(uint32_t number) { return fmt::format("L{:04}", number); }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-               Diagnostics& diags, Spaces& spaces, std::optional<uint32_t> macro, bool fast_path)
+               Diagnostics& diags, Spaces& spaces, std::optional<uint32_t> macro, bool fast_path, BlockSink* sink)
     : s_(settings),
       program_(program),
       source_(source),
@@ -79,7 +79,11 @@ Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile&
       diags_(diags),
       spaces_(spaces),
       macro_(macro),
-      fast_path_(fast_path) {
+      fast_path_(fast_path),
+      sink_(sink),
+      first_unit_(program.units.size()),
+      in_main_(!macro),
+      streaming_(!macro) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
@@ -103,6 +107,10 @@ void Reader::read_tape() {
   uint32_t start_line = 1;
   while (start_line < source_.line_count() && source_.line_offset(start_line + 1) <= pct) ++start_line;
   read_start(start_line, pct);
+  main_.kind = ir::UnitKind::Program;
+  main_.name = number_;
+  main_.title = title_;
+  main_.range = start_range_;
 
   std::optional<Piece> open;  // the block being cut out
   bool star = false;
@@ -602,53 +610,96 @@ void Reader::finish_block() {
   bool machine = false;
   for (const ir::Word& w : block_.words) machine = machine || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
   if (machine) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
-  blocks_.push_back(std::move(block_));
+  place_block();
 }
 
 // ---- Program units ----------------------------------------------------------------
 
-void Reader::build_units() {
+void Reader::place_block() {
   // §2.3: block numbers are unique in the file.
-  std::map<uint32_t, size_t> numbers;
-  for (size_t i = 0; i < blocks_.size(); ++i) {
-    if (!blocks_[i].number) continue;
-    auto [it, fresh] = numbers.emplace(*blocks_[i].number, i);
-    if (!fresh)
-      if (Diagnostic* d = diags_.report(DiagId::BlockNumberTwice, blocks_[i].words.front().range, *blocks_[i].number))
-        d->notes.push_back({blocks_[it->second].words.front().range, "first used here"});
-  }
-
-  struct Span {
-    ir::Unit unit;
-    size_t first, last;  // blocks_ indices, inclusive
-  };
-  std::vector<Span> spans;
-  auto structure = [&](const ir::Block& b, const std::string& what) {
-    diags_.report(DiagId::ProgramStructure, b.range, what);
-  };
-  size_t i = 0;
-  if (!macro_) {
-    // §2.3.2: the main part ends at the block with M02 or M30.
-    size_t end = 0;
-    while (end < blocks_.size() && !flow_of(blocks_[end]).ends_main) ++end;
-    Span main{{}, 0, end};
-    main.unit.kind = ir::UnitKind::Program;
-    main.unit.name = number_;
-    main.unit.title = title_;
-    main.unit.range = start_range_;
-    if (end == blocks_.size()) {
-      diags_.report(DiagId::ProgramStructure, blocks_.empty() ? start_range_ : blocks_.back().range,
-                    blocks_.empty() ? std::string("the program has no blocks: its main part ends with M02 or M30 (§2.3.2)")
-                                    : std::string("the main part does not end with M02 or M30 (§2.3.2)"));
-      main.last = blocks_.size() - 1;  // wraps for no blocks: the loop below takes none
-      i = blocks_.size();
+  if (block_.number) {
+    const Numbered here{*block_.number, read_, block_.words.front().range};
+    if (const Numbered* first = numbered(here.number)) {
+      if (Diagnostic* d = diags_.report(DiagId::BlockNumberTwice, here.range, here.number))
+        d->notes.push_back({first->range, "first used here"});
+    } else if (rising_.empty() || here.number > rising_.back().number) {
+      rising_.push_back(here);
     } else {
-      i = end + 1;
+      others_.emplace(here.number, here);
     }
-    spans.push_back(std::move(main));
+  }
+  ++read_;
+  last_range_ = block_.range;
+  if (!in_main_) {
+    blocks_.push_back(std::move(block_));
+    return;
+  }
+  Flow f = flow_of(block_);
+  if (f.control_word[static_cast<size_t>(Control::End)])
+    structure(block_, "G70 ends a subprogram or a macro, not the main part (§2.3.3)");
+  if (f.control_word[static_cast<size_t>(Control::Entry)])
+    structure(block_, "G79 starts a subprogram, after the main part (§2.3.3)");
+  // §2.3.2: the main part ends at the block with M02 or M30.
+  in_main_ = !f.ends_main;
+  // A call or a jump is resolved once the whole file is read: from it on, the main
+  // part is held.
+  if (flow(block_, f, 0, main_)) streaming_ = false;
+  main_.blocks.push_back(std::move(block_));
+  if (streaming_ && sink_) sink_->take(program_, main_);
+  streaming_ = streaming_ && in_main_;
+}
+
+const Reader::Numbered* Reader::numbered(uint32_t number) const {
+  auto it = std::lower_bound(rising_.begin(), rising_.end(), number, [](const Numbered& n, uint32_t v) { return n.number < v; });
+  if (it != rising_.end() && it->number == number) return &*it;
+  auto other = others_.find(number);
+  return other != others_.end() ? &other->second : nullptr;
+}
+
+bool Reader::flow(ir::Block& b, const Flow& f, size_t unit, const ir::Unit& in) {
+  if (b.has_errors || !f.l) return false;
+  auto word = [&](Control c) { return f.control_word[static_cast<size_t>(c)]; };
+  const size_t block = in.blocks.size();  // where `b` goes
+  if (word(Control::Jump) && !word(Control::CallSubprogram) && !word(Control::CallMacro)) {
+    jumps_.push_back({unit, block});
+    return true;
+  }
+  ir::Stmt call(ir::StmtKind::Call, f.l_word->range);
+  call.value = f.q_word && f.q_word->kind == ir::WordKind::Control ? f.q_word->value : program_.number(1, b.range);
+  if (const ir::Word* w = word(Control::CallSubprogram)) {
+    if (macro_) {
+      diags_.report(DiagId::ProgramStructure, w->range, "a macro cannot call a subprogram: subprograms belong to their part program (§2.3.3)");
+      return true;
+    }
+    call.label = fmt::format("L{}", *f.l);
+  } else if (word(Control::CallMacro)) {
+    call.label = macro_name(*f.l);
+    macro_calls_.push_back({*f.l, f.l_word->range, first_unit_ + unit, block});
+  } else {
+    return false;
+  }
+  b.stmts.push_back(call);
+  return true;
+}
+
+void Reader::structure(const ir::Block& b, const std::string& what) {
+  diags_.report(DiagId::ProgramStructure, b.range, what);
+}
+
+void Reader::build_units() {
+  std::vector<Span> spans;
+  if (!macro_) {
+    if (in_main_ && !number_.empty())  // (no '%': that is the error)
+      diags_.report(DiagId::ProgramStructure, read_ ? last_range_ : start_range_,
+                    read_ ? std::string("the main part does not end with M02 or M30 (§2.3.2)")
+                          : std::string("the program has no blocks: its main part ends with M02 or M30 (§2.3.2)"));
+    spans.push_back({0, read_ - blocks_.size()});
+    program_.units.push_back(std::move(main_));
   }
   // Subprograms after the main part (§2.3.3), or the one macro of a macro file.
+  const size_t base = read_ - blocks_.size();  // blocks_[0] is the file's block `base`
   std::set<uint32_t> defined;
+  size_t i = 0;
   while (i < blocks_.size()) {
     Flow f = flow_of(blocks_[i]);
     if (!f.control_word[static_cast<size_t>(Control::Entry)]) {
@@ -659,11 +710,11 @@ void Reader::build_units() {
     }
     size_t last = i;
     while (last + 1 < blocks_.size() && !flow_of(blocks_[last]).control_word[static_cast<size_t>(Control::End)]) ++last;
-    Span sub{{}, i, last};
-    sub.unit.kind = macro_ ? ir::UnitKind::Macro : ir::UnitKind::Subprogram;
-    sub.unit.range = blocks_[i].range;
+    ir::Unit unit;
+    unit.kind = macro_ ? ir::UnitKind::Macro : ir::UnitKind::Subprogram;
+    unit.range = blocks_[i].range;
     uint32_t n = f.l.value_or(0);
-    sub.unit.name = macro_ ? macro_name(*macro_) : fmt::format("L{}", n);
+    unit.name = macro_ ? macro_name(*macro_) : fmt::format("L{}", n);
     if (!flow_of(blocks_[last]).control_word[static_cast<size_t>(Control::End)])
       structure(blocks_[i], fmt::format("{} L{} does not end: a block with G70 ends it (§2.3.3)",
                                         macro_ ? "macro" : "subprogram", n));
@@ -679,89 +730,67 @@ void Reader::build_units() {
       if (w.kind != ir::WordKind::BlockNumber && w.address != "L" && !(w.address == "G" && &w == f.control_word[static_cast<size_t>(Control::Entry)]))
         diags_.report(DiagId::ProgramStructure, w.range,
                       fmt::format("{}{} stands in the entry block of L{}, which holds G79 and L only (§2.3.3)", w.address, w.text, n));
-    spans.push_back(std::move(sub));
+    for (size_t k = i; k <= last; ++k) {
+      ir::Block& b = blocks_[k];
+      Flow bf = flow_of(b);
+      if (bf.ends_main)
+        diags_.report(DiagId::EndInSubprogram, bf.ends_main->range, bf.ends_main->address + bf.ends_main->text,
+                      macro_ ? "a macro" : "subprogram " + unit.name);
+      if (bf.control_word[static_cast<size_t>(Control::Entry)] && k != i)
+        structure(b, "G79 inside a subprogram: G70 ends the one before it (§2.3.3)");
+      flow(b, bf, spans.size(), unit);
+      unit.blocks.push_back(std::move(b));
+    }
+    spans.push_back({base + i, base + last + 1});
+    program_.units.push_back(std::move(unit));
     i = last + 1;
   }
   if (macro_ && spans.empty() && !blocks_.empty()) structure(blocks_.front(), "the macro file holds no G79 block");
+  blocks_.clear();
+  resolve_jumps(spans);
+}
 
-  // The units, and the flow of each block: calls, and jumps inside the unit.
-  const size_t first_unit = program_.units.size();
-  for (size_t u = 0; u < spans.size(); ++u) {
-    Span& span = spans[u];
-    std::map<uint32_t, bool> here;
-    for (size_t k = span.first; k <= span.last && k < blocks_.size(); ++k)
-      if (blocks_[k].number) here[*blocks_[k].number] = true;
-    for (size_t k = span.first; k <= span.last && k < blocks_.size(); ++k) {
-      ir::Block& b = blocks_[k];
-      Flow f = flow_of(b);
-      auto word = [&](Control c) { return f.control_word[static_cast<size_t>(c)]; };
-      if (word(Control::End) && (u == 0 && !macro_))
-        structure(b, "G70 ends a subprogram or a macro, not the main part (§2.3.3)");
-      if (f.ends_main && (u > 0 || macro_))
-        diags_.report(DiagId::EndInSubprogram, f.ends_main->range, f.ends_main->address + f.ends_main->text,
-                      macro_ ? "a macro" : "subprogram " + span.unit.name);
-      if (word(Control::Entry) && k != span.first)
-        structure(b, u == 0 && !macro_ ? "G79 starts a subprogram, after the main part (§2.3.3)"
-                                       : "G79 inside a subprogram: G70 ends the one before it (§2.3.3)");
-      if (b.has_errors || !f.l) {
-        span.unit.blocks.push_back(std::move(b));
-        continue;
+void Reader::resolve_jumps(const std::vector<Span>& spans) {
+  for (const Jump& j : jumps_) {
+    ir::Unit& unit = program_.units[first_unit_ + j.unit];
+    ir::Block& b = unit.blocks[j.block];
+    Flow f = flow_of(b);
+    // §2.3.6: a jump stays in its unit; the section runs Q+1 times (decision 14).
+    const Numbered* target = numbered(*f.l);
+    auto in = [&](const Span& s) { return target->at >= s.begin && target->at < s.end; };
+    if (!target || !in(spans[j.unit])) {
+      if (!target) {
+        diags_.report(DiagId::LabelUndefined, f.l_word->range, "G73", fmt::format("L{}", *f.l));
+      } else {
+        std::string where = "the main part";
+        for (size_t s = 0; s < spans.size(); ++s)
+          if (in(spans[s]) && program_.units[first_unit_ + s].kind != ir::UnitKind::Program)
+            where = "subprogram " + program_.units[first_unit_ + s].name;
+        std::string unit_name = macro_ ? "this macro" : j.unit == 0 ? "the main part" : "subprogram " + unit.name;
+        diags_.report(DiagId::JumpScope, f.l_word->range, *f.l, where, unit_name);
       }
-      ir::ExprId count = f.q_word && f.q_word->kind == ir::WordKind::Control ? f.q_word->value : program_.number(1, b.range);
-      if (const ir::Word* w = word(Control::CallSubprogram)) {
-        if (macro_) {
-          diags_.report(DiagId::ProgramStructure, w->range, "a macro cannot call a subprogram: subprograms belong to their part program (§2.3.3)");
-        } else {
-          ir::Stmt s(ir::StmtKind::Call, f.l_word->range);
-          s.label = fmt::format("L{}", *f.l);
-          s.value = count;
-          b.stmts.push_back(s);
-        }
-      } else if (word(Control::CallMacro)) {
-        ir::Stmt s(ir::StmtKind::Call, f.l_word->range);
-        s.label = macro_name(*f.l);
-        s.value = count;
-        b.stmts.push_back(s);
-        macro_calls_.push_back({*f.l, f.l_word->range, first_unit + u, span.unit.blocks.size()});
-      } else if (word(Control::Jump)) {
-        // §2.3.6: a jump stays in its unit; the section runs Q+1 times (decision 14).
-        if (!here.count(*f.l)) {
-          auto other = numbers.find(*f.l);
-          std::string unit_name = macro_ ? "this macro" : u == 0 ? "the main part" : "subprogram " + span.unit.name;
-          if (other == numbers.end()) {
-            diags_.report(DiagId::LabelUndefined, f.l_word->range, "G73", fmt::format("L{}", *f.l));
-          } else {
-            size_t target = other->second;
-            std::string where = "the main part";
-            for (const Span& s : spans)
-              if (target >= s.first && target <= s.last && s.unit.kind != ir::UnitKind::Program) where = "subprogram " + s.unit.name;
-            diags_.report(DiagId::JumpScope, f.l_word->range, *f.l, where, unit_name);
-          }
-          b.has_errors = true;
-        } else {
-          ir::ExprId index = program_.number(spaces_.next_counter++, b.range);
-          auto counter = [&] { return program_.add({ir::ExprOp::Var, Builtin::Sin, spaces_.counters, 0, index, ir::kNoExpr, b.range}); };
-          auto bin = [&](ir::ExprOp o, ir::ExprId a, ir::ExprId c) { return program_.add({o, Builtin::Sin, 0, 0, a, c, b.range}); };
-          // Unarmed (0): arm with Q + 1; then count down, and jump while it lasts.
-          ir::Stmt arm(ir::StmtKind::Assign, b.range);
-          arm.target = counter();
-          arm.value = bin(ir::ExprOp::Add, bin(ir::ExprOp::Mul, bin(ir::ExprOp::Eq, counter(), program_.number(0, b.range)),
-                                               bin(ir::ExprOp::Add, count, program_.number(1, b.range))),
-                          counter());
-          ir::Stmt down(ir::StmtKind::Assign, b.range);
-          down.target = counter();
-          down.value = bin(ir::ExprOp::Sub, counter(), program_.number(1, b.range));
-          ir::Stmt jump(ir::StmtKind::Jump, f.l_word->range);
-          jump.label = fmt::format("N{}", *f.l);
-          jump.cond = bin(ir::ExprOp::Gt, counter(), program_.number(0, b.range));
-          b.stmts.push_back(arm);
-          b.stmts.push_back(down);
-          b.stmts.push_back(jump);
-        }
-      }
-      span.unit.blocks.push_back(std::move(b));
+      b.has_errors = true;
+      continue;
     }
-    program_.units.push_back(std::move(span.unit));
+    ir::ExprId count = f.q_word && f.q_word->kind == ir::WordKind::Control ? f.q_word->value : program_.number(1, b.range);
+    ir::ExprId index = program_.number(spaces_.next_counter++, b.range);
+    auto counter = [&] { return program_.add({ir::ExprOp::Var, Builtin::Sin, spaces_.counters, 0, index, ir::kNoExpr, b.range}); };
+    auto bin = [&](ir::ExprOp o, ir::ExprId a, ir::ExprId c) { return program_.add({o, Builtin::Sin, 0, 0, a, c, b.range}); };
+    // Unarmed (0): arm with Q + 1; then count down, and jump while it lasts.
+    ir::Stmt arm(ir::StmtKind::Assign, b.range);
+    arm.target = counter();
+    arm.value = bin(ir::ExprOp::Add, bin(ir::ExprOp::Mul, bin(ir::ExprOp::Eq, counter(), program_.number(0, b.range)),
+                                         bin(ir::ExprOp::Add, count, program_.number(1, b.range))),
+                    counter());
+    ir::Stmt down(ir::StmtKind::Assign, b.range);
+    down.target = counter();
+    down.value = bin(ir::ExprOp::Sub, counter(), program_.number(1, b.range));
+    ir::Stmt jump(ir::StmtKind::Jump, f.l_word->range);
+    jump.label = fmt::format("N{}", *f.l);
+    jump.cond = bin(ir::ExprOp::Gt, counter(), program_.number(0, b.range));
+    b.stmts.push_back(arm);
+    b.stmts.push_back(down);
+    b.stmts.push_back(jump);
   }
 }
 

@@ -1,6 +1,7 @@
 // Reads one pp file: the tape (leader, '%' line, blocks from N to N, '*'), each block
 // through the ANTLR grammar, and the program structure (main part ended by M02/M30,
-// subprograms G79 L ... G70, or the one macro of a macro file) into IR units.
+// subprograms G79 L ... G70, or the one macro of a macro file) into IR units. The
+// main part's blocks go to the sink as they are read, up to its first call or jump.
 #pragma once
 
 #include <antlr4-runtime.h>
@@ -10,6 +11,7 @@
 
 #include "PpLexer.h"
 #include "PpParser.h"
+#include "frontend/frontend.h"
 #include "frontend/plain_words.h"
 #include "ir/ir.h"
 #include "settings.h"
@@ -37,7 +39,7 @@ class Reader {
  public:
   // `macro`: the file of macro L`macro` (a G72 call), else the main file.
   Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
-         Spaces& spaces, std::optional<uint32_t> macro, bool fast_path);
+         Spaces& spaces, std::optional<uint32_t> macro, bool fast_path, BlockSink* sink = nullptr);
 
   // Appends the file's units to the program.
   void run();
@@ -66,7 +68,15 @@ class Reader {
   void read_block(const Piece& piece);
   bool scan_plain(const Piece& piece);  // the fast path: a block of address words only
   void block_number(std::string_view digits, SourceRange r, bool bare);
+  void place_block();  // the block just read, in the main part or after it
+  // Adds a call's statement, or notes a jump for resolve_jumps; true for either.
+  bool flow(ir::Block& b, const Flow& f, size_t unit, const ir::Unit& in);
+  void structure(const ir::Block& b, const std::string& what);
+  struct Span {
+    size_t begin, end;  // the unit's blocks, by their place in the file
+  };
   void build_units();
+  void resolve_jumps(const std::vector<Span>& spans);
 
   // Token handling.
   SourceRange range(antlr4::Token* first, antlr4::Token* last) const;
@@ -90,6 +100,8 @@ class Reader {
   Spaces& spaces_;
   std::optional<uint32_t> macro_;
   bool fast_path_;
+  BlockSink* sink_;
+  size_t first_unit_;  // the program's units before this file's
   PlainBlock plain_;
 
   antlr4::ANTLRInputStream input_;
@@ -102,7 +114,26 @@ class Reader {
   std::string number_;  // the program number, "%35"
   std::string title_;
   SourceRange start_range_;
-  std::vector<ir::Block> blocks_;
+  ir::Unit main_;              // the main part, as the sink leaves it
+  bool in_main_;               // up to the block with M02 or M30
+  bool streaming_;             // the sink takes the main part's blocks
+  std::vector<ir::Block> blocks_;  // after the main part, or the macro file's
+  uint32_t read_ = 0;          // the blocks read so far
+  SourceRange last_range_;     // of the last of them
+  // The file's block numbers: they rise in most files, so those stand in order in a
+  // vector (a binary search finds them), the others in a map.
+  struct Numbered {
+    uint32_t number;
+    uint32_t at;        // the block's place in the file
+    SourceRange range;  // of the N word
+  };
+  std::vector<Numbered> rising_;
+  std::map<uint32_t, Numbered> others_;
+  const Numbered* numbered(uint32_t number) const;
+  struct Jump {
+    size_t unit, block;  // the unit among this file's, the block in it
+  };
+  std::vector<Jump> jumps_;
   ir::Block block_;
   struct Assignment {
     uint32_t index;
