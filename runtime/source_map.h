@@ -40,6 +40,7 @@ class SourceMap {
 
   uint32_t size() const { return count_; }
   void add(const SourceBlock& b, std::span<const WordPosition> words);
+  void reserve(size_t bytes) { bytes_.reserve(bytes); }
   SourceBlock block(uint32_t i) const;  // i < size()
   std::vector<WordPosition> words(uint32_t i) const;
   // Every block in order, with its words.

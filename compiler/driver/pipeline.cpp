@@ -197,7 +197,7 @@ class Stream final : public BlockSink {
       }
       checks.block(program, b);
       lowering.block(program, unit, b);
-      if (!b.label.empty()) unit.streamed_labels.push_back({b.label, b.number, b.range});
+      if (!b.label.empty()) unit.streamed_labels.push_back({*b.number, b.range});
     }
     unit.blocks.erase(unit.blocks.begin(), unit.blocks.begin() + static_cast<std::ptrdiff_t>(n));
     unit.streamed += static_cast<uint32_t>(n);
@@ -215,9 +215,10 @@ class Stream final : public BlockSink {
   // Nothing read later changes how this block is checked or lowered. (A code chosen
   // at run time, NC-110 GE1, is not: the codes it may be are added once the whole
   // program is read. Nor is a label that may end a block range, or that must be
-  // unique: the unit keeps the others, Unit::streamed_labels.)
+  // unique: the unit keeps the others, N and the block's number, Unit::streamed_labels.)
   bool settled(const ir::Block& b) const {
-    if (!b.label.empty() && (rules_.block_ranges || rules_.unique_labels)) return false;
+    if (!b.label.empty() && (rules_.block_ranges || rules_.unique_labels || !b.number || b.label != ir::Unit::StreamedLabel{*b.number, {}}.label()))
+      return false;
     for (const ir::Word& w : b.words)
       if (w.code == ir::kDynamicCode) return false;
     for (const ir::Stmt& s : b.stmts)
@@ -247,6 +248,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   auto frontend = frontend_for(s, dialect);
   if (!frontend) return std::nullopt;
   Stream stream(s, frontend->rules());
+  stream.lowering.expect(s.sources.file(file).text().size());
   ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
   return stream.lowering.finish(program, *s.profile);

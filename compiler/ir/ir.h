@@ -182,11 +182,12 @@ struct Unit {
   std::vector<Block> blocks;
   uint32_t streamed = 0;  // blocks before `blocks`, compiled and dropped while reading (BlockSink)
   // Of those, the ones with a label, in order: what later jumps, calls and checks
-  // need of them.
+  // need of them. A streamed label is N and the block's number (12 bytes less a
+  // block than the text: CAM output numbers every block).
   struct StreamedLabel {
-    std::string label;
-    std::optional<uint32_t> number;
+    uint32_t number;
     SourceRange range;
+    std::string label() const { return "N" + std::to_string(number); }
   };
   std::vector<StreamedLabel> streamed_labels;
   bool ends_information = false;  // terminated by end of information (M30)

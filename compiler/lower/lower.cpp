@@ -48,9 +48,33 @@ class Lowering {
     p_ = &program;
     const uint32_t at = pc();
     lower_block(unit, b, first_unit_);
-    if (b.label.empty()) return;
-    first_unit_.label_depth.emplace(b.label, 0);  // no loop is open in a stream
-    streamed_label_pcs_.push_back(at);            // of Unit::streamed_labels, in order
+    if (!b.label.empty()) streamed_label_pcs_.push_back(at);  // of Unit::streamed_labels, in order
+  }
+
+  // The streamed blocks' labels that the rest of their unit jumps to (a computed GOTO
+  // may go to any), where the fix-ups look for them: only those, as a stream may hold
+  // millions. No loop is open in a stream.
+  void name_streamed_labels(const ir::Unit& unit) {
+    std::set<std::string_view> named;
+    bool any = false;
+    for (const ir::Block& b : unit.blocks)
+      for (const ir::Stmt& s : b.stmts) {
+        if (s.kind == ir::StmtKind::Jump) any = any || s.label.empty();
+        if (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::CallRange) named.insert(s.label);
+      }
+    for (size_t i = 0; i < unit.streamed_labels.size() && (any || !named.empty()); ++i) {
+      const std::string label = unit.streamed_labels[i].label();
+      if (!any && !named.count(label)) continue;
+      first_unit_.labels.emplace(label, streamed_label_pcs_[i]);
+      first_unit_.label_depth.emplace(label, 0);
+    }
+  }
+
+  void expect(size_t source_bytes) {
+    const size_t bytes = std::min(source_bytes * 2, size_t{1} << 30);  // beyond, they grow as they must
+    m_.code.reserve(bytes);
+    m_.source_map.reserve(bytes);
+    m_.lines.reserve(bytes / 16);
   }
 
   // The rest of the program, once it is read and checked.
@@ -68,11 +92,11 @@ class Lowering {
     // lower_block would have put it (entries stand in code order).
     if (!program.units.empty()) {
       const ir::Unit& first = program.units.front();
-      for (size_t i = 0; i < first.streamed_labels.size(); ++i)
-        if (called_.count(first.name + "/" + first.streamed_labels[i].label))
-          m_.entries.push_back({first.name + "/" + first.streamed_labels[i].label, vm::EntryKind::Subprogram,
-                                streamed_label_pcs_[i]});
+      for (size_t i = 0; i < first.streamed_labels.size() && !called_.empty(); ++i)
+        if (std::string name = first.name + "/" + first.streamed_labels[i].label(); called_.count(name))
+          m_.entries.push_back({name, vm::EntryKind::Subprogram, streamed_label_pcs_[i]});
     }
+    if (!program.units.empty()) name_streamed_labels(program.units.front());
     for (size_t u = 0; u < program.units.size(); ++u) {
       UnitState fresh;
       lower_unit(program.units[u], u == 0 ? first_unit_ : fresh);
@@ -353,7 +377,10 @@ class Lowering {
       }
     }
     st.depth = 0;
-    for (const ir::Block& b : unit.blocks) lower_block(unit, b, st);
+    for (const ir::Block& b : unit.blocks) {
+      if (!b.label.empty()) st.labels.emplace(b.label, pc());  // a label used twice (Macro B N): the first
+      lower_block(unit, b, st);
+    }
     if (!st.entry_added) {
       // An empty program still gets its entry point, so it can be run (and end).
       SourceBlock s;
@@ -403,7 +430,6 @@ class Lowering {
     }
     if (b.main_block && b.number)
       m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
-    if (!b.label.empty()) st.labels.emplace(b.label, pc());  // a label used twice (Macro B N): the first
     // A block a call names (Macro B M97) is an entry point of its own.
     if (!b.label.empty() && called_.count(unit.name + "/" + b.label))
       m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});
@@ -524,7 +550,7 @@ class Lowering {
       op(Op::Eq);
       jumps.push_back({jump(Op::JumpIf), label});
     };
-    for (const ir::Unit::StreamedLabel& l : unit.streamed_labels) target(l.number, l.label);
+    for (const ir::Unit::StreamedLabel& l : unit.streamed_labels) target(l.number, l.label());
     for (const ir::Block& b : unit.blocks) target(b.number, b.label);
     expr(s.value);
     op(Op::NoBlock);
@@ -575,6 +601,8 @@ struct StreamLowering::Impl : Lowering {
 
 StreamLowering::StreamLowering(const SourceManager& sources) : impl_(std::make_unique<Impl>(sources)) {}
 StreamLowering::~StreamLowering() = default;
+
+void StreamLowering::expect(size_t source_bytes) { impl_->expect(source_bytes); }
 
 void StreamLowering::block(const ir::Program& program, const ir::Unit& unit, const ir::Block& b) {
   impl_->stream(program, unit, b);

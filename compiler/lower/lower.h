@@ -20,6 +20,9 @@ class StreamLowering {
  public:
   explicit StreamLowering(const SourceManager& sources);
   ~StreamLowering();
+  // Room for the code and source map of `source_bytes` of source, so that they need
+  // not move (and be held twice) while they grow: address space, not memory.
+  void expect(size_t source_bytes);
   void block(const ir::Program& program, const ir::Unit& unit, const ir::Block& b);
   vm::Module finish(const ir::Program& program, const stdlib::Profile& profile);
 

@@ -257,9 +257,11 @@ void Reader::end_unit() {
   expect_brace_ = false;
   // §8.33 (E-29): M97 subprograms stand after M02/M30, at a block that exists. (A
   // block compiled while it was read stands before them.)
-  std::set<std::string> streamed;
-  if (!local_calls_.empty())
-    for (const ir::Unit::StreamedLabel& l : unit_.streamed_labels) streamed.insert(l.label);
+  std::set<std::string> called, streamed;
+  for (const LocalCall& call : local_calls_) called.insert(call.label);
+  if (!called.empty())
+    for (const ir::Unit::StreamedLabel& l : unit_.streamed_labels)
+      if (called.count(l.label())) streamed.insert(l.label());
   for (const LocalCall& call : local_calls_) {
     const bool was_streamed = streamed.count(call.label) > 0;
     size_t i = 0;
