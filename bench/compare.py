@@ -396,7 +396,7 @@ def main(argv=None):
             fmt_s(r.get("compile")),
             f"{mb(size) / r['compile'].wall:.2f}" if ok("compile") and per_byte else "-",
             f"{mb(r['compile'].rss):.0f}" if ok("compile") else "-",
-            f"{r['compile'].rss / size:.0f}x" if ok("compile") and per_byte else "-",
+            f"{r['compile'].rss / size:.1f}x" if ok("compile") and per_byte else "-",
             fmt_s(r.get("run")), fmt_rate(blocks / r["run"].wall) if ok("run") else "-",
             f"{mb(r['run'].rss):.0f}" if ok("run") else "-",
             fmt_s(r.get("ncb")),
@@ -456,7 +456,7 @@ def main(argv=None):
             e, r = e_r
             v = mb(e["bytes"]) / r["check"].wall
             tl.append([f"front end, {d} plain blocks (ncc check)", f">= {T_FRONT_END_MBS:.0f} MB/s",
-                       f"{v:.2f} MB/s", verdict(v >= T_FRONT_END_MBS, f"{T_FRONT_END_MBS / v:.0f}x short")])
+                       f"{v:.2f} MB/s", verdict(v >= T_FRONT_END_MBS, f"{T_FRONT_END_MBS / v:.1f}x short")])
     for kind, target, what in (("plain", T_PLAIN_RATIO, f"{sizes['plain']:,} plain blocks"),
                                ("loop", T_LOOP_RATIO, f"{sizes['loop']:,}-iteration SIN/COS loop")):
         e_r = res.get(f"iso-{kind}")
@@ -464,15 +464,15 @@ def main(argv=None):
             e, r = e_r
             v = r["rs274"].wall / r["run"].wall
             tl.append([f"ncc run vs rs274 -g, {what}", f">= {target:.0f}x faster", f"{v:.2f}x",
-                       verdict(v >= target, f"{target / v:.0f}x short" if v < target else "")])
+                       verdict(v >= target, f"{target / v:.1f}x short" if v < target else "")])
     for d in a.dialects.split(","):
         e_r = res.get(f"{d}-plain")
         if e_r and e_r[1].get("compile") and e_r[1]["compile"].ok:
             e, r = e_r
             v = r["compile"].rss / e["bytes"]
             tl.append([f"peak RSS compiling {d} plain / source size", f"<= {T_COMPILE_RSS:.0f}x",
-                       f"{v:.0f}x ({mb(r['compile'].rss):.0f} MB for {mb(e['bytes']):.1f} MB)",
-                       verdict(v <= T_COMPILE_RSS, f"{v / T_COMPILE_RSS:.0f}x over")])
+                       f"{v:.1f}x ({mb(r['compile'].rss):.0f} MB for {mb(e['bytes']):.1f} MB)",
+                       verdict(v <= T_COMPILE_RSS, f"{v / T_COMPILE_RSS:.1f}x over")])
     if flat_res:
         grow = mb(flat_res[1].rss - flat_res[0].rss)
         tl.append([f"iso loop of {flat:,} iterations in flat memory", f"<= +{T_FLAT_MB:.0f} MB over 1,000",
