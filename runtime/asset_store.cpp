@@ -1,0 +1,307 @@
+#include "asset_store.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <dirent.h>
+
+#include <fmt/format.h>
+
+#include "support/bytes.h"
+
+namespace ncc::asset {
+
+namespace {
+
+constexpr std::string_view kMagic = "NCAF";
+constexpr uint16_t kVersion = 1;
+constexpr size_t kHeader = 24;
+constexpr std::string_view kSuffix = ".nca";
+
+uint32_t crc_of(std::string_view s) { return crc32({reinterpret_cast<const uint8_t*>(s.data()), s.size()}); }
+
+std::string device_name(uint8_t d) { return fmt::format("MP{}", d); }
+
+// Closes a descriptor when it goes out of scope.
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+bool write_all(int fd, std::string_view s) {
+  while (!s.empty()) {
+    ssize_t n = ::write(fd, s.data(), s.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    s.remove_prefix(static_cast<size_t>(n));
+  }
+  return true;
+}
+
+Code code_of_errno(int e) { return e == ENOSPC || e == EDQUOT ? Code::Overflow : Code::Hardware; }
+
+}  // namespace
+
+std::string_view meaning(Code c) {
+  static constexpr std::string_view kText[] = {
+      "no error",         "channel already open or still closed", "invalid channel number", "no permitted channel",
+      "file not found",   "file already exists",                  "illegal operation",      "file already open",
+      "file not open",    "protected file",                       "format error",           "record not found",
+      "hardware error",   "end of file",                          "logical I/O error",      "invalid device",
+      "record structure not defined", "memory overflow",          "ASSET area not configured"};
+  return kText[static_cast<size_t>(c)];
+}
+
+std::string field_text(const Field& f) {
+  switch (f.type) {
+    case FieldType::Integer: return "IN";
+    case FieldType::Real: return "RE";
+    case FieldType::LongReal: return "LR";
+    case FieldType::Chars: return fmt::format("{}CH", f.length);
+  }
+  return "?";
+}
+
+std::optional<Field> parse_field(std::string_view text) {
+  if (text == "IN") return Field{FieldType::Integer, 2};
+  if (text == "RE") return Field{FieldType::Real, 4};
+  if (text == "LR") return Field{FieldType::LongReal, 8};
+  if (!text.ends_with("CH")) return std::nullopt;
+  text.remove_suffix(2);
+  unsigned n = 1;  // "CH" is one character
+  if (!text.empty()) {
+    auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+    if (ec != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  }
+  if (n < 1 || n > kMaxChars) return std::nullopt;
+  return Field{FieldType::Chars, static_cast<uint8_t>(n)};
+}
+
+bool well_formed(const Layout& layout) {
+  if (layout.empty() || layout.size() > kMaxFields) return false;
+  return std::all_of(layout.begin(), layout.end(), [](const Field& f) {
+    switch (f.type) {
+      case FieldType::Integer: return f.length == 2;
+      case FieldType::Real: return f.length == 4;
+      case FieldType::LongReal: return f.length == 8;
+      case FieldType::Chars: return f.length >= 1 && f.length <= kMaxChars;
+    }
+    return false;
+  });
+}
+
+size_t record_length(const Layout& layout) {
+  size_t n = 0;
+  for (const Field& f : layout) n += f.length;
+  return n;
+}
+
+std::string FileName::text() const { return name + "/" + device_name(device); }
+
+std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device) {
+  FileName f;
+  f.device = default_device;
+  if (size_t slash = text.find('/'); slash != std::string_view::npos) {
+    std::string_view dev = text.substr(slash + 1);
+    if (dev.size() != 3 || !dev.starts_with("MP") || dev[2] < '0' || dev[2] >= '0' + kDevices) return std::nullopt;
+    f.device = static_cast<uint8_t>(dev[2] - '0');
+    text = text.substr(0, slash);
+  }
+  auto upper = [](char c) { return c >= 'A' && c <= 'Z'; };
+  auto digit = [](char c) { return c >= '0' && c <= '9'; };
+  if (text.empty() || text.size() > 6 || !upper(text[0])) return std::nullopt;
+  if (!std::all_of(text.begin(), text.end(), [&](char c) { return upper(c) || digit(c); })) return std::nullopt;
+  if (f.device >= kDevices) return std::nullopt;
+  f.name = std::string(text);
+  return f;
+}
+
+File blank_file(const Layout& layout, uint32_t records) {
+  File f;
+  f.layout = layout;
+  f.records = records;
+  std::string record;
+  for (const Field& field : layout) record.append(field.length, field.type == FieldType::Chars ? ' ' : '\0');
+  f.data.reserve(record.size() * records);
+  for (uint32_t i = 0; i < records; ++i) f.data += record;
+  return f;
+}
+
+// docs/asset.md, "The file".
+std::string encode(const File& f) {
+  ByteWriter body;
+  for (const Field& field : f.layout) {
+    body.u8(static_cast<uint8_t>(field.type));
+    body.u8(field.length);
+  }
+  body.bytes(f.data);
+  ByteWriter head;
+  head.bytes(kMagic);
+  head.u16(kVersion);
+  head.u16(f.write_protected ? 1 : 0);
+  head.u16(static_cast<uint16_t>(f.layout.size()));
+  head.u16(static_cast<uint16_t>(record_length(f.layout)));
+  head.u32(f.records);
+  head.u32(crc_of(body.data()));
+  head.u32(crc_of(head.data()));
+  return head.data() + body.data();
+}
+
+Code decode(std::string_view bytes, File& f) {
+  ByteReader r(bytes);
+  if (r.bytes(kMagic.size()) != kMagic || r.u16() != kVersion) return Code::Logical;
+  const uint16_t flags = r.u16();
+  const uint16_t fields = r.u16();
+  const uint16_t length = r.u16();
+  const uint32_t records = r.u32();
+  const uint32_t body_crc = r.u32();
+  const uint32_t head_crc = r.u32();
+  if (r.failed() || head_crc != crc_of(bytes.substr(0, kHeader - 4)) || (flags & ~1u) || fields == 0 ||
+      fields > kMaxFields || records == 0 || records > kMaxRecords)
+    return Code::Logical;
+  if (bytes.size() != kHeader + 2 * size_t{fields} + size_t{records} * length || body_crc != crc_of(bytes.substr(kHeader)))
+    return Code::Logical;
+  File out;
+  out.write_protected = flags & 1;
+  out.records = records;
+  for (uint16_t i = 0; i < fields; ++i) {
+    const uint8_t type = r.u8(), size = r.u8();
+    out.layout.push_back({static_cast<FieldType>(type), size});
+  }
+  if (!well_formed(out.layout) || record_length(out.layout) != length) return Code::Logical;
+  out.data = std::string(r.bytes(r.remaining()));
+  f = std::move(out);
+  return Code::Ok;
+}
+
+// ---- The sandbox --------------------------------------------------------------------
+
+std::unique_ptr<Store> Store::open(const std::string& dir, const Options& options, std::string& why) {
+  int fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) {
+    why = std::strerror(errno);
+    return nullptr;
+  }
+  return std::unique_ptr<Store>(new Store(fd, options));
+}
+
+Store::Store(int dir, const Options& options) : dir_(dir), options_(options) {}
+Store::~Store() { ::close(dir_); }
+
+int Store::device(uint8_t d) const {
+  if (d >= kDevices) return -1;
+  return ::openat(dir_, device_name(d).c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+}
+
+Code Store::load(const FileName& name, File& f) const {
+  if (!parse_file_name(name.text(), name.device)) return Code::NotFound;
+  Fd dev{device(name.device)};
+  if (dev.fd < 0) return Code::BadDevice;
+  Fd file{::openat(dev.fd, (name.name + std::string(kSuffix)).c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC)};
+  if (file.fd < 0) return errno == ENOENT ? Code::NotFound : errno == ELOOP ? Code::Logical : Code::Hardware;
+  struct stat st;
+  if (::fstat(file.fd, &st) != 0) return Code::Hardware;
+  if (!S_ISREG(st.st_mode)) return Code::Logical;
+  std::string bytes(static_cast<size_t>(st.st_size), '\0');
+  size_t got = 0;
+  while (got < bytes.size()) {
+    ssize_t n = ::read(file.fd, bytes.data() + got, bytes.size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return Code::Hardware;
+    if (n == 0) break;
+    got += static_cast<size_t>(n);
+  }
+  bytes.resize(got);
+  return decode(bytes, f);
+}
+
+Code Store::create(const FileName& name, const File& f) { return write(name, f, true); }
+
+Code Store::replace(const FileName& name, const File& f) { return write(name, f, false); }
+
+// The new contents go whole into a temporary file beside the old one, which is synced
+// and then takes the old one's place (rename is atomic; a fresh file is linked, which
+// fails rather than replace one that exists), and the folder is synced: a file is the
+// old one or the new one whenever the process dies.
+Code Store::write(const FileName& name, const File& f, bool fresh) {
+  if (!parse_file_name(name.text(), name.device) || !well_formed(f.layout) || f.records == 0 ||
+      f.records > kMaxRecords || f.data.size() != f.records * record_length(f.layout))
+    return Code::Illegal;
+  Fd dev{device(name.device)};
+  if (dev.fd < 0) return Code::BadDevice;
+  const std::string final_name = name.name + std::string(kSuffix);
+  struct stat old;
+  const bool exists = ::fstatat(dev.fd, final_name.c_str(), &old, AT_SYMLINK_NOFOLLOW) == 0;
+  if (fresh && exists) return Code::Exists;
+  if (!fresh && !exists) return Code::NotFound;
+  if (exists && !S_ISREG(old.st_mode)) return Code::Logical;
+  const std::string bytes = encode(f);
+  // The device's room: its other files and this one.
+  uint64_t used = bytes.size();
+  for (const FileName& other : list(name.device)) {
+    struct stat st;
+    if (other.name != name.name && ::fstatat(dev.fd, (other.name + std::string(kSuffix)).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
+      used += static_cast<uint64_t>(st.st_size);
+  }
+  if (used > options_.device_bytes) return Code::Overflow;
+
+  const std::string temp = "." + final_name + ".tmp";
+  ::unlinkat(dev.fd, temp.c_str(), 0);  // left by a run that died
+  Fd out{::openat(dev.fd, temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644)};
+  if (out.fd < 0) return code_of_errno(errno);
+  if (!write_all(out.fd, bytes) || ::fsync(out.fd) != 0) {
+    Code c = code_of_errno(errno);
+    ::unlinkat(dev.fd, temp.c_str(), 0);
+    return c;
+  }
+  int placed = fresh ? ::linkat(dev.fd, temp.c_str(), dev.fd, final_name.c_str(), 0)
+                     : ::renameat(dev.fd, temp.c_str(), dev.fd, final_name.c_str());
+  if (placed != 0) {
+    Code c = errno == EEXIST ? Code::Exists : code_of_errno(errno);
+    ::unlinkat(dev.fd, temp.c_str(), 0);
+    return c;
+  }
+  if (fresh) ::unlinkat(dev.fd, temp.c_str(), 0);
+  return ::fsync(dev.fd) == 0 ? Code::Ok : Code::Hardware;
+}
+
+Code Store::remove(const FileName& name) {
+  if (!parse_file_name(name.text(), name.device)) return Code::NotFound;
+  Fd dev{device(name.device)};
+  if (dev.fd < 0) return Code::BadDevice;
+  const std::string final_name = name.name + std::string(kSuffix);
+  struct stat st;
+  if (::fstatat(dev.fd, final_name.c_str(), &st, AT_SYMLINK_NOFOLLOW) != 0) return Code::NotFound;
+  if (!S_ISREG(st.st_mode)) return Code::Logical;
+  if (::unlinkat(dev.fd, final_name.c_str(), 0) != 0) return Code::Hardware;
+  return ::fsync(dev.fd) == 0 ? Code::Ok : Code::Hardware;
+}
+
+std::vector<FileName> Store::list(uint8_t d) const {
+  std::vector<FileName> files;
+  int fd = device(d);
+  if (fd < 0) return files;
+  DIR* dir = ::fdopendir(fd);
+  if (!dir) {
+    ::close(fd);
+    return files;
+  }
+  while (dirent* e = ::readdir(dir)) {
+    std::string_view entry = e->d_name;
+    if (!entry.ends_with(kSuffix)) continue;
+    entry.remove_suffix(kSuffix.size());
+    if (auto name = parse_file_name(entry, d)) files.push_back(*name);
+  }
+  ::closedir(dir);
+  std::sort(files.begin(), files.end(), [](const FileName& a, const FileName& b) { return a.name < b.name; });
+  return files;
+}
+
+}  // namespace ncc::asset

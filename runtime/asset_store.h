@@ -1,0 +1,116 @@
+// ASSET files (NC-110 chapter 5): files of fixed-length records on the memory
+// devices MP0-MP6, kept in a sandbox directory with one folder a device. The file
+// format is docs/asset.md; every change is written crash-safe (the new file whole in
+// a temporary, synced, then put in the old one's place), so a killed run leaves each
+// file as it was before a change or as it is after it, never torn.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace ncc::asset {
+
+// Table 5.2: what an ASSET statement leaves in IOSTA (0: it worked).
+enum class Code : uint8_t {
+  Ok = 0,
+  ChannelState = 1,  // channel already open / still closed
+  BadChannel = 2,
+  NoChannel = 3,
+  NotFound = 4,
+  Exists = 5,
+  Illegal = 6,
+  AlreadyOpen = 7,
+  NotOpen = 8,
+  Protected = 9,
+  Format = 10,
+  NoRecord = 11,
+  Hardware = 12,
+  EndOfFile = 13,
+  Logical = 14,  // the file is not a well-formed ASSET file (docs/asset.md)
+  BadDevice = 15,
+  NoStructure = 16,
+  Overflow = 17,
+  NotConfigured = 18,
+};
+std::string_view meaning(Code c);  // the table's words
+
+// Table 5.1: the formats a field may have, and their bytes.
+enum class FieldType : uint8_t { Integer = 1, Real = 2, LongReal = 3, Chars = 4 };
+struct Field {
+  FieldType type = FieldType::Integer;
+  uint8_t length = 2;  // IN 2, RE 4, LR 8, CH 1..32
+  bool operator==(const Field&) const = default;
+};
+using Layout = std::vector<Field>;
+
+constexpr size_t kMaxFields = 17;      // a structure binds at most 17 variables (§5.3.2.2)
+constexpr size_t kMaxChars = 32;       // .32CH
+constexpr uint32_t kMaxRecords = 32767;
+constexpr uint8_t kDevices = 7;        // MP0..MP6
+
+// "IN", "RE", "LR", "5CH" (and back); a well-formed layout has 1..17 such fields.
+std::string field_text(const Field& f);
+std::optional<Field> parse_field(std::string_view text);
+bool well_formed(const Layout& layout);
+size_t record_length(const Layout& layout);
+
+// A file's name: one to six capitals and digits, a letter first (the manual says "at
+// most 6 characters" only, spec §6.4), on a device: "FILQ/MP3".
+struct FileName {
+  std::string name;
+  uint8_t device = 1;
+  std::string text() const;
+  bool operator==(const FileName&) const = default;
+};
+// `text` with or without "/MPn"; nothing when it is not a name a file may have.
+std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device);
+
+// A file's contents.
+struct File {
+  Layout layout;
+  uint32_t records = 0;
+  bool write_protected = false;
+  std::string data;  // records × record_length(layout) bytes
+  bool operator==(const File&) const = default;
+};
+// A new file: numbers 0, characters blanks (unspecified, spec §6.5.6).
+File blank_file(const Layout& layout, uint32_t records);
+std::string encode(const File& f);
+// Code::Ok, or Code::Logical when `bytes` are not a well-formed file of this version.
+Code decode(std::string_view bytes, File& f);
+
+// The sandbox: a directory holding MP0..MP6. A device whose folder is missing (or is
+// a link) is not connected (15); a file that is a link or not a regular file is not
+// an ASSET file (14). Names are checked again here, so no name leaves the sandbox.
+class Store {
+ public:
+  struct Options {
+    uint64_t device_bytes = 1 << 20;  // the files of one device together, at most (17 beyond)
+  };
+  // The sandbox at `dir`, or nothing and why.
+  static std::unique_ptr<Store> open(const std::string& dir, const Options& options, std::string& why);
+  ~Store();
+  Store(const Store&) = delete;
+  Store& operator=(const Store&) = delete;
+
+  Code load(const FileName& name, File& f) const;
+  Code create(const FileName& name, const File& f);  // 5 if it exists
+  Code replace(const FileName& name, const File& f);  // 4 unless it exists
+  Code remove(const FileName& name);
+  // The files of a device, by name (an unconnected device has none).
+  std::vector<FileName> list(uint8_t device) const;
+
+ private:
+  Store(int dir, const Options& options);
+  int device(uint8_t d) const;  // an open folder, or -1
+  Code write(const FileName& name, const File& f, bool fresh);
+
+  int dir_;
+  Options options_;
+};
+
+}  // namespace ncc::asset

@@ -1,0 +1,207 @@
+// The ASSET file store: names, the file format, the sandbox, and writes that a kill
+// cannot tear.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <random>
+#include <set>
+
+#include "runtime/asset_store.h"
+
+namespace ncc::asset {
+namespace {
+
+namespace fs = std::filesystem;
+
+const Layout kOrigins = {{FieldType::Integer, 2}, {FieldType::Chars, 1}, {FieldType::LongReal, 8},
+                         {FieldType::Chars, 3}, {FieldType::Real, 4}};
+
+// A sandbox of its own for each test, with the devices given, removed afterwards.
+class Sandbox {
+ public:
+  explicit Sandbox(std::initializer_list<int> devices = {1, 3}) {
+    std::string pattern = (fs::temp_directory_path() / "ncc-asset-XXXXXX").string();
+    dir_ = ::mkdtemp(pattern.data());
+    for (int d : devices) fs::create_directory(dir_ / ("MP" + std::to_string(d)));
+  }
+  ~Sandbox() { fs::remove_all(dir_); }
+  const fs::path& dir() const { return dir_; }
+  std::unique_ptr<Store> store(Store::Options options = {}) const {
+    std::string why;
+    auto s = Store::open(dir_.string(), options, why);
+    EXPECT_TRUE(s) << why;
+    return s;
+  }
+
+ private:
+  fs::path dir_;
+};
+
+FileName name(std::string_view text) { return *parse_file_name(text, 1); }
+
+TEST(AssetNames, WhatAFileMayBeCalled) {
+  EXPECT_EQ(parse_file_name("FILQ/MP3", 1), (FileName{"FILQ", 3}));
+  EXPECT_EQ(parse_file_name("ORIG", 1), (FileName{"ORIG", 1}));
+  EXPECT_EQ(parse_file_name("A12345/MP0", 1), (FileName{"A12345", 0}));
+  EXPECT_EQ(parse_file_name("PUNTXZ/MP6", 1)->text(), "PUNTXZ/MP6");
+  for (std::string_view bad : {"", "filq", "TOOLONG", "9A", "../X", "A/B", "/ETC", "X/MP7", "X/MP", "X/MP33", "A.B",
+                               "..", "A B", "X/", "X/mp3"})
+    EXPECT_FALSE(parse_file_name(bad, 1)) << bad;
+}
+
+TEST(AssetFields, FormatsAndTheirBytes) {
+  EXPECT_EQ(parse_field("IN"), (Field{FieldType::Integer, 2}));
+  EXPECT_EQ(parse_field("RE"), (Field{FieldType::Real, 4}));
+  EXPECT_EQ(parse_field("LR"), (Field{FieldType::LongReal, 8}));
+  EXPECT_EQ(parse_field("CH"), (Field{FieldType::Chars, 1}));
+  EXPECT_EQ(parse_field("32CH"), (Field{FieldType::Chars, 32}));
+  for (std::string_view bad : {"0CH", "33CH", "BY", "BL", "LI", "-1CH", "3 CH", ""}) EXPECT_FALSE(parse_field(bad)) << bad;
+  for (const Field& f : kOrigins) EXPECT_EQ(parse_field(field_text(f)), f);
+  EXPECT_EQ(record_length(kOrigins), 18u);
+  EXPECT_TRUE(well_formed(kOrigins));
+  EXPECT_FALSE(well_formed({}));
+  EXPECT_FALSE(well_formed(Layout(18, Field{})));
+  EXPECT_TRUE(well_formed(Layout(17, Field{})));
+  EXPECT_FALSE(well_formed({{FieldType::Real, 8}}));
+}
+
+TEST(AssetFile, BlankRecordsAreZeroAndBlanks) {
+  File f = blank_file({{FieldType::Integer, 2}, {FieldType::Chars, 3}}, 2);
+  EXPECT_EQ(f.data, std::string("\0\0   \0\0   ", 10));
+}
+
+TEST(AssetFile, RoundTripsAndItsBytesAreFixed) {
+  File f = blank_file(kOrigins, 3);
+  f.write_protected = true;
+  f.data[0] = 7;
+  File back;
+  ASSERT_EQ(decode(encode(f), back), Code::Ok);
+  EXPECT_EQ(back, f);
+  // docs/asset.md: the header, little-endian.
+  const std::string bytes = encode(blank_file({{FieldType::Chars, 2}}, 1));
+  EXPECT_EQ(bytes.substr(0, 16), std::string("NCAF\1\0\0\0\1\0\2\0\1\0\0\0", 16));
+  EXPECT_EQ(bytes.size(), 24u + 2 + 2);
+  EXPECT_EQ(bytes.substr(24), std::string("\4\2  ", 4));
+}
+
+TEST(AssetFile, AnyDamageIsALogicalError) {
+  const std::string good = encode(blank_file(kOrigins, 2));
+  File f;
+  for (size_t i = 0; i < good.size(); ++i)
+    for (int bit = 0; bit < 8; ++bit) {
+      std::string bad = good;
+      bad[i] = static_cast<char>(bad[i] ^ (1 << bit));
+      EXPECT_EQ(decode(bad, f), Code::Logical) << "byte " << i << " bit " << bit;
+    }
+  for (size_t n = 0; n < good.size(); ++n) EXPECT_EQ(decode(good.substr(0, n), f), Code::Logical) << n;
+  EXPECT_EQ(decode(good + '\0', f), Code::Logical);
+}
+
+TEST(AssetStore, CreateLoadReplaceRemove) {
+  Sandbox box;
+  auto store = box.store();
+  File f = blank_file(kOrigins, 4);
+  EXPECT_EQ(store->create(name("ORIG/MP3"), f), Code::Ok);
+  EXPECT_EQ(store->create(name("ORIG/MP3"), f), Code::Exists);
+  File got;
+  EXPECT_EQ(store->load(name("ORIG/MP3"), got), Code::Ok);
+  EXPECT_EQ(got, f);
+  f.data[3] = 'X';
+  EXPECT_EQ(store->replace(name("ORIG/MP3"), f), Code::Ok);
+  EXPECT_EQ(store->load(name("ORIG/MP3"), got), Code::Ok);
+  EXPECT_EQ(got, f);
+  EXPECT_EQ(store->replace(name("OTHER/MP3"), f), Code::NotFound);
+  EXPECT_EQ(store->load(name("OTHER/MP3"), got), Code::NotFound);
+  EXPECT_EQ(store->create(name("B/MP3"), f), Code::Ok);
+  EXPECT_EQ(store->list(3), (std::vector<FileName>{name("B/MP3"), name("ORIG/MP3")}));
+  EXPECT_EQ(store->remove(name("ORIG/MP3")), Code::Ok);
+  EXPECT_EQ(store->remove(name("ORIG/MP3")), Code::NotFound);
+  EXPECT_EQ(store->list(3), (std::vector<FileName>{name("B/MP3")}));
+  // Nothing but the files is left behind.
+  EXPECT_EQ(std::distance(fs::directory_iterator(box.dir() / "MP3"), fs::directory_iterator()), 1);
+}
+
+TEST(AssetStore, DevicesAndNamesStayInTheSandbox) {
+  Sandbox box({1, 3});
+  fs::create_directory(box.dir() / "outside");
+  fs::create_directory_symlink(box.dir() / "outside", box.dir() / "MP2");  // a linked device is not connected
+  auto store = box.store();
+  File f = blank_file(kOrigins, 1);
+  File got;
+  EXPECT_EQ(store->create(name("X/MP4"), f), Code::BadDevice);
+  EXPECT_EQ(store->load(name("X/MP4"), got), Code::BadDevice);
+  EXPECT_EQ(store->create(name("X/MP2"), f), Code::BadDevice);
+  EXPECT_TRUE(fs::is_empty(box.dir() / "outside"));
+  // A name the parser would refuse is refused here too (a hostile bytecode file).
+  EXPECT_EQ(store->create(FileName{"../X", 1}, f), Code::Illegal);
+  EXPECT_EQ(store->load(FileName{"../MP3/X", 1}, got), Code::NotFound);
+  EXPECT_EQ(store->remove(FileName{"..", 1}), Code::NotFound);
+  // A file that is a link, or not a file, is not an ASSET file.
+  ASSERT_EQ(store->create(name("REAL/MP1"), f), Code::Ok);
+  fs::create_symlink(box.dir() / "MP1" / "REAL.nca", box.dir() / "MP1" / "LINK.nca");
+  fs::create_directory(box.dir() / "MP1" / "DIR.nca");
+  EXPECT_EQ(store->load(name("LINK/MP1"), got), Code::Logical);
+  EXPECT_EQ(store->replace(name("LINK/MP1"), f), Code::Logical);
+  EXPECT_EQ(store->remove(name("LINK/MP1")), Code::Logical);
+  EXPECT_EQ(store->load(name("DIR/MP1"), got), Code::Logical);
+  EXPECT_TRUE(fs::is_symlink(box.dir() / "MP1" / "LINK.nca"));
+  // A damaged file reads as one.
+  std::FILE* out = std::fopen((box.dir() / "MP1" / "BAD.nca").c_str(), "wb");
+  std::fputs("NCAF", out);
+  std::fclose(out);
+  EXPECT_EQ(store->load(name("BAD/MP1"), got), Code::Logical);
+}
+
+TEST(AssetStore, ADeviceHoldsWhatItHasRoomFor) {
+  Sandbox box;
+  auto store = box.store({.device_bytes = 2 * (24 + 2 + 100)});
+  const Layout chars = {{FieldType::Chars, 10}};
+  EXPECT_EQ(store->create(name("A/MP1"), blank_file(chars, 10)), Code::Ok);
+  EXPECT_EQ(store->create(name("B/MP1"), blank_file(chars, 10)), Code::Ok);
+  EXPECT_EQ(store->create(name("C/MP1"), blank_file(chars, 1)), Code::Overflow);
+  EXPECT_EQ(store->replace(name("B/MP1"), blank_file(chars, 10)), Code::Ok);  // the same size again
+  EXPECT_EQ(store->replace(name("B/MP1"), blank_file(chars, 11)), Code::Overflow);
+  EXPECT_EQ(store->create(name("C/MP3"), blank_file(chars, 10)), Code::Ok);  // another device
+}
+
+// A writer killed at any moment leaves the file whole: the version before a write or
+// the one after it, never a mix.
+TEST(AssetStore, AKilledWriterNeverTearsAFile) {
+  Sandbox box;
+  const Layout layout = {{FieldType::LongReal, 8}, {FieldType::Chars, 32}};
+  auto version = [&](uint32_t v) {
+    File f = blank_file(layout, 200);
+    for (size_t i = 0; i < f.data.size(); ++i) f.data[i] = static_cast<char>('A' + v % 26);
+    return f;
+  };
+  ASSERT_EQ(box.store()->create(name("LOG/MP1"), version(0)), Code::Ok);
+  std::mt19937 random(6);
+  std::set<char> seen;  // the versions found: the writers got on
+  for (int round = 0; round < 20; ++round) {
+    pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      auto store = box.store();
+      for (uint32_t v = 1;; ++v)
+        if (store->replace(name("LOG/MP1"), version(v)) != Code::Ok) ::_exit(1);
+    }
+    ::usleep(1000 + random() % 20000);
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the writer stopped by itself";
+    File got;
+    ASSERT_EQ(box.store()->load(name("LOG/MP1"), got), Code::Ok) << "round " << round;
+    EXPECT_EQ(got.data, std::string(got.data.size(), got.data[0])) << "round " << round;
+    seen.insert(got.data[0]);
+    EXPECT_EQ(box.store()->list(1), (std::vector<FileName>{name("LOG/MP1")}));
+  }
+  EXPECT_GT(seen.size(), 1u);
+}
+
+}  // namespace
+}  // namespace ncc::asset
