@@ -5,6 +5,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <limits>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -64,7 +67,7 @@ std::string field_text(const Field& f) {
     case FieldType::Integer: return "IN";
     case FieldType::Real: return "RE";
     case FieldType::LongReal: return "LR";
-    case FieldType::Chars: return fmt::format("{}CH", f.length);
+    case FieldType::Chars: return f.length == 1 ? "CH" : fmt::format("{}CH", f.length);  // the manual's .CH
   }
   return "?";
 }
@@ -132,6 +135,62 @@ File blank_file(const Layout& layout, uint32_t records) {
   f.data.reserve(record.size() * records);
   for (uint32_t i = 0; i < records; ++i) f.data += record;
   return f;
+}
+
+namespace {
+
+size_t field_offset(const File& f, uint32_t record, size_t field) {
+  size_t at = size_t{record - 1} * record_length(f.layout);
+  for (size_t i = 0; i < field; ++i) at += f.layout[i].length;
+  return at;
+}
+
+}  // namespace
+
+double number(const File& f, uint32_t record, size_t field) {
+  ByteReader r(std::string_view(f.data).substr(field_offset(f, record, field), f.layout[field].length));
+  switch (f.layout[field].type) {
+    case FieldType::Integer: return static_cast<int16_t>(r.u16());
+    case FieldType::Real: return std::bit_cast<float>(r.u32());
+    case FieldType::LongReal: return r.f64();
+    case FieldType::Chars: break;
+  }
+  return 0;
+}
+
+std::string_view chars(const File& f, uint32_t record, size_t field) {
+  return std::string_view(f.data).substr(field_offset(f, record, field), f.layout[field].length);
+}
+
+bool set_number(File& f, uint32_t record, size_t field, double value) {
+  ByteWriter w;
+  switch (f.layout[field].type) {
+    case FieldType::Integer:
+      if (value != std::trunc(value) || value < -32768 || value > 32767) return false;
+      w.u16(static_cast<uint16_t>(static_cast<int16_t>(value)));
+      break;
+    case FieldType::Real:
+      // Beyond FLT_MAX and half its last step the nearest binary32 is infinite.
+      if (!(std::fabs(value) < double{std::numeric_limits<float>::max()} + 0x1p103)) return false;
+      w.u32(std::bit_cast<uint32_t>(static_cast<float>(value)));
+      break;
+    case FieldType::LongReal:
+      if (!std::isfinite(value)) return false;
+      w.f64(value);
+      break;
+    case FieldType::Chars: return false;
+  }
+  f.data.replace(field_offset(f, record, field), w.data().size(), w.data());
+  return true;
+}
+
+bool set_chars(File& f, uint32_t record, size_t field, std::string_view text) {
+  const Field& at = f.layout[field];
+  if (at.type != FieldType::Chars || text.size() > at.length) return false;
+  std::string cell(text);
+  cell.resize(at.length, ' ');
+  f.data.replace(field_offset(f, record, field), cell.size(), cell);
+  return true;
 }
 
 // docs/asset.md, "The file".

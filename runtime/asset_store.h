@@ -79,6 +79,13 @@ struct File {
 };
 // A new file: numbers 0, characters blanks (unspecified, spec §6.5.6).
 File blank_file(const Layout& layout, uint32_t records);
+// A field of record `record` (1..records), field `field` (0-based): a number (IN, RE,
+// LR) or characters (CH, blank-filled). Setting fails for a value the field cannot
+// hold: IN a whole number -32768..32767, RE a finite binary32, CH at most its length.
+double number(const File& f, uint32_t record, size_t field);
+std::string_view chars(const File& f, uint32_t record, size_t field);
+bool set_number(File& f, uint32_t record, size_t field, double value);
+bool set_chars(File& f, uint32_t record, size_t field, std::string_view text);
 std::string encode(const File& f);
 // Code::Ok, or Code::Logical when `bytes` are not a well-formed file of this version.
 Code decode(std::string_view bytes, File& f);

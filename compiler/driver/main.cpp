@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "files.h"
 #include "frontend/frontend.h"
 #include "pipeline.h"
 
@@ -60,6 +61,7 @@ constexpr Command kCommands[] = {
 )"},
     {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
     {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
+    {"files", "make, fill and print the ASSET files of NC-110 file I/O", "ncc files COMMAND DIR ...", ""},
 };
 
 void print_main_help(std::FILE* out) {
@@ -336,6 +338,7 @@ int main(int argc, char** argv) {
     return kUsage;
   }
   std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (command->name == "files") return files_command(rest);
   for (const std::string& a : rest)
     if (a == "-h" || a == "--help") {
       print_command_help(*command);

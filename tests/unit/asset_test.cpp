@@ -6,7 +6,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <set>
 
@@ -72,6 +74,35 @@ TEST(AssetFields, FormatsAndTheirBytes) {
 TEST(AssetFile, BlankRecordsAreZeroAndBlanks) {
   File f = blank_file({{FieldType::Integer, 2}, {FieldType::Chars, 3}}, 2);
   EXPECT_EQ(f.data, std::string("\0\0   \0\0   ", 10));
+}
+
+TEST(AssetFile, FieldsHoldWhatTheirFormatCan) {
+  File f = blank_file(kOrigins, 2);
+  EXPECT_TRUE(set_number(f, 2, 0, -32768));
+  EXPECT_TRUE(set_chars(f, 2, 1, "X"));
+  EXPECT_TRUE(set_number(f, 2, 2, 0.1));
+  EXPECT_TRUE(set_chars(f, 2, 3, "AB"));
+  EXPECT_TRUE(set_number(f, 2, 4, 0.1));
+  EXPECT_EQ(number(f, 2, 0), -32768);
+  EXPECT_EQ(chars(f, 2, 1), "X");
+  EXPECT_EQ(number(f, 2, 2), 0.1);
+  EXPECT_EQ(chars(f, 2, 3), "AB ");
+  EXPECT_EQ(number(f, 2, 4), static_cast<double>(0.1f));
+  EXPECT_EQ(number(f, 1, 0), 0);  // record 1 untouched
+  EXPECT_EQ(chars(f, 1, 3), "   ");
+  // Record 2 field 1 is the bytes after record 1 (18 bytes) : 0x8000 little-endian.
+  EXPECT_EQ(f.data.substr(18, 2), std::string("\0\x80", 2));
+  for (double bad : {32768.0, -32769.0, 0.5, std::nan("")}) EXPECT_FALSE(set_number(f, 1, 0, bad)) << bad;
+  EXPECT_FALSE(set_number(f, 1, 4, 1e39));
+  EXPECT_FALSE(set_number(f, 1, 4, double{std::numeric_limits<float>::max()} + 0x1p103));
+  EXPECT_TRUE(set_number(f, 1, 4, -3.4028235e38));  // FLT_MAX as printed: rounds to it
+  EXPECT_EQ(number(f, 1, 4), -double{std::numeric_limits<float>::max()});
+  EXPECT_TRUE(set_number(f, 1, 4, 0));
+  EXPECT_FALSE(set_number(f, 1, 2, std::numeric_limits<double>::infinity()));
+  EXPECT_FALSE(set_number(f, 1, 1, 1));
+  EXPECT_FALSE(set_chars(f, 1, 1, "XY"));
+  EXPECT_FALSE(set_chars(f, 1, 0, "X"));
+  EXPECT_EQ(f.data.substr(0, 18), blank_file(kOrigins, 1).data);  // failed sets change nothing
 }
 
 TEST(AssetFile, RoundTripsAndItsBytesAreFixed) {
