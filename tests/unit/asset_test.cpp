@@ -12,6 +12,7 @@
 #include <random>
 #include <set>
 
+#include "runtime/asset_channels.h"
 #include "runtime/asset_store.h"
 
 namespace ncc::asset {
@@ -232,6 +233,157 @@ TEST(AssetStore, AKilledWriterNeverTearsAFile) {
     EXPECT_EQ(box.store()->list(1), (std::vector<FileName>{name("LOG/MP1")}));
   }
   EXPECT_GT(seen.size(), 1u);
+}
+
+
+// ---- The statements of a process ------------------------------------------------------
+
+class AssetChannels : public ::testing::Test {
+ protected:
+  AssetChannels() : store(box.store()) {
+    File f = blank_file(kOrigins, 3);
+    set_number(f, 3, 0, 2);
+    set_chars(f, 3, 1, "Z");
+    set_number(f, 3, 2, -12.5);
+    EXPECT_EQ(store->create(name("ORIG/MP3"), f), Code::Ok);
+    File locked = blank_file(kOrigins, 1);
+    locked.write_protected = true;
+    EXPECT_EQ(store->create(name("LOCKED/MP3"), locked), Code::Ok);
+  }
+  Sandbox box;
+  std::unique_ptr<Store> store;
+  OpenFiles open_files;
+};
+
+TEST_F(AssetChannels, WithoutASandboxEveryStatementIsCode18) {
+  Channels none(nullptr, open_files, {});
+  std::vector<Value> v;
+  EXPECT_EQ(none.open(1, name("ORIG/MP3"), false), Code::NotConfigured);
+  EXPECT_EQ(none.read(1, 1, 1, v), Code::NotConfigured);
+  EXPECT_EQ(none.write(1, 1, 1, v), Code::NotConfigured);
+  EXPECT_EQ(none.close(1), Code::NotConfigured);
+  EXPECT_EQ(none.close_all(), Code::NotConfigured);
+  EXPECT_EQ(none.create(1, name("X"), 1), Code::NotConfigured);
+  EXPECT_EQ(none.remove(name("ORIG/MP3")), Code::NotConfigured);
+}
+
+TEST_F(AssetChannels, OpenAndItsErrorsInOrder) {
+  Channels p(store.get(), open_files, {.channels = 8});
+  EXPECT_EQ(p.open(0, name("ORIG/MP3"), false), Code::BadChannel);
+  EXPECT_EQ(p.open(9, name("ORIG/MP3"), false), Code::BadChannel);
+  EXPECT_EQ(p.open(1, name("NONE/MP3"), false), Code::NotFound);
+  EXPECT_EQ(p.open(1, name("ORIG/MP5"), false), Code::BadDevice);
+  EXPECT_EQ(p.open(1, name("LOCKED/MP3"), true), Code::Protected);
+  EXPECT_EQ(p.open(1, name("LOCKED/MP3"), false), Code::Ok);
+  EXPECT_EQ(p.open(1, name("ORIG/MP3"), false), Code::ChannelState);  // occupied, before anything about the file
+  EXPECT_EQ(p.open(1, name("NONE/MP3"), false), Code::ChannelState);
+  EXPECT_EQ(p.open(2, name("ORIG/MP3"), true), Code::Ok);
+  // Another process: a file open for writing is open nowhere else; reading is shared.
+  Channels q(store.get(), open_files, {});
+  EXPECT_EQ(q.open(1, name("ORIG/MP3"), false), Code::AlreadyOpen);
+  EXPECT_EQ(q.open(1, name("LOCKED/MP3"), false), Code::Ok);
+  EXPECT_EQ(p.close(2), Code::Ok);
+  EXPECT_EQ(q.open(2, name("ORIG/MP3"), false), Code::Ok);
+  EXPECT_EQ(p.open(2, name("ORIG/MP3"), true), Code::AlreadyOpen);
+  EXPECT_EQ(p.open(2, name("ORIG/MP3"), false), Code::Ok);
+}
+
+TEST_F(AssetChannels, ReadFollowsTheRecordPointer) {
+  Channels p(store.get(), open_files, {});
+  std::vector<Value> v;
+  EXPECT_EQ(p.read(0, 2, 1, v), Code::BadChannel);
+  EXPECT_EQ(p.read(1, 2, 1, v), Code::NotOpen);
+  ASSERT_EQ(p.open(1, name("ORIG/MP3"), false), Code::Ok);
+  EXPECT_EQ(p.read(1, 2, 1, v), Code::NoStructure);
+  ASSERT_TRUE(p.define(2, {{FieldType::Integer, 2}}));
+  EXPECT_EQ(p.read(1, 2, 1, v), Code::Format);  // one field against five
+  ASSERT_TRUE(p.define(2, kOrigins));           // a structure defined again is replaced
+  EXPECT_EQ(p.read(1, 2, 0, v), Code::NoRecord);
+  EXPECT_EQ(p.read(1, 2, 4, v), Code::NoRecord);
+  EXPECT_EQ(p.read(1, 2, 3, v), Code::Ok);
+  EXPECT_EQ(v, (std::vector<Value>{{2, {}}, {0, "Z"}, {-12.5, {}}, {0, "   "}, {0, {}}}));
+  EXPECT_EQ(p.read(1, 2, std::nullopt, v), Code::EndOfFile);  // after record 3 of 3
+  EXPECT_EQ(p.read(1, 2, 1, v), Code::Ok);
+  EXPECT_EQ(p.read(1, 2, std::nullopt, v), Code::Ok);  // record 2
+  EXPECT_EQ(p.read(1, 2, 9, v), Code::NoRecord);        // a failed read leaves the pointer
+  EXPECT_EQ(p.read(1, 2, std::nullopt, v), Code::Ok);  // record 3
+  EXPECT_EQ(v[0].number, 2);
+  EXPECT_FALSE(p.define(0, kOrigins));
+  EXPECT_FALSE(p.define(17, kOrigins));
+  EXPECT_FALSE(p.define(1, {}));
+}
+
+TEST_F(AssetChannels, WriteGoesToTheDeviceAtOnce) {
+  Channels p(store.get(), open_files, {});
+  ASSERT_TRUE(p.define(2, kOrigins));
+  const std::vector<Value> row = {{7, {}}, {0, "X"}, {0.5, {}}, {0, "AB"}, {1.5, {}}};
+  ASSERT_EQ(p.open(1, name("ORIG/MP3"), false), Code::Ok);
+  EXPECT_EQ(p.write(1, 2, 1, row), Code::Illegal);  // opened for reading
+  ASSERT_EQ(p.close(1), Code::Ok);
+  ASSERT_EQ(p.open(1, name("ORIG/MP3"), true), Code::Ok);
+  EXPECT_EQ(p.write(1, 3, 1, row), Code::NoStructure);
+  EXPECT_EQ(p.write(1, 2, 4, row), Code::NoRecord);
+  std::vector<Value> wide = row;
+  wide[0].number = 40000;  // more than IN holds
+  EXPECT_EQ(p.write(1, 2, 2, wide), Code::Format);
+  EXPECT_EQ(p.write(1, 2, std::nullopt, row), Code::Ok);  // record 1
+  EXPECT_EQ(p.write(1, 2, std::nullopt, row), Code::Ok);  // record 2
+  File f;
+  ASSERT_EQ(store->load(name("ORIG/MP3"), f), Code::Ok);
+  EXPECT_EQ(number(f, 1, 0), 7);
+  EXPECT_EQ(chars(f, 2, 3), "AB ");
+  EXPECT_EQ(number(f, 3, 0), 2);  // untouched
+  std::vector<Value> back;
+  EXPECT_EQ(p.read(1, 2, std::nullopt, back), Code::Ok);  // record 3: read and write share the pointer
+  EXPECT_EQ(back[2].number, -12.5);
+  EXPECT_EQ(p.write(1, 2, std::nullopt, row), Code::EndOfFile);
+}
+
+TEST_F(AssetChannels, CloseOneOrAll) {
+  Channels p(store.get(), open_files, {});
+  EXPECT_EQ(p.close(0), Code::BadChannel);
+  EXPECT_EQ(p.close(1), Code::ChannelState);  // "channel still closed"
+  EXPECT_EQ(p.close_all(), Code::Ok);          // nothing open: no error
+  ASSERT_EQ(p.open(1, name("ORIG/MP3"), true), Code::Ok);
+  ASSERT_EQ(p.open(2, name("LOCKED/MP3"), false), Code::Ok);
+  EXPECT_EQ(p.close_all(), Code::Ok);
+  Channels q(store.get(), open_files, {});
+  EXPECT_EQ(q.open(1, name("ORIG/MP3"), true), Code::Ok);  // released
+  {
+    Channels r(store.get(), open_files, {});
+    EXPECT_EQ(r.open(1, name("LOCKED/MP3"), false), Code::Ok);
+  }
+  EXPECT_EQ(q.remove(name("ORIG/MP3")), Code::AlreadyOpen);
+  EXPECT_EQ(q.close(1), Code::Ok);
+}
+
+TEST_F(AssetChannels, CreateAndDelete) {
+  Channels p(store.get(), open_files, {.channels = 1});
+  EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 20), Code::NoStructure);
+  const Layout layout = {{FieldType::Chars, 1}, {FieldType::LongReal, 8}, {FieldType::Chars, 1}, {FieldType::LongReal, 8}};
+  ASSERT_TRUE(p.define(2, layout));
+  EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 0), Code::Illegal);
+  EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 32768), Code::Illegal);
+  EXPECT_EQ(p.create(2, name("PUNTXZ/MP5"), 20), Code::BadDevice);
+  EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 20), Code::Ok);
+  EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 20), Code::Exists);
+  File f;
+  ASSERT_EQ(store->load(name("PUNTXZ/MP3"), f), Code::Ok);
+  EXPECT_EQ(f, blank_file(layout, 20));
+  ASSERT_EQ(p.open(1, name("ORIG/MP3"), false), Code::Ok);  // the one channel taken
+  EXPECT_EQ(p.create(2, name("OTHER/MP3"), 1), Code::NoChannel);
+  EXPECT_EQ(p.remove(name("PUNTXZ/MP3")), Code::NoChannel);
+  ASSERT_EQ(p.close(1), Code::Ok);
+  EXPECT_EQ(p.remove(name("NONE/MP3")), Code::NotFound);
+  EXPECT_EQ(p.remove(name("LOCKED/MP3")), Code::Protected);
+  EXPECT_EQ(p.remove(name("PUNTXZ/MP3")), Code::Ok);
+  EXPECT_EQ(store->load(name("PUNTXZ/MP3"), f), Code::NotFound);
+  // A damaged file can be deleted.
+  std::FILE* out = std::fopen((box.dir() / "MP3" / "BAD.nca").c_str(), "wb");
+  std::fputs("NCAF", out);
+  std::fclose(out);
+  EXPECT_EQ(p.open(1, name("BAD/MP3"), false), Code::Logical);
+  EXPECT_EQ(p.remove(name("BAD/MP3")), Code::Ok);
 }
 
 }  // namespace
