@@ -124,7 +124,13 @@ enum class StmtKind : uint8_t {
   Return,
   CallRange,    // run the blocks from label `label` to label `end_label`, then go on
   Display,      // show `items` to the operator, one after the other
+  Asset,        // an ASSET file statement (NC-110 chapter 5, `asset`): `items` its operands, `label` the file
 };
+
+// What an ASSET statement does (docs/asset.md, Statements), with its operands in
+// Stmt::items: OPN channel; DER structure, then the variables it binds; RED and WRT
+// channel, structure[, record]; CLO [channel]; CRE structure, record count; CAN none.
+enum class AssetOp : uint8_t { OpenRead, OpenWrite, Define, Read, Write, Close, CloseAll, Create, Delete };
 
 // One item of a Display: a value shown as its type shows it, a String or a Text.
 struct DisplayItem {
@@ -147,6 +153,7 @@ struct Stmt {
   StmtKind kind = StmtKind::Machine;
   bool optional = false;       // Comment after a mid-block '/': dropped when block skip is on
   bool shares_locals = false;  // Call: the called code keeps the caller's locals (Macro B M98)
+  AssetOp asset = AssetOp::OpenRead;  // Asset
   SourceRange range;
   ExprId target = kNoExpr;  // Assign: a Var expression
   ExprId value = kNoExpr;   // Assign value; RepeatBegin count; Call count (none: once)
@@ -155,7 +162,7 @@ struct Stmt {
   double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
   std::string label;        // Jump target label; Call target; Comment text
   std::string end_label;    // CallRange
-  std::vector<DisplayItem> items;  // Display
+  std::vector<DisplayItem> items;  // Display; Asset
   std::vector<CallArg> args;       // Call
 };
 

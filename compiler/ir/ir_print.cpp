@@ -198,6 +198,15 @@ std::string print(const Program& p, const SourceManager& sources) {
             out += "\n";
             break;
           }
+          case StmtKind::Asset: {
+            static constexpr const char* kOps[] = {"open_read", "open_write", "define", "read",  "write",
+                                                   "close",     "close_all",  "create", "delete"};
+            out += fmt::format("    asset {}", kOps[static_cast<size_t>(s.asset)]);
+            if (!s.label.empty()) out += " " + s.label;
+            for (const DisplayItem& item : s.items) out += " " + print_expr(p, item.value);
+            out += "\n";
+            break;
+          }
         }
       }
     }

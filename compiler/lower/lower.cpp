@@ -457,6 +457,7 @@ class Lowering {
         case ir::StmtKind::Machine: machine(b); break;
         case ir::StmtKind::Assign: assign(s); break;
         case ir::StmtKind::Display: display(s); break;
+        case ir::StmtKind::Asset: break;  // the front end has reported that it does not run yet
         case ir::StmtKind::Jump: {
           if (s.label.empty()) {
             computed_jump(unit, s, st.jumps);

@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include "reader.h"
+#include "runtime/asset_store.h"
 #include "support/text.h"
 
 namespace ncc::nc110 {
@@ -30,6 +31,13 @@ std::string kind_name(OperandKind k) {
     case OperandKind::Zone: return "a zone number 1..3";
     case OperandKind::Turning: return "the letter T";
     case OperandKind::Condition: return "an end condition 0..3";
+    case OperandKind::Channel: return "a channel 0..255";
+    case OperandKind::Structure: return "a record structure 0..255";
+    case OperandKind::Record: return "a record 1..32767";
+    case OperandKind::Records: return "a record count 1..32767";
+    case OperandKind::File: return "a file NAME/MPn";
+    case OperandKind::Access: return "R or W";
+    case OperandKind::Binding: return "a variable of an ASSET format";
   }
   return "?";
 }
@@ -273,6 +281,64 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         op.device = letters_and_digits(ok);
         if (!ok || !good(op.device, 2, 3)) return fail("a device name is 2 or 3 capitals and digits, a letter first");
       }
+      break;
+    }
+    // ASSET (§5.3.1): a channel, a structure or a count, a constant or any E parameter
+    // (its value must be whole and in range when the statement runs); a record, a
+    // constant or an IN parameter.
+    case OperandKind::Channel:
+    case OperandKind::Structure:
+    case OperandKind::Records: {
+      std::vector<std::string> any;
+      for (const ParameterClass& c : s_.classes) any.push_back(c.name);
+      const bool count = kind == OperandKind::Records;
+      if (!value(count ? 1 : 0, count ? asset::kMaxRecords : 255, true, any)) return std::nullopt;
+      break;
+    }
+    case OperandKind::Record:
+      if (!value(1, asset::kMaxRecords, true, {"IN"})) return std::nullopt;
+      break;
+    case OperandKind::File: {
+      bool ok = false;
+      std::string name = letters_and_digits(ok);
+      if (ok && type(at) == Nc110Lexer::SLASH && adjacent(at)) {
+        ++at;
+        name += "/" + letters_and_digits(ok);
+      }
+      auto file = ok ? asset::parse_file_name(name, 1) : std::nullopt;  // MP1 unless named (§5.3.2.1)
+      if (!file) return fail("a file is 1 to 6 capitals and digits, a letter first, then /MP0 to /MP6 or nothing (MP1)");
+      op.name = file->text();
+      break;
+    }
+    case OperandKind::Access:
+      if (pieces.size() != 1 || (pieces[0].text != "R" && pieces[0].text != "W")) return fail("R (read) or W (read and write)");
+      op.name = pieces[0].text;
+      at = 1;
+      break;
+    case OperandKind::Binding: {
+      // Table 5.1: IN, RE, LR and CH; E0-E9 (BY) and E20-E24 (LI) have none of them,
+      // and a memory's own format (BY, BL) is not one either: it is written.
+      if (auto e = parameter_at()) {
+        if (!check_class(*e, {"IN", "RE", "LR"}, op.range, code)) return std::nullopt;
+        op.value = parameter_expr(*e, op.range);
+        op.type = parameter_type(*e);
+        break;
+      }
+      if (bad_parameter) return std::nullopt;
+      std::string letters;
+      for (size_t i = 0; i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
+      bool memory = std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); });
+      if (!memory) return fail("an IN, RE or LR E parameter, or SYVAR, SA or SK with .IN, .RE, .LR or .kCH");
+      auto ref = memory_ref(op.text, op.range);
+      if (!ref) return std::nullopt;
+      const bool asset_format = ref->chars > 0 || ref->format == MemFormat::Integer || ref->format == MemFormat::Real ||
+                                ref->format == MemFormat::LongReal;
+      if (!asset_format) return fail(fmt::format("{} is not of an ASSET format: write .IN, .RE, .LR or .kCH (table 5.1)", ref->text));
+      if (ref->chars > asset::kMaxChars) return fail(fmt::format("an ASSET field holds at most {} characters", asset::kMaxChars));
+      op.value = memory_expr(*ref, op.range);
+      op.is_text = ref->chars > 0;
+      op.chars = ref->chars;
+      at = pieces.size();
       break;
     }
     case OperandKind::Comparand:
@@ -588,6 +654,23 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
           s.items.push_back({string_expr(op.text + "=", op.range), op.type});
         s.items.push_back({op.value, op.type});
       }
+      break;
+    }
+    case Action::Asset: {
+      s = ir::Stmt(ir::StmtKind::Asset, block_.range);
+      s.asset = sig.asset;
+      for (const Operand& op : ops) {
+        if (op.kind == OperandKind::File) s.label = op.name;
+        else if (op.kind == OperandKind::Access) s.asset = op.name == "W" ? ir::AssetOp::OpenWrite : ir::AssetOp::OpenRead;
+        else s.items.push_back({op.value, op.type});
+      }
+      if (s.asset == ir::AssetOp::Close && s.items.empty()) s.asset = ir::AssetOp::CloseAll;
+      if (s.asset == ir::AssetOp::Define && s.items.size() - 1 > asset::kMaxFields)
+        return fail(DiagId::OperandKind, ops[asset::kMaxFields + 1].range, ops[asset::kMaxFields + 1].text, kind_name(OperandKind::Binding),
+                    sig.code, fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
+      // Read and checked; the VM does not run ASSET statements yet (issue 7).
+      diags_.report(DiagId::Unsupported, code_range, fmt::format("({})", sig.code), "ASSET file input and output: ncc reads and checks it, but does not run it yet");
+      block_.has_errors = true;
       break;
     }
     case Action::Unsupported: return;

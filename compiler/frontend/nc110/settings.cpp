@@ -16,7 +16,10 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       {"pair", OperandKind::Pair},           {"angle", OperandKind::Angle},     {"factor", OperandKind::Factor},
       {"count", OperandKind::Count},         {"program", OperandKind::Program}, {"label", OperandKind::Label},
       {"comparand", OperandKind::Comparand}, {"item", OperandKind::Item},       {"seconds", OperandKind::Seconds},
-      {"zone", OperandKind::Zone},           {"turning", OperandKind::Turning}, {"condition", OperandKind::Condition}};
+      {"zone", OperandKind::Zone},           {"turning", OperandKind::Turning}, {"condition", OperandKind::Condition},
+      {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
+      {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
+      {"binding", OperandKind::Binding}};
   bool group = false;
   size_t i = 0;
   while (i < text.size()) {
@@ -60,6 +63,15 @@ void read_codes(Settings& s, Diagnostics& diags) {
       code.comparison = std::string(action.substr(9, action.size() - 10));
       ok = ok && std::string_view("gt lt eq ne ge le").find(code.comparison) != std::string_view::npos &&
            code.comparison.size() == 2;
+    } else if (action.starts_with("@asset(") && action.ends_with(")")) {
+      static const std::map<std::string_view, ir::AssetOp> kOps = {
+          {"open", ir::AssetOp::OpenRead}, {"define", ir::AssetOp::Define}, {"read", ir::AssetOp::Read},
+          {"write", ir::AssetOp::Write},   {"close", ir::AssetOp::Close},   {"create", ir::AssetOp::Create},
+          {"delete", ir::AssetOp::Delete}};
+      auto it = kOps.find(action.substr(7, action.size() - 8));
+      ok = ok && it != kOps.end();
+      code.action = Action::Asset;
+      if (it != kOps.end()) code.asset = it->second;
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {
           {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat}, {"@call", Action::Call},

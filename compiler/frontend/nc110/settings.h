@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ir/ir.h"
 #include "runtime/program_semantics.h"
 #include "runtime/system_vars.h"
 #include "stdlib/profile.h"
@@ -17,7 +18,8 @@ namespace ncc::nc110 {
 
 // What an operand of a three-letter code is (three_letter_codes.tsv).
 enum class OperandKind : uint8_t {
-  Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition
+  Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition,
+  Channel, Structure, Record, Records, File, Access, Binding  // ASSET (chapter 5)
 };
 
 struct OperandItem {
@@ -28,7 +30,7 @@ struct OperandItem {
 
 // What a three-letter code does: call a runtime function with its operands, or a
 // statement of the program's flow.
-enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Unsupported };
+enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Unsupported };
 
 struct CodeSignature {
   std::string code;
@@ -36,6 +38,7 @@ struct CodeSignature {
   Action action = Action::Function;
   Fn fn = Fn::Count;        // Function
   std::string comparison;   // JumpIf: gt lt eq ne ge le
+  ir::AssetOp asset = ir::AssetOp::OpenRead;  // Asset
   std::string meaning;
 };
 

@@ -1,7 +1,7 @@
 ; The three-letter codes of the parts of the manual ncc does not implement yet: tool life (TOF,
 ; §2.13.10), tool correctors (RQU RQP, §2.13.8), probe settings (DPT, §2.13.9), graphics (UCG CLG
-; DCG, §2.13.7), virtual axes (UAV, §2.17), processes (EXE REL WAI SND, §4.1), ASSET files (OPN DER
-; RED WRT CRE CAN CLO, §5.3) and the operator screen (INP §5.5, SCR DEF OUT §5.6).
+; DCG, §2.13.7), virtual axes (UAV, §2.17), processes (EXE REL WAI SND, §4.1) and the operator
+; screen (INP §5.5, SCR DEF OUT §5.6). (ASSET files: asset-operands.)
 ; docs/dialects/nc110.md: they parse and are reported as not supported yet (NC3034 at the code, with
 ; the meaning of three_letter_codes.tsv); their operands are not read. First each code alone, then
 ; each as the manual writes it (seed lines in the comments), with leading fields where it has them.
@@ -20,13 +20,6 @@ M30
 (REL)
 (WAI)
 (SND)
-(OPN)
-(DER)
-(RED)
-(WRT)
-(CRE)
-(CAN)
-(CLO)
 (INP)
 (SCR)
 (DEF)
@@ -53,20 +46,6 @@ N9  (DCG)
 (WAI,3)
 ; seed line 11716 without its final full stop
 N25#(SND,2)
-; seed line 12408
-(OPN, 1, FILQ/MP3, W)
-; seed line 12486
-(DER, 2, E10, SYVAR.10CH, E40,SYVAR10.3CH,E41)
-; seed line 12497
-(RED, 1, 2, 10)
-; seed line 12602
-(WRT, 1, 2, 3)
-; seed line 12660
-(CRE, 2, PUNTXZ, 20)
-; seed line 12713
-(CAN, PUNTXZ/MP3)
-; seed line 12605
-(CLO, 1)
 ; seed line 12816 (Cyrillic Е40 written as Latin E40)
 (INP, "FEED = ", E40)
 ; seed line 12855
