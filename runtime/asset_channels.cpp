@@ -69,7 +69,8 @@ Code Channels::record_of(const Open& open, std::optional<uint32_t> record, uint3
   return Code::Ok;
 }
 
-Code Channels::read(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, std::vector<Value>& out) {
+Code Channels::read(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, std::vector<Value>& out,
+                    uint32_t* at) {
   Open* o = nullptr;
   if (Code c = channel_file(channel, o); c != Code::Ok) return c;
   auto s = structures_.find(structure);
@@ -77,6 +78,7 @@ Code Channels::read(uint32_t channel, uint32_t structure, std::optional<uint32_t
   if (s->second != o->file.layout) return Code::Format;
   uint32_t r = 0;
   if (Code c = record_of(*o, record, r); c != Code::Ok) return c;
+  if (at) *at = r;
   out.clear();
   for (size_t i = 0; i < o->file.layout.size(); ++i)
     out.push_back(o->file.layout[i].type == FieldType::Chars ? Value{0, std::string(chars(o->file, r, i))}
@@ -85,7 +87,8 @@ Code Channels::read(uint32_t channel, uint32_t structure, std::optional<uint32_t
   return Code::Ok;
 }
 
-Code Channels::write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, const std::vector<Value>& values) {
+Code Channels::write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, const std::vector<Value>& values,
+                     uint32_t* at) {
   Open* o = nullptr;
   if (Code c = channel_file(channel, o); c != Code::Ok) return c;
   auto s = structures_.find(structure);
@@ -94,6 +97,7 @@ Code Channels::write(uint32_t channel, uint32_t structure, std::optional<uint32_
   if (s->second != o->file.layout || values.size() != s->second.size()) return Code::Format;
   uint32_t r = 0;
   if (Code c = record_of(*o, record, r); c != Code::Ok) return c;
+  if (at) *at = r;
   File changed = o->file;
   for (size_t i = 0; i < values.size(); ++i) {
     const bool ok = changed.layout[i].type == FieldType::Chars ? set_chars(changed, r, i, values[i].chars)

@@ -55,8 +55,11 @@ class Channels {
   // DER: false when `structure` is not 1..structures or the layout is not one.
   bool define(uint32_t structure, const Layout& layout);
   Code open(uint32_t channel, const FileName& name, bool write);                                 // OPN
-  Code read(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, std::vector<Value>& out);  // RED
-  Code write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, const std::vector<Value>& values);  // WRT
+  // RED and WRT; `at`, when given, takes the record they went to.
+  Code read(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, std::vector<Value>& out,
+            uint32_t* at = nullptr);
+  Code write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, const std::vector<Value>& values,
+             uint32_t* at = nullptr);
   Code close(uint32_t channel);  // CLO n
   Code close_all();              // CLO
   Code create(uint32_t structure, const FileName& name, uint32_t records);  // CRE

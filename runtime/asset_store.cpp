@@ -263,7 +263,8 @@ Code Store::load(const FileName& name, File& f) const {
   if (!parse_file_name(name.text(), name.device)) return Code::NotFound;
   Fd dev{device(name.device)};
   if (dev.fd < 0) return Code::BadDevice;
-  Fd file{::openat(dev.fd, (name.name + std::string(kSuffix)).c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC)};
+  // O_NONBLOCK: a FIFO in the sandbox must not hang the run (it is refused below).
+  Fd file{::openat(dev.fd, (name.name + std::string(kSuffix)).c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC)};
   if (file.fd < 0) return errno == ENOENT ? Code::NotFound : errno == ELOOP ? Code::Logical : Code::Hardware;
   struct stat st;
   if (::fstat(file.fd, &st) != 0) return Code::Hardware;

@@ -1045,6 +1045,16 @@ void Machine::block_start(uint32_t source) {
   out(e);
 }
 
+bool Machine::asset_done(const std::string& what, int code, uint32_t source) {
+  Event e{EventKind::Asset};
+  e.text = what;
+  e.n = code;
+  e.source = source;
+  out(e);
+  system_[SysRef{SysVar::AssetStatus, 0}.packed()] = code;
+  return code == 0 || system({SysVar::AssetErrorMode, 0}) == 1;
+}
+
 void Machine::message(const std::string& text, uint32_t source) {
   Event e{EventKind::Message};
   e.text = text;

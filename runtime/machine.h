@@ -86,6 +86,9 @@ class Machine {
   void block_start(uint32_t source);
   // A message the program shows the operator (NC-110 DIS).
   void message(const std::string& text, uint32_t source);
+  // An ASSET statement ran (NC-110 §5.3): the trace shows it; IOSTA takes its code
+  // (§5.4). True when the run goes on: it worked, or ERR=1.
+  bool asset_done(const std::string& what, int code, uint32_t source);
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
 
   // The block-skip switch: '/' blocks are skipped while it is on.

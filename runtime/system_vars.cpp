@@ -39,7 +39,9 @@ std::optional<std::string_view> sys_value_error(SysRef ref, double value) {
     case SysVar::Timer:
       if (ref.index == 0) return "it is the clock, read-only";
       break;
+    case SysVar::AssetStatus: return "it is read-only";
     case SysVar::BlockEnable:
+    case SysVar::AssetErrorMode:
     case SysVar::OptionalStop:
     case SysVar::FeedOverride:
     case SysVar::RapidRun:

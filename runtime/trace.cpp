@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "asset_store.h"
 #include "support/diagnostics.h"
 #include "support/text.h"
 
@@ -47,9 +48,15 @@ std::string event_name(EventKind kind) {
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
       "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::CompLoad) + 1, "one name per event kind");
+      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::Asset) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
+}
+
+// "read 1 record 3", and what went wrong: "error 11 (record not found)".
+std::string asset_text(const Event& e) {
+  if (e.n == 0) return e.text;
+  return fmt::format("{} error {} ({})", e.text, e.n, asset::meaning(static_cast<asset::Code>(e.n)));
 }
 
 std::string spindle_range(int n) { return n == 0 ? "none" : n < 0 ? "auto" : std::to_string(n); }
@@ -210,6 +217,7 @@ class TextSink final : public BufferedSink {
       case EventKind::Block: return "block";
       case EventKind::CompLoad:
         return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
+      case EventKind::Asset: return "asset " + asset_text(e);
     }
     return "?";
   }
@@ -346,6 +354,9 @@ class JsonlSink final : public BufferedSink {
       case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
       case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
       case EventKind::Block: break;
+      case EventKind::Asset:
+        s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n);
+        break;
       case EventKind::CompLoad:
         s += fmt::format(R"(,"n":{})", e.n);
         num("length", e.a);
@@ -450,6 +461,7 @@ class CanonSink final : public BufferedSink {
         break;
       case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
+      case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", asset_text(e))); break;
       case EventKind::CompLoad:
         line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
         break;

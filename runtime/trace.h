@@ -65,6 +65,8 @@ enum class EventKind : uint8_t {
   Aux,               // text: the auxiliary function the machine's logic carries out ("M23", "H5")
   Block,             // a block starts (--trace-blocks)
   CompLoad,          // n: the compensation entry loaded; a: its length; b: its radius
+  // NC-110 ASSET file I/O.
+  Asset,             // text: the statement ("read 1 record 3"); n: its code of table 5.2, 0 when it worked
 };
 
 inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }

@@ -103,7 +103,8 @@ std::string disassemble(const Module& m) {
         }
       }
     }
-    out += fmt::format("{:5}  {:<10}{}\n", pc, info.name, operands);
+    // A name of ten letters or more keeps a blank before its operands.
+    out += fmt::format("{:5}  {:<10}{}{}\n", pc, info.name, info.name.size() >= 10 && !operands.empty() ? " " : "", operands);
     pc = at;
   }
   return out;

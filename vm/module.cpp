@@ -587,7 +587,8 @@ std::string verify(const Module& m) {
     size_t at = pc + 1;
     uint8_t space = 0;
     // Numbered variables go through Load/Store, memories through the others.
-    const bool wants_memory = op != Op::Load && op != Op::LoadX && op != Op::Store && op != Op::StoreX && op != Op::Arg;
+    const bool wants_memory =
+        op != Op::Load && op != Op::LoadX && op != Op::Store && op != Op::StoreX && op != Op::Arg && op != Op::AssetBind;
     for (size_t i = 0; i < info.format.size(); ++i) {
       const char f = info.format[i];
       uint32_t v = read_operand(&code[at], operand_size(f));

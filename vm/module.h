@@ -17,7 +17,7 @@
 
 namespace ncc::vm {
 
-constexpr uint16_t kFormatVersion = 9;
+constexpr uint16_t kFormatVersion = 10;
 constexpr uint32_t kMaxStack = 256;
 constexpr uint64_t kMaxVariables = 1u << 24;  // all spaces together
 

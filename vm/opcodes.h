@@ -18,6 +18,10 @@
 // block, EXEC hands it to the motion runtime and clears it. An operator message is
 // built up by SHOW* and shown by MESSAGE.
 //
+// ASSET files (NC-110 chapter 5, docs/asset.md): a record structure is built up by
+// ASSETBIND* and defined by ASSETDEFINE; the I/O instructions (open, read, write,
+// close, create, delete) set IOSTA and stop the run on an error while ERR is 0.
+//
 // Frames: CALLENTRY calls an entry point (again, while its count lasts), RETURN comes
 // back; the local variables start afresh in every call (ARGs before it give some of
 // them values), except in a CALLSHARED call (Macro B M98). CALLRANGE runs the code
@@ -93,7 +97,21 @@ namespace ncc::vm {
   X(ZeroIfVacant, "", 1, 1, "a vacant top (an unset Macro B variable) reads as 0")            \
   X(Arg, "vi", 1, 0, "pop a value into local variable v[i] of the next CALLENTRY's frame")     \
   X(CallShared, "e", 1, 0, "pop a count 1..9999; call entry point e that many times, keeping the caller's locals") \
-  X(NoBlock, "", 1, 0, "pop a block number: fail, the unit has no block of that number (a computed GOTO)")
+  X(NoBlock, "", 1, 0, "pop a block number: fail, the unit has no block of that number (a computed GOTO)") \
+  X(AssetBind, "vi", 0, 0, "add variable v[i] to the record structure being defined (NC-110 DER)")  \
+  X(AssetBindMem, "vf", 1, 0, "pop an index; add memory v's value of format f there to the structure") \
+  X(AssetBindText, "vn", 1, 0, "pop a byte index; add memory v's n bytes from there to the structure") \
+  X(AssetDefine, "", 1, 0, "pop a structure number: the variables added are its fields, in order") \
+  X(AssetOpen, "s", 1, 0, "pop a channel; open file strings[s] on it to read")               \
+  X(AssetOpenWrite, "s", 1, 0, "pop a channel; open file strings[s] on it to read and write")  \
+  X(AssetRead, "", 2, 0, "pop a structure, then a channel; read the next record into its variables") \
+  X(AssetReadAt, "", 3, 0, "pop a record, a structure, a channel; read that record into its variables") \
+  X(AssetWrite, "", 2, 0, "pop a structure, then a channel; write its variables into the next record") \
+  X(AssetWriteAt, "", 3, 0, "pop a record, a structure, a channel; write its variables into that record") \
+  X(AssetClose, "", 1, 0, "pop a channel; close it")                                          \
+  X(AssetCloseAll, "", 0, 0, "close every channel")                                            \
+  X(AssetCreate, "s", 2, 0, "pop a record count, then a structure; create file strings[s] of its layout") \
+  X(AssetDelete, "s", 0, 0, "delete file strings[s]")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,

@@ -463,6 +463,22 @@ RunStatus Vm::run(uint32_t entry) {
         if (std::isnan(st.back())) st.back() = 0;
         break;
       case Op::NoBlock: return fail(pc, DiagId::JumpTargetMissing, shortest(pop()));
+      case Op::AssetBind:
+      case Op::AssetBindMem:
+      case Op::AssetBindText:
+      case Op::AssetDefine:
+      case Op::AssetOpen:
+      case Op::AssetOpenWrite:
+      case Op::AssetRead:
+      case Op::AssetReadAt:
+      case Op::AssetWrite:
+      case Op::AssetWriteAt:
+      case Op::AssetClose:
+      case Op::AssetCloseAll:
+      case Op::AssetCreate:
+      case Op::AssetDelete:
+        if (!asset(op, operands, pc)) return RunStatus::Error;
+        break;
       case Op::CallRange:
         for (const Frame& f : p.frames)
           if (f.range) return fail(pc, DiagId::RangeNested);
@@ -572,6 +588,173 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::Count: return fail(pc, DiagId::BytecodeInvalid, "program", "an unknown opcode");
     }
   }
+}
+
+
+// ---- ASSET files (NC-110 chapter 5) ----------------------------------------------------
+
+namespace {
+
+// A channel, structure or record operand: a whole number in range, else 0, which
+// no channel, structure or record is (so the statement answers with its code).
+uint32_t whole_operand(double v, double hi) { return v >= 1 && v <= hi && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0; }
+
+}  // namespace
+
+bool Vm::asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc) {
+  out.clear();
+  for (const AssetField& f : fields) {
+    asset::Value v;
+    bool ok = true;
+    if (!f.memory) {
+      v.number = load(f.space, f.index, pc, ok);
+    } else if (f.chars) {
+      const uint8_t* b = bytes(f.space, f.index, f.chars, pc);
+      if (!b) return false;
+      v.chars.assign(reinterpret_cast<const char*>(b), f.chars);
+    } else {
+      ok = load_mem(f.space, f.format, f.index, pc, v.number);
+    }
+    if (!ok) return false;
+    out.push_back(std::move(v));
+  }
+  return true;
+}
+
+bool Vm::asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values, uint32_t pc) {
+  for (size_t i = 0; i < fields.size() && i < values.size(); ++i) {
+    const AssetField& f = fields[i];
+    if (!f.memory) {
+      if (!store(f.space, f.index, values[i].number, pc)) return false;
+    } else if (f.chars) {
+      uint8_t* b = bytes(f.space, f.index, f.chars, pc);
+      if (!b) return false;
+      std::memcpy(b, values[i].chars.data(), std::min<size_t>(f.chars, values[i].chars.size()));
+    } else if (!store_mem(f.space, f.format, f.index, values[i].number, pc)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
+  std::vector<double>& st = process_.stack;
+  auto pop = [&] {
+    double v = st.back();
+    st.pop_back();
+    return v;
+  };
+  auto stop = [&](DiagId id, const auto&... args) {  // a run-time error: the run stops
+    fail(pc, id, args...);
+    return false;
+  };
+  auto file = [&] { return asset::parse_file_name(m_.strings[read_operand(operands, 4)], 1); };
+  // Building a structure (DER): its fields, in order.
+  if (op == Op::AssetBind || op == Op::AssetBindMem || op == Op::AssetBindText) {
+    AssetField f{operands[0], op != Op::AssetBind, MemFormat::Byte, 0, 0};
+    if (op == Op::AssetBind) f.index = read_operand(operands + 1, 4);
+    if (op == Op::AssetBindMem) f.format = static_cast<MemFormat>(operands[1]);
+    if (op == Op::AssetBindText) f.chars = operands[1];
+    if (f.memory) {
+      const double index = pop();
+      if (!(index >= 0 && index < m_.spaces[f.space].size) || index != std::trunc(index))
+        return stop(DiagId::MemoryRange, m_.spaces[f.space].name, shortest(index), f.chars ? f.chars : 1, m_.spaces[f.space].size);
+      f.index = static_cast<uint32_t>(index);
+    }
+    fields_.push_back(f);
+    return true;
+  }
+  if (op == Op::AssetDefine) {
+    const double number = pop();
+    std::vector<AssetField> fields = std::exchange(fields_, {});
+    asset::Layout layout;
+    for (const AssetField& f : fields) {
+      static constexpr asset::Field kNumbers[] = {{asset::FieldType::Integer, 2}, {asset::FieldType::Real, 4},
+                                                  {asset::FieldType::LongReal, 8}};
+      const VarType t = f.memory ? VarType::Count : type_at(f.space, f.index);
+      if (f.memory && f.chars) layout.push_back({asset::FieldType::Chars, f.chars});
+      else if ((f.memory && f.format == MemFormat::Integer) || t == VarType::Integer) layout.push_back(kNumbers[0]);
+      else if ((f.memory && f.format == MemFormat::Real) || t == VarType::Real) layout.push_back(kNumbers[1]);
+      else if ((f.memory && f.format == MemFormat::LongReal) || t == VarType::LongReal) layout.push_back(kNumbers[2]);
+      else return stop(DiagId::AssetStructure, shortest(number), "a variable has no ASSET format (IN, RE, LR, kCH)");
+    }
+    if (!options_.asset) return true;  // a dry run
+    const uint32_t s = whole_operand(number, options_.asset->settings().structures);
+    if (!options_.asset->define(s, layout))
+      return stop(DiagId::AssetStructure, shortest(number),
+                  fmt::format("structures are 1..{} and hold 1..{} fields", options_.asset->settings().structures, asset::kMaxFields));
+    structures_[s] = std::move(fields);
+    return true;
+  }
+  // The I/O statements: their operands, what they did, and the code (§5.4).
+  double record = 0, second = 0, first = 0;
+  if (op == Op::AssetReadAt || op == Op::AssetWriteAt) record = pop();
+  if (op == Op::AssetRead || op == Op::AssetReadAt || op == Op::AssetWrite || op == Op::AssetWriteAt || op == Op::AssetCreate)
+    second = pop();
+  if (op != Op::AssetCloseAll && op != Op::AssetDelete) first = pop();
+  if (!options_.asset) return true;  // a dry run: files are the machine's, not the program's
+  asset::Channels& io = *options_.asset;
+  std::string what;
+  asset::Code code = asset::Code::Ok;
+  switch (op) {
+    case Op::AssetOpen:
+    case Op::AssetOpenWrite: {
+      const bool write = op == Op::AssetOpenWrite;
+      auto name = file();
+      what = fmt::format("open {} {} {}", shortest(first), m_.strings[read_operand(operands, 4)], write ? "W" : "R");
+      code = name ? io.open(whole_operand(first, 255), *name, write) : asset::Code::NotFound;
+      break;
+    }
+    case Op::AssetRead:
+    case Op::AssetReadAt:
+    case Op::AssetWrite:
+    case Op::AssetWriteAt: {
+      const bool reading = op == Op::AssetRead || op == Op::AssetReadAt;
+      const bool given = op == Op::AssetReadAt || op == Op::AssetWriteAt;
+      const uint32_t s = whole_operand(second, 255);
+      std::optional<uint32_t> r;
+      if (given) r = whole_operand(record, asset::kMaxRecords);
+      uint32_t at = 0;
+      std::vector<asset::Value> values;
+      auto fields = structures_.find(s);
+      if (reading) {
+        code = io.read(whole_operand(first, 255), s, r, values, &at);
+        if (code == asset::Code::Ok && fields != structures_.end() && !asset_store(fields->second, values, pc))
+          return false;
+      } else {
+        if (fields != structures_.end() && !asset_values(fields->second, values, pc)) return false;
+        code = io.write(whole_operand(first, 255), s, r, values, &at);
+      }
+      what = fmt::format("{} {} structure {} record {}", reading ? "read" : "write", shortest(first), shortest(second),
+                         at ? std::to_string(at) : given ? shortest(record) : std::string("next"));
+      break;
+    }
+    case Op::AssetClose:
+      what = fmt::format("close {}", shortest(first));
+      code = io.close(whole_operand(first, 255));
+      break;
+    case Op::AssetCloseAll:
+      what = "close all";
+      code = io.close_all();
+      break;
+    case Op::AssetCreate: {
+      auto name = file();
+      what = fmt::format("create {} structure {} records {}", m_.strings[read_operand(operands, 4)], shortest(first), shortest(second));
+      code = name ? io.create(whole_operand(first, 255), *name, whole_operand(second, asset::kMaxRecords)) : asset::Code::Illegal;
+      break;
+    }
+    case Op::AssetDelete: {
+      auto name = file();
+      what = fmt::format("delete {}", m_.strings[read_operand(operands, 4)]);
+      code = name ? io.remove(*name) : asset::Code::NotFound;
+      break;
+    }
+    default: break;
+  }
+  if (!machine_.asset_done(what, static_cast<int>(code), m_.source_of(pc)))
+    return stop(DiagId::AssetError, what, static_cast<int>(code),
+                code == asset::Code::NotConfigured ? "ASSET area not configured (ncc run --files DIR gives one)" : asset::meaning(code));
+  return true;
 }
 
 }  // namespace ncc::vm

@@ -3,10 +3,13 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <vector>
 
 #include "module.h"
+#include "opcodes.h"
+#include "runtime/asset_channels.h"
 #include "runtime/machine.h"
 
 namespace ncc::vm {
@@ -14,6 +17,7 @@ namespace ncc::vm {
 struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
   bool trace_blocks = false;  // a `block` event as each block starts
+  asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect
 };
 
 enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error };
@@ -68,6 +72,19 @@ class Vm {
   uint8_t* bytes(uint8_t space, double index, uint32_t count, uint32_t pc);
   bool load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out);
   bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
+  // ASSET (NC-110 chapter 5): one instruction of it; the structures' variables.
+  bool asset(Op op, const uint8_t* operands, uint32_t pc);  // false: the run stops (reported)
+  struct AssetField {
+    uint8_t space;
+    bool memory;
+    MemFormat format;  // memory
+    uint8_t chars;     // memory: a text of this many bytes (0: a value of `format`)
+    uint32_t index;    // variable index, or memory index (bytes for a text)
+  };
+  bool asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc);
+  bool asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values, uint32_t pc);
+  std::vector<AssetField> fields_;  // of the structure being defined
+  std::map<uint32_t, std::vector<AssetField>> structures_;
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.
   void jump_to(uint32_t target);

@@ -342,10 +342,11 @@ class Files {
     if (names.empty())
       for (uint8_t d = 0; d < asset::kDevices; ++d)
         for (const FileName& n : store_->list(d)) which.push_back(n);
+    // Every file it can read; each it cannot, reported (exit 1).
     for (const FileName& n : which) {
       File f;
-      if (Code c = store_->load(n, f); c != Code::Ok) return failed(n, c);
-      std::fputs(file_text(n, f).c_str(), stdout);
+      if (Code c = store_->load(n, f); c != Code::Ok) report(n, c);
+      else std::fputs(file_text(n, f).c_str(), stdout);
     }
     return finish(kOk);
   }

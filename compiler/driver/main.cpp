@@ -58,6 +58,7 @@ constexpr Command kCommands[] = {
   --block-skip              the block-skip switch is on: '/' parts are skipped
   --optional-stop           the optional-stop switch is on: M01 stops
   --start-block N           start at main block ':N' (GOST 20999 §2.6)
+  --files DIR               the ASSET sandbox of NC-110 file I/O (docs/asset.md; 'ncc files init DIR')
 )"},
     {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
     {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
@@ -157,6 +158,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       o.run.block_skip = true;
     } else if (a == "--optional-stop" && allowed("--optional-stop")) {
       o.run.optional_stop = true;
+    } else if (a == "--files" && allowed("--files DIR")) {
+      if (!value(o.run.files)) return "--files needs a directory";
     } else if (a == "--start-block" && allowed("--start-block")) {
       if (!number(n) || n > UINT32_MAX) return "--start-block needs a block number";
       o.run.start_block = static_cast<uint32_t>(n);

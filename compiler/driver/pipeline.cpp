@@ -105,6 +105,23 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   vm::VmOptions options;
   options.max_steps = settings.max_steps.value_or(m.source_map.size() + kDefaultExtraSteps);
   options.trace_blocks = settings.trace_blocks;
+  // ASSET files (NC-110 chapter 5) in the sandbox of --files; a dry run leaves them
+  // alone: they are the machine's, not the program's.
+  std::unique_ptr<asset::Store> store;
+  asset::OpenFiles open_files;
+  std::optional<asset::Channels> channels;
+  if (!dry) {
+    if (!settings.files.empty()) {
+      std::string why;
+      store = asset::Store::open(settings.files, {}, why);
+      if (!store) {
+        s.diags.report(DiagId::FileUnreadable, {}, settings.files, why);
+        return {false, true, 0};
+      }
+    }
+    channels.emplace(store.get(), open_files, asset::Channels::Settings{});
+    options.asset = &*channels;
+  }
   vm::Vm vm(m, machine, reporter, options);
   machine.power_on();
 
@@ -223,7 +240,7 @@ class Stream final : public BlockSink {
       if (w.code == ir::kDynamicCode) return false;
     for (const ir::Stmt& s : b.stmts)
       if (s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Assign && s.kind != ir::StmtKind::Comment &&
-          s.kind != ir::StmtKind::Display)
+          s.kind != ir::StmtKind::Display && s.kind != ir::StmtKind::Asset)
         return false;
     return true;
   }

@@ -35,6 +35,7 @@ struct RunSettings {
   bool optional_stop = false;
   bool trace_blocks = false;
   std::optional<uint32_t> start_block;  // a main block ':N' to start at
+  std::string files;  // the ASSET sandbox ("": none, every ASSET statement answers code 18)
 };
 
 enum class FileKind { Source, Bytecode };

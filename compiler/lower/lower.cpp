@@ -292,6 +292,58 @@ class Lowering {
     op(Op::Exec);
   }
 
+  // docs/asset.md; the operands in order, then the instruction (vm/opcodes.h).
+  void asset(const ir::Stmt& s) {
+    auto operands = [&](size_t from, size_t to) {
+      for (size_t i = from; i < to && i < s.items.size(); ++i) expr(s.items[i].value);
+    };
+    auto with_file = [&](Op o) {
+      op(o);
+      u32(string(s.label));
+    };
+    switch (s.asset) {
+      case ir::AssetOp::Define:
+        for (size_t i = 1; i < s.items.size(); ++i) {
+          const ir::Expr& v = p_->exprs[s.items[i].value];
+          if (v.op == ir::ExprOp::Var) {  // an E parameter: its index is written (the front end)
+            op(Op::AssetBind);
+            u8(v.space);
+            u32(static_cast<uint32_t>(p_->exprs[v.a].number));
+            continue;
+          }
+          expr(v.a);
+          op(v.op == ir::ExprOp::Text ? Op::AssetBindText : Op::AssetBindMem);
+          u8(v.space);
+          u8(v.op == ir::ExprOp::Text ? v.count : static_cast<uint32_t>(v.format));
+        }
+        operands(0, 1);
+        op(Op::AssetDefine);
+        break;
+      case ir::AssetOp::OpenRead:
+      case ir::AssetOp::OpenWrite:
+        operands(0, 1);
+        with_file(s.asset == ir::AssetOp::OpenWrite ? Op::AssetOpenWrite : Op::AssetOpen);
+        break;
+      case ir::AssetOp::Read:
+      case ir::AssetOp::Write: {
+        const bool at = s.items.size() > 2;
+        operands(0, 3);
+        op(s.asset == ir::AssetOp::Read ? (at ? Op::AssetReadAt : Op::AssetRead) : (at ? Op::AssetWriteAt : Op::AssetWrite));
+        break;
+      }
+      case ir::AssetOp::Close:
+        operands(0, 1);
+        op(Op::AssetClose);
+        break;
+      case ir::AssetOp::CloseAll: op(Op::AssetCloseAll); break;
+      case ir::AssetOp::Create:
+        operands(0, 2);
+        with_file(Op::AssetCreate);
+        break;
+      case ir::AssetOp::Delete: with_file(Op::AssetDelete); break;
+    }
+  }
+
   void assign(const ir::Stmt& s) {
     const ir::Expr& target = p_->exprs[s.target];
     switch (target.op) {
@@ -457,7 +509,7 @@ class Lowering {
         case ir::StmtKind::Machine: machine(b); break;
         case ir::StmtKind::Assign: assign(s); break;
         case ir::StmtKind::Display: display(s); break;
-        case ir::StmtKind::Asset: break;  // the front end has reported that it does not run yet
+        case ir::StmtKind::Asset: asset(s); break;
         case ir::StmtKind::Jump: {
           if (s.label.empty()) {
             computed_jump(unit, s, st.jumps);

@@ -5,8 +5,9 @@
 # text is stdout, then "--- stderr" and stderr if there is any, then "--- exit N".
 # UPDATE=1 rewrites the file instead (review every changed line before committing).
 # A command that names @FILES@ gets a fresh ASSET sandbox in WORK (docs/asset.md):
-# filled from CASE's stem + ".files.txt" (text, `ncc files load`) and ".files/" (files
-# copied as they are) when they exist, and printed after the run ("--- files").
+# a copy of CASE's stem + ".files/" if there is one (the devices as they are in it),
+# else one with every device (`ncc files init`); then filled from ".files.txt" (text,
+# `ncc files load`) if there is one; printed after the run ("--- files").
 file(STRINGS "${CASE}" lines LIMIT_COUNT 1)
 list(GET lines 0 command_line)
 if(NOT command_line MATCHES "^\\$ ncc (.*)$")
@@ -23,18 +24,19 @@ if(command_line MATCHES "@FILES@")
   set(sandbox "${WORK}/${name}.sandbox")
   file(REMOVE_RECURSE "${sandbox}")
   file(MAKE_DIRECTORY "${WORK}")
-  execute_process(COMMAND "${NCC}" files init "${sandbox}" RESULT_VARIABLE init_rc)
-  if(NOT init_rc EQUAL 0)
-    message(FATAL_ERROR "${CASE}: ncc files init ${sandbox} failed")
+  if(IS_DIRECTORY "${stem}.files")
+    file(COPY "${stem}.files/" DESTINATION "${sandbox}")
+  else()
+    execute_process(COMMAND "${NCC}" files init "${sandbox}" RESULT_VARIABLE init_rc)
+    if(NOT init_rc EQUAL 0)
+      message(FATAL_ERROR "${CASE}: ncc files init ${sandbox} failed")
+    endif()
   endif()
   if(EXISTS "${stem}.files.txt")
     execute_process(COMMAND "${NCC}" files load "${sandbox}" "${stem}.files.txt" RESULT_VARIABLE load_rc)
     if(NOT load_rc EQUAL 0)
       message(FATAL_ERROR "${CASE}: ncc files load of ${stem}.files.txt failed")
     endif()
-  endif()
-  if(IS_DIRECTORY "${stem}.files")
-    file(COPY "${stem}.files/" DESTINATION "${sandbox}")
   endif()
   list(TRANSFORM args REPLACE "@FILES@" "${sandbox}")
 endif()

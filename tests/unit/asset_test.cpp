@@ -180,6 +180,8 @@ TEST(AssetStore, DevicesAndNamesStayInTheSandbox) {
   EXPECT_EQ(store->replace(name("LINK/MP1"), f), Code::Logical);
   EXPECT_EQ(store->remove(name("LINK/MP1")), Code::Logical);
   EXPECT_EQ(store->load(name("DIR/MP1"), got), Code::Logical);
+  ASSERT_EQ(::mkfifo((box.dir() / "MP1" / "PIPE.nca").c_str(), 0644), 0);
+  EXPECT_EQ(store->load(name("PIPE/MP1"), got), Code::Logical);  // and it does not hang
   EXPECT_TRUE(fs::is_symlink(box.dir() / "MP1" / "LINK.nca"));
   // A damaged file reads as one.
   std::FILE* out = std::fopen((box.dir() / "MP1" / "BAD.nca").c_str(), "wb");

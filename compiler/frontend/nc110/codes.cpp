@@ -668,9 +668,6 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       if (s.asset == ir::AssetOp::Define && s.items.size() - 1 > asset::kMaxFields)
         return fail(DiagId::OperandKind, ops[asset::kMaxFields + 1].range, ops[asset::kMaxFields + 1].text, kind_name(OperandKind::Binding),
                     sig.code, fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
-      // Read and checked; the VM does not run ASSET statements yet (issue 7).
-      diags_.report(DiagId::Unsupported, code_range, fmt::format("({})", sig.code), "ASSET file input and output: ncc reads and checks it, but does not run it yet");
-      block_.has_errors = true;
       break;
     }
     case Action::Unsupported: return;

@@ -1,6 +1,6 @@
 ; ASSET statements as the manual writes them (chapter 5, seed lines in the comments; Cyrillic
 ; letters of the seed written in Latin) and their other forms: each is read and checked into an
-; `asset` statement of the IR. The VM does not run them yet: each is reported (NC3034).
+; `asset` statement of the IR (decision 58); asset-run and asset-codes run them.
 ; seed line 12408: FILQ on MP3, channel 1, read and write
 N1 (OPN, 1, FILQ/MP3, W)
 ; seed line 12486: structure 2 binds E10 (IN), SYVAR bytes 0-9, E40 (LR), SYVAR bytes 10-12, E41
