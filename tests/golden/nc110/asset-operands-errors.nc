@@ -20,6 +20,8 @@
 (OPN, 1, filq)
 (CAN, 9X)
 (CAN, A B)
+(CAN, ../X)
+(OPN, 1, /ETC)
 ; R or W.
 (OPN, 1, FILQ, X)
 ; DER binds variables of an ASSET format (IN, RE, LR, kCH: table 5.1), at most 17.
