@@ -669,13 +669,13 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
     std::vector<AssetField> fields = std::exchange(fields_, {});
     asset::Layout layout;
     for (const AssetField& f : fields) {
-      static constexpr asset::Field kNumbers[] = {{asset::FieldType::Integer, 2}, {asset::FieldType::Real, 4},
-                                                  {asset::FieldType::LongReal, 8}};
+      // A field has the variable's format (table 5.1): IN, RE, LR or kCH, nothing else.
       const VarType t = f.memory ? VarType::Count : type_at(f.space, f.index);
-      if (f.memory && f.chars) layout.push_back({asset::FieldType::Chars, f.chars});
-      else if ((f.memory && f.format == MemFormat::Integer) || t == VarType::Integer) layout.push_back(kNumbers[0]);
-      else if ((f.memory && f.format == MemFormat::Real) || t == VarType::Real) layout.push_back(kNumbers[1]);
-      else if ((f.memory && f.format == MemFormat::LongReal) || t == VarType::LongReal) layout.push_back(kNumbers[2]);
+      const bool in = f.memory ? f.format == MemFormat::Integer : t == VarType::Integer;
+      const bool re = f.memory ? f.format == MemFormat::Real : t == VarType::Real;
+      const bool lr = f.memory ? f.format == MemFormat::LongReal : t == VarType::LongReal;
+      if (f.chars) layout.push_back({asset::FieldType::Chars, f.chars});
+      else if (in || re || lr) layout.push_back(*asset::parse_field(in ? "IN" : re ? "RE" : "LR"));
       else return stop(DiagId::AssetStructure, shortest(number), "a variable has no ASSET format (IN, RE, LR, kCH)");
     }
     if (!options_.asset) return true;  // a dry run
