@@ -81,6 +81,14 @@ struct ProbeConfig {
   std::vector<ProbeContact> contacts;
 };
 
+// NC-110 ASSET files (chapter 5): what the process characterisation (PGCFIL CHN, STR)
+// and the devices allow.
+struct AssetConfig {
+  uint32_t channels = 8;      // channels 1..channels
+  uint32_t structures = 16;   // record structures 1..structures
+  uint64_t device_bytes = 1 << 20;  // the files of one device together, at most
+};
+
 struct MachineConfig {
   std::string name = "default";
   std::map<int, WorkOffset> work_offsets;  // GOST G54..G59 = 1..6; NC-110 origins 0..99
@@ -96,6 +104,7 @@ struct MachineConfig {
   double tap_min_travel = 0;               // mm a floating tap needs to speed up and slow down
   std::optional<Plane> turning_plane;      // NC-110 (CTL,T): the turning configuration's plane
   ProbeConfig probe;
+  AssetConfig asset;
 
   static std::array<AxisConfig, kAxisCount> default_axes() {
     std::array<AxisConfig, kAxisCount> a{};

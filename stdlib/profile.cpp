@@ -324,6 +324,19 @@ void read_axes(const Profile& p, MachineConfig& m, Diagnostics& diags) {
   }
 }
 
+void read_asset(const Profile& p, AssetConfig& asset, Diagnostics& diags) {
+  auto whole = [&](const char* key, double lo, double hi, auto& out) {
+    const std::string name = std::string("asset.") + key;
+    if (auto v = p.number(name, diags)) {
+      if (*v >= lo && *v <= hi && *v == std::trunc(*v)) out = static_cast<std::remove_reference_t<decltype(out)>>(*v);
+      else p.report_value(diags, name, fmt::format("must be a whole number from {} to {}", lo, hi));
+    }
+  };
+  whole("channels", 1, 255, asset.channels);
+  whole("structures", 1, 255, asset.structures);
+  whole("device_bytes", 0, 1e15, asset.device_bytes);
+}
+
 void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
   ProbeConfig& probe = m.probe;
   auto positive = [&](const char* key, double& out) {
@@ -414,6 +427,7 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   }
   read_axes(p, m, diags);
   read_probe(p, m, diags);
+  read_asset(p, m.asset, diags);
   return m;
 }
 

@@ -113,13 +113,14 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   if (!dry) {
     if (!settings.files.empty()) {
       std::string why;
-      store = asset::Store::open(settings.files, {}, why);
+      store = asset::Store::open(settings.files, {.device_bytes = config.asset.device_bytes}, why);
       if (!store) {
         s.diags.report(DiagId::FileUnreadable, {}, settings.files, why);
         return {false, true, 0};
       }
     }
-    channels.emplace(store.get(), open_files, asset::Channels::Settings{});
+    channels.emplace(store.get(), open_files,
+                     asset::Channels::Settings{.channels = config.asset.channels, .structures = config.asset.structures});
     options.asset = &*channels;
   }
   vm::Vm vm(m, machine, reporter, options);
