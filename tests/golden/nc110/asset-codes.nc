@@ -1,8 +1,9 @@
 ; Every code of table 5.2 an ASSET statement can give (docs/asset.md, Statements), each provoked
 ; once. ERR=1: the code goes to IOSTA and the run goes on (§5.4); each is shown after its
-; statement. 18 (no sandbox): asset-no-sandbox; 12 (the device failed) comes from the disk, not
-; from a program. The sandbox: ORIG/MP3 (IN CH LR CH LR, 4 records), LOCKED/MP3 (protected),
-; BAD/MP3 (not an ASSET file), devices MP1 and MP3 only.
+; statement. 18 (no sandbox): asset-no-sandbox. The sandbox: ORIG/MP3 (IN CH LR CH LR, 4
+; records), LOCKED/MP3 (protected), BAD/MP3 (not an ASSET file), STUCK/MP3, whose write the
+; device cannot take (a directory stands where its temporary file would go: code 12, and the
+; file stays as it was), devices MP1 and MP3 only.
 ERR=1
 (DER, 1, E10, SYVAR.CH, E40, SYVAR1.CH, E41)
 (DER, 2, E11)
@@ -58,6 +59,9 @@ E12=0
 (DER, 4, SYVAR.32CH, SYVAR32.32CH)
 (CRE, 4, HUGE, 32767)
 (DIS, "17 ", IOSTA)
+(OPN, 2, STUCK/MP3, W)
+(WRT, 2, 1, 1)
+(DIS, "12 ", IOSTA)
 (CLO, 1)
 (DIS, "CLO ", IOSTA)
 M30
