@@ -1055,6 +1055,14 @@ bool Machine::asset_done(const std::string& what, int code, uint32_t source) {
   return code == 0 || system({SysVar::AssetErrorMode, 0}) == 1;
 }
 
+void Machine::operator_input(const std::string& shown, double answer, uint32_t source) {
+  Event e{EventKind::Input};
+  e.text = shown;
+  e.a = answer;
+  e.source = source;
+  out(e);
+}
+
 void Machine::message(const std::string& text, uint32_t source) {
   Event e{EventKind::Message};
   e.text = text;

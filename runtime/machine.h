@@ -89,6 +89,8 @@ class Machine {
   // An ASSET statement ran (NC-110 §5.3): the trace shows it; IOSTA takes its code
   // (§5.4). True when the run goes on: it worked, or ERR=1.
   bool asset_done(const std::string& what, int code, uint32_t source);
+  // The operator answered INP (NC-110 §5.5): the prompt and value offered, the answer.
+  void operator_input(const std::string& shown, double answer, uint32_t source);
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
 
   // The block-skip switch: '/' blocks are skipped while it is on.

@@ -48,8 +48,8 @@ std::string event_name(EventKind kind) {
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
       "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::Asset) + 1, "one name per event kind");
+      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::Input) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
 
@@ -218,6 +218,7 @@ class TextSink final : public BufferedSink {
       case EventKind::CompLoad:
         return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
       case EventKind::Asset: return "asset " + asset_text(e);
+      case EventKind::Input: return fmt::format("input {} {}", quoted(e.text), four_decimals(e.a));
     }
     return "?";
   }
@@ -357,6 +358,10 @@ class JsonlSink final : public BufferedSink {
       case EventKind::Asset:
         s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n);
         break;
+      case EventKind::Input:
+        s += R"(,"prompt":)" + quoted(e.text);
+        num("answer", e.a);
+        break;
       case EventKind::CompLoad:
         s += fmt::format(R"(,"n":{})", e.n);
         num("length", e.a);
@@ -462,6 +467,7 @@ class CanonSink final : public BufferedSink {
       case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
       case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", asset_text(e))); break;
+      case EventKind::Input: line(fmt::format("COMMENT(\"ncc: input {} {}\")", e.text, canon_number(e.a))); break;
       case EventKind::CompLoad:
         line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
         break;

@@ -111,7 +111,8 @@ namespace ncc::vm {
   X(AssetClose, "", 1, 0, "pop a channel; close it")                                          \
   X(AssetCloseAll, "", 0, 0, "close every channel")                                            \
   X(AssetCreate, "s", 2, 0, "pop a record count, then a structure; create file strings[s] of its layout") \
-  X(AssetDelete, "s", 0, 0, "delete file strings[s]")
+  X(AssetDelete, "s", 0, 0, "delete file strings[s]")                                          \
+  X(Input, "s", 1, 1, "pop the value offered after prompt strings[s]; push the operator's answer (NC-110 INP)")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,

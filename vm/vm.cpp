@@ -463,6 +463,19 @@ RunStatus Vm::run(uint32_t entry) {
         if (std::isnan(st.back())) st.back() = 0;
         break;
       case Op::NoBlock: return fail(pc, DiagId::JumpTargetMissing, shortest(pop()));
+      case Op::Input: {
+        // NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps
+        // the value offered. A run reads the answers of --input, in order.
+        const double offered = pop();
+        double answer = offered;
+        if (options_.input) {
+          if (answers_ >= options_.input->size()) return fail(pc, DiagId::InputExhausted, answers_);
+          answer = (*options_.input)[answers_++].value_or(offered);
+        }
+        machine_.operator_input(m_.strings[u32_at(operands)] + shortest(offered), answer, m_.source_of(pc));
+        st.push_back(answer);
+        break;
+      }
       case Op::AssetBind:
       case Op::AssetBindMem:
       case Op::AssetBindText:

@@ -18,6 +18,9 @@ struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
   bool trace_blocks = false;  // a `block` event as each block starts
   asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect
+  // The operator's answers to INP, in order (nullopt: ENTER, the offered value stays);
+  // none: a dry run, every answer is the offered value.
+  std::vector<std::optional<double>>* input = nullptr;
 };
 
 enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error };
@@ -85,6 +88,7 @@ class Vm {
   bool asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values, uint32_t pc);
   std::vector<AssetField> fields_;  // of the structure being defined
   std::map<uint32_t, std::vector<AssetField>> structures_;
+  size_t answers_ = 0;  // of options_.input, taken
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.
   void jump_to(uint32_t target);

@@ -59,6 +59,7 @@ constexpr Command kCommands[] = {
   --optional-stop           the optional-stop switch is on: M01 stops
   --start-block N           start at main block ':N' (GOST 20999 §2.6)
   --files DIR               the ASSET sandbox of NC-110 file I/O (docs/asset.md; 'ncc files init DIR')
+  --input FILE              the operator's answers to NC-110 INP, a line each: a number, or ENTER
 )"},
     {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
     {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
@@ -158,6 +159,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       o.run.block_skip = true;
     } else if (a == "--optional-stop" && allowed("--optional-stop")) {
       o.run.optional_stop = true;
+    } else if (a == "--input" && allowed("--input FILE")) {
+      if (!value(o.run.input)) return "--input needs a file";
     } else if (a == "--files" && allowed("--files DIR")) {
       if (!value(o.run.files)) return "--files needs a directory";
     } else if (a == "--start-block" && allowed("--start-block")) {

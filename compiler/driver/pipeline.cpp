@@ -1,5 +1,8 @@
 #include "pipeline.h"
 
+#include <charconv>
+#include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <set>
 
@@ -90,6 +93,34 @@ const stdlib::Profile* run_profile(Session& s, const vm::Module& m) {
   return &*s.profile;
 }
 
+// The operator's answers to INP (--input): a line each, a number or ENTER (keep the
+// value offered); blank lines and '#' comments are skipped. Problems at their place.
+bool read_answers(Session& s, const std::string& path, std::vector<std::optional<double>>& answers) {
+  auto text = read_file(path);
+  if (!text) {
+    s.diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno));
+    return false;
+  }
+  const uint32_t id = s.sources.add(path, std::move(*text));
+  const SourceFile& f = s.sources.file(id);
+  const uint32_t errors = s.diags.error_count();
+  for (uint32_t n = 1; n <= f.line_count(); ++n) {
+    std::string_view line = f.line(n);
+    const size_t begin = line.find_first_not_of(" \t\r");
+    if (begin == std::string_view::npos || line[begin] == '#') continue;
+    const size_t end = line.find_last_not_of(" \t\r") + 1;
+    std::string_view answer = line.substr(begin, end - begin);
+    double v = 0;
+    auto [stop, ec] = std::from_chars(answer.data(), answer.data() + answer.size(), v);
+    if (answer == "ENTER") answers.push_back(std::nullopt);
+    else if (ec == std::errc() && stop == answer.data() + answer.size() && std::isfinite(v)) answers.push_back(v);
+    else
+      s.diags.report(DiagId::InputScript, {id, n, static_cast<uint32_t>(begin + 1), n, static_cast<uint32_t>(end + 1)},
+                     fmt::format("'{}' is not an answer: a number, or ENTER to keep the value offered", answer));
+  }
+  return s.diags.error_count() == errors;
+}
+
 RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry) {
   RunResult result;
   const stdlib::Profile* profile = run_profile(s, m);
@@ -108,6 +139,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   // ASSET files (NC-110 chapter 5) in the sandbox of --files; a dry run leaves them
   // alone: they are the machine's, not the program's.
   std::unique_ptr<asset::Store> store;
+  std::vector<std::optional<double>> answers;
   asset::OpenFiles open_files;
   std::optional<asset::Channels> channels;
   if (!dry) {
@@ -119,6 +151,8 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
         return {false, true, 0};
       }
     }
+    if (!settings.input.empty() && !read_answers(s, settings.input, answers)) return {false, true, 0};
+    options.input = &answers;
     channels.emplace(store.get(), open_files,
                      asset::Channels::Settings{.channels = config.asset.channels, .structures = config.asset.structures});
     options.asset = &*channels;

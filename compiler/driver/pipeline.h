@@ -36,6 +36,7 @@ struct RunSettings {
   bool trace_blocks = false;
   std::optional<uint32_t> start_block;  // a main block ':N' to start at
   std::string files;  // the ASSET sandbox ("": none, every ASSET statement answers code 18)
+  std::string input;  // the operator's answers to INP, a line each ("": none)
 };
 
 enum class FileKind { Source, Bytecode };

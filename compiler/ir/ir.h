@@ -125,6 +125,7 @@ enum class StmtKind : uint8_t {
   CallRange,    // run the blocks from label `label` to label `end_label`, then go on
   Display,      // show `items` to the operator, one after the other
   Asset,        // an ASSET file statement (NC-110 chapter 5, `asset`): `items` its operands, `label` the file
+  Input,        // the operator enters `target`'s value, offered its current one after the prompt `label` (NC-110 INP)
 };
 
 // What an ASSET statement does (docs/asset.md, Statements), with its operands in

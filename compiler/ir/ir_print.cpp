@@ -198,6 +198,9 @@ std::string print(const Program& p, const SourceManager& sources) {
             out += "\n";
             break;
           }
+          case StmtKind::Input:
+            out += fmt::format("    input \"{}\" {}\n", s.label, print_expr(p, s.target));
+            break;
           case StmtKind::Asset: {
             static constexpr const char* kOps[] = {"open_read", "open_write", "define", "read",  "write",
                                                    "close",     "close_all",  "create", "delete"};

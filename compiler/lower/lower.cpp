@@ -344,6 +344,25 @@ class Lowering {
     }
   }
 
+  // INP: the variable's value is offered, the answer stored back (a memory's index
+  // goes first, under the value, for StoreMem).
+  void input(const ir::Stmt& s) {
+    const ir::Expr& target = p_->exprs[s.target];
+    if (target.op == ir::ExprOp::Mem) expr(target.a);
+    expr(s.target);
+    op(Op::Input);
+    u32(string(s.label));
+    if (target.op == ir::ExprOp::Mem) {
+      op(Op::StoreMem);
+      u8(target.space);
+      u8(static_cast<uint32_t>(target.format));
+    } else {
+      op(Op::Store);
+      u8(target.space);
+      u32(static_cast<uint32_t>(p_->exprs[target.a].number));  // E<n>: written (the front end)
+    }
+  }
+
   void assign(const ir::Stmt& s) {
     const ir::Expr& target = p_->exprs[s.target];
     switch (target.op) {
@@ -510,6 +529,7 @@ class Lowering {
         case ir::StmtKind::Assign: assign(s); break;
         case ir::StmtKind::Display: display(s); break;
         case ir::StmtKind::Asset: asset(s); break;
+        case ir::StmtKind::Input: input(s); break;
         case ir::StmtKind::Jump: {
           if (s.label.empty()) {
             computed_jump(unit, s, st.jumps);

@@ -38,6 +38,9 @@ std::string kind_name(OperandKind k) {
     case OperandKind::File: return "a file NAME/MPn";
     case OperandKind::Access: return "R or W";
     case OperandKind::Binding: return "a variable of an ASSET format";
+    case OperandKind::Prompt: return "a prompt";
+    case OperandKind::Target: return "a variable";
+    case OperandKind::Field: return "a screen field 1..255";
   }
   return "?";
 }
@@ -338,6 +341,37 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       op.value = memory_expr(*ref, op.range);
       op.is_text = ref->chars > 0;
       op.chars = ref->chars;
+      at = pieces.size();
+      break;
+    }
+    // INP (§5.5): the prompt is a text, or the number of a screen field holding one.
+    case OperandKind::Prompt:
+      if (pieces.size() == 1 && pieces[0].type == Nc110Lexer::STRING) {
+        op.name = pieces[0].text.substr(1, pieces[0].text.size() - 2);
+        op.is_text = true;
+        at = 1;
+      } else if (!value(1, 255, true, {"IN"})) {
+        return std::nullopt;
+      }
+      break;
+    case OperandKind::Field:
+      if (!value(1, 255, true, {"BY"})) return std::nullopt;
+      break;
+    case OperandKind::Target: {
+      if (auto e = parameter_at()) {
+        op.value = parameter_expr(*e, op.range);
+        op.type = parameter_type(*e);
+        break;
+      }
+      if (bad_parameter) return std::nullopt;
+      std::string letters;
+      for (size_t i = 0; i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
+      if (!std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); }))
+        return fail("an E parameter, or SYVAR, SA or SK");
+      auto ref = memory_ref(op.text, op.range);
+      if (!ref) return std::nullopt;
+      if (ref->chars > 0) return fail("a text is not entered from the keyboard yet: a number");
+      op.value = memory_expr(*ref, op.range);
       at = pieces.size();
       break;
     }
@@ -668,6 +702,20 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       if (s.asset == ir::AssetOp::Define && s.items.size() - 1 > asset::kMaxFields)
         return fail(DiagId::OperandKind, ops[asset::kMaxFields + 1].range, ops[asset::kMaxFields + 1].text, kind_name(OperandKind::Binding),
                     sig.code, fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
+      break;
+    }
+    case Action::Input: {
+      // The user screen's forms (a field's text as the prompt, the answer shown in a
+      // field) wait for the screen (§5.6).
+      if (!ops[0].is_text || ops.size() > 2) {
+        diags_.report(DiagId::Unsupported, code_range, "(INP) with a user-screen field",
+                      "the user screen (§5.6) comes later; a prompt in quotes and a variable run");
+        block_.has_errors = true;
+        return;
+      }
+      s = ir::Stmt(ir::StmtKind::Input, block_.range);
+      s.label = ops[0].name;
+      s.target = ops[1].value;
       break;
     }
     case Action::Unsupported: return;

@@ -19,7 +19,8 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       {"zone", OperandKind::Zone},           {"turning", OperandKind::Turning}, {"condition", OperandKind::Condition},
       {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
       {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
-      {"binding", OperandKind::Binding}};
+      {"binding", OperandKind::Binding},     {"prompt", OperandKind::Prompt},   {"target", OperandKind::Target},
+      {"field", OperandKind::Field}};
   bool group = false;
   size_t i = 0;
   while (i < text.size()) {
@@ -75,7 +76,7 @@ void read_codes(Settings& s, Diagnostics& diags) {
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {
           {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat}, {"@call", Action::Call},
-          {"@call_range", Action::CallRange}, {"@jump", Action::Jump}, {"@display", Action::Display},
+          {"@call_range", Action::CallRange}, {"@jump", Action::Jump}, {"@display", Action::Display}, {"@input", Action::Input},
           {"@unsupported", Action::Unsupported}};
       auto it = kActions.find(action);
       ok = ok && it != kActions.end();

@@ -19,7 +19,8 @@ namespace ncc::nc110 {
 // What an operand of a three-letter code is (three_letter_codes.tsv).
 enum class OperandKind : uint8_t {
   Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition,
-  Channel, Structure, Record, Records, File, Access, Binding  // ASSET (chapter 5)
+  Channel, Structure, Record, Records, File, Access, Binding,  // ASSET (chapter 5)
+  Prompt, Target, Field                                          // INP (§5.5)
 };
 
 struct OperandItem {
@@ -30,7 +31,7 @@ struct OperandItem {
 
 // What a three-letter code does: call a runtime function with its operands, or a
 // statement of the program's flow.
-enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Unsupported };
+enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Input, Unsupported };
 
 struct CodeSignature {
   std::string code;
