@@ -208,6 +208,24 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     out = program_.number(*c, op.range);
     return true;
   };
+  // An E parameter (of `classes`, if any are named), or a memory (SYVAR10.IN): `ref`
+  // takes the memory's reference; for a parameter, op's value and type are set.
+  auto variable = [&](const std::vector<std::string>& classes, const char* what, std::optional<MemoryRef>& ref) {
+    if (auto e = parameter_at()) {
+      if (!classes.empty() && !check_class(*e, classes, op.range, code)) return false;
+      op.value = parameter_expr(*e, op.range);
+      op.type = parameter_type(*e);
+      return true;
+    }
+    if (bad_parameter) return false;
+    std::string letters;
+    for (size_t i = 0; i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
+    if (!std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); }))
+      return fail(what), false;
+    ref = memory_ref(op.text, op.range);
+    at = pieces.size();
+    return ref.has_value();
+  };
   auto letters_and_digits = [&](bool& ok) {
     std::string s;
     ok = true;
@@ -321,19 +339,10 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Binding: {
       // Table 5.1: IN, RE, LR and CH; E0-E9 (BY) and E20-E24 (LI) have none of them,
       // and a memory's own format (BY, BL) is not one either: it is written.
-      if (auto e = parameter_at()) {
-        if (!check_class(*e, {"IN", "RE", "LR"}, op.range, code)) return std::nullopt;
-        op.value = parameter_expr(*e, op.range);
-        op.type = parameter_type(*e);
-        break;
-      }
-      if (bad_parameter) return std::nullopt;
-      std::string letters;
-      for (size_t i = 0; i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
-      bool memory = std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); });
-      if (!memory) return fail("an IN, RE or LR E parameter, or SYVAR, SA or SK with .IN, .RE, .LR or .kCH");
-      auto ref = memory_ref(op.text, op.range);
-      if (!ref) return std::nullopt;
+      std::optional<MemoryRef> ref;
+      if (!variable({"IN", "RE", "LR"}, "an IN, RE or LR E parameter, or SYVAR, SA or SK with .IN, .RE, .LR or .kCH", ref))
+        return std::nullopt;
+      if (!ref) break;
       const bool asset_format = ref->chars > 0 || ref->format == MemFormat::Integer || ref->format == MemFormat::Real ||
                                 ref->format == MemFormat::LongReal;
       if (!asset_format) return fail(fmt::format("{} is not of an ASSET format: write .IN, .RE, .LR or .kCH (table 5.1)", ref->text));
@@ -341,7 +350,6 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       op.value = memory_expr(*ref, op.range);
       op.is_text = ref->chars > 0;
       op.chars = ref->chars;
-      at = pieces.size();
       break;
     }
     // INP (§5.5): the prompt is a text, or the number of a screen field holding one.
@@ -358,21 +366,10 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       if (!value(1, 255, true, {"BY"})) return std::nullopt;
       break;
     case OperandKind::Target: {
-      if (auto e = parameter_at()) {
-        op.value = parameter_expr(*e, op.range);
-        op.type = parameter_type(*e);
-        break;
-      }
-      if (bad_parameter) return std::nullopt;
-      std::string letters;
-      for (size_t i = 0; i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
-      if (!std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); }))
-        return fail("an E parameter, or SYVAR, SA or SK");
-      auto ref = memory_ref(op.text, op.range);
-      if (!ref) return std::nullopt;
-      if (ref->chars > 0) return fail("a text is not entered from the keyboard yet: a number");
-      op.value = memory_expr(*ref, op.range);
-      at = pieces.size();
+      std::optional<MemoryRef> ref;
+      if (!variable({}, "an E parameter, or SYVAR, SA or SK", ref)) return std::nullopt;
+      if (ref && ref->chars > 0) return fail("a text is not entered from the keyboard yet: a number");
+      if (ref) op.value = memory_expr(*ref, op.range);
       break;
     }
     case OperandKind::Comparand:
