@@ -1063,6 +1063,13 @@ void Machine::operator_input(const std::string& shown, double answer, uint32_t s
   out(e);
 }
 
+void Machine::screen_event(const std::string& what, uint32_t source) {
+  Event e{EventKind::Screen};
+  e.text = what;
+  e.source = source;
+  out(e);
+}
+
 void Machine::message(const std::string& text, uint32_t source) {
   Event e{EventKind::Message};
   e.text = text;

@@ -91,6 +91,8 @@ class Machine {
   bool asset_done(const std::string& what, int code, uint32_t source);
   // The operator answered INP (NC-110 §5.5): the prompt and value offered, the answer.
   void operator_input(const std::string& shown, double answer, uint32_t source);
+  // The user screen changed (NC-110 SCR, OUT): "on", "field 2 row 3 column 19 "0      "".
+  void screen_event(const std::string& what, uint32_t source);
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
 
   // The block-skip switch: '/' blocks are skipped while it is on.

@@ -48,8 +48,8 @@ std::string event_name(EventKind kind) {
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
       "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::Input) + 1, "one name per event kind");
+      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input", "screen"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::Screen) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
 
@@ -219,6 +219,7 @@ class TextSink final : public BufferedSink {
         return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
       case EventKind::Asset: return "asset " + asset_text(e);
       case EventKind::Input: return fmt::format("input {} {}", quoted(e.text), four_decimals(e.a));
+      case EventKind::Screen: return "screen " + e.text;
     }
     return "?";
   }
@@ -362,6 +363,7 @@ class JsonlSink final : public BufferedSink {
         s += R"(,"prompt":)" + quoted(e.text);
         num("answer", e.a);
         break;
+      case EventKind::Screen: s += R"(,"what":)" + quoted(e.text); break;
       case EventKind::CompLoad:
         s += fmt::format(R"(,"n":{})", e.n);
         num("length", e.a);
@@ -468,6 +470,7 @@ class CanonSink final : public BufferedSink {
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
       case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", asset_text(e))); break;
       case EventKind::Input: line(fmt::format("COMMENT(\"ncc: input {} {}\")", e.text, canon_number(e.a))); break;
+      case EventKind::Screen: line(fmt::format("COMMENT(\"ncc: screen {}\")", json_escape(e.text))); break;
       case EventKind::CompLoad:
         line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
         break;

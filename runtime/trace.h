@@ -68,6 +68,7 @@ enum class EventKind : uint8_t {
   // NC-110 ASSET file I/O.
   Asset,             // text: the statement ("read 1 record 3"); n: its code of table 5.2, 0 when it worked
   Input,             // text: the prompt and the value offered; a: the operator's answer (NC-110 INP)
+  Screen,            // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
 };
 
 inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }

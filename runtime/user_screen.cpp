@@ -121,6 +121,7 @@ std::string UserScreen::rendered(uint32_t field) const {
 void UserScreen::paint(uint32_t field) {
   Field& f = fields_.at(field);
   f.shown = true;
+  shown_.push_back(field);
   std::vector<std::string> chars = characters(rendered(field));
   for (size_t i = 0; i < chars.size() && f.column - 1 + static_cast<int>(i) < kColumns; ++i)
     cells_[static_cast<size_t>(f.row - 1)][static_cast<size_t>(f.column - 1) + i] = chars[i];

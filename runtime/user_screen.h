@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ncc::screen {
@@ -56,6 +57,10 @@ class UserScreen {
   // How field n looks now: its characters, the width of its format; its attributes.
   std::string rendered(uint32_t field) const;
   Attributes attributes(uint32_t field) const { return fields_.at(field).attributes; }
+  int row(uint32_t field) const { return fields_.at(field).row; }
+  int column(uint32_t field) const { return fields_.at(field).column; }
+  // The fields shown since the last call, in order.
+  std::vector<uint32_t> take_shown() { return std::exchange(shown_, {}); }
 
  private:
   struct Field {
@@ -71,6 +76,7 @@ class UserScreen {
   bool on_ = false;
   std::map<uint32_t, Field> fields_;
   std::vector<std::vector<std::string>> cells_;  // rows × columns of UTF-8 characters
+  std::vector<uint32_t> shown_;
 };
 
 // Table 5.3: a format's width; table 5.5: a value as its mask shows it, `width`

@@ -112,7 +112,16 @@ namespace ncc::vm {
   X(AssetCloseAll, "", 0, 0, "close every channel")                                            \
   X(AssetCreate, "s", 2, 0, "pop a record count, then a structure; create file strings[s] of its layout") \
   X(AssetDelete, "s", 0, 0, "delete file strings[s]")                                          \
-  X(Input, "s", 1, 1, "pop the value offered after prompt strings[s]; push the operator's answer (NC-110 INP)")
+  X(Input, "s", 1, 1, "pop the value offered after prompt strings[s]; push the operator's answer (NC-110 INP)") \
+  X(InputField, "", 2, 1, "pop the value offered, then a screen field whose text is the prompt; push the answer") \
+  X(ScreenOn, "", 0, 0, "the user screen on, clear, without fields (NC-110 SCR)")              \
+  X(ScreenOff, "", 0, 0, "the user screen off")                                                 \
+  X(ScreenDefineText, "s", 5, 0, "pop attribute, format, column, row, field; define it with text strings[s] (DEF)") \
+  X(ScreenDefineValue, "", 6, 0, "pop a value, attribute, format, column, row, field; define it with the value") \
+  X(ScreenShow, "", 1, 0, "pop a field; show it (negative: inverse) (OUT)")                       \
+  X(ScreenShowAll, "", 0, 0, "show every defined field not shown yet")                          \
+  X(ScreenShowValue, "", 2, 0, "pop a value, then a field; show the field with that value")   \
+  X(ScreenShowText, "s", 1, 0, "pop a field; show it with text strings[s]")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,

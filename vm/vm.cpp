@@ -463,19 +463,39 @@ RunStatus Vm::run(uint32_t entry) {
         if (std::isnan(st.back())) st.back() = 0;
         break;
       case Op::NoBlock: return fail(pc, DiagId::JumpTargetMissing, shortest(pop()));
-      case Op::Input: {
+      case Op::Input:
+      case Op::InputField: {
         // NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps
         // the value offered. A run reads the answers of --input, in order.
         const double offered = pop();
+        std::string prompt;
+        if (op == Op::InputField) {
+          const double field = pop();
+          auto text = field >= 1 && field == std::trunc(field) ? screen_.text(static_cast<uint32_t>(field)) : std::nullopt;
+          if (!text) return fail(pc, DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
+          prompt = *text;
+        } else {
+          prompt = m_.strings[u32_at(operands)];
+        }
         double answer = offered;
         if (options_.input) {
           if (answers_ >= options_.input->size()) return fail(pc, DiagId::InputExhausted, answers_);
           answer = (*options_.input)[answers_++].value_or(offered);
         }
-        machine_.operator_input(m_.strings[u32_at(operands)] + shortest(offered), answer, m_.source_of(pc));
+        machine_.operator_input(prompt + shortest(offered), answer, m_.source_of(pc));
         st.push_back(answer);
         break;
       }
+      case Op::ScreenOn:
+      case Op::ScreenOff:
+      case Op::ScreenDefineText:
+      case Op::ScreenDefineValue:
+      case Op::ScreenShow:
+      case Op::ScreenShowAll:
+      case Op::ScreenShowValue:
+      case Op::ScreenShowText:
+        if (!user_screen(op, operands, pc)) return RunStatus::Error;
+        break;
       case Op::AssetBind:
       case Op::AssetBindMem:
       case Op::AssetBindText:
@@ -767,6 +787,72 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
   if (!machine_.asset_done(what, static_cast<int>(code), m_.source_of(pc)))
     return stop(DiagId::AssetError, what, static_cast<int>(code),
                 code == asset::Code::NotConfigured ? "ASSET area not configured (ncc run --files DIR gives one)" : asset::meaning(code));
+  return true;
+}
+
+
+// ---- The user screen (NC-110 §5.6) -------------------------------------------------------
+
+bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
+  std::vector<double>& st = process_.stack;
+  auto pop = [&] {
+    double v = st.back();
+    st.pop_back();
+    return v;
+  };
+  auto field_number = [](double v) { return v >= 1 && v <= 255 && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0u; };
+  const uint32_t source = m_.source_of(pc);
+  std::string why;
+  switch (op) {
+    case Op::ScreenOn:
+      screen_.switch_on();
+      machine_.screen_event("on", source);
+      return true;
+    case Op::ScreenOff:
+      screen_.switch_off();
+      machine_.screen_event("off", source);
+      return true;
+    case Op::ScreenDefineText:
+    case Op::ScreenDefineValue: {
+      screen::Content init{op == Op::ScreenDefineText, {}, 0};
+      if (init.is_text) init.text = m_.strings[read_operand(operands, 4)];
+      else init.value = pop();
+      const double attribute = pop(), format = pop(), column = pop(), row = pop(), field = pop();
+      std::optional<screen::Format> f;
+      if (format >= 1 && format <= 7 && format == std::trunc(format)) f = static_cast<screen::Format>(format);
+      else if (format != 0) why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
+      screen::Attributes a{attribute == 256, attribute >= 0 && attribute <= 255 ? static_cast<int>(attribute) : -1};
+      const auto whole = [](double v) { return v == std::trunc(v) && std::fabs(v) < 1e6 ? static_cast<int>(v) : 0; };
+      if (why.empty()) why = screen_.define(field_number(field), whole(row), whole(column), init, f, a);
+      break;
+    }
+    case Op::ScreenShow: {
+      const double field = pop();
+      why = screen_.show(field_number(std::fabs(field)), field < 0);
+      break;
+    }
+    case Op::ScreenShowAll: why = screen_.show_all(); break;
+    case Op::ScreenShowValue:
+    case Op::ScreenShowText: {
+      screen::Content c{op == Op::ScreenShowText, {}, 0};
+      if (c.is_text) c.text = m_.strings[read_operand(operands, 4)];
+      else c.value = pop();
+      why = screen_.show_with(field_number(pop()), c);
+      break;
+    }
+    default: break;
+  }
+  if (!why.empty()) {
+    fail(pc, DiagId::ScreenError, why);
+    return false;
+  }
+  for (uint32_t n : screen_.take_shown()) {
+    const screen::Attributes a = screen_.attributes(n);
+    std::string text = fmt::format("field {} row {} column {} \"{}\"", n, screen_.row(n), screen_.column(n), screen_.rendered(n));
+    if (a.inverse) text += " inverse";
+    if (a.colour >= 0) text += fmt::format(" colour {}", a.colour);
+    machine_.screen_event(text, source);
+  }
   return true;
 }
 

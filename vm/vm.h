@@ -11,6 +11,7 @@
 #include "opcodes.h"
 #include "runtime/asset_channels.h"
 #include "runtime/machine.h"
+#include "runtime/user_screen.h"
 
 namespace ncc::vm {
 
@@ -34,6 +35,7 @@ class Vm {
   RunStatus run(uint32_t entry);
   uint64_t steps() const { return steps_; }
   uint32_t pc() const { return process_.pc; }  // where the last run stopped
+  const screen::UserScreen& user_screen() const { return screen_; }
 
  private:
   struct Arg {
@@ -89,6 +91,9 @@ class Vm {
   std::vector<AssetField> fields_;  // of the structure being defined
   std::map<uint32_t, std::vector<AssetField>> structures_;
   size_t answers_ = 0;  // of options_.input, taken
+  // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
+  bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
+  screen::UserScreen screen_;
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.
   void jump_to(uint32_t target);

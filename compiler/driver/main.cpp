@@ -60,6 +60,7 @@ constexpr Command kCommands[] = {
   --start-block N           start at main block ':N' (GOST 20999 §2.6)
   --files DIR               the ASSET sandbox of NC-110 file I/O (docs/asset.md; 'ncc files init DIR')
   --input FILE              the operator's answers to NC-110 INP, a line each: a number, or ENTER
+  --screen                  after the trace, the NC-110 user screen as the run left it
 )"},
     {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
     {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
@@ -159,6 +160,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       o.run.block_skip = true;
     } else if (a == "--optional-stop" && allowed("--optional-stop")) {
       o.run.optional_stop = true;
+    } else if (a == "--screen" && allowed("--screen")) {
+      o.run.screen = true;
     } else if (a == "--input" && allowed("--input FILE")) {
       if (!value(o.run.input)) return "--input needs a file";
     } else if (a == "--files" && allowed("--files DIR")) {
@@ -295,6 +298,15 @@ class Cli {
                                      : make_trace_writer(o_.trace_format, out, m->source_map, m->semantics.conventions.axes);
     RunResult result = run_module(s_, *m, o_.run, writer ? *writer : static_cast<TraceSink&>(none));
     writer.reset();
+    if (o_.run.screen && !result.screen) std::fprintf(out, "--- screen off\n");
+    if (o_.run.screen && result.screen) {
+      // The rows up to the last one written, numbered as DEF numbers them.
+      const std::vector<std::string>& lines = *result.screen;
+      size_t rows = lines.size();
+      while (rows > 0 && lines[rows - 1].empty()) --rows;
+      std::fprintf(out, "--- screen\n");
+      for (size_t r = 0; r < rows; ++r) std::fprintf(out, "%2zu |%s\n", r + 1, lines[r].c_str());
+    }
     if (close && std::fclose(out) != 0) s_.diags.report(DiagId::FileUnwritable, {}, o_.trace, std::strerror(errno));
     return finish(result.usage_error ? kUsage : result.ok ? kOk : kProgramErrors, stderr);
   }

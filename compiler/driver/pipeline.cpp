@@ -93,6 +93,14 @@ const stdlib::Profile* run_profile(Session& s, const vm::Module& m) {
   return &*s.profile;
 }
 
+// A run that could not start: the profile, the start block, a sandbox or an input script.
+RunResult cannot_start() {
+  RunResult r;
+  r.ok = false;
+  r.usage_error = true;
+  return r;
+}
+
 // The operator's answers to INP (--input): a line each, a number or ENTER (keep the
 // value offered); blank lines and '#' comments are skipped. Problems at their place.
 bool read_answers(Session& s, const std::string& path, std::vector<std::optional<double>>& answers) {
@@ -124,10 +132,10 @@ bool read_answers(Session& s, const std::string& path, std::vector<std::optional
 RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry) {
   RunResult result;
   const stdlib::Profile* profile = run_profile(s, m);
-  if (!profile) return {false, true, 0};
+  if (!profile) return cannot_start();
   uint32_t errors = s.diags.error_count();
   MachineConfig config = stdlib::load_machine_config(*profile, s.diags);
-  if (s.diags.error_count() != errors) return {false, true, 0};
+  if (s.diags.error_count() != errors) return cannot_start();
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
   IssueReporter reporter(s, m, dry);
@@ -148,10 +156,10 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
       store = asset::Store::open(settings.files, {.device_bytes = config.asset.device_bytes}, why);
       if (!store) {
         s.diags.report(DiagId::FileUnreadable, {}, settings.files, why);
-        return {false, true, 0};
+        return cannot_start();
       }
     }
-    if (!settings.input.empty() && !read_answers(s, settings.input, answers)) return {false, true, 0};
+    if (!settings.input.empty() && !read_answers(s, settings.input, answers)) return cannot_start();
     options.input = &answers;
     channels.emplace(store.get(), open_files,
                      asset::Channels::Settings{.channels = config.asset.channels, .structures = config.asset.structures});
@@ -170,7 +178,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
       if (m.entries[i].name == name) first = i;  // the first on the medium
     if (first == m.entries.size()) {
       s.diags.report(DiagId::StartBlockNotFound, {}, *settings.start_block);
-      return {false, true, 0};
+      return cannot_start();
     }
   }
   for (size_t i = first; i < m.entries.size(); ++i) {
@@ -186,6 +194,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   machine.end_run(!result.ok);
   trace.flush();
   result.steps = vm.steps();
+  if (vm.user_screen().on()) result.screen = vm.user_screen().lines();
   if (s.diags.has_errors()) result.ok = false;
   return result;
 }

@@ -37,6 +37,7 @@ struct RunSettings {
   std::optional<uint32_t> start_block;  // a main block ':N' to start at
   std::string files;  // the ASSET sandbox ("": none, every ASSET statement answers code 18)
   std::string input;  // the operator's answers to INP, a line each ("": none)
+  bool screen = false;  // print the user screen at the end (NC-110 §5.6)
 };
 
 enum class FileKind { Source, Bytecode };
@@ -61,6 +62,7 @@ struct RunResult {
   bool ok = true;
   bool usage_error = false;  // the run could not start: profile, start block
   uint64_t steps = 0;
+  std::optional<std::vector<std::string>> screen;  // the NC-110 user screen at the end, a line a row (none: off)
 };
 RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace);
 

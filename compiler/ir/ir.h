@@ -125,7 +125,13 @@ enum class StmtKind : uint8_t {
   CallRange,    // run the blocks from label `label` to label `end_label`, then go on
   Display,      // show `items` to the operator, one after the other
   Asset,        // an ASSET file statement (NC-110 chapter 5, `asset`): `items` its operands, `label` the file
-  Input,        // the operator enters `target`'s value, offered its current one after the prompt `label` (NC-110 INP)
+  Input,        // the operator enters `target`'s value, offered its current one after the prompt `label` (NC-110 INP),
+                // or after the text of screen field items[0]; items[1]: the field that shows the answer
+  // NC-110 user screen (§5.6).
+  ScreenSwitch,  // SCR: `value` 1 on, 0 off
+  ScreenDefine,  // DEF: items field, row, column, initial value[, format]; `label` the attribute (R, A179) or ""
+  ScreenShow,    // OUT: items the fields (a negative constant: inverse); none: every field not shown yet
+  ScreenShowWith,  // OUT n, value: items field, value
 };
 
 // What an ASSET statement does (docs/asset.md, Statements), with its operands in

@@ -199,8 +199,19 @@ std::string print(const Program& p, const SourceManager& sources) {
             break;
           }
           case StmtKind::Input:
-            out += fmt::format("    input \"{}\" {}\n", s.label, print_expr(p, s.target));
+          case StmtKind::ScreenSwitch:
+          case StmtKind::ScreenDefine:
+          case StmtKind::ScreenShow:
+          case StmtKind::ScreenShowWith: {
+            static constexpr const char* kNames[] = {"input", "screen_switch", "screen_define", "screen_show", "screen_show_with"};
+            out += fmt::format("    {}", kNames[static_cast<int>(s.kind) - static_cast<int>(StmtKind::Input)]);
+            if (!s.label.empty()) out += fmt::format(" \"{}\"", s.label);
+            if (s.target != kNoExpr) out += " " + print_expr(p, s.target);
+            if (s.value != kNoExpr) out += " " + print_expr(p, s.value);
+            for (const DisplayItem& item : s.items) out += " " + print_expr(p, item.value);
+            out += "\n";
             break;
+          }
           case StmtKind::Asset: {
             static constexpr const char* kOps[] = {"open_read", "open_write", "define", "read",  "write",
                                                    "close",     "close_all",  "create", "delete"};

@@ -349,9 +349,14 @@ class Lowering {
   void input(const ir::Stmt& s) {
     const ir::Expr& target = p_->exprs[s.target];
     if (target.op == ir::ExprOp::Mem) expr(target.a);
+    if (s.label.empty()) expr(s.items[0].value);  // the prompt is a screen field's text
     expr(s.target);
-    op(Op::Input);
-    u32(string(s.label));
+    if (s.label.empty()) {
+      op(Op::InputField);
+    } else {
+      op(Op::Input);
+      u32(string(s.label));
+    }
     if (target.op == ir::ExprOp::Mem) {
       op(Op::StoreMem);
       u8(target.space);
@@ -360,6 +365,54 @@ class Lowering {
       op(Op::Store);
       u8(target.space);
       u32(static_cast<uint32_t>(p_->exprs[target.a].number));  // E<n>: written (the front end)
+    }
+    if (s.items.size() == 2) {  // the field that shows the answer
+      expr(s.items[1].value);
+      expr(s.target);
+      op(Op::ScreenShowValue);
+    }
+  }
+
+  // NC-110 SCR, DEF, OUT (§5.6): the operands in order, then the instruction.
+  void user_screen(const ir::Stmt& s) {
+    auto text = [&](size_t i) -> const std::string* {
+      const ir::Expr& e = p_->exprs[s.items[i].value];
+      return e.op == ir::ExprOp::String ? &p_->texts[e.text] : nullptr;
+    };
+    switch (s.kind) {
+      case ir::StmtKind::ScreenSwitch: op(p_->exprs[s.value].number != 0 ? Op::ScreenOn : Op::ScreenOff); break;
+      case ir::StmtKind::ScreenDefine: {
+        for (size_t i = 0; i < 3; ++i) expr(s.items[i].value);  // field, row, column
+        if (s.items.size() > 4) expr(s.items[4].value);
+        else constant(Op::Const, Op::ConstDec, std::nullopt, 0);  // no format
+        // The attribute: -1 none, 256 inverse (R), else the colour (An).
+        const double attribute = s.label.empty() ? -1 : s.label == "R" ? 256 : std::atof(s.label.c_str() + 1);
+        constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
+        if (const std::string* t = text(3)) {
+          op(Op::ScreenDefineText);
+          u32(string(*t));
+        } else {
+          expr(s.items[3].value);
+          op(Op::ScreenDefineValue);
+        }
+        break;
+      }
+      case ir::StmtKind::ScreenShow:
+        if (s.items.empty()) op(Op::ScreenShowAll);
+        for (const ir::DisplayItem& field : s.items) {
+          expr(field.value);
+          op(Op::ScreenShow);
+        }
+        break;
+      default:  // ScreenShowWith
+        expr(s.items[0].value);
+        if (const std::string* t = text(1)) {
+          op(Op::ScreenShowText);
+          u32(string(*t));
+        } else {
+          expr(s.items[1].value);
+          op(Op::ScreenShowValue);
+        }
     }
   }
 
@@ -530,6 +583,10 @@ class Lowering {
         case ir::StmtKind::Display: display(s); break;
         case ir::StmtKind::Asset: asset(s); break;
         case ir::StmtKind::Input: input(s); break;
+        case ir::StmtKind::ScreenSwitch:
+        case ir::StmtKind::ScreenDefine:
+        case ir::StmtKind::ScreenShow:
+        case ir::StmtKind::ScreenShowWith: user_screen(s); break;
         case ir::StmtKind::Jump: {
           if (s.label.empty()) {
             computed_jump(unit, s, st.jumps);

@@ -41,6 +41,11 @@ std::string kind_name(OperandKind k) {
     case OperandKind::Prompt: return "a prompt";
     case OperandKind::Target: return "a variable";
     case OperandKind::Field: return "a screen field 1..255";
+    case OperandKind::Row: return "a screen row 1..20";
+    case OperandKind::Column: return "a screen column 1..64";
+    case OperandKind::Format: return "a field format 1..7";
+    case OperandKind::Switch: return "ON or OFF";
+    case OperandKind::Attribute: return "R or A0..A255";
   }
   return "?";
 }
@@ -363,8 +368,32 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       }
       break;
     case OperandKind::Field:
-      if (!value(1, 255, true, {"BY"})) return std::nullopt;
+    case OperandKind::Row:
+    case OperandKind::Column:
+    case OperandKind::Format: {
+      std::vector<std::string> any;
+      for (const ParameterClass& c : s_.classes) any.push_back(c.name);
+      const double hi = kind == OperandKind::Field ? 255 : kind == OperandKind::Row ? 20 : kind == OperandKind::Column ? 64 : 7;
+      if (!value(1, hi, true, any)) return std::nullopt;
       break;
+    }
+    case OperandKind::Switch: {
+      bool ok = false;
+      op.name = letters_and_digits(ok);
+      if (!ok || (op.name != "ON" && op.name != "OFF")) return fail("ON or OFF");
+      break;
+    }
+    case OperandKind::Attribute: {
+      // R, or A and a colour 0..255 (16 × background + text, table 5.4).
+      bool ok = false;
+      op.name = letters_and_digits(ok);
+      unsigned colour = 256;
+      const bool colour_ok = op.name.size() > 1 && op.name[0] == 'A' &&
+                             std::from_chars(op.name.data() + 1, op.name.data() + op.name.size(), colour).ptr ==
+                                 op.name.data() + op.name.size() && colour <= 255;
+      if (!ok || (op.name != "R" && !colour_ok)) return fail("R (inverse) or A and a colour 0..255 (A179)");
+      break;
+    }
     case OperandKind::Target: {
       std::optional<MemoryRef> ref;
       if (!variable({}, "an E parameter, or SYVAR, SA or SK", ref)) return std::nullopt;
@@ -701,18 +730,52 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
                     sig.code, fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
       break;
     }
-    case Action::Input: {
-      // The user screen's forms (a field's text as the prompt, the answer shown in a
-      // field) wait for the screen (§5.6).
-      if (!ops[0].is_text || ops.size() > 2) {
-        diags_.report(DiagId::Unsupported, code_range, "(INP) with a user-screen field",
-                      "the user screen (§5.6) comes later; a prompt in quotes and a variable run");
-        block_.has_errors = true;
-        return;
-      }
+    case Action::Input:
+      // The prompt in quotes, or the text of a screen field; a field may show the answer.
       s = ir::Stmt(ir::StmtKind::Input, block_.range);
-      s.label = ops[0].name;
+      if (ops[0].is_text) s.label = ops[0].name;
+      else s.items.push_back({ops[0].value, VarType::Integer});
       s.target = ops[1].value;
+      if (ops.size() > 2) {
+        if (ops[0].is_text) s.items.push_back({program_.number(0, code_range), VarType::Integer});  // no prompt field
+        s.items.push_back({ops[2].value, VarType::Integer});
+      }
+      break;
+    case Action::Screen: {
+      s = ir::Stmt(sig.screen, block_.range);
+      if (sig.screen == ir::StmtKind::ScreenSwitch) {
+        s.value = program_.number(ops[0].name == "ON" ? 1 : 0, code_range);
+        break;
+      }
+      for (const Operand& op : ops) {
+        if (op.kind == OperandKind::Attribute) s.label = op.name;
+        else s.items.push_back({op.value, op.type});
+      }
+      if (sig.screen == ir::StmtKind::ScreenDefine) {
+        // The initial value is a number or a text in quotes (a text variable: later).
+        const ir::Expr& init = program_.exprs[s.items[3].value];
+        if (ops[3].is_text && init.op != ir::ExprOp::String)
+          return fail(DiagId::OperandKind, ops[3].range, ops[3].text, "an initial value", sig.code,
+                      "a text variable is not an initial value yet: a text in quotes or a number");
+        break;
+      }
+      // OUT: fields (a constant field may have '-': inverse), at most six; with two
+      // operands the second is the first's new value (§5.6.2.3, decision 61).
+      if (ops.size() == 2) {
+        s = ir::Stmt(ir::StmtKind::ScreenShowWith, block_.range);
+        s.items = {{ops[0].value, VarType::Integer}, {ops[1].value, ops[1].type}};
+        if (ops[1].is_text && program_.exprs[ops[1].value].op != ir::ExprOp::String)
+          return fail(DiagId::OperandKind, ops[1].range, ops[1].text, "a value", sig.code,
+                      "a text variable is not shown yet: a text in quotes or a number");
+      }
+      if (ops.size() > 6)
+        return fail(DiagId::OperandKind, ops[6].range, ops[6].text, "a screen field", sig.code, "OUT shows at most 6 fields");
+      for (size_t i = 0; i < (ops.size() == 2 ? 1 : ops.size()); ++i) {
+        const ir::Expr& e = program_.exprs[ops[i].value];
+        const bool field = e.op == ir::ExprOp::Var || (e.op == ir::ExprOp::Number && e.number == std::trunc(e.number) &&
+                                                       std::fabs(e.number) >= 1 && std::fabs(e.number) <= 255);
+        if (!field) return fail(DiagId::OperandKind, ops[i].range, ops[i].text, "a screen field", sig.code, "a field 1..255, -n for inverse, or an E parameter");
+      }
       break;
     }
     case Action::Unsupported: return;

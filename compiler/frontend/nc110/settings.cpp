@@ -20,7 +20,8 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
       {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
       {"binding", OperandKind::Binding},     {"prompt", OperandKind::Prompt},   {"target", OperandKind::Target},
-      {"field", OperandKind::Field}};
+      {"field", OperandKind::Field},         {"row", OperandKind::Row},         {"column", OperandKind::Column},
+      {"format", OperandKind::Format},       {"switch", OperandKind::Switch},   {"attribute", OperandKind::Attribute}};
   bool group = false;
   size_t i = 0;
   while (i < text.size()) {
@@ -73,6 +74,13 @@ void read_codes(Settings& s, Diagnostics& diags) {
       ok = ok && it != kOps.end();
       code.action = Action::Asset;
       if (it != kOps.end()) code.asset = it->second;
+    } else if (action.starts_with("@screen(") && action.ends_with(")")) {
+      static const std::map<std::string_view, ir::StmtKind> kKinds = {
+          {"switch", ir::StmtKind::ScreenSwitch}, {"define", ir::StmtKind::ScreenDefine}, {"show", ir::StmtKind::ScreenShow}};
+      auto it = kKinds.find(action.substr(8, action.size() - 9));
+      ok = ok && it != kKinds.end();
+      code.action = Action::Screen;
+      if (it != kKinds.end()) code.screen = it->second;
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {
           {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat}, {"@call", Action::Call},

@@ -1,7 +1,7 @@
 ; The three-letter codes of the parts of the manual ncc does not implement yet: tool life (TOF,
 ; §2.13.10), tool correctors (RQU RQP, §2.13.8), probe settings (DPT, §2.13.9), graphics (UCG CLG
-; DCG, §2.13.7), virtual axes (UAV, §2.17), processes (EXE REL WAI SND, §4.1) and the user
-; screen (SCR DEF OUT §5.6). (ASSET files: asset-operands; INP: corpus-5.5-INP, inp-errors.)
+; DCG, §2.13.7), virtual axes (UAV, §2.17) and processes (EXE REL WAI SND, §4.1). (ASSET
+; files: asset-operands; INP: corpus-5.5-INP, inp-errors; the user screen: screen-errors.)
 ; docs/dialects/nc110.md: they parse and are reported as not supported yet (NC3034 at the code, with
 ; the meaning of three_letter_codes.tsv); their operands are not read. First each code alone, then
 ; each as the manual writes it (seed lines in the comments), with leading fields where it has them.
@@ -20,9 +20,6 @@ M30
 (REL)
 (WAI)
 (SND)
-(SCR)
-(DEF)
-(OUT)
 ; seed line 10442
 "A3" N2101 (TOF,13)
 ; seed line 7788
@@ -45,9 +42,4 @@ N9  (DCG)
 (WAI,3)
 ; seed line 11716 without its final full stop
 N25#(SND,2)
-; seed line 12855
-(SCR,ON)
-; seed line 13058 (text in Latin letters)
-(DEF, 1, 3, 10, "SIZE X = ")
 ; seed line 13072
-(OUT)

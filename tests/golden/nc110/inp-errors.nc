@@ -1,5 +1,6 @@
-; INP's operands (§5.5): a prompt in quotes, then an E parameter or a numeric SYVAR, SA or SK. The
-; user screen's forms (a field number as the prompt, a field for the answer) are not supported yet.
+; INP's operands (§5.5): a prompt in quotes or a screen field's number, then an E parameter or a
+; numeric SYVAR, SA or SK, then the field that shows the answer. The last two are right in form:
+; the dry run finds no field 1 holding a prompt (the program defines none) and stops there.
 (INP, "X")
 (INP, X, E40)
 (INP, "X", E5.5)
