@@ -671,12 +671,7 @@ bool Vm::asset_store(const std::vector<AssetField>& fields, const std::vector<as
 }
 
 bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
-  std::vector<double>& st = process_.stack;
-  auto pop = [&] {
-    double v = st.back();
-    st.pop_back();
-    return v;
-  };
+  auto pop = [&] { return pop_value(); };
   auto stop = [&](DiagId id, const auto&... args) {  // a run-time error: the run stops
     fail(pc, id, args...);
     return false;
@@ -794,12 +789,7 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
 // ---- The user screen (NC-110 §5.6) -------------------------------------------------------
 
 bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
-  std::vector<double>& st = process_.stack;
-  auto pop = [&] {
-    double v = st.back();
-    st.pop_back();
-    return v;
-  };
+  auto pop = [&] { return pop_value(); };
   auto field_number = [](double v) { return v >= 1 && v <= 255 && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0u; };
   const uint32_t source = m_.source_of(pc);
   std::string why;

@@ -93,6 +93,11 @@ class Vm {
   size_t answers_ = 0;  // of options_.input, taken
   // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
   bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
+  double pop_value() {  // the verifier has checked the stack holds it
+    const double v = process_.stack.back();
+    process_.stack.pop_back();
+    return v;
+  }
   screen::UserScreen screen_;
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.

@@ -375,9 +375,16 @@ class Lowering {
 
   // NC-110 SCR, DEF, OUT (§5.6): the operands in order, then the instruction.
   void user_screen(const ir::Stmt& s) {
-    auto text = [&](size_t i) -> const std::string* {
+    // Item i: a text in quotes goes with `with_text`, a value is computed for `with_value`.
+    auto text_or_value = [&](size_t i, Op with_text, Op with_value) {
       const ir::Expr& e = p_->exprs[s.items[i].value];
-      return e.op == ir::ExprOp::String ? &p_->texts[e.text] : nullptr;
+      if (e.op == ir::ExprOp::String) {
+        op(with_text);
+        u32(string(p_->texts[e.text]));
+      } else {
+        expr(s.items[i].value);
+        op(with_value);
+      }
     };
     switch (s.kind) {
       case ir::StmtKind::ScreenSwitch: op(p_->exprs[s.value].number != 0 ? Op::ScreenOn : Op::ScreenOff); break;
@@ -388,13 +395,7 @@ class Lowering {
         // The attribute: -1 none, 256 inverse (R), else the colour (An).
         const double attribute = s.label.empty() ? -1 : s.label == "R" ? 256 : std::atof(s.label.c_str() + 1);
         constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
-        if (const std::string* t = text(3)) {
-          op(Op::ScreenDefineText);
-          u32(string(*t));
-        } else {
-          expr(s.items[3].value);
-          op(Op::ScreenDefineValue);
-        }
+        text_or_value(3, Op::ScreenDefineText, Op::ScreenDefineValue);
         break;
       }
       case ir::StmtKind::ScreenShow:
@@ -406,13 +407,7 @@ class Lowering {
         break;
       default:  // ScreenShowWith
         expr(s.items[0].value);
-        if (const std::string* t = text(1)) {
-          op(Op::ScreenShowText);
-          u32(string(*t));
-        } else {
-          expr(s.items[1].value);
-          op(Op::ScreenShowValue);
-        }
+        text_or_value(1, Op::ScreenShowText, Op::ScreenShowValue);
     }
   }
 
