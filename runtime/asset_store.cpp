@@ -303,14 +303,17 @@ Code Store::write(const FileName& name, const File& f, bool fresh) {
   if (!fresh && !exists) return Code::NotFound;
   if (exists && !S_ISREG(old.st_mode)) return Code::Logical;
   const std::string bytes = encode(f);
-  // The device's room: its other files and this one.
-  uint64_t used = bytes.size();
-  for (const FileName& other : list(name.device)) {
-    struct stat st;
-    if (other.name != name.name && ::fstatat(dev.fd, (other.name + std::string(kSuffix)).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
-      used += static_cast<uint64_t>(st.st_size);
+  // The device's room: its other files and this one (a file that does not grow, as a
+  // WRT's, takes no more: the folder is not listed for it).
+  if (!exists || bytes.size() > static_cast<uint64_t>(old.st_size)) {
+    uint64_t used = bytes.size();
+    for (const FileName& other : list(name.device)) {
+      struct stat st;
+      if (other.name != name.name && ::fstatat(dev.fd, (other.name + std::string(kSuffix)).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
+        used += static_cast<uint64_t>(st.st_size);
+    }
+    if (used > options_.device_bytes) return Code::Overflow;
   }
-  if (used > options_.device_bytes) return Code::Overflow;
 
   const std::string temp = "." + final_name + ".tmp";
   ::unlinkat(dev.fd, temp.c_str(), 0);  // left by a run that died

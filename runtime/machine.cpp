@@ -1032,12 +1032,17 @@ void Machine::end_of_unit(uint32_t source) {
   block_ = BlockState{};
 }
 
-void Machine::comment(const std::string& text, uint32_t source) {
-  Event e{EventKind::Comment};
+// An event of text the program gave (a comment, a message, an ASSET statement...).
+void Machine::text_event(EventKind kind, const std::string& text, uint32_t source, int n, double a) {
+  Event e{kind};
   e.text = text;
+  e.n = n;
+  e.a = a;
   e.source = source;
   out(e);
 }
+
+void Machine::comment(const std::string& text, uint32_t source) { text_event(EventKind::Comment, text, source); }
 
 void Machine::block_start(uint32_t source) {
   Event e{EventKind::Block};
@@ -1046,35 +1051,17 @@ void Machine::block_start(uint32_t source) {
 }
 
 bool Machine::asset_done(const std::string& what, int code, uint32_t source) {
-  Event e{EventKind::Asset};
-  e.text = what;
-  e.n = code;
-  e.source = source;
-  out(e);
+  text_event(EventKind::Asset, what, source, code);
   system_[SysRef{SysVar::AssetStatus, 0}.packed()] = code;
   return code == 0 || system({SysVar::AssetErrorMode, 0}) == 1;
 }
 
 void Machine::operator_input(const std::string& shown, double answer, uint32_t source) {
-  Event e{EventKind::Input};
-  e.text = shown;
-  e.a = answer;
-  e.source = source;
-  out(e);
+  text_event(EventKind::Input, shown, source, 0, answer);
 }
 
-void Machine::screen_event(const std::string& what, uint32_t source) {
-  Event e{EventKind::Screen};
-  e.text = what;
-  e.source = source;
-  out(e);
-}
+void Machine::screen_event(const std::string& what, uint32_t source) { text_event(EventKind::Screen, what, source); }
 
-void Machine::message(const std::string& text, uint32_t source) {
-  Event e{EventKind::Message};
-  e.text = text;
-  e.source = source;
-  out(e);
-}
+void Machine::message(const std::string& text, uint32_t source) { text_event(EventKind::Message, text, source); }
 
 }  // namespace ncc

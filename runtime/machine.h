@@ -403,6 +403,7 @@ class Machine {
   AxisValues hold_start_{};                   // where the first held move starts
   std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
   void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
+  void text_event(EventKind kind, const std::string& text, uint32_t source, int n = 0, double a = 0);
   void to_path(const Event& e, const AxisValues* start);        // through the cutter path (ISO)
   void pass_on(size_t count);                 // the first `count` held events, on
   CutterPath path_;

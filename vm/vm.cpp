@@ -16,6 +16,11 @@ namespace ncc::vm {
 namespace {
 
 constexpr size_t kMaxLoops = 64;
+
+// An operand numbering something 1..hi (an ASSET channel, structure or record, a
+// screen field): the number, or 0, which numbers nothing (so the statement answers
+// with its code or error).
+uint32_t whole_operand(double v, double hi) { return v >= 1 && v <= hi && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0; }
 constexpr double kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
 const double kVacant = std::numeric_limits<double>::quiet_NaN();
@@ -471,7 +476,7 @@ RunStatus Vm::run(uint32_t entry) {
         std::string prompt;
         if (op == Op::InputField) {
           const double field = pop();
-          auto text = field >= 1 && field == std::trunc(field) ? screen_.text(static_cast<uint32_t>(field)) : std::nullopt;
+          auto text = screen_.text(whole_operand(field, 255));
           if (!text) return fail(pc, DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
           prompt = *text;
         } else {
@@ -626,13 +631,6 @@ RunStatus Vm::run(uint32_t entry) {
 
 // ---- ASSET files (NC-110 chapter 5) ----------------------------------------------------
 
-namespace {
-
-// A channel, structure or record operand: a whole number in range, else 0, which
-// no channel, structure or record is (so the statement answers with its code).
-uint32_t whole_operand(double v, double hi) { return v >= 1 && v <= hi && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0; }
-
-}  // namespace
 
 bool Vm::asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc) {
   out.clear();
@@ -790,7 +788,6 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
 
 bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
   auto pop = [&] { return pop_value(); };
-  auto field_number = [](double v) { return v >= 1 && v <= 255 && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0u; };
   const uint32_t source = m_.source_of(pc);
   std::string why;
   switch (op) {
@@ -813,12 +810,12 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
       else if (format != 0) why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
       screen::Attributes a{attribute == 256, attribute >= 0 && attribute <= 255 ? static_cast<int>(attribute) : -1};
       const auto whole = [](double v) { return v == std::trunc(v) && std::fabs(v) < 1e6 ? static_cast<int>(v) : 0; };
-      if (why.empty()) why = screen_.define(field_number(field), whole(row), whole(column), init, f, a);
+      if (why.empty()) why = screen_.define(whole_operand(field, 255), whole(row), whole(column), init, f, a);
       break;
     }
     case Op::ScreenShow: {
       const double field = pop();
-      why = screen_.show(field_number(std::fabs(field)), field < 0);
+      why = screen_.show(whole_operand(std::fabs(field), 255), field < 0);
       break;
     }
     case Op::ScreenShowAll: why = screen_.show_all(); break;
@@ -827,7 +824,7 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
       screen::Content c{op == Op::ScreenShowText, {}, 0};
       if (c.is_text) c.text = m_.strings[read_operand(operands, 4)];
       else c.value = pop();
-      why = screen_.show_with(field_number(pop()), c);
+      why = screen_.show_with(whole_operand(pop(), 255), c);
       break;
     }
     default: break;

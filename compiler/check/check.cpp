@@ -201,19 +201,7 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
   if (streamed) entries = streamed->entries();
   // Macro B M97 calls a block of its own unit: "unit/label".
   const std::string own = unit.name + "/";
-  // Of the streamed blocks' labels, those named here (a stream may hold millions).
-  std::set<std::string_view> named;
-  if (!unit.streamed_labels.empty()) {
-    for (const ir::Block& b : unit.blocks)
-      for (const ir::Stmt& s : b.stmts) {
-        if (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::CallRange) named.insert(s.label);
-        if (s.kind == ir::StmtKind::CallRange) named.insert(s.end_label);
-        if (s.kind == ir::StmtKind::Call && s.label.starts_with(own)) named.insert(std::string_view(s.label).substr(own.size()));
-      }
-  }
-  if (!named.empty())
-    for (const ir::Unit::StreamedLabel& l : unit.streamed_labels)
-      if (std::string label = l.label(); named.count(label)) labels.insert(label);
+  for (size_t i : unit.named_streamed_labels()) labels.insert(unit.streamed_labels[i].label());
   std::map<std::string, const ir::Block*> defined;
   for (const ir::Block& b : unit.blocks) {
     if (!b.label.empty()) {

@@ -204,6 +204,8 @@ struct Unit {
     std::string label() const { return "N" + std::to_string(number); }
   };
   std::vector<StreamedLabel> streamed_labels;
+  // Of them, the ones the blocks held name (indices in streamed_labels, in order).
+  std::vector<size_t> named_streamed_labels() const;
   bool ends_information = false;  // terminated by end of information (M30)
 };
 

@@ -51,20 +51,11 @@ class Lowering {
     if (!b.label.empty()) streamed_label_pcs_.push_back(at);  // of Unit::streamed_labels, in order
   }
 
-  // The streamed blocks' labels that the rest of their unit jumps to (a computed GOTO
-  // may go to any), where the fix-ups look for them: only those, as a stream may hold
-  // millions. No loop is open in a stream.
+  // The streamed blocks' labels the rest of their unit names, where the fix-ups look
+  // for them. No loop is open in a stream.
   void name_streamed_labels(const ir::Unit& unit) {
-    std::set<std::string_view> named;
-    bool any = false;
-    for (const ir::Block& b : unit.blocks)
-      for (const ir::Stmt& s : b.stmts) {
-        if (s.kind == ir::StmtKind::Jump) any = any || s.label.empty();
-        if (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::CallRange) named.insert(s.label);
-      }
-    for (size_t i = 0; i < unit.streamed_labels.size() && (any || !named.empty()); ++i) {
+    for (size_t i : unit.named_streamed_labels()) {
       const std::string label = unit.streamed_labels[i].label();
-      if (!any && !named.count(label)) continue;
       first_unit_.labels.emplace(label, streamed_label_pcs_[i]);
       first_unit_.label_depth.emplace(label, 0);
     }

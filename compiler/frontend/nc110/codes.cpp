@@ -51,19 +51,26 @@ std::string kind_name(OperandKind k) {
 }
 
 // The numbers an operand takes and the E parameter class that may stand for it
-// (§2.13, Table 2.9).
+// (§2.13, Table 2.9; none: any E parameter, its value checked when the block runs).
 struct NumericOperand {
   OperandKind kind;
   double lo, hi;
   bool whole;
   const char* param_class;
 };
+// ASSET (§5.3.1) and the user screen (§5.6.2): a channel, a structure or a record
+// count, a field, row, column or format, a constant or any E parameter; a record, a
+// constant or an IN parameter.
 constexpr NumericOperand kNumericOperands[] = {
     {OperandKind::Origin, 0, 99, true, "IN"},       {OperandKind::Count, 0, 99, true, "BY"},
     {OperandKind::Zone, 1, 3, true, "BY"},          {OperandKind::Condition, 0, 3, true, "BY"},
     {OperandKind::Angle, -99999.9999, 99999.9999, false, "RE"},
     {OperandKind::Factor, 0.0001, 99999.9999, false, "RE"},
-    {OperandKind::Seconds, 0, 32, false, "LR"}};
+    {OperandKind::Seconds, 0, 32, false, "LR"},
+    {OperandKind::Channel, 0, 255, true, nullptr},  {OperandKind::Structure, 0, 255, true, nullptr},
+    {OperandKind::Records, 1, asset::kMaxRecords, true, nullptr}, {OperandKind::Record, 1, asset::kMaxRecords, true, "IN"},
+    {OperandKind::Field, 1, 255, true, nullptr},    {OperandKind::Row, 1, 20, true, nullptr},
+    {OperandKind::Column, 1, 64, true, nullptr},    {OperandKind::Format, 1, 7, true, nullptr}};
 
 const NumericOperand& numeric_operand(OperandKind kind) {
   for (const NumericOperand& n : kNumericOperands)
@@ -250,9 +257,21 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Condition:
     case OperandKind::Angle:
     case OperandKind::Factor:
-    case OperandKind::Seconds: {
+    case OperandKind::Seconds:
+    case OperandKind::Channel:
+    case OperandKind::Structure:
+    case OperandKind::Records:
+    case OperandKind::Record:
+    case OperandKind::Field:
+    case OperandKind::Row:
+    case OperandKind::Column:
+    case OperandKind::Format: {
       const NumericOperand& n = numeric_operand(kind);
-      if (!value(n.lo, n.hi, n.whole, {n.param_class})) return std::nullopt;
+      std::vector<std::string> classes;
+      if (n.param_class) classes.push_back(n.param_class);
+      else
+        for (const ParameterClass& c : s_.classes) classes.push_back(c.name);
+      if (!value(n.lo, n.hi, n.whole, classes)) return std::nullopt;
       break;
     }
     case OperandKind::Axis:
@@ -309,21 +328,6 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       }
       break;
     }
-    // ASSET (§5.3.1): a channel, a structure or a count, a constant or any E parameter
-    // (its value must be whole and in range when the statement runs); a record, a
-    // constant or an IN parameter.
-    case OperandKind::Channel:
-    case OperandKind::Structure:
-    case OperandKind::Records: {
-      std::vector<std::string> any;
-      for (const ParameterClass& c : s_.classes) any.push_back(c.name);
-      const bool count = kind == OperandKind::Records;
-      if (!value(count ? 1 : 0, count ? asset::kMaxRecords : 255, true, any)) return std::nullopt;
-      break;
-    }
-    case OperandKind::Record:
-      if (!value(1, asset::kMaxRecords, true, {"IN"})) return std::nullopt;
-      break;
     case OperandKind::File: {
       bool ok = false;
       std::string name = letters_and_digits(ok);
@@ -367,16 +371,6 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         return std::nullopt;
       }
       break;
-    case OperandKind::Field:
-    case OperandKind::Row:
-    case OperandKind::Column:
-    case OperandKind::Format: {
-      std::vector<std::string> any;
-      for (const ParameterClass& c : s_.classes) any.push_back(c.name);
-      const double hi = kind == OperandKind::Field ? 255 : kind == OperandKind::Row ? 20 : kind == OperandKind::Column ? 64 : 7;
-      if (!value(1, hi, true, any)) return std::nullopt;
-      break;
-    }
     case OperandKind::Switch: {
       bool ok = false;
       op.name = letters_and_digits(ok);
