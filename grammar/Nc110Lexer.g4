@@ -10,6 +10,8 @@
 // examples: `G 72`, `X E31`, `ZE 35`, `"INIZIO" N 125`).
 lexer grammar Nc110Lexer;
 
+tokens { RELOP }
+
 // ---- ISO block (the default mode): one-letter addresses (§2.4.2, §2.7) ----------
 
 // The leading fields (§2.4.4), in every mode.
@@ -81,7 +83,8 @@ T_INVALID      : . -> type(INVALID) ;
 mode OPERANDS;
 
 O_LETTER       : [A-Za-z\u0400-\u04FF] -> type(LETTER) ;
-O_STAR         : [*=] -> type(STAR) ;          // an expression: not an operand
+O_STAR         : '*' -> type(STAR) ;           // an expression: not an operand
+O_RELOP        : [=<>#] -> type(RELOP) ;       // a WAI condition (§4.1.3); elsewhere not an operand
 DIGITS         : [0-9]+ ;
 DOT            : '.' ;
 O_PLUS         : '+' -> type(PLUS) ;

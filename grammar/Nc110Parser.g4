@@ -46,4 +46,4 @@ primary     : NUMBER                                     # numberPrimary
 tlcBlock    : leading LPAREN code (COMMA operand)* RPAREN EOF ;
 code        : LETTER* ;
 operand     : piece* ;
-piece       : LETTER | DIGITS | DOT | PLUS | MINUS | SLASH | STAR | STRING ;
+piece       : LETTER | DIGITS | DOT | PLUS | MINUS | SLASH | STAR | RELOP | STRING ;

@@ -1062,6 +1062,8 @@ void Machine::operator_input(const std::string& shown, double answer, uint32_t s
 
 void Machine::screen_event(const std::string& what, uint32_t source) { text_event(EventKind::Screen, what, source); }
 
+void Machine::sync_event(const std::string& what, uint32_t source) { text_event(EventKind::Sync, what, source); }
+
 void Machine::message(const std::string& text, uint32_t source) { text_event(EventKind::Message, text, source); }
 
 }  // namespace ncc

@@ -8,6 +8,7 @@
 // variables).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <bitset>
 #include <map>
@@ -55,6 +56,7 @@ struct RuntimeIssue {
   int slot = -1;
   int code = -1;  // or the G/M code (ProgramSemantics::codes index) it concerns
   int nth = 0;    // of the block's words of `slot`, the one meant (GE2 GE3: 1 is GE3)
+  std::vector<std::pair<uint32_t, std::string>> notes = {};  // (source block, text): where else it concerns
 };
 
 class RuntimeIssues {
@@ -93,6 +95,12 @@ class Machine {
   void operator_input(const std::string& shown, double answer, uint32_t source);
   // The user screen changed (NC-110 SCR, OUT): "on", "field 2 row 3 column 19 "0      "".
   void screen_event(const std::string& what, uint32_t source);
+  // A process met the others (NC-110 EXE, REL, WAI, SND): "restart process 2".
+  void sync_event(const std::string& what, uint32_t source);
+  // The process waited for another until `seconds` of its run (NC-110 chapter 4):
+  // its clock goes on from there.
+  void wait_until(double seconds) { clock_ = std::max(clock_, seconds); }
+  double clock() const { return clock_; }
   void set_stop_on_error(bool on) { stop_on_error_ = on; }
 
   // The block-skip switch: '/' blocks are skipped while it is on.

@@ -105,6 +105,7 @@ struct MachineConfig {
   std::optional<Plane> turning_plane;      // NC-110 (CTL,T): the turning configuration's plane
   ProbeConfig probe;
   AssetConfig asset;
+  uint8_t processes = 5;  // NC-110 chapter 4: the processes configured (PGCFIL), 1..5
 
   static std::array<AxisConfig, kAxisCount> default_axes() {
     std::array<AxisConfig, kAxisCount> a{};

@@ -48,8 +48,8 @@ std::string event_name(EventKind kind) {
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
       "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input", "screen"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::Screen) + 1, "one name per event kind");
+      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input", "screen", "sync"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::Sync) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
 
@@ -106,7 +106,8 @@ class TextSink final : public BufferedSink {
 
   void event(const Event& e) override {
     const SourceBlock b = block(e);
-    std::string s = b.file == 0 ? fmt::format("{}", b.line)
+    std::string s = e.process ? fmt::format("P{} ", e.process) : std::string();
+    s += b.file == 0 ? fmt::format("{}", b.line)
                                 : fmt::format("{}:{}", printable(b.file < map_.files.size() ? map_.files[b.file] : "?"), b.line);
     s += b.has_number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', b.number) : std::string(" - ");
     s += body(e);
@@ -220,6 +221,7 @@ class TextSink final : public BufferedSink {
       case EventKind::Asset: return "asset " + asset_text(e);
       case EventKind::Input: return fmt::format("input {} {}", quoted(e.text), four_decimals(e.a));
       case EventKind::Screen: return "screen " + e.text;
+      case EventKind::Sync: return "sync " + e.text;
     }
     return "?";
   }
@@ -235,6 +237,7 @@ class JsonlSink final : public BufferedSink {
     const SourceBlock b = block(e);
     std::string s = fmt::format(R"({{"seq":{},"file":{},"line":{},"col":{})", ++seq_,
                                 quoted(b.file < map_.files.size() ? map_.files[b.file] : ""), b.line, b.col);
+    if (e.process) s += fmt::format(R"(,"process":{})", e.process);
     if (b.has_number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', b.number);
     s += R"(,"event":")" + event_name(e.kind) + '"';
     fields(e, s);
@@ -363,7 +366,8 @@ class JsonlSink final : public BufferedSink {
         s += R"(,"prompt":)" + quoted(e.text);
         num("answer", e.a);
         break;
-      case EventKind::Screen: s += R"(,"what":)" + quoted(e.text); break;
+      case EventKind::Screen:
+      case EventKind::Sync: s += R"(,"what":)" + quoted(e.text); break;
       case EventKind::CompLoad:
         s += fmt::format(R"(,"n":{})", e.n);
         num("length", e.a);
@@ -394,6 +398,8 @@ class CanonSink final : public BufferedSink {
   }
 
   void event(const Event& e) override {
+    // The processes of a run take turns: each turn says whose calls follow.
+    if (e.process != process_) line(fmt::format("COMMENT(\"ncc: process {}\")", process_ = e.process));
     switch (e.kind) {
       case EventKind::Units: line(e.n ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)"); break;
       case EventKind::Plane:
@@ -471,6 +477,7 @@ class CanonSink final : public BufferedSink {
       case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", asset_text(e))); break;
       case EventKind::Input: line(fmt::format("COMMENT(\"ncc: input {} {}\")", e.text, canon_number(e.a))); break;
       case EventKind::Screen: line(fmt::format("COMMENT(\"ncc: screen {}\")", json_escape(e.text))); break;
+      case EventKind::Sync: line(fmt::format("COMMENT(\"ncc: sync {}\")", json_escape(e.text))); break;
       case EventKind::CompLoad:
         line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
         break;
@@ -523,6 +530,7 @@ class CanonSink final : public BufferedSink {
   }
 
   bool nine_ = false;
+  uint8_t process_ = 0;  // whose calls the last ones were
 };
 
 }  // namespace

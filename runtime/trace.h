@@ -69,6 +69,7 @@ enum class EventKind : uint8_t {
   Asset,             // text: the statement ("read 1 record 3"); n: its code of table 5.2, 0 when it worked
   Input,             // text: the prompt and the value offered; a: the operator's answer (NC-110 INP)
   Screen,            // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
+  Sync,              // text: what a process did with the others: "restart process 2", "wait for process 1" (NC-110 chapter 4)
 };
 
 inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }
@@ -78,6 +79,7 @@ struct Event {
   explicit Event(EventKind k) : kind(k) {}
 
   EventKind kind = EventKind::Comment;
+  uint8_t process = 0;  // of a run of several processes, the one it happened in (NC-110 chapter 4)
   uint32_t source = 0;  // SourceMap::blocks index
   int n = 0;
   double a = 0, b = 0, c = 0;
@@ -110,6 +112,23 @@ class CollectSink final : public TraceSink {
  public:
   void event(const Event& e) override { events.push_back(e); }
   std::vector<Event> events;
+};
+
+// Stamps each event with a process's number for the sink of the run (a run of
+// several processes, NC-110 chapter 4).
+class ProcessSink final : public TraceSink {
+ public:
+  ProcessSink(TraceSink& out, uint8_t process) : out_(out), process_(process) {}
+  void event(const Event& e) override {
+    Event stamped = e;
+    stamped.process = process_;
+    out_.event(stamped);
+  }
+  bool wants_events() const override { return out_.wants_events(); }
+
+ private:
+  TraceSink& out_;
+  uint8_t process_;
 };
 
 enum class TraceFormat { Text, Jsonl, Canon };

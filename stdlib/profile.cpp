@@ -376,6 +376,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   if (auto v = p.string("machine.name", diags)) m.name = *v;
   if (auto v = p.boolean("machine.block_skip", diags)) m.block_skip = *v;
   if (auto v = p.boolean("machine.optional_stop", diags)) m.optional_stop = *v;
+  if (auto v = p.number("machine.processes", diags)) {
+    if (*v >= 1 && *v <= 5 && *v == std::trunc(*v)) m.processes = static_cast<uint8_t>(*v);
+    else p.report_value(diags, "machine.processes", "must be a whole number from 1 to 5");
+  }
   if (auto v = p.boolean("machine.spindle_encoder", diags)) m.spindle_encoder = *v;
   if (auto v = p.number("machine.max_rpm", diags)) {
     if (*v >= 0) m.max_rpm = *v;

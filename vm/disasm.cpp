@@ -54,8 +54,9 @@ std::string disassemble(const Module& m) {
   for (uint16_t i : m.semantics.power_on) out += fmt::format(" c{}", i);
   out += "\n; entries\n";
   for (const Entry& e : m.entries) {
-    const char* kind = e.kind == EntryKind::Program ? "program" : e.kind == EntryKind::MainBlock ? "main block" : "subprogram";
-    out += fmt::format(";   {:<10} {:<10} at {}\n", e.name, kind, e.pc);
+    static constexpr const char* kKinds[] = {"program", "main block", "subprogram", "process"};
+    out += fmt::format(";   {:<10} {:<10} at {}", e.name, kKinds[static_cast<int>(e.kind)], e.pc);
+    out += e.process ? fmt::format(", started in process {}\n", e.process) : "\n";
   }
   out += "; code\n";
   size_t line = 0;

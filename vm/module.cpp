@@ -171,6 +171,7 @@ void write_section(uint32_t t, ByteWriter& w, const Module& m) {
       w.str(e.name);
       w.u8(static_cast<uint8_t>(e.kind));
       w.u32(e.pc);
+      w.u8(e.process);
     }
   } else if (t == kVars) {
     w.u32(static_cast<uint32_t>(m.spaces.size()));
@@ -180,6 +181,7 @@ void write_section(uint32_t t, ByteWriter& w, const Module& m) {
       w.u8(space.memory);
       w.u32(space.locals);
       w.u8(space.vacant);
+      w.u8(static_cast<uint8_t>(space.format));
       w.f64(space.limit);
       w.u32(static_cast<uint32_t>(space.types.size()));
       for (const VarSpace::Range& r : space.types) {
@@ -354,15 +356,16 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       previous = l;
     }
   } else if (t == kEntr) {
-    if (!count(r, 9, n)) return false;
+    if (!count(r, 10, n)) return false;
     m.entries.resize(n);
     for (Entry& e : m.entries) {
       e.name = r.str();
-      if (!enum_value(r, EntryKind::Subprogram, e.kind)) return false;
+      if (!enum_value(r, EntryKind::Process, e.kind)) return false;
       e.pc = r.u32();
+      e.process = r.u8();
     }
   } else if (t == kVars) {
-    if (!count(r, 26, n)) return false;
+    if (!count(r, 27, n)) return false;
     m.spaces.resize(n);
     for (VarSpace& s : m.spaces) {
       s.name = r.str();
@@ -370,6 +373,7 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       s.memory = r.u8();
       s.locals = r.u32();
       s.vacant = r.u8();
+      if (!enum_value(r, MemFormat::LongReal, s.format)) return false;
       s.limit = r.f64();
       uint32_t ranges = 0;
       if (!count(r, 5, ranges)) return false;
@@ -599,7 +603,7 @@ std::string verify(const Module& m) {
         case 's': ok = v < m.strings.size(); break;
         case 'c': ok = v < s.codes.size(); break;
         case 'w': ok = v < kWordSlots; break;
-        case 'e': ok = v < m.entries.size(); break;
+        case 'e': ok = v < m.entries.size() && (m.entries[v].kind == EntryKind::Process) == (op == Op::ProcStart); break;
         case 'v':
           ok = v < m.spaces.size() && m.spaces[v].memory == wants_memory;
           space = static_cast<uint8_t>(v);
@@ -634,8 +638,11 @@ std::string verify(const Module& m) {
     if (!at_boundary(to)) return fmt::format("a jump goes to {}, which is not an instruction", to);
     if (to <= from && !at_step(to)) return fmt::format("the jump back from {} to {} does not land on a Step", from, to);
   }
-  for (const Entry& e : m.entries)
+  for (const Entry& e : m.entries) {
     if (!at_step(e.pc)) return fmt::format("entry point {} does not start with a Step", printable(e.name));
+    if (e.process > kMaxProcesses || (e.process && e.kind != EntryKind::Process))
+      return fmt::format("entry point {} starts in process {}", printable(e.name), e.process);
+  }
   for (uint32_t end : range_ends)
     if (!at_boundary(end) || code[end] != static_cast<uint8_t>(Op::RangeEnd))
       return fmt::format("a range ends at {}, which is not a RangeEnd", end);

@@ -17,16 +17,19 @@
 
 namespace ncc::vm {
 
-constexpr uint16_t kFormatVersion = 10;
+constexpr uint16_t kFormatVersion = 11;
 constexpr uint32_t kMaxStack = 256;
 constexpr uint64_t kMaxVariables = 1u << 24;  // all spaces together
+constexpr uint8_t kMaxProcesses = 5;           // NC-110 chapter 4
 
-enum class EntryKind : uint8_t { Program, MainBlock, Subprogram };
+// A Process entry is a program that runs in a process of its own (NC-110 EXE, chapter 4).
+enum class EntryKind : uint8_t { Program, MainBlock, Subprogram, Process };
 
 struct Entry {
   std::string name;  // "%0001", ":100"
   EntryKind kind = EntryKind::Program;
   uint32_t pc = 0;
+  uint8_t process = 0;  // a Process entry started in this process when the run starts (0: by EXE only)
 };
 
 // From `pc` on, the code belongs to source block `source` (until the next entry).

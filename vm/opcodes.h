@@ -22,6 +22,11 @@
 // ASSETBIND* and defined by ASSETDEFINE; the I/O instructions (open, read, write,
 // close, create, delete) set IOSTA and stop the run on an error while ERR is 0.
 //
+// Processes (NC-110 chapter 4): PROCSTART, PROCWAIT, PROCWAITUNTIL and PROCSIGNAL may
+// have to wait for another process. Then the instruction is left to run again, its
+// operands back on the stack, and the VM returns Blocked to the scheduler that runs
+// the processes (vm/processes.h).
+//
 // Frames: CALLENTRY calls an entry point (again, while its count lasts), RETURN comes
 // back; the local variables start afresh in every call (ARGs before it give some of
 // them values), except in a CALLSHARED call (Macro B M98). CALLRANGE runs the code
@@ -121,7 +126,12 @@ namespace ncc::vm {
   X(ScreenShow, "", 1, 0, "pop a field; show it (negative: inverse) (OUT)")                       \
   X(ScreenShowAll, "", 0, 0, "show every defined field not shown yet")                          \
   X(ScreenShowValue, "", 2, 0, "pop a value, then a field; show the field with that value")   \
-  X(ScreenShowText, "s", 1, 0, "pop a field; show it with text strings[s]")
+  X(ScreenShowText, "s", 1, 0, "pop a field; show it with text strings[s]")                    \
+  X(ProcStart, "e", 1, 0, "pop a process; start process entry e in it once it is free (NC-110 EXE)") \
+  X(ProcRelease, "", 0, 0, "end the program: its process is free (NC-110 REL)")              \
+  X(ProcWait, "", 1, 0, "pop a process; wait for a restart from it (NC-110 WAI)")             \
+  X(ProcWaitUntil, "vfns", 2, 0, "pop a value, an index; wait until memory v (format f) there relates to it by n (1 = 2 < 3 > 4 not =); s: as written") \
+  X(ProcSignal, "", 1, 0, "pop a process; restart it once it waits for this one (NC-110 SND)")
 
 enum class Op : uint8_t {
 #define NCC_OP_ENUM(name, format, pop, push, doc) name,

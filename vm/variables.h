@@ -41,6 +41,7 @@ struct VarSpace {
   };
   std::vector<Range> types;  // the type of index i is that of the last range with first <= i
   bool memory = false;       // byte-addressed: read and written through a MemFormat
+  MemFormat format = MemFormat::Byte;  // a memory's, where a reference names none (NC-110 SA: BL)
   // The first `locals` variables are local to a call: each call starts with them
   // reset, and the caller's values come back on return (pp: all; Macro B: #0-#33).
   uint32_t locals = 0;

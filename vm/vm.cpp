@@ -60,7 +60,8 @@ std::string show(VarType type, double v) {
 }  // namespace
 
 Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions options)
-    : m_(module), machine_(machine), issues_(issues), options_(options) {
+    : m_(module), machine_(machine), issues_(issues), options_(options), shared_(options.shared ? *options.shared : own_) {
+  const bool fresh = shared_.memories.empty();
   for (const VarSpace& s : m_.spaces) {
     vars_.emplace_back(s.memory ? 0 : s.size, s.vacant ? kVacant : 0.0);
     vacancy_ = vacancy_ || s.vacant;
@@ -71,7 +72,7 @@ Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions 
       for (const VarSpace::Range& r : s.types)
         if (r.first < s.size) std::fill(types.begin() + r.first, types.end(), r.type);
     }
-    memories_.emplace_back(s.memory ? s.size : 0, uint8_t{0});
+    if (fresh) shared_.memories.emplace_back(s.memory ? s.size : 0, uint8_t{0});
   }
 }
 
@@ -135,7 +136,7 @@ uint8_t* Vm::bytes(uint8_t space, double index, uint32_t count, uint32_t pc) {
     fail(pc, DiagId::MemoryRange, s.name, shortest(index), count, s.size);
     return nullptr;
   }
-  return memories_[space].data() + static_cast<size_t>(index);
+  return shared_.memories[space].data() + static_cast<size_t>(index);
 }
 
 bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out) {
@@ -229,13 +230,20 @@ void Vm::jump_to(uint32_t target) {
   p.pc = target;
 }
 
-RunStatus Vm::run(uint32_t entry) {
-  Process& p = process_;
-  p = Process{};
-  p.pc = m_.entries[entry].pc;
+void Vm::start(uint32_t entry) {
+  process_ = Process{};
+  process_.pc = m_.entries[entry].pc;
   codes_.clear();
   words_.clear();
   args_.clear();
+  waiting_ = false;
+}
+
+RunStatus Vm::resume() {
+  Process& p = process_;
+  // A turn is one block: it ends at the next Step, or at this block's end when the
+  // turn goes on with an instruction that waited.
+  bool stepped = waiting_;
   const uint8_t* code = m_.code.data();
   std::vector<double>& st = p.stack;
   auto pop = [&] {
@@ -343,6 +351,11 @@ RunStatus Vm::run(uint32_t entry) {
         if (machine_.block_skip()) p.pc = u32_at(operands);
         break;
       case Op::Step:
+        if (options_.slice && stepped) {
+          p.pc = pc;
+          return RunStatus::Yield;
+        }
+        stepped = true;
         if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
         // A block that the block-skip switch skips whole (its JUMPSKIP follows) does not run.
         if (options_.trace_blocks && !(p.pc < m_.code.size() && static_cast<Op>(code[p.pc]) == Op::JumpSkip && machine_.block_skip()))
@@ -476,7 +489,7 @@ RunStatus Vm::run(uint32_t entry) {
         std::string prompt;
         if (op == Op::InputField) {
           const double field = pop();
-          auto text = screen_.text(whole_operand(field, 255));
+          auto text = shared_.screen.text(whole_operand(field, 255));
           if (!text) return fail(pc, DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
           prompt = *text;
         } else {
@@ -484,8 +497,8 @@ RunStatus Vm::run(uint32_t entry) {
         }
         double answer = offered;
         if (options_.input) {
-          if (answers_ >= options_.input->size()) return fail(pc, DiagId::InputExhausted, answers_);
-          answer = (*options_.input)[answers_++].value_or(offered);
+          if (shared_.answers >= options_.input->size()) return fail(pc, DiagId::InputExhausted, shared_.answers);
+          answer = (*options_.input)[shared_.answers++].value_or(offered);
         }
         machine_.operator_input(prompt + shortest(offered), answer, m_.source_of(pc));
         st.push_back(answer);
@@ -517,6 +530,19 @@ RunStatus Vm::run(uint32_t entry) {
       case Op::AssetDelete:
         if (!asset(op, operands, pc)) return RunStatus::Error;
         break;
+      case Op::ProcStart:
+      case Op::ProcWait:
+      case Op::ProcWaitUntil:
+      case Op::ProcSignal:
+        switch (process_op(op, operands, pc)) {
+          case ProcessHost::Answer::Done: break;
+          case ProcessHost::Answer::Wait: return RunStatus::Blocked;
+          case ProcessHost::Answer::Error: return RunStatus::Error;
+        }
+        break;
+      case Op::ProcRelease:
+        machine_.sync_event("release", m_.source_of(pc));
+        return RunStatus::Released;
       case Op::CallRange:
         for (const Frame& f : p.frames)
           if (f.range) return fail(pc, DiagId::RangeNested);
@@ -784,6 +810,53 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
 }
 
 
+// ---- Processes (NC-110 chapter 4) ------------------------------------------------------
+
+ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) {
+  std::vector<double>& st = process_.stack;
+  const uint32_t source = m_.source_of(pc);
+  auto answer = [&](ProcessHost::Answer a, const std::string& done, const std::string& waits) {
+    if (a == ProcessHost::Answer::Wait) {
+      process_.pc = pc;  // to run again, its operands as they were
+      if (!waiting_) machine_.sync_event(waits, source);
+      waits_ = waits;
+      waiting_ = true;
+      return a;
+    }
+    if (a == ProcessHost::Answer::Done) machine_.sync_event(done, source);
+    waiting_ = false;
+    return a;
+  };
+  if (op == Op::ProcWaitUntil) {
+    const double value = pop_value(), index = pop_value();
+    double now = 0;
+    if (!load_mem(operands[0], static_cast<MemFormat>(operands[1]), index, pc, now)) return ProcessHost::Answer::Error;
+    const uint8_t relation = operands[2];
+    const bool holds = (relation == 1 ? now == value : relation == 2 ? now < value : relation == 3 ? now > value : now != value) ||
+                       (waiting_ && options_.processes && options_.processes->assume_met());
+    if (!holds) st.insert(st.end(), {index, value});
+    const std::string& condition = m_.strings[u32_at(operands + 3)];
+    return answer(holds ? ProcessHost::Answer::Done : ProcessHost::Answer::Wait, condition + " holds", "wait until " + condition);
+  }
+  const double n = pop_value();
+  const std::string process = shortest(n);
+  ProcessHost::Answer a = ProcessHost::Answer::Error;
+  if (!options_.processes) {
+    fail(pc, DiagId::ProcessError, process, "this run has one process");
+  } else if (op == Op::ProcStart) {
+    const uint16_t entry = u16_at(operands);
+    a = answer(options_.processes->start(n, entry, pc), fmt::format("start process {} {}", process, m_.entries[entry].name),
+               fmt::format("start process {} {}: waits until it is free", process, m_.entries[entry].name));
+  } else if (op == Op::ProcWait) {
+    a = answer(options_.processes->wait_for(n, pc), "restarted by process " + process, "wait for process " + process);
+  } else {
+    a = answer(options_.processes->signal(n, pc), "restart process " + process,
+               fmt::format("restart process {}: waits until it waits for process {}", process, options_.process));
+  }
+  if (a == ProcessHost::Answer::Wait) st.push_back(n);
+  return a;
+}
+
 // ---- The user screen (NC-110 §5.6) -------------------------------------------------------
 
 bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
@@ -792,11 +865,11 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
   std::string why;
   switch (op) {
     case Op::ScreenOn:
-      screen_.switch_on();
+      shared_.screen.switch_on();
       machine_.screen_event("on", source);
       return true;
     case Op::ScreenOff:
-      screen_.switch_off();
+      shared_.screen.switch_off();
       machine_.screen_event("off", source);
       return true;
     case Op::ScreenDefineText:
@@ -810,21 +883,21 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
       else if (format != 0) why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
       screen::Attributes a{attribute == 256, attribute >= 0 && attribute <= 255 ? static_cast<int>(attribute) : -1};
       const auto whole = [](double v) { return v == std::trunc(v) && std::fabs(v) < 1e6 ? static_cast<int>(v) : 0; };
-      if (why.empty()) why = screen_.define(whole_operand(field, 255), whole(row), whole(column), init, f, a);
+      if (why.empty()) why = shared_.screen.define(whole_operand(field, 255), whole(row), whole(column), init, f, a);
       break;
     }
     case Op::ScreenShow: {
       const double field = pop();
-      why = screen_.show(whole_operand(std::fabs(field), 255), field < 0);
+      why = shared_.screen.show(whole_operand(std::fabs(field), 255), field < 0);
       break;
     }
-    case Op::ScreenShowAll: why = screen_.show_all(); break;
+    case Op::ScreenShowAll: why = shared_.screen.show_all(); break;
     case Op::ScreenShowValue:
     case Op::ScreenShowText: {
       screen::Content c{op == Op::ScreenShowText, {}, 0};
       if (c.is_text) c.text = m_.strings[read_operand(operands, 4)];
       else c.value = pop();
-      why = screen_.show_with(whole_operand(pop(), 255), c);
+      why = shared_.screen.show_with(whole_operand(pop(), 255), c);
       break;
     }
     default: break;
@@ -833,9 +906,9 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
     fail(pc, DiagId::ScreenError, why);
     return false;
   }
-  for (uint32_t n : screen_.take_shown()) {
-    const screen::Attributes a = screen_.attributes(n);
-    std::string text = fmt::format("field {} row {} column {} \"{}\"", n, screen_.row(n), screen_.column(n), screen_.rendered(n));
+  for (uint32_t n : shared_.screen.take_shown()) {
+    const screen::Attributes a = shared_.screen.attributes(n);
+    std::string text = fmt::format("field {} row {} column {} \"{}\"", n, shared_.screen.row(n), shared_.screen.column(n), shared_.screen.rendered(n));
     if (a.inverse) text += " inverse";
     if (a.colour >= 0) text += fmt::format(" colour {}", a.colour);
     machine_.screen_event(text, source);

@@ -15,6 +15,28 @@
 
 namespace ncc::vm {
 
+// What the processes of a run share (NC-110 §4.1.3): the memories SYVAR, SA and SK,
+// the user screen (one video frame 8) and the operator's answers taken so far.
+struct SharedState {
+  std::vector<std::vector<uint8_t>> memories;  // of the memory spaces (empty for the others)
+  screen::UserScreen screen;
+  size_t answers = 0;  // of VmOptions::input, taken
+};
+
+// The other processes of a run, as a process's EXE, WAI and SND meet them (NC-110
+// chapter 4): the scheduler (processes.h) answers for the process it is running.
+class ProcessHost {
+ public:
+  enum class Answer { Done, Wait, Error };  // Error: reported at the block
+  virtual ~ProcessHost() = default;
+  virtual Answer start(double process, uint32_t entry, uint32_t pc) = 0;  // EXE
+  virtual Answer wait_for(double process, uint32_t pc) = 0;              // WAI n
+  virtual Answer signal(double process, uint32_t pc) = 0;                // SND
+  // A WAI condition that no process meets is taken as met (the dry run of
+  // `ncc check`, which cannot know the PLC).
+  virtual bool assume_met() { return false; }
+};
+
 struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
   bool trace_blocks = false;  // a `block` event as each block starts
@@ -22,9 +44,16 @@ struct VmOptions {
   // The operator's answers to INP, in order (nullopt: ENTER, the offered value stays);
   // none: a dry run, every answer is the offered value.
   std::vector<std::optional<double>>* input = nullptr;
+  SharedState* shared = nullptr;        // none: the VM's own
+  ProcessHost* processes = nullptr;     // none: one process, which EXE, WAI and SND cannot leave
+  uint8_t process = 0;                  // its number (0: the only one)
+  bool slice = false;                   // resume() runs one block, then returns Yield
 };
 
-enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error };
+// Released: REL ended the program (NC-110). Yield: the block is done, others may run
+// (VmOptions::slice). Blocked: an instruction waits for another process; resume()
+// runs it again.
+enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error, Released, Yield, Blocked };
 
 class Vm {
  public:
@@ -32,10 +61,20 @@ class Vm {
 
   // Runs from entry point `entry` until the unit ends, the program ends (M02), the
   // information ends (M30) or an error stops it.
-  RunStatus run(uint32_t entry);
+  RunStatus run(uint32_t entry) {
+    start(entry);
+    return resume();
+  }
+  // The same in turns: start, then resume until it returns neither Yield nor Blocked.
+  void start(uint32_t entry);
+  RunStatus resume();
   uint64_t steps() const { return steps_; }
-  uint32_t pc() const { return process_.pc; }  // where the last run stopped
-  const screen::UserScreen& user_screen() const { return screen_; }
+  uint32_t pc() const { return process_.pc; }  // where the last run stopped (Blocked: the waiting instruction)
+  const std::string& waits() const { return waits_; }  // Blocked: what for ("wait for process 2")
+  double blocked_operand() const { return process_.stack.empty() ? 0 : process_.stack.back(); }  // Blocked: the process named
+  // The PLC writes a memory (SA, SK: a run's input script): index and value fit.
+  void write_memory(uint8_t space, MemFormat f, uint32_t index, double value) { store_mem(space, f, index, value, 0); }
+  const screen::UserScreen& user_screen() const { return shared_.screen; }
 
  private:
   struct Arg {
@@ -90,7 +129,6 @@ class Vm {
   bool asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values, uint32_t pc);
   std::vector<AssetField> fields_;  // of the structure being defined
   std::map<uint32_t, std::vector<AssetField>> structures_;
-  size_t answers_ = 0;  // of options_.input, taken
   // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
   bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
   double pop_value() {  // the verifier has checked the stack holds it
@@ -98,7 +136,11 @@ class Vm {
     process_.stack.pop_back();
     return v;
   }
-  screen::UserScreen screen_;
+  // EXE, WAI, SND: Done (a sync event shows it), Wait (the first time, an event
+  // shows what it waits for), or Error.
+  ProcessHost::Answer process_op(Op op, const uint8_t* operands, uint32_t pc);
+  bool waiting_ = false;  // the instruction at pc waits (Blocked)
+  std::string waits_;     // what for
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.
   void jump_to(uint32_t target);
@@ -115,7 +157,8 @@ class Vm {
   VmOptions options_;
   uint64_t steps_ = 0;
   std::vector<std::vector<double>> vars_;
-  std::vector<std::vector<uint8_t>> memories_;  // of the memory spaces (empty for the others)
+  SharedState own_;
+  SharedState& shared_;  // own_, or the run's
   Process process_;
   std::vector<uint16_t> codes_;  // the pending block
   BlockWords words_;

@@ -23,6 +23,7 @@ struct CheckRules {
   uint32_t max_repeat_depth = 0;    // repeat loops that may nest (0: no limit)
   bool recursion = false;           // a unit may call itself (Macro B: a condition ends it)
   bool block_ranges = false;        // a label may end a block range (NC-110 EPP): code follows its block
+  uint8_t processes = 1;            // processes that run programs side by side (NC-110 chapter 4: 5)
 };
 
 // The block numbers of a unit in order: a number used again, or lower than the one

@@ -32,6 +32,8 @@ struct Command {
 constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110, pp, iso (default gost)
   --machine FILE            machine profile (TOML, docs/profile.md); default: built in
   --lib DIR                 program library: where called programs are found (NC-110 CLS, pp G72, iso M98 G65)
+  --process N=NAME          NC-110: program NAME[/MPn] of the library starts in process N (2..5) with the run,
+                            as the keyboard's SPG selects it (chapter 4); once for each process
   --no-fast-path            read every block with the ANTLR parser (the fast path must give the same IR)
   --no-stream               hold the whole program's IR before checking and lowering it (the stream
                             must give the same module and diagnostics)
@@ -87,6 +89,7 @@ struct Options {
   std::string dialect = "gost";
   std::string machine;
   std::string library;
+  std::vector<std::pair<uint8_t, std::string>> processes;
   bool fast_path = true;
   bool stream = true;
   std::string trace = "-";
@@ -125,6 +128,13 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(o.machine)) return "--machine needs a file";
     } else if (a == "--lib") {
       if (!value(o.library)) return "--lib needs a directory";
+    } else if (a == "--process") {
+      // N=NAME: a process 2..5 (1 runs FILE), a program name as EXE writes it.
+      if (!value(text) || text.size() < 3 || text[0] < '2' || text[0] > '5' || text[1] != '=')
+        return "--process needs N=NAME: a process 2 to 5 and a program of the library";
+      for (const auto& [process, name] : o.processes)
+        if (process == text[0] - '0') return fmt::format("--process {}: process {} already runs {}", text, process, name);
+      o.processes.push_back({static_cast<uint8_t>(text[0] - '0'), text.substr(2)});
     } else if (a == "--no-fast-path") {
       o.fast_path = false;
     } else if (a == "--no-stream") {
@@ -186,6 +196,7 @@ class Cli {
  public:
   explicit Cli(Options o) : o_(std::move(o)), s_(o_.error_limit) {
     s_.library = o_.library;
+    s_.processes = o_.processes;
     s_.fast_path = o_.fast_path;
     s_.stream = o_.stream;
     color_ = o_.color == "always" || (o_.color == "auto" && isatty(STDERR_FILENO) && !std::getenv("NO_COLOR"));

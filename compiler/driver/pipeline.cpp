@@ -4,12 +4,15 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <deque>
 #include <set>
 
 #include "check/check.h"
 #include "frontend/frontend.h"
 #include "lower/lower.h"
+#include "support/text.h"
 #include "runtime/machine.h"
+#include "vm/processes.h"
 
 namespace ncc {
 
@@ -57,11 +60,15 @@ class IssueReporter final : public RuntimeIssues {
     if (dry_ && block && block->has_errors) return;
     if (!file_ids_) file_ids_ = source_files(s_, m_);
     const std::vector<uint32_t>& file_ids = *file_ids_;
+    auto block_range = [&](const SourceBlock& b) {
+      uint32_t file = b.file < file_ids.size() ? file_ids[b.file] : 0;
+      return SourceRange{file, b.line, b.col, b.end_line, b.end_col};
+    };
     SourceRange range;
     if (block) {
       const SourceBlock& b = *block;
-      uint32_t file = b.file < file_ids.size() ? file_ids[b.file] : 0;
-      range = {file, b.line, b.col, b.end_line, b.end_col};
+      const uint32_t file = block_range(b).file;
+      range = block_range(b);
       if (i.slot >= 0 || i.code >= 0) {
         int skip = i.nth;
         for (const WordPosition& p : map.words(i.source)) {
@@ -72,7 +79,10 @@ class IssueReporter final : public RuntimeIssues {
         }
       }
     }
-    s_.diags.add({i.id, diag_info(i.id).severity, range, i.message, {}});
+    std::vector<Note> notes;
+    for (const auto& [source, text] : i.notes)
+      notes.push_back({source < map.size() ? block_range(map.block(source)) : SourceRange{}, text});
+    s_.diags.add({i.id, diag_info(i.id).severity, range, i.message, std::move(notes)});
   }
 
  private:
@@ -101,9 +111,48 @@ RunResult cannot_start() {
   return r;
 }
 
-// The operator's answers to INP (--input): a line each, a number or ENTER (keep the
-// value offered); blank lines and '#' comments are skipped. Problems at their place.
-bool read_answers(Session& s, const std::string& path, std::vector<std::optional<double>>& answers) {
+// A PLC signal of the input script: a memory of the module, its index, a format
+// (BL BY IN LI RE LR; none: the memory's own) and the value, as a program writes
+// it: SA12=1, SK250=8, SK2.IN=-5. Why not, when it is not one.
+std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& out) {
+  const size_t equals = text.find('=');
+  size_t name = 0;
+  while (name < equals && std::isalpha(static_cast<unsigned char>(text[name]))) ++name;
+  size_t space = 0;
+  while (space < m.spaces.size() && !(m.spaces[space].memory && m.spaces[space].name == text.substr(0, name))) ++space;
+  if (equals == std::string_view::npos || space == m.spaces.size()) return "not an answer";
+  std::string_view ref = text.substr(name, equals - name), value = text.substr(equals + 1);
+  const size_t dot = ref.find('.');
+  uint32_t index = 0;
+  if (dot != 0 && !ref.empty() && !parse_number<uint32_t>(ref.substr(0, dot))) return "the index is not a whole number";
+  if (dot != 0 && !ref.empty()) index = *parse_number<uint32_t>(ref.substr(0, dot));
+  static constexpr std::string_view kFormats[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
+  out.format = m.spaces[space].format;
+  if (dot != std::string_view::npos) {
+    const auto* f = std::find(std::begin(kFormats), std::end(kFormats), ref.substr(dot + 1));
+    if (f == std::end(kFormats)) return "the format is none of BL BY IN LI RE LR";
+    out.format = static_cast<MemFormat>(f - std::begin(kFormats));
+  }
+  const uint64_t bytes = out.format == MemFormat::Bit ? (uint64_t{index} + 8) / 8 : (uint64_t{index} + 1) * mem_size(out.format);
+  if (bytes > m.spaces[space].size) return fmt::format("{} has {} bytes", m.spaces[space].name, m.spaces[space].size);
+  auto v = parse_number<double>(value);
+  static constexpr double kLimits[][2] = {{0, 1}, {0, 255}, {-32768, 32767}, {-2147483648.0, 2147483647}, {-3.4e38, 3.4e38}, {-1.7e308, 1.7e308}};
+  const auto& [lo, hi] = kLimits[static_cast<int>(out.format)];
+  const bool whole = out.format != MemFormat::Real && out.format != MemFormat::LongReal;
+  if (!v || *v < lo || *v > hi || (whole && *v != std::trunc(*v)))
+    return fmt::format("the value must be {} from {} to {}", whole ? "a whole number" : "a number", shortest(lo), shortest(hi));
+  out.space = static_cast<uint8_t>(space);
+  out.index = index;
+  out.value = *v;
+  return {};
+}
+
+// The input script (--input): the operator's answers to INP, a line each, a number or
+// ENTER (keep the value offered), and the PLC's signals (SA12=1), each given when no
+// process can go on without it; blank lines and '#' comments are skipped. Problems
+// at their place.
+bool read_answers(Session& s, const vm::Module& m, const std::string& path, std::vector<std::optional<double>>& answers,
+                  std::deque<vm::PlcWrite>& plc) {
   auto text = read_file(path);
   if (!text) {
     s.diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno));
@@ -120,11 +169,15 @@ bool read_answers(Session& s, const std::string& path, std::vector<std::optional
     std::string_view answer = line.substr(begin, end - begin);
     double v = 0;
     auto [stop, ec] = std::from_chars(answer.data(), answer.data() + answer.size(), v);
+    vm::PlcWrite w;
+    std::string why;
     if (answer == "ENTER") answers.push_back(std::nullopt);
     else if (ec == std::errc() && stop == answer.data() + answer.size() && std::isfinite(v)) answers.push_back(v);
+    else if ((why = plc_write(m, answer, w)).empty()) plc.push_back(w);
     else
       s.diags.report(DiagId::InputScript, {id, n, static_cast<uint32_t>(begin + 1), n, static_cast<uint32_t>(end + 1)},
-                     fmt::format("'{}' is not an answer: a number, or ENTER to keep the value offered", answer));
+                     fmt::format("'{}' is {}: a line is an answer, a number or ENTER to keep the value offered, or a PLC signal such as SA12=1",
+                                 answer, why == "not an answer" ? why : "not a PLC signal: " + why));
   }
   return s.diags.error_count() == errors;
 }
@@ -139,17 +192,16 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
   IssueReporter reporter(s, m, dry);
-  Machine machine(m.semantics, config, trace, reporter);
-  machine.set_stop_on_error(!dry);
   vm::VmOptions options;
   options.max_steps = settings.max_steps.value_or(m.source_map.size() + kDefaultExtraSteps);
   options.trace_blocks = settings.trace_blocks;
+  vm::ProcessSetup setup{m, config, trace, reporter, options};
+  setup.dry = dry;
+  setup.processes = config.processes;
   // ASSET files (NC-110 chapter 5) in the sandbox of --files; a dry run leaves them
   // alone: they are the machine's, not the program's.
   std::unique_ptr<asset::Store> store;
   std::vector<std::optional<double>> answers;
-  asset::OpenFiles open_files;
-  std::optional<asset::Channels> channels;
   if (!dry) {
     if (!settings.files.empty()) {
       std::string why;
@@ -159,17 +211,14 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
         return cannot_start();
       }
     }
-    if (!settings.input.empty() && !read_answers(s, settings.input, answers)) return cannot_start();
-    options.input = &answers;
-    channels.emplace(store.get(), open_files,
-                     asset::Channels::Settings{.channels = config.asset.channels, .structures = config.asset.structures});
-    options.asset = &*channels;
+    if (!settings.input.empty() && !read_answers(s, m, settings.input, answers, setup.plc)) return cannot_start();
+    setup.options.input = &answers;
+    setup.store = store.get();
+    setup.files = true;
+    setup.channels = {.channels = config.asset.channels, .structures = config.asset.structures};
   }
-  vm::Vm vm(m, machine, reporter, options);
-  machine.power_on();
 
-  // Programs run in the order of the medium, each after the previous one ended
-  // (M02); M30 ends the information.
+  // Process 1 runs the programs of the medium from the first, or from a main block.
   size_t first = 0;
   if (settings.start_block) {
     std::string name = fmt::format(":{}", *settings.start_block);
@@ -181,20 +230,11 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
       return cannot_start();
     }
   }
-  for (size_t i = first; i < m.entries.size(); ++i) {
-    if (i != first && m.entries[i].kind != vm::EntryKind::Program) continue;
-    vm::RunStatus status = vm.run(static_cast<uint32_t>(i));
-    if (status == vm::RunStatus::UnitEnded) machine.end_of_unit(m.source_of(vm.pc()));
-    if (status == vm::RunStatus::Error) {
-      result.ok = false;
-      break;
-    }
-    if (status == vm::RunStatus::EndOfInformation) break;
-  }
-  machine.end_run(!result.ok);
+  vm::Processes processes(std::move(setup));
+  result.ok = processes.run(first);
   trace.flush();
-  result.steps = vm.steps();
-  if (vm.user_screen().on()) result.screen = vm.user_screen().lines();
+  result.steps = processes.steps();
+  if (processes.user_screen().on()) result.screen = processes.user_screen().lines();
   if (s.diags.has_errors()) result.ok = false;
   return result;
 }
@@ -235,6 +275,10 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
   stdlib::load_machine_config(*s.profile, s.diags);
   s.profile->report_unused(s.diags);
   if (!frontend || s.diags.error_count() != errors) return nullptr;
+  if (!s.processes.empty() && frontend->rules().processes < 2) {
+    s.diags.report(DiagId::DialectUnknown, {}, fmt::format("--process: the {} dialect runs one process", dialect));
+    return nullptr;
+  }
   return frontend;
 }
 
@@ -300,7 +344,7 @@ class Stream final : public BlockSink {
 std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect) {
   auto frontend = frontend_for(s, dialect);
   if (!frontend) return std::nullopt;
-  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path});
+  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, nullptr, s.processes});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags);
   return program;
 }
@@ -310,7 +354,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   if (!frontend) return std::nullopt;
   Stream stream(s, frontend->rules());
   stream.lowering.expect(s.sources.file(file).text().size());
-  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr});
+  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
   return stream.lowering.finish(program, *s.profile);
 }

@@ -20,6 +20,7 @@ struct Session {
   Diagnostics diags;
   std::optional<stdlib::Profile> profile;
   std::string library;  // --lib: where called programs are found
+  std::vector<std::pair<uint8_t, std::string>> processes;  // --process N=NAME (NC-110 SPG)
   bool fast_path = true;  // --no-fast-path: every block through the ANTLR parser (to compare)
   bool stream = true;     // --no-stream: hold the whole IR before checking and lowering (to compare)
 

@@ -32,6 +32,9 @@ struct ReadOptions {
   std::string library;  // where called programs are looked for ("" = the dialect's default)
   bool fast_path = true;  // plain word blocks by the hand-written scanner (false: every block by ANTLR)
   BlockSink* sink = nullptr;  // none: the whole program is held
+  // Programs started in other processes when the run starts, as a controller's
+  // keyboard selects them (NC-110 SPG): process number, NAME or NAME/DEVICE.
+  std::vector<std::pair<uint8_t, std::string>> processes;
 };
 
 class Frontend {

@@ -132,6 +132,12 @@ enum class StmtKind : uint8_t {
   ScreenDefine,  // DEF: items field, row, column, initial value[, format]; `label` the attribute (R, A179) or ""
   ScreenShow,    // OUT: items the fields (a negative constant: inverse); none: every field not shown yet
   ScreenShowWith,  // OUT n, value: items field, value
+  // NC-110 processes (chapter 4).
+  ProcessStart,      // EXE: start program `label` (a unit of kind Process) in process `value`
+  ProcessRelease,    // REL: the program ends; its process is free
+  ProcessWait,       // WAI n: wait for a restart (ProcessSignal) from process `value`
+  ProcessWaitUntil,  // WAI condition: wait until `value` (a comparison of a memory) is true; `label` as written
+  ProcessSignal,     // SND: restart process `value`, once it waits for this one
 };
 
 // What an ASSET statement does (docs/asset.md, Statements), with its operands in
@@ -186,7 +192,9 @@ struct Block {
   std::vector<Stmt> stmts;
 };
 
-enum class UnitKind : uint8_t { Program, Subprogram, Macro };
+// A Process unit is a program another process starts (NC-110 EXE): not run in the
+// order of the medium.
+enum class UnitKind : uint8_t { Program, Subprogram, Macro, Process };
 
 struct Unit {
   UnitKind kind = UnitKind::Program;
@@ -207,6 +215,7 @@ struct Unit {
   // Of them, the ones the blocks held name (indices in streamed_labels, in order).
   std::vector<size_t> named_streamed_labels() const;
   bool ends_information = false;  // terminated by end of information (M30)
+  uint8_t process = 0;  // a Process unit started in this process when the run starts (0: by EXE only)
 };
 
 struct Program {

@@ -129,7 +129,7 @@ std::string print(const Program& p, const SourceManager& sources) {
                        s.vacant ? " vacant" : "");
 
   for (const Unit& u : p.units) {
-    const char* kind = pick(u.kind, {"program", "subprogram", "macro"});
+    const char* kind = pick(u.kind, {"program", "subprogram", "macro", "process"});
     std::string file = u.range.file < sources.size() ? sources.file(u.range.file).path() : "?";
     out += fmt::format("unit {} {} @{}:{}", kind, u.name, file, range_text(u.range));
     if (!u.title.empty()) out += " \"" + json_escape(u.title) + "\"";
@@ -202,8 +202,15 @@ std::string print(const Program& p, const SourceManager& sources) {
           case StmtKind::ScreenSwitch:
           case StmtKind::ScreenDefine:
           case StmtKind::ScreenShow:
-          case StmtKind::ScreenShowWith: {
-            static constexpr const char* kNames[] = {"input", "screen_switch", "screen_define", "screen_show", "screen_show_with"};
+          case StmtKind::ScreenShowWith:
+          case StmtKind::ProcessStart:
+          case StmtKind::ProcessRelease:
+          case StmtKind::ProcessWait:
+          case StmtKind::ProcessWaitUntil:
+          case StmtKind::ProcessSignal: {
+            static constexpr const char* kNames[] = {"input",         "screen_switch",   "screen_define", "screen_show",
+                                                     "screen_show_with", "process_start", "process_release",
+                                                     "process_wait",  "process_wait_until", "process_signal"};
             out += fmt::format("    {}", kNames[static_cast<int>(s.kind) - static_cast<int>(StmtKind::Input)]);
             if (!s.label.empty()) out += fmt::format(" \"{}\"", s.label);
             if (s.target != kNoExpr) out += " " + print_expr(p, s.target);

@@ -402,6 +402,38 @@ class Lowering {
     }
   }
 
+  // NC-110 EXE, REL, WAI, SND (chapter 4): the process operand, then the instruction.
+  void process(const ir::Stmt& s) {
+    switch (s.kind) {
+      case ir::StmtKind::ProcessStart:
+        expr(s.value);
+        calls_.push_back({pc() + 1, s.label, true});
+        op(Op::ProcStart);
+        u16(0);
+        break;
+      case ir::StmtKind::ProcessRelease: op(Op::ProcRelease); break;
+      case ir::StmtKind::ProcessWait:
+        expr(s.value);
+        op(Op::ProcWait);
+        break;
+      case ir::StmtKind::ProcessSignal:
+        expr(s.value);
+        op(Op::ProcSignal);
+        break;
+      default: {  // ProcessWaitUntil: a memory compared with a value (the front end)
+        const ir::Expr& compare = p_->exprs[s.value];
+        const ir::Expr& memory = p_->exprs[compare.a];
+        expr(memory.a);
+        expr(compare.b);
+        op(Op::ProcWaitUntil);
+        u8(memory.space);
+        u8(static_cast<uint32_t>(memory.format));
+        u8(compare.op == ir::ExprOp::Eq ? 1 : compare.op == ir::ExprOp::Lt ? 2 : compare.op == ir::ExprOp::Gt ? 3 : 4);
+        u32(string(s.label));
+      }
+    }
+  }
+
   void assign(const ir::Stmt& s) {
     const ir::Expr& target = p_->exprs[s.target];
     switch (target.op) {
@@ -474,7 +506,9 @@ class Lowering {
   // starts, so every loop passes one (the verifier insists).
   // Only programs run in the order of the medium; subprograms and macros run when called.
   static vm::EntryKind entry_kind(const ir::Unit& unit) {
-    return unit.kind == ir::UnitKind::Program ? vm::EntryKind::Program : vm::EntryKind::Subprogram;
+    return unit.kind == ir::UnitKind::Program   ? vm::EntryKind::Program
+           : unit.kind == ir::UnitKind::Process ? vm::EntryKind::Process
+                                                : vm::EntryKind::Subprogram;
   }
 
   void lower_unit(const ir::Unit& unit, UnitState& st) {
@@ -499,13 +533,13 @@ class Lowering {
       s.col = unit.range.col;
       m_.source_map.add(s, {});
       m_.lines.push_back({pc(), m_.source_map.size() - 1});
-      m_.entries.push_back({unit.name, entry_kind(unit), pc()});
+      m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.process});
       op(Op::Step);
     }
     uint32_t end = pc();
     for (uint32_t at : st.repeats) patch(at, end);  // repeats without their end (the checks report them)
     // A subprogram returns at its end (NC-110 §2.13.2.2); a program ends there.
-    op(unit.kind == ir::UnitKind::Program ? Op::End : Op::Return);
+    op(unit.kind == ir::UnitKind::Program || unit.kind == ir::UnitKind::Process ? Op::End : Op::Return);
     // The checks report labels that do not exist; should one slip through, the jump
     // ends the unit rather than going anywhere else.
     for (const auto& [at, label] : st.jumps) {
@@ -535,7 +569,7 @@ class Lowering {
     m_.lines.push_back({pc(), source});
     for (; st.starting_loops > 0; --st.starting_loops) st.loop_start.push_back(pc());
     if (!st.entry_added) {
-      m_.entries.push_back({unit.name, entry_kind(unit), pc()});
+      m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.process});
       st.entry_added = true;
     }
     if (b.main_block && b.number)
@@ -548,7 +582,8 @@ class Lowering {
     for (const ir::Stmt& s : b.stmts) {
       // A block the compiler rejected does not jump or call: where to is in doubt (a
       // dry run goes on past it, its other errors already reported).
-      if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange))
+      if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange ||
+                           s.kind == ir::StmtKind::ProcessStart))
         continue;
       // A statement with a condition (Macro B `IF [...] THEN`) runs only when it holds.
       uint32_t unless = 0;
@@ -573,6 +608,11 @@ class Lowering {
         case ir::StmtKind::ScreenDefine:
         case ir::StmtKind::ScreenShow:
         case ir::StmtKind::ScreenShowWith: user_screen(s); break;
+        case ir::StmtKind::ProcessStart:
+        case ir::StmtKind::ProcessRelease:
+        case ir::StmtKind::ProcessWait:
+        case ir::StmtKind::ProcessWaitUntil:
+        case ir::StmtKind::ProcessSignal: process(s); break;
         case ir::StmtKind::Jump: {
           if (s.label.empty()) {
             computed_jump(unit, s, st.jumps);
@@ -635,7 +675,7 @@ class Lowering {
           } else {
             constant(Op::Const, Op::ConstDec, std::nullopt, 1);
           }
-          calls_.push_back({pc() + 1, s.label});
+          calls_.push_back({pc() + 1, s.label, false});
           op(s.shares_locals ? Op::CallShared : Op::CallEntry);
           u16(0);
           break;
@@ -676,18 +716,18 @@ class Lowering {
   // Calls name entry points of any unit, so they are resolved last. A call the checks
   // reported as unresolved goes to an entry that returns at once.
   void resolve_calls() {
-    size_t missing = SIZE_MAX;
-    for (const auto& [at, name] : calls_) {
+    size_t missing[2] = {SIZE_MAX, SIZE_MAX};  // a subprogram's, a process's
+    for (const auto& [at, name, process] : calls_) {
       size_t i = 0;
-      while (i < m_.entries.size() && m_.entries[i].name != name) ++i;
+      while (i < m_.entries.size() && (m_.entries[i].name != name || (m_.entries[i].kind == vm::EntryKind::Process) != process)) ++i;
       if (i == m_.entries.size()) {
-        if (missing == SIZE_MAX) {
-          missing = m_.entries.size();
-          m_.entries.push_back({"?", vm::EntryKind::Subprogram, pc()});
+        if (missing[process] == SIZE_MAX) {
+          missing[process] = m_.entries.size();
+          m_.entries.push_back({"?", process ? vm::EntryKind::Process : vm::EntryKind::Subprogram, pc()});
           op(Op::Step);
-          op(Op::Return);
+          op(process ? Op::End : Op::Return);
         }
-        i = missing;
+        i = missing[process];
       }
       m_.code[at] = static_cast<uint8_t>(i & 0xFF);
       m_.code[at + 1] = static_cast<uint8_t>((i >> 8) & 0xFF);
@@ -700,7 +740,12 @@ class Lowering {
   std::map<uint32_t, uint32_t> files_;
   std::unordered_map<uint64_t, uint32_t> numbers_;  // lookups only: the constants keep their first-use order
   std::map<std::string, uint32_t> strings_;
-  std::vector<std::pair<uint32_t, std::string>> calls_;  // (operand, entry name)
+  struct CallTarget {
+    uint32_t at;       // the operand
+    std::string name;  // of the entry
+    bool process;      // a Process entry (EXE), else a subprogram's
+  };
+  std::vector<CallTarget> calls_;
   std::set<std::string> called_;                          // every entry name a call names
   std::vector<std::pair<uint32_t, std::string>> range_ends_at_;  // (CallRange end operand, end label)
   std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd

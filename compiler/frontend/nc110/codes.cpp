@@ -46,6 +46,8 @@ std::string kind_name(OperandKind k) {
     case OperandKind::Format: return "a field format 1..7";
     case OperandKind::Switch: return "ON or OFF";
     case OperandKind::Attribute: return "R or A0..A255";
+    case OperandKind::Process: return "a process 1..5";
+    case OperandKind::Wait: return "a process 1..5, or a condition";
   }
   return "?";
 }
@@ -70,7 +72,8 @@ constexpr NumericOperand kNumericOperands[] = {
     {OperandKind::Channel, 0, 255, true, nullptr},  {OperandKind::Structure, 0, 255, true, nullptr},
     {OperandKind::Records, 1, asset::kMaxRecords, true, nullptr}, {OperandKind::Record, 1, asset::kMaxRecords, true, "IN"},
     {OperandKind::Field, 1, 255, true, nullptr},    {OperandKind::Row, 1, 20, true, nullptr},
-    {OperandKind::Column, 1, 64, true, nullptr},    {OperandKind::Format, 1, 7, true, nullptr}};
+    {OperandKind::Column, 1, 64, true, nullptr},    {OperandKind::Format, 1, 7, true, nullptr},
+    {OperandKind::Process, 1, 5, true, "BY"}};
 
 const NumericOperand& numeric_operand(OperandKind kind) {
   for (const NumericOperand& n : kNumericOperands)
@@ -265,7 +268,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Field:
     case OperandKind::Row:
     case OperandKind::Column:
-    case OperandKind::Format: {
+    case OperandKind::Format:
+    case OperandKind::Process: {
       const NumericOperand& n = numeric_operand(kind);
       std::vector<std::string> classes;
       if (n.param_class) classes.push_back(n.param_class);
@@ -393,6 +397,36 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       if (!variable({}, "an E parameter, or SYVAR, SA or SK", ref)) return std::nullopt;
       if (ref && ref->chars > 0) return fail("a text is not entered from the keyboard yet: a number");
       if (ref) op.value = memory_expr(*ref, op.range);
+      break;
+    }
+    // WAI (§4.1.3): a process, or SYVAR, SA or SK of format BL, BY or IN, a relation
+    // (= always; < > and # for "not equal" with BY and IN) and a number or an E parameter.
+    case OperandKind::Wait: {
+      size_t relop = 0;
+      while (relop < pieces.size() && pieces[relop].type != Nc110Lexer::RELOP) ++relop;
+      if (relop == pieces.size()) {
+        const NumericOperand& n = numeric_operand(OperandKind::Process);
+        if (!value(n.lo, n.hi, n.whole, {n.param_class})) return std::nullopt;
+        break;
+      }
+      const std::string& rel = pieces[relop].text;
+      if (relop == 0 || type(0) != Nc110Lexer::LETTER)
+        return fail(fmt::format("SYVAR, SA or SK comes before '{}'", rel));
+      SourceRange left{file_, line_no_, pieces[0].range.col, line_no_, pieces[relop - 1].range.end_col};
+      auto ref = memory_ref(line_.substr(left.col - 1, left.end_col - left.col), left);
+      if (!ref) return std::nullopt;
+      if (ref->chars > 0 || (ref->format != MemFormat::Bit && ref->format != MemFormat::Byte && ref->format != MemFormat::Integer))
+        return fail(fmt::format("{} is not of format BL, BY or IN: a wait compares those only", ref->text));
+      if (rel != "=" && ref->format == MemFormat::Bit)
+        return fail(fmt::format("{} is a bit (BL): it is waited for with '=' only", ref->text));
+      at = relop + 1;
+      if (at == pieces.size()) return fail(fmt::format("a number or an E parameter comes after '{}'", rel));
+      std::vector<std::string> classes;
+      for (const ParameterClass& c : s_.classes) classes.push_back(c.name);
+      if (!value(-1e15, 1e15, false, classes)) return std::nullopt;
+      const ir::ExprOp compare = rel == "=" ? ir::ExprOp::Eq : rel == "<" ? ir::ExprOp::Lt : rel == ">" ? ir::ExprOp::Gt : ir::ExprOp::Ne;
+      op.value = program_.add({compare, Builtin::Sin, 0, 0, memory_expr(*ref, left), op.value, op.range});
+      op.name = op.text;  // the condition, as written
       break;
     }
     case OperandKind::Comparand:
@@ -772,6 +806,25 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       }
       break;
     }
+    case Action::Process:
+      s = ir::Stmt(sig.screen, block_.range);
+      if (s.kind == ir::StmtKind::ProcessStart) {
+        // A program of device MP0..MP3 (§4.1.1), read like a called one (decision 62).
+        const Operand& program = ops[1];
+        if (!program.device.empty() && (program.device.size() != 3 || !program.device.starts_with("MP") || program.device[2] < '0' ||
+                                        program.device[2] > '3'))
+          return fail(DiagId::OperandKind, program.range, program.text, kind_name(OperandKind::Program), sig.code,
+                      "EXE loads from devices MP0 to MP3");
+        const std::string device = program.device.empty() ? s_.default_device : program.device;
+        s.label = device + "/" + program.name;
+        calls_.push_back({program.name, device, s.label, program.range, program_.units.size(), unit_->blocks.size(), ir::UnitKind::Process});
+      }
+      if (!ops.empty()) s.value = ops[0].value;
+      if (s.kind == ir::StmtKind::ProcessWait && !ops[0].name.empty()) {
+        s.kind = ir::StmtKind::ProcessWaitUntil;
+        s.label = ops[0].name;
+      }
+      break;
     case Action::Unsupported: return;
   }
   block_.stmts.push_back(s);

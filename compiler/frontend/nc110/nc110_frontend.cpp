@@ -4,6 +4,7 @@
 
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include "reader.h"
@@ -21,6 +22,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
     rules_.unique_labels = true;    // decision 14
     rules_.block_ranges = true;     // (EPP,from,to) §2.13.2.3
     rules_.block_number_order = false;  // N numbers may repeat and go down (decision 7)
+    rules_.processes = 5;               // chapter 4: up to five processes
   }
 
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
@@ -46,11 +48,22 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       for (const CallSite& c : reader.calls()) pending.push_back(c);
     };
     read_unit(file, ir::UnitKind::Program, main_path.stem().string());
-    std::set<std::string> done;
+    // Programs selected for other processes (SPG), by name as EXE names them.
+    std::map<std::string, uint8_t> selected;
+    for (const auto& [process, name] : options.processes) {
+      size_t slash = name.find('/');
+      CallSite site{name.substr(0, slash), slash == std::string::npos ? s_.default_device : name.substr(slash + 1), "", {}, 0, 0,
+                    ir::UnitKind::Process};
+      site.entry = site.device + "/" + site.name;
+      selected[site.entry] = process;
+      pending.push_front(site);
+    }
+    // Each program once as a subprogram (CLS) and once as a process's program (EXE).
+    std::set<std::pair<ir::UnitKind, std::string>> done;
     while (!pending.empty() && !diags.limit_reached()) {
       CallSite call = pending.front();
       pending.pop_front();
-      if (!done.insert(call.entry).second) continue;
+      if (!done.insert({call.kind, call.entry}).second) continue;
       // Lexically normal, so that messages and the trace name each file one way.
       fs::path root = (!options.library.empty() ? fs::path(options.library)
                        : !s_.library.empty()    ? fs::path(s_.library)
@@ -66,12 +79,14 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
         }
       if (!text) {
         diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
-        program.units[call.unit].blocks[call.block].has_errors = true;
+        if (call.range.file != 0 || call.range.line != 0) program.units[call.unit].blocks[call.block].has_errors = true;
         continue;
       }
       uint32_t f = sources.add(found.string(), std::move(*text));
       program.files.push_back(f);
-      read_unit(f, ir::UnitKind::Subprogram, call.entry);
+      read_unit(f, call.kind, call.entry);
+      if (auto it = selected.find(call.entry); call.kind == ir::UnitKind::Process && it != selected.end())
+        program.units.back().process = it->second;
     }
 
     set_power_on(program, s_.tables, s_.power_on);
@@ -91,6 +106,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
     for (const Memory& m : s_.memories) {
       VarSpace space{m.name, m.bytes, {}};
       space.memory = true;
+      space.format = m.format;
       program.spaces.push_back(space);
     }
   }

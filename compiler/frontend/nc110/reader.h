@@ -23,6 +23,7 @@ struct CallSite {
   std::string entry;   // the unit's name: MP2/P800
   SourceRange range;
   size_t unit = 0, block = 0;  // where the call stands
+  ir::UnitKind kind = ir::UnitKind::Subprogram;  // Process: a program EXE starts
 };
 
 using ncc_nc110::Nc110Lexer;

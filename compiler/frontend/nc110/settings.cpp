@@ -20,6 +20,7 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
       {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
       {"binding", OperandKind::Binding},     {"prompt", OperandKind::Prompt},   {"target", OperandKind::Target},
+      {"process", OperandKind::Process},     {"wait", OperandKind::Wait},
       {"field", OperandKind::Field},         {"row", OperandKind::Row},         {"column", OperandKind::Column},
       {"format", OperandKind::Format},       {"switch", OperandKind::Switch},   {"attribute", OperandKind::Attribute}};
   bool group = false;
@@ -74,12 +75,15 @@ void read_codes(Settings& s, Diagnostics& diags) {
       ok = ok && it != kOps.end();
       code.action = Action::Asset;
       if (it != kOps.end()) code.asset = it->second;
-    } else if (action.starts_with("@screen(") && action.ends_with(")")) {
+    } else if ((action.starts_with("@screen(") || action.starts_with("@process(")) && action.ends_with(")")) {
       static const std::map<std::string_view, ir::StmtKind> kKinds = {
-          {"switch", ir::StmtKind::ScreenSwitch}, {"define", ir::StmtKind::ScreenDefine}, {"show", ir::StmtKind::ScreenShow}};
-      auto it = kKinds.find(action.substr(8, action.size() - 9));
+          {"screen(switch", ir::StmtKind::ScreenSwitch}, {"screen(define", ir::StmtKind::ScreenDefine},
+          {"screen(show", ir::StmtKind::ScreenShow},     {"process(start", ir::StmtKind::ProcessStart},
+          {"process(release", ir::StmtKind::ProcessRelease}, {"process(wait", ir::StmtKind::ProcessWait},
+          {"process(signal", ir::StmtKind::ProcessSignal}};
+      auto it = kKinds.find(action.substr(1, action.size() - 2));
       ok = ok && it != kKinds.end();
-      code.action = Action::Screen;
+      code.action = action.starts_with("@screen(") ? Action::Screen : Action::Process;
       if (it != kKinds.end()) code.screen = it->second;
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {

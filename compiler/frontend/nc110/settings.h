@@ -20,7 +20,8 @@ namespace ncc::nc110 {
 enum class OperandKind : uint8_t {
   Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition,
   Channel, Structure, Record, Records, File, Access, Binding,  // ASSET (chapter 5)
-  Prompt, Target, Field, Row, Column, Format, Switch, Attribute  // INP, SCR, DEF, OUT (§5.5, §5.6)
+  Prompt, Target, Field, Row, Column, Format, Switch, Attribute,  // INP, SCR, DEF, OUT (§5.5, §5.6)
+  Process, Wait  // EXE, SND, WAI (chapter 4)
 };
 
 struct OperandItem {
@@ -31,7 +32,7 @@ struct OperandItem {
 
 // What a three-letter code does: call a runtime function with its operands, or a
 // statement of the program's flow.
-enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Input, Screen, Unsupported };
+enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Input, Screen, Process, Unsupported };
 
 struct CodeSignature {
   std::string code;
@@ -40,7 +41,8 @@ struct CodeSignature {
   Fn fn = Fn::Count;        // Function
   std::string comparison;   // JumpIf: gt lt eq ne ge le
   ir::AssetOp asset = ir::AssetOp::OpenRead;  // Asset
-  ir::StmtKind screen = ir::StmtKind::ScreenSwitch;  // Screen: ScreenSwitch, ScreenDefine or ScreenShow
+  ir::StmtKind screen = ir::StmtKind::ScreenSwitch;  // Screen: ScreenSwitch, ScreenDefine or ScreenShow;
+                                                     // Process: ProcessStart, ProcessRelease, ProcessWait or ProcessSignal
   std::string meaning;
 };
 

@@ -1,0 +1,216 @@
+#include "processes.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "support/text.h"
+
+namespace ncc::vm {
+
+struct Processes::Slot {
+  std::unique_ptr<ProcessSink> sink;  // a run of several: the trace marks the process
+  std::unique_ptr<Machine> machine;
+  std::unique_ptr<asset::Channels> channels;
+  std::unique_ptr<Vm> vm;
+  bool running = false;    // a program is loaded (it may wait)
+  bool blocked = false;    // its last turn ended waiting, at blocked_pc
+  uint32_t blocked_pc = 0;
+  bool delivered = false;  // a partner met its WAI or SND: it completes when it runs again
+  size_t entry = 0;        // the entry running (process 1: its place on the medium)
+};
+
+Processes::Processes(ProcessSetup setup) : setup_(std::move(setup)) {
+  const auto& entries = setup_.module.entries;
+  several_ = std::any_of(entries.begin(), entries.end(), [](const Entry& e) { return e.kind == EntryKind::Process; });
+  slots_.resize(std::max<size_t>(setup_.processes, 1));
+}
+
+Processes::~Processes() = default;
+
+Processes::Slot& Processes::slot(uint8_t n) {
+  std::unique_ptr<Slot>& s = slots_[n - 1];
+  if (s) return *s;
+  s = std::make_unique<Slot>();
+  TraceSink* trace = &setup_.trace;
+  if (several_) trace = (s->sink = std::make_unique<ProcessSink>(setup_.trace, n)).get();
+  s->machine = std::make_unique<Machine>(setup_.module.semantics, setup_.config, *trace, setup_.issues);
+  s->machine->set_stop_on_error(!setup_.dry);
+  VmOptions options = setup_.options;
+  if (setup_.files) {
+    s->channels = std::make_unique<asset::Channels>(setup_.store, open_files_, setup_.channels);
+    options.asset = s->channels.get();
+  }
+  options.shared = &shared_;
+  options.processes = this;
+  options.process = n;
+  options.slice = several_;
+  s->vm = std::make_unique<Vm>(setup_.module, *s->machine, setup_.issues, options);
+  s->machine->power_on();
+  return *s;
+}
+
+bool Processes::run(size_t first) {
+  const auto& entries = setup_.module.entries;
+  Slot& one = slot(1);
+  one.entry = first;
+  one.running = first < entries.size();  // a file without a program runs nothing
+  if (one.running) one.vm->start(static_cast<uint32_t>(first));
+  for (size_t i = 0; i < entries.size(); ++i) {
+    if (!entries[i].process || entries[i].process > slots_.size()) continue;
+    Slot& s = slot(entries[i].process);
+    s.entry = i;
+    s.vm->start(static_cast<uint32_t>(i));
+    s.running = true;
+  }
+  bool ok = true;
+  while (ok) {
+    bool any = false, progress = false;
+    for (size_t i = 0; i < slots_.size() && ok; ++i) {
+      if (!slots_[i] || !slots_[i]->running) continue;
+      Slot& s = *slots_[i];
+      any = true;
+      current_ = static_cast<uint8_t>(i + 1);
+      const RunStatus status = s.vm->resume();
+      progress = progress || status != RunStatus::Blocked || !s.blocked || s.vm->pc() != s.blocked_pc;
+      s.blocked = status == RunStatus::Blocked;
+      s.blocked_pc = s.vm->pc();
+      switch (status) {
+        case RunStatus::Yield:
+        case RunStatus::Blocked: break;
+        case RunStatus::Error: ok = false; break;
+        case RunStatus::UnitEnded:
+          s.machine->end_of_unit(setup_.module.source_of(s.vm->pc()));
+          [[fallthrough]];
+        case RunStatus::ProgramEnd: s.running = i == 0 && next_program(s); break;
+        case RunStatus::EndOfInformation:
+        case RunStatus::Released: s.running = false; break;
+      }
+    }
+    if (!ok || !any) break;
+    if (progress) {
+      assume_ = false;
+      continue;
+    }
+    // No process can go on: the PLC's next signal, in the dry run a condition taken
+    // as met, else a deadlock.
+    if (!setup_.plc.empty()) {
+      const PlcWrite w = setup_.plc.front();
+      setup_.plc.pop_front();
+      slot(1).vm->write_memory(w.space, w.format, w.index, w.value);
+    } else if (setup_.dry && !assume_) {
+      assume_ = true;
+    } else {
+      deadlock();
+      ok = false;
+    }
+  }
+  for (const auto& s : slots_)
+    if (s) s->machine->end_run(!ok);
+  return ok;
+}
+
+// Programs run in the order of the medium, each after the previous one ended (M02);
+// M30 ends the information.
+bool Processes::next_program(Slot& s) {
+  const auto& entries = setup_.module.entries;
+  for (size_t i = s.entry + 1; i < entries.size(); ++i)
+    if (entries[i].kind == EntryKind::Program) {
+      s.entry = i;
+      s.vm->start(static_cast<uint32_t>(i));
+      return true;
+    }
+  return false;
+}
+
+uint64_t Processes::steps() const {
+  uint64_t n = 0;
+  for (const auto& s : slots_)
+    if (s) n += s->vm->steps();
+  return n;
+}
+
+uint8_t Processes::number(double process, uint32_t pc, const char* what) {
+  const std::string shown = shortest(process);
+  std::string why;
+  if (!(process >= 1 && process <= static_cast<double>(slots_.size()) && process == std::trunc(process)))
+    why = fmt::format("{} names no process: the machine has processes 1 to {} (profile processes)", what, slots_.size());
+  else if (process == current_)
+    why = fmt::format("{} names the process that runs it", what);
+  if (why.empty()) return static_cast<uint8_t>(process);
+  setup_.issues.issue({DiagId::ProcessError, diag_message(DiagId::ProcessError, shown, why), setup_.module.source_of(pc)});
+  return 0;
+}
+
+bool Processes::waits_at(const Slot& s, Op op, uint8_t partner) const {
+  return s.running && s.blocked && static_cast<Op>(setup_.module.code[s.blocked_pc]) == op && s.vm->blocked_operand() == partner;
+}
+
+// EXE: the program starts when its process is free (decision 63), at the time of
+// the process that starts it.
+ProcessHost::Answer Processes::start(double process, uint32_t entry, uint32_t pc) {
+  const uint8_t n = number(process, pc, "(EXE)");
+  if (!n) return Answer::Error;
+  Slot& target = slot(n);
+  if (target.running) return Answer::Wait;
+  target.machine->wait_until(slot(current_).machine->clock());
+  target.entry = entry;
+  target.vm->start(entry);
+  target.running = true;
+  target.blocked = false;
+  return Answer::Done;
+}
+
+// WAI n and SND n meet (a rendezvous, decision 63): whichever comes first waits for
+// the other; both go on, at the later of their times.
+ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) {
+  const uint8_t n = number(process, pc, "(WAI)");
+  if (!n) return Answer::Error;
+  Slot& me = slot(current_);
+  if (me.delivered) {
+    me.delivered = false;
+    return Answer::Done;
+  }
+  Slot* sender = slots_[n - 1].get();
+  if (!sender || !waits_at(*sender, Op::ProcSignal, current_)) return Answer::Wait;
+  sender->delivered = true;
+  me.machine->wait_until(sender->machine->clock());
+  sender->machine->wait_until(me.machine->clock());
+  return Answer::Done;
+}
+
+ProcessHost::Answer Processes::signal(double process, uint32_t pc) {
+  const uint8_t n = number(process, pc, "(SND)");
+  if (!n) return Answer::Error;
+  Slot& me = slot(current_);
+  if (me.delivered) {
+    me.delivered = false;
+    return Answer::Done;
+  }
+  Slot* waiter = slots_[n - 1].get();
+  if (!waiter || !waits_at(*waiter, Op::ProcWait, current_)) return Answer::Wait;
+  waiter->delivered = true;
+  me.machine->wait_until(waiter->machine->clock());
+  waiter->machine->wait_until(me.machine->clock());
+  return Answer::Done;
+}
+
+// Every process that runs waits, and nothing will change that: reported at the
+// first, with a note at each.
+void Processes::deadlock() {
+  RuntimeIssue issue{DiagId::Deadlock, "", 0};
+  bool condition = false, first = true;
+  for (size_t i = 0; i < slots_.size(); ++i) {
+    if (!slots_[i] || !slots_[i]->running) continue;
+    const Slot& s = *slots_[i];
+    const uint32_t source = setup_.module.source_of(s.blocked_pc);
+    if (first) issue.source = source;
+    first = false;
+    condition = condition || static_cast<Op>(setup_.module.code[s.blocked_pc]) == Op::ProcWaitUntil;
+    issue.notes.push_back({source, fmt::format("process {} waits here: {}", i + 1, s.vm->waits())});
+  }
+  issue.message = diag_message(DiagId::Deadlock, condition ? "each waits, and the input script (ncc run --input FILE) gives no more PLC signals (a line such as SA12=1)"
+                                                           : "each waits for another");
+  setup_.issues.issue(issue);
+}
+
+}  // namespace ncc::vm

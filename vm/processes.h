@@ -1,0 +1,74 @@
+// The processes of a run (NC-110 chapter 4): up to five programs side by side, each
+// with its own machine, E parameters, ASSET channels and VM, sharing SYVAR, SA, SK
+// and the user screen. A deterministic scheduler runs them in turns, one block a
+// turn, in the order of their numbers (decision 63); a run with no Process entry is
+// process 1 alone, run to the end with no turns.
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "runtime/asset_channels.h"
+#include "vm.h"
+
+namespace ncc::vm {
+
+// The PLC writes a memory (SA12=1) when no process can go on without it (decision 63).
+struct PlcWrite {
+  uint8_t space = 0;
+  MemFormat format = MemFormat::Byte;
+  uint32_t index = 0;
+  double value = 0;
+};
+
+struct ProcessSetup {
+  const Module& module;
+  const MachineConfig& config;
+  TraceSink& trace;
+  RuntimeIssues& issues;
+  VmOptions options;  // each process's VM (its asset, shared, processes, process and slice are set here)
+  bool dry = false;   // the dry run of `ncc check`: the machines recover from errors, conditions are assumed met
+  uint8_t processes = kMaxProcesses;  // configured (profile)
+  // ASSET files: a process's channels are its own, the files open are the run's.
+  asset::Store* store = nullptr;
+  bool files = false;  // the statements act (a real run)
+  asset::Channels::Settings channels = {};
+  std::deque<PlcWrite> plc = {};
+};
+
+class Processes final : public ProcessHost {
+ public:
+  explicit Processes(ProcessSetup setup);
+  ~Processes() override;
+
+  // Runs entry `first` and the programs after it on the medium in process 1, and the
+  // programs selected for other processes; false if an error stopped the run.
+  bool run(size_t first);
+  uint64_t steps() const;
+  const screen::UserScreen& user_screen() const { return shared_.screen; }
+
+  Answer start(double process, uint32_t entry, uint32_t pc) override;
+  Answer wait_for(double process, uint32_t pc) override;
+  Answer signal(double process, uint32_t pc) override;
+  bool assume_met() override { return assume_; }
+
+ private:
+  struct Slot;
+  Slot& slot(uint8_t n);                     // made (its machine powered on) at first use
+  uint8_t number(double process, uint32_t pc, const char* what);  // 0: not a process (reported)
+  bool waits_at(const Slot& s, Op op, uint8_t partner) const;     // s is blocked at `op` naming `partner`
+  bool next_program(Slot& s);                 // process 1: the next program on the medium
+  void deadlock();
+
+  ProcessSetup setup_;
+  bool several_;  // a run of several processes: turns, and traces marked with the process
+  SharedState shared_;
+  asset::OpenFiles open_files_;
+  std::vector<std::unique_ptr<Slot>> slots_;  // index = process number - 1
+  uint8_t current_ = 1;  // the process whose turn it is
+  bool assume_ = false;
+};
+
+}  // namespace ncc::vm
