@@ -1062,6 +1062,16 @@ void Machine::operator_input(const std::string& shown, double answer, uint32_t s
 
 void Machine::screen_event(const std::string& what, uint32_t source) { text_event(EventKind::Screen, what, source); }
 
+void Machine::end_program(uint32_t source) {
+  BlockWords none;
+  BlockRequest request{nullptr, 0, &none, source};
+  block_ = BlockState{};
+  block_.request = &request;
+  block_.end = true;
+  finish();
+  block_ = BlockState{};
+}
+
 void Machine::sync_event(const std::string& what, uint32_t source) { text_event(EventKind::Sync, what, source); }
 
 void Machine::message(const std::string& text, uint32_t source) { text_event(EventKind::Message, text, source); }

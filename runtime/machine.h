@@ -95,6 +95,8 @@ class Machine {
   void operator_input(const std::string& shown, double answer, uint32_t source);
   // The user screen changed (NC-110 SCR, OUT): "on", "field 2 row 3 column 19 "0      "".
   void screen_event(const std::string& what, uint32_t source);
+  // The program ends without a block that ends it (NC-110 REL): as M02 ends it.
+  void end_program(uint32_t source);
   // A process met the others (NC-110 EXE, REL, WAI, SND): "restart process 2".
   void sync_event(const std::string& what, uint32_t source);
   // The process waited for another until `seconds` of its run (NC-110 chapter 4):

@@ -17,7 +17,15 @@ struct Processes::Slot {
   uint32_t blocked_pc = 0;
   bool delivered = false;  // a partner met its WAI or SND: it completes when it runs again
   size_t entry = 0;        // the entry running (process 1: its place on the medium)
+  double free_at = 0;      // when its last program ended
 };
+
+// Its machine's time, and a millisecond a block: a controller takes time to run a
+// block, so that a loop of blocks that do not move lets the other processes on.
+double Processes::schedule_time(size_t i) const {
+  const Slot& s = *slots_[i];
+  return s.machine->clock() + static_cast<double>(s.vm->steps()) * kBlockCycle;
+}
 
 Processes::Processes(ProcessSetup setup) : setup_(std::move(setup)) {
   const auto& entries = setup_.module.entries;
@@ -64,14 +72,19 @@ bool Processes::run(size_t first) {
   }
   bool ok = true;
   while (ok) {
-    bool any = false, progress = false;
-    for (size_t i = 0; i < slots_.size() && ok; ++i) {
-      if (!slots_[i] || !slots_[i]->running) continue;
+    // The process furthest behind in time runs a block (decision 63); one that still
+    // waits lets the next one try.
+    std::vector<size_t> order;
+    for (size_t i = 0; i < slots_.size(); ++i)
+      if (slots_[i] && slots_[i]->running) order.push_back(i);
+    if (order.empty()) break;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return schedule_time(a) < schedule_time(b); });
+    bool progress = false;
+    for (size_t i : order) {
       Slot& s = *slots_[i];
-      any = true;
       current_ = static_cast<uint8_t>(i + 1);
       const RunStatus status = s.vm->resume();
-      progress = progress || status != RunStatus::Blocked || !s.blocked || s.vm->pc() != s.blocked_pc;
+      progress = status != RunStatus::Blocked || !s.blocked || s.vm->pc() != s.blocked_pc;
       s.blocked = status == RunStatus::Blocked;
       s.blocked_pc = s.vm->pc();
       switch (status) {
@@ -85,8 +98,10 @@ bool Processes::run(size_t first) {
         case RunStatus::EndOfInformation:
         case RunStatus::Released: s.running = false; break;
       }
+      if (!s.running) s.free_at = s.machine->clock();
+      if (progress || !ok) break;
     }
-    if (!ok || !any) break;
+    if (!ok) break;
     if (progress) {
       assume_ = false;
       continue;
@@ -96,7 +111,15 @@ bool Processes::run(size_t first) {
     if (!setup_.plc.empty()) {
       const PlcWrite w = setup_.plc.front();
       setup_.plc.pop_front();
-      slot(1).vm->write_memory(w.space, w.format, w.index, w.value);
+      // It comes after every process stopped, and shows at the first that waits for a condition.
+      Slot* waiter = nullptr;
+      for (size_t i : order) {
+        shared_.written_at = std::max(shared_.written_at, slots_[i]->machine->clock());
+        if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->blocked_pc]) == Op::ProcWaitUntil) waiter = slots_[i].get();
+      }
+      if (!waiter) waiter = slots_[order.front()].get();
+      waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->blocked_pc));
+      waiter->vm->write_memory(w.space, w.format, w.index, w.value);
     } else if (setup_.dry && !assume_) {
       assume_ = true;
     } else {
@@ -133,7 +156,7 @@ uint8_t Processes::number(double process, uint32_t pc, const char* what) {
   const std::string shown = shortest(process);
   std::string why;
   if (!(process >= 1 && process <= static_cast<double>(slots_.size()) && process == std::trunc(process)))
-    why = fmt::format("{} names no process: the machine has processes 1 to {} (profile processes)", what, slots_.size());
+    why = fmt::format("{} names no process: the machine has processes 1 to {} (machine.processes)", what, slots_.size());
   else if (process == current_)
     why = fmt::format("{} names the process that runs it", what);
   if (why.empty()) return static_cast<uint8_t>(process);
@@ -152,7 +175,9 @@ ProcessHost::Answer Processes::start(double process, uint32_t entry, uint32_t pc
   if (!n) return Answer::Error;
   Slot& target = slot(n);
   if (target.running) return Answer::Wait;
-  target.machine->wait_until(slot(current_).machine->clock());
+  Machine& starter = *slot(current_).machine;
+  starter.wait_until(target.free_at);
+  target.machine->wait_until(starter.clock());
   target.entry = entry;
   target.vm->start(entry);
   target.running = true;
@@ -208,8 +233,9 @@ void Processes::deadlock() {
     condition = condition || static_cast<Op>(setup_.module.code[s.blocked_pc]) == Op::ProcWaitUntil;
     issue.notes.push_back({source, fmt::format("process {} waits here: {}", i + 1, s.vm->waits())});
   }
-  issue.message = diag_message(DiagId::Deadlock, condition ? "each waits, and the input script (ncc run --input FILE) gives no more PLC signals (a line such as SA12=1)"
-                                                           : "each waits for another");
+  issue.message = diag_message(DiagId::Deadlock, condition ? "every process that runs waits, and the input script has no PLC signal left "
+                                                                       "(ncc run --input FILE: a line such as SA12=1)"
+                                                           : "every process that runs waits for another");
   setup_.issues.issue(issue);
 }
 

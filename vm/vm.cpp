@@ -161,6 +161,7 @@ bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double&
 bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   double v = value;
+  shared_.written_at = std::max(shared_.written_at, machine_.clock());
   static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real,
                                        VarType::LongReal};
   bool fits = f == MemFormat::Bit ? (v == 0 || v == 1) : convert_value(kTypes[static_cast<int>(f)], 0, v);
@@ -542,6 +543,7 @@ RunStatus Vm::resume() {
         break;
       case Op::ProcRelease:
         machine_.sync_event("release", m_.source_of(pc));
+        machine_.end_program(m_.source_of(pc));
         return RunStatus::Released;
       case Op::CallRange:
         for (const Frame& f : p.frames)
@@ -835,6 +837,7 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
     const bool holds = (relation == 1 ? now == value : relation == 2 ? now < value : relation == 3 ? now > value : now != value) ||
                        (waiting_ && options_.processes && options_.processes->assume_met());
     if (!holds) st.insert(st.end(), {index, value});
+    if (holds && waiting_) machine_.wait_until(shared_.written_at);  // it goes on once the memory is written
     const std::string& condition = m_.strings[u32_at(operands + 3)];
     return answer(holds ? ProcessHost::Answer::Done : ProcessHost::Answer::Wait, condition + " holds", "wait until " + condition);
   }

@@ -21,6 +21,7 @@ struct SharedState {
   std::vector<std::vector<uint8_t>> memories;  // of the memory spaces (empty for the others)
   screen::UserScreen screen;
   size_t answers = 0;  // of VmOptions::input, taken
+  double written_at = 0;  // the latest time a process (or the PLC) wrote a memory: a WAI condition met goes on from there
 };
 
 // The other processes of a run, as a process's EXE, WAI and SND meet them (NC-110

@@ -142,6 +142,7 @@ std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& 
   if (!v || *v < lo || *v > hi || (whole && *v != std::trunc(*v)))
     return fmt::format("the value must be {} from {} to {}", whole ? "a whole number" : "a number", shortest(lo), shortest(hi));
   out.space = static_cast<uint8_t>(space);
+  out.text = text;
   out.index = index;
   out.value = *v;
   return {};

@@ -410,7 +410,9 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         break;
       }
       const std::string& rel = pieces[relop].text;
-      if (relop == 0 || type(0) != Nc110Lexer::LETTER)
+      std::string letters;
+      for (size_t i = 0; i < relop && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
+      if (!std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); }))
         return fail(fmt::format("SYVAR, SA or SK comes before '{}'", rel));
       SourceRange left{file_, line_no_, pieces[0].range.col, line_no_, pieces[relop - 1].range.end_col};
       auto ref = memory_ref(line_.substr(left.col - 1, left.end_col - left.col), left);

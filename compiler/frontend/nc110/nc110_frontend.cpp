@@ -48,9 +48,11 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       for (const CallSite& c : reader.calls()) pending.push_back(c);
     };
     read_unit(file, ir::UnitKind::Program, main_path.stem().string());
-    // Programs selected for other processes (SPG), by name as EXE names them.
+    // Programs selected for other processes (SPG), by name as EXE names them, read
+    // first, in the order given.
     std::map<std::string, uint8_t> selected;
-    for (const auto& [process, name] : options.processes) {
+    for (auto it = options.processes.rbegin(); it != options.processes.rend(); ++it) {
+      const auto& [process, name] = *it;
       size_t slash = name.find('/');
       CallSite site{name.substr(0, slash), slash == std::string::npos ? s_.default_device : name.substr(slash + 1), "", {}, 0, 0,
                     ir::UnitKind::Process};
