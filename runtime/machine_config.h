@@ -106,6 +106,7 @@ struct MachineConfig {
   ProbeConfig probe;
   AssetConfig asset;
   uint8_t processes = 5;  // NC-110 chapter 4: the processes configured (PGCFIL), 1..5
+  uint32_t look_ahead = 64;  // blocks a process evaluates ahead of its motion (NC-110 §1.1.1, §2.16), 1..64
 
   static std::array<AxisConfig, kAxisCount> default_axes() {
     std::array<AxisConfig, kAxisCount> a{};

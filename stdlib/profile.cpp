@@ -380,6 +380,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     if (*v >= 1 && *v <= 5 && *v == std::trunc(*v)) m.processes = static_cast<uint8_t>(*v);
     else p.report_value(diags, "machine.processes", "must be a whole number from 1 to 5");
   }
+  if (auto v = p.number("machine.look_ahead", diags)) {
+    if (*v >= 1 && *v <= 64 && *v == std::trunc(*v)) m.look_ahead = static_cast<uint32_t>(*v);
+    else p.report_value(diags, "machine.look_ahead", "must be a whole number of blocks from 1 to 64");
+  }
   if (auto v = p.boolean("machine.spindle_encoder", diags)) m.spindle_encoder = *v;
   if (auto v = p.number("machine.max_rpm", diags)) {
     if (*v >= 0) m.max_rpm = *v;

@@ -71,6 +71,7 @@ namespace ncc::vm {
   X(JumpIf, "j", 1, 0, "pop; go to j if it is not 0")                                          \
   X(JumpSkip, "j", 0, 0, "go to j if the block-skip switch of the runtime is on")              \
   X(Step, "", 0, 0, "count one executed block against --max-steps")                            \
+  X(Sync, "", 0, 0, "the block is evaluated once the motion before it has ended (NC-110 '#')")  \
   X(Code, "c", 0, 0, "add G/M code c to the pending block")                                    \
   X(CodeOf, "w", 1, 0, "pop a number; add the code of letter slot w with that number")         \
   X(Word, "wk", 0, 0, "set word w of the pending block to numbers[k]")                         \

@@ -24,7 +24,7 @@ struct Processes::Slot {
 // block, so that a loop of blocks that do not move lets the other processes on.
 double Processes::schedule_time(size_t i) const {
   const Slot& s = *slots_[i];
-  return s.machine->clock() + static_cast<double>(s.vm->steps()) * kBlockCycle;
+  return s.vm->eval_time() + static_cast<double>(s.vm->steps()) * kBlockCycle;
 }
 
 Processes::Processes(ProcessSetup setup) : setup_(std::move(setup)) {
@@ -52,6 +52,7 @@ Processes::Slot& Processes::slot(uint8_t n) {
   options.processes = this;
   options.process = n;
   options.slice = several_;
+  if (several_) options.look_ahead = setup_.config.look_ahead;
   s->vm = std::make_unique<Vm>(setup_.module, *s->machine, setup_.issues, options);
   s->machine->power_on();
   return *s;
@@ -114,7 +115,7 @@ bool Processes::run(size_t first) {
       // It comes after every process stopped, and shows at the first that waits for a condition.
       Slot* waiter = nullptr;
       for (size_t i : order) {
-        shared_.written_at = std::max(shared_.written_at, slots_[i]->machine->clock());
+        shared_.written_at = std::max(shared_.written_at, slots_[i]->vm->eval_time());
         if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->blocked_pc]) == Op::ProcWaitUntil) waiter = slots_[i].get();
       }
       if (!waiter) waiter = slots_[order.front()].get();
@@ -164,8 +165,9 @@ uint8_t Processes::number(double process, uint32_t pc, const char* what) {
   return 0;
 }
 
+// (A process a partner met already waits only to run again.)
 bool Processes::waits_at(const Slot& s, Op op, uint8_t partner) const {
-  return s.running && s.blocked && static_cast<Op>(setup_.module.code[s.blocked_pc]) == op && s.vm->blocked_operand() == partner;
+  return s.running && s.blocked && !s.delivered && static_cast<Op>(setup_.module.code[s.blocked_pc]) == op && s.vm->blocked_operand() == partner;
 }
 
 // EXE: the program starts when its process is free (decision 63), at the time of
@@ -175,14 +177,21 @@ ProcessHost::Answer Processes::start(double process, uint32_t entry, uint32_t pc
   if (!n) return Answer::Error;
   Slot& target = slot(n);
   if (target.running) return Answer::Wait;
-  Machine& starter = *slot(current_).machine;
+  Vm& starter = *slot(current_).vm;
   starter.wait_until(target.free_at);
-  target.machine->wait_until(starter.clock());
+  target.vm->wait_until(starter.eval_time());
   target.entry = entry;
   target.vm->start(entry);
   target.running = true;
   target.blocked = false;
   return Answer::Done;
+}
+
+// Two processes meet: both go on at the later of their times.
+void Processes::meet(Vm& a, Vm& b) {
+  const double t = std::max(a.eval_time(), b.eval_time());
+  a.wait_until(t);
+  b.wait_until(t);
 }
 
 // WAI n and SND n meet (a rendezvous, decision 63): whichever comes first waits for
@@ -198,8 +207,7 @@ ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) {
   Slot* sender = slots_[n - 1].get();
   if (!sender || !waits_at(*sender, Op::ProcSignal, current_)) return Answer::Wait;
   sender->delivered = true;
-  me.machine->wait_until(sender->machine->clock());
-  sender->machine->wait_until(me.machine->clock());
+  meet(*me.vm, *sender->vm);
   return Answer::Done;
 }
 
@@ -214,8 +222,7 @@ ProcessHost::Answer Processes::signal(double process, uint32_t pc) {
   Slot* waiter = slots_[n - 1].get();
   if (!waiter || !waits_at(*waiter, Op::ProcWait, current_)) return Answer::Wait;
   waiter->delivered = true;
-  me.machine->wait_until(waiter->machine->clock());
-  waiter->machine->wait_until(me.machine->clock());
+  meet(*me.vm, *waiter->vm);
   return Answer::Done;
 }
 

@@ -63,6 +63,7 @@ class Processes final : public ProcessHost {
   bool next_program(Slot& s);                 // process 1: the next program on the medium
   void deadlock();
   double schedule_time(size_t slot) const;
+  static void meet(Vm& a, Vm& b);
   static constexpr double kBlockCycle = 0.001;  // seconds
 
   ProcessSetup setup_;

@@ -161,7 +161,7 @@ bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double&
 bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   double v = value;
-  shared_.written_at = std::max(shared_.written_at, machine_.clock());
+  shared_.written_at = std::max(shared_.written_at, eval_time());
   static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real,
                                        VarType::LongReal};
   bool fits = f == MemFormat::Bit ? (v == 0 || v == 1) : convert_value(kTypes[static_cast<int>(f)], 0, v);
@@ -208,6 +208,16 @@ void Vm::restore_locals(const std::vector<double>& saved) {
       std::copy(from, from + static_cast<std::ptrdiff_t>(s.locals), vars_[i].begin());
       from += static_cast<std::ptrdiff_t>(s.locals);
     }
+}
+
+// The block is evaluated once the look-ahead has room: when the block look_ahead
+// blocks back has ended its motion.
+void Vm::look_ahead() {
+  const size_t n = options_.look_ahead;
+  if (ends_.empty()) ends_.assign(n, 0);
+  const uint64_t k = steps_ + 1;  // this block, counted from 1
+  if (k > 1) ends_[(k - 2) % n] = machine_.clock();  // the block before ended its motion then
+  if (k > n) eval_ = std::max(eval_, ends_[(k - 1) % n]);
 }
 
 size_t Vm::calls() const {
@@ -357,11 +367,13 @@ RunStatus Vm::resume() {
           return RunStatus::Yield;
         }
         stepped = true;
-        if (options_.max_steps && ++steps_ > options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
+        if (options_.look_ahead) look_ahead();
+        if (++steps_ > options_.max_steps && options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
         // A block that the block-skip switch skips whole (its JUMPSKIP follows) does not run.
         if (options_.trace_blocks && !(p.pc < m_.code.size() && static_cast<Op>(code[p.pc]) == Op::JumpSkip && machine_.block_skip()))
           machine_.block_start(m_.source_of(pc));
         break;
+      case Op::Sync: eval_ = std::max(eval_, machine_.clock()); break;
       case Op::Code:
         if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");
         codes_.push_back(u16_at(operands));
@@ -837,7 +849,7 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
     const bool holds = (relation == 1 ? now == value : relation == 2 ? now < value : relation == 3 ? now > value : now != value) ||
                        (waiting_ && options_.processes && options_.processes->assume_met());
     if (!holds) st.insert(st.end(), {index, value});
-    if (holds && waiting_) machine_.wait_until(shared_.written_at);  // it goes on once the memory is written
+    if (holds && waiting_) wait_until(shared_.written_at);  // it goes on once the memory is written
     const std::string& condition = m_.strings[u32_at(operands + 3)];
     return answer(holds ? ProcessHost::Answer::Done : ProcessHost::Answer::Wait, condition + " holds", "wait until " + condition);
   }

@@ -49,6 +49,9 @@ struct VmOptions {
   ProcessHost* processes = nullptr;     // none: one process, which EXE, WAI and SND cannot leave
   uint8_t process = 0;                  // its number (0: the only one)
   bool slice = false;                   // resume() runs one block, then returns Yield
+  // Blocks evaluated ahead of the motion (NC-110 §2.16: the look-ahead of a run of
+  // several processes, where it shows); 0: each block once the motion before it ended.
+  uint32_t look_ahead = 0;
 };
 
 // Released: REL ended the program (NC-110). Yield: the block is done, others may run
@@ -73,6 +76,14 @@ class Vm {
   uint32_t pc() const { return process_.pc; }  // where the last run stopped (Blocked: the waiting instruction)
   const std::string& waits() const { return waits_; }  // Blocked: what for ("wait for process 2")
   double blocked_operand() const { return process_.stack.empty() ? 0 : process_.stack.back(); }  // Blocked: the process named
+  // When the block being run is evaluated: with a look-ahead, while earlier motion
+  // may still run; else when it ended (the machine's clock).
+  double eval_time() const { return options_.look_ahead ? eval_ : machine_.clock(); }
+  // The process waited for another until `seconds`: it evaluates, and moves, from then on.
+  void wait_until(double seconds) {
+    eval_ = std::max(eval_, seconds);
+    machine_.wait_until(seconds);
+  }
   // The PLC writes a memory (SA, SK: a run's input script): index and value fit.
   void write_memory(uint8_t space, MemFormat f, uint32_t index, double value) { store_mem(space, f, index, value, 0); }
   const screen::UserScreen& user_screen() const { return shared_.screen; }
@@ -140,6 +151,11 @@ class Vm {
   // EXE, WAI, SND: Done (a sync event shows it), Wait (the first time, an event
   // shows what it waits for), or Error.
   ProcessHost::Answer process_op(Op op, const uint8_t* operands, uint32_t pc);
+  // The look-ahead: the time the block being run is evaluated, and when each of the
+  // last look_ahead blocks ended its motion (a ring, by block count).
+  void look_ahead();
+  double eval_ = 0;
+  std::vector<double> ends_;
   bool waiting_ = false;  // the instruction at pc waits (Blocked)
   std::string waits_;     // what for
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the

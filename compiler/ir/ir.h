@@ -186,6 +186,7 @@ struct Block {
   bool skippable = false;          // '/' before the block: skipped when block skip is on
   bool has_errors = false;
   char sync = 0;                   // NC-110 '#': wait for the motion before; '&': do not
+  bool waits_motion = false;       // evaluated once the motion before it has ended ('#', NC-110 SA/SK blocks)
   std::string label;
   std::vector<Word> words;
   std::vector<std::string> comments;

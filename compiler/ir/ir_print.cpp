@@ -140,6 +140,7 @@ std::string print(const Program& p, const SourceManager& sources) {
       if (b.number) out += fmt::format(" {}{}", b.main_block ? ":" : "N", *b.number);
       if (b.skippable) out += " skippable";
       if (b.sync) out += fmt::format(" sync{}", b.sync);
+      if (b.waits_motion && b.sync != '#') out += " waits_motion";
       if (b.has_errors) out += " has_errors";
       if (!b.label.empty()) out += fmt::format(" label=\"{}\"", b.label);
       out += "\n";

@@ -579,6 +579,7 @@ class Lowering {
       m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});
     op(Op::Step);
     uint32_t skip = b.skippable ? jump(Op::JumpSkip) : 0;
+    if (b.waits_motion) op(Op::Sync);
     for (const ir::Stmt& s : b.stmts) {
       // A block the compiler rejected does not jump or call: where to is in doubt (a
       // dry run goes on past it, its other errors already reported).

@@ -133,6 +133,7 @@ std::optional<Reader::MemoryRef> Reader::memory_ref(std::string_view written, So
 }
 
 ir::ExprId Reader::memory_expr(const MemoryRef& ref, SourceRange r) {
+  if (ref.memory->synchronised && block_.sync != '&') block_.waits_motion = true;
   ir::Expr e{ref.chars ? ir::ExprOp::Text : ir::ExprOp::Mem, Builtin::Sin,
              static_cast<uint16_t>(1 + (ref.memory - s_.memories.data())), 0, program_.number(ref.index, r),
              ir::kNoExpr, r};

@@ -421,6 +421,7 @@ void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
         }
         stage = 4;
         block_.sync = t->getType() == Nc110Lexer::HASH ? '#' : '&';
+        block_.waits_motion = block_.sync == '#';
         if (!has_body) {
           diags_.report(DiagId::LeadingFieldOrder, r,
                         fmt::format("'{}' must be followed by the instruction it synchronises", block_.sync));

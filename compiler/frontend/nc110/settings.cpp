@@ -168,7 +168,7 @@ void read_classes(Settings& s, Diagnostics& diags) {
 }
 
 void read_memories(Settings& s, Diagnostics& diags) {
-  auto table = stdlib::load_table("nc110", "memories.tsv", 4, diags);
+  auto table = stdlib::load_table("nc110", "memories.tsv", 5, diags);
   if (!table) return;
   static const std::map<std::string_view, MemFormat> kFormats = {
       {"BL", MemFormat::Bit}, {"BY", MemFormat::Byte}, {"IN", MemFormat::Integer},
@@ -177,11 +177,11 @@ void read_memories(Settings& s, Diagnostics& diags) {
     const auto& c = row.cells;
     auto format = kFormats.find(c[1]);
     auto bytes = parse_number<uint32_t>(c[2]);
-    if (format == kFormats.end() || !bytes || *bytes == 0) {
+    if (format == kFormats.end() || !bytes || *bytes == 0 || (c[3] != "yes" && c[3] != "no")) {
       report(diags, *table, row.line, "malformed memory row");
       continue;
     }
-    s.memories.push_back({c[0], format->second, *bytes});
+    s.memories.push_back({c[0], format->second, *bytes, c[3] == "yes"});
   }
 }
 

@@ -65,6 +65,7 @@ struct Memory {
   std::string name;  // SA
   MemFormat format = MemFormat::Byte;
   uint32_t bytes = 0;
+  bool synchronised = false;  // a block that uses it waits for the motion before it, unless '&' (§2.16)
 };
 
 struct Settings {
