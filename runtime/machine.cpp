@@ -705,6 +705,30 @@ void Machine::check_profile_rules() {
 }
 
 BlockResult Machine::execute(const BlockRequest& request) {
+  if (!remaining_paths_) return run_block(request);
+  const double from_t = clock_;
+  const AxisValues from = machine_;
+  const BlockResult result = run_block(request);
+  if (clock_ > from_t) {
+    constexpr size_t kMoves = 256;  // more than the look-ahead runs ahead
+    if (moves_.size() == kMoves) moves_.pop_front();
+    moves_.push_back({from_t, clock_, from, machine_});
+  }
+  return result;
+}
+
+double Machine::remaining_at(int axis, double seconds) const {
+  for (auto it = moves_.rbegin(); it != moves_.rend(); ++it) {
+    if (seconds >= it->to_t) return 0;
+    if (seconds >= it->from_t) {
+      const double done = (seconds - it->from_t) / (it->to_t - it->from_t);
+      return std::fabs(it->to[axis] - it->from[axis]) * (1 - done);
+    }
+  }
+  return 0;
+}
+
+BlockResult Machine::run_block(const BlockRequest& request) {
   block_ = BlockState{};
   block_.request = &request;
   block_.compensation = compensation();

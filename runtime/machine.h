@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <array>
 #include <bitset>
+#include <deque>
 #include <map>
 #include <optional>
 #include <string>
@@ -67,6 +68,14 @@ class RuntimeIssues {
 
 enum class BlockResult { Continue, ProgramEnd, EndOfInformation, Error };
 
+// NC-110 RMNpq in a run of several processes: the path a process has still to go on
+// an axis (kAxisLetters index) when the block that reads it is evaluated.
+class RemainingPaths {
+ public:
+  virtual ~RemainingPaths() = default;
+  virtual double remaining(int process, int axis) = 0;
+};
+
 class Machine {
  public:
   Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
@@ -77,6 +86,11 @@ class Machine {
   // Error; without (the dry run of `ncc check`) the machine reports, recovers as if
   // the block had done what it says, and continues.
   BlockResult execute(const BlockRequest& block);
+  // A run of several processes: RMN reads the paths they have to go, and this machine
+  // keeps its recent moves in time to answer for itself.
+  void set_remaining_paths(RemainingPaths* paths) { remaining_paths_ = paths; }
+  // The path `axis` has still to go at `seconds`: of the block moving then, linear in time.
+  double remaining_at(int axis, double seconds) const;
   // The end of a program unit: pending multi-block constructs must be complete.
   void end_of_unit(uint32_t source);
   // The run is over: what waits goes to the trace (after an error as it stands, no
@@ -451,6 +465,13 @@ class Machine {
   bool block_skip_ = false;
   bool optional_stop_ = false;
   double clock_ = 0;                   // seconds of the run so far
+  RemainingPaths* remaining_paths_ = nullptr;
+  struct Move {
+    double from_t, to_t;
+    AxisValues from, to;
+  };
+  std::deque<Move> moves_;  // the last blocks that moved (with remaining_paths_)
+  BlockResult run_block(const BlockRequest& block);
   double clock_base_ = 0;              // ISO #3001/#3002: where the program set them to 0
   std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()
   std::vector<std::pair<uint32_t, double>> results_;

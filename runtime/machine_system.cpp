@@ -53,7 +53,10 @@ double Machine::system(SysRef ref) const {
     case SysVar::Timer:
       if (ref.index == 0) return static_cast<float>(clock_);
       break;
-    case SysVar::RemainingPath: return 0;  // one process: nothing moves while a block is evaluated
+    // RMNpq: process p, axis q (1: X); a run of one process moves nothing while a
+    // block is evaluated.
+    case SysVar::RemainingPath:
+      return remaining_paths_ && ref.index % 10 >= 1 ? remaining_paths_->remaining(ref.index / 10, ref.index % 10 - 1) : 0;
     default: break;
   }
   auto it = system_.find(ref.packed());

@@ -43,6 +43,7 @@ Processes::Slot& Processes::slot(uint8_t n) {
   if (several_) trace = (s->sink = std::make_unique<ProcessSink>(setup_.trace, n)).get();
   s->machine = std::make_unique<Machine>(setup_.module.semantics, setup_.config, *trace, setup_.issues);
   s->machine->set_stop_on_error(!setup_.dry);
+  if (several_) s->machine->set_remaining_paths(this);
   VmOptions options = setup_.options;
   if (setup_.files) {
     s->channels = std::make_unique<asset::Channels>(setup_.store, open_files_, setup_.channels);
@@ -185,6 +186,12 @@ ProcessHost::Answer Processes::start(double process, uint32_t entry, uint32_t pc
   target.running = true;
   target.blocked = false;
   return Answer::Done;
+}
+
+// RMNpq: at the time the reading block is evaluated, of the block process p moves then.
+double Processes::remaining(int process, int axis) {
+  if (process < 1 || process > static_cast<int>(slots_.size()) || !slots_[process - 1] || axis >= kAxisCount) return 0;
+  return slots_[process - 1]->machine->remaining_at(axis, slot(current_).vm->eval_time());
 }
 
 // Two processes meet: both go on at the later of their times.

@@ -39,7 +39,7 @@ struct ProcessSetup {
   std::deque<PlcWrite> plc = {};
 };
 
-class Processes final : public ProcessHost {
+class Processes final : public ProcessHost, public RemainingPaths {
  public:
   explicit Processes(ProcessSetup setup);
   ~Processes() override;
@@ -54,6 +54,7 @@ class Processes final : public ProcessHost {
   Answer wait_for(double process, uint32_t pc) override;
   Answer signal(double process, uint32_t pc) override;
   bool assume_met() override { return assume_; }
+  double remaining(int process, int axis) override;
 
  private:
   struct Slot;

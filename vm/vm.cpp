@@ -248,13 +248,15 @@ void Vm::start(uint32_t entry) {
   words_.clear();
   args_.clear();
   waiting_ = false;
+  mid_block_ = false;
 }
 
 RunStatus Vm::resume() {
   Process& p = process_;
   // A turn is one block: it ends at the next Step, or at this block's end when the
   // turn goes on with an instruction that waited.
-  bool stepped = waiting_;
+  bool stepped = waiting_ || mid_block_;
+  mid_block_ = false;
   const uint8_t* code = m_.code.data();
   std::vector<double>& st = p.stack;
   auto pop = [&] {
@@ -373,7 +375,16 @@ RunStatus Vm::resume() {
         if (options_.trace_blocks && !(p.pc < m_.code.size() && static_cast<Op>(code[p.pc]) == Op::JumpSkip && machine_.block_skip()))
           machine_.block_start(m_.source_of(pc));
         break;
-      case Op::Sync: eval_ = std::max(eval_, machine_.clock()); break;
+      case Op::Sync:
+        // In turns, a block that waits for the motion lets the processes behind it in
+        // time go first.
+        if (machine_.clock() > eval_ && options_.slice) {
+          eval_ = machine_.clock();
+          mid_block_ = true;
+          return RunStatus::Yield;
+        }
+        eval_ = std::max(eval_, machine_.clock());
+        break;
       case Op::Code:
         if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");
         codes_.push_back(u16_at(operands));

@@ -157,6 +157,7 @@ class Vm {
   double eval_ = 0;
   std::vector<double> ends_;
   bool waiting_ = false;  // the instruction at pc waits (Blocked)
+  bool mid_block_ = false;  // the last turn ended inside a block (SYNC)
   std::string waits_;     // what for
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.
