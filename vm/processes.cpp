@@ -244,8 +244,14 @@ void Processes::deadlock() {
     const uint32_t source = setup_.module.source_of(s.blocked_pc);
     if (first) issue.source = source;
     first = false;
-    condition = condition || static_cast<Op>(setup_.module.code[s.blocked_pc]) == Op::ProcWaitUntil;
-    issue.notes.push_back({source, fmt::format("process {} waits here: {}", i + 1, s.vm->waits())});
+    const Op op = static_cast<Op>(setup_.module.code[s.blocked_pc]);
+    condition = condition || op == Op::ProcWaitUntil;
+    // The process it waits for may run nothing, and never will.
+    const double partner = s.vm->blocked_operand();
+    const bool idle = (op == Op::ProcWait || op == Op::ProcSignal) && partner >= 1 && partner <= static_cast<double>(slots_.size()) &&
+                      !(slots_[static_cast<size_t>(partner) - 1] && slots_[static_cast<size_t>(partner) - 1]->running);
+    issue.notes.push_back({source, fmt::format("process {} waits here: {}{}", i + 1, s.vm->waits(),
+                                               idle ? fmt::format(" (process {} runs no program)", shortest(partner)) : "")});
   }
   issue.message = diag_message(DiagId::Deadlock, condition ? "every process that runs waits, and the input script has no PLC signal left "
                                                                        "(ncc run --input FILE: a line such as SA12=1)"

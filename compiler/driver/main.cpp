@@ -61,7 +61,8 @@ constexpr Command kCommands[] = {
   --optional-stop           the optional-stop switch is on: M01 stops
   --start-block N           start at main block ':N' (GOST 20999 §2.6)
   --files DIR               the ASSET sandbox of NC-110 file I/O (docs/asset.md; 'ncc files init DIR')
-  --input FILE              the operator's answers to NC-110 INP, a line each: a number, or ENTER
+  --input FILE              the operator's answers to NC-110 INP, a line each: a number, or ENTER;
+                            and the PLC's signals a WAI waits for: SA12=1
   --screen                  after the trace, the NC-110 user screen as the run left it
 )"},
     {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
