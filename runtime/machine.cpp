@@ -1084,6 +1084,10 @@ void Machine::operator_input(const std::string& shown, double answer, uint32_t s
   text_event(EventKind::Input, shown, source, 0, answer);
 }
 
+void Machine::operator_input(const std::string& shown, const std::string& answer, uint32_t source) {
+  text_event(EventKind::Input, shown + '\n' + answer, source, 1);
+}
+
 void Machine::screen_event(const std::string& what, uint32_t source) { text_event(EventKind::Screen, what, source); }
 
 void Machine::end_program(uint32_t source) {

@@ -107,6 +107,7 @@ class Machine {
   bool asset_done(const std::string& what, int code, uint32_t source);
   // The operator answered INP (NC-110 §5.5): the prompt and value offered, the answer.
   void operator_input(const std::string& shown, double answer, uint32_t source);
+  void operator_input(const std::string& shown, const std::string& answer, uint32_t source);  // into a text
   // The user screen changed (NC-110 SCR, OUT): "on", "field 2 row 3 column 19 "0      "".
   void screen_event(const std::string& what, uint32_t source);
   // The program ends without a block that ends it (NC-110 REL): as M02 ends it.

@@ -61,6 +61,13 @@ std::string asset_text(const Event& e) {
 
 std::string spindle_range(int n) { return n == 0 ? "none" : n < 0 ? "auto" : std::to_string(n); }
 
+// An input event's prompt with the value offered, and the text answered (n = 1).
+std::pair<std::string, std::string> input_parts(const Event& e) {
+  if (!e.n) return {e.text, ""};
+  const size_t cut = e.text.rfind('\n');
+  return {e.text.substr(0, cut), e.text.substr(cut + 1)};
+}
+
 std::string canon_number(double v) { return fmt::format("{:.4f}", v); }
 
 std::string json_number(double v) { return std::isfinite(v) ? shortest(v) : std::string("null"); }
@@ -219,7 +226,10 @@ class TextSink final : public BufferedSink {
       case EventKind::CompLoad:
         return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
       case EventKind::Asset: return "asset " + asset_text(e);
-      case EventKind::Input: return fmt::format("input {} {}", quoted(e.text), four_decimals(e.a));
+      case EventKind::Input: {
+        const auto [shown, answer] = input_parts(e);
+        return fmt::format("input {} {}", quoted(shown), e.n ? quoted(answer) : four_decimals(e.a));
+      }
       case EventKind::Screen: return "screen " + e.text;
       case EventKind::Sync: return "sync " + e.text;
     }
@@ -362,10 +372,13 @@ class JsonlSink final : public BufferedSink {
       case EventKind::Asset:
         s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n);
         break;
-      case EventKind::Input:
-        s += R"(,"prompt":)" + quoted(e.text);
-        num("answer", e.a);
+      case EventKind::Input: {
+        const auto [shown, answer] = input_parts(e);
+        s += R"(,"prompt":)" + quoted(shown);
+        if (e.n) s += R"(,"answer":)" + quoted(answer);
+        else num("answer", e.a);
         break;
+      }
       case EventKind::Screen:
       case EventKind::Sync: s += R"(,"what":)" + quoted(e.text); break;
       case EventKind::CompLoad:
@@ -475,7 +488,11 @@ class CanonSink final : public BufferedSink {
       case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
       case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", asset_text(e))); break;
-      case EventKind::Input: line(fmt::format("COMMENT(\"ncc: input {} {}\")", e.text, canon_number(e.a))); break;
+      case EventKind::Input: {
+        const auto [shown, answer] = input_parts(e);
+        line(fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(shown), e.n ? json_escape(answer) : canon_number(e.a)));
+        break;
+      }
       case EventKind::Screen: line(fmt::format("COMMENT(\"ncc: screen {}\")", json_escape(e.text))); break;
       case EventKind::Sync: line(fmt::format("COMMENT(\"ncc: sync {}\")", json_escape(e.text))); break;
       case EventKind::CompLoad:

@@ -67,7 +67,8 @@ enum class EventKind : uint8_t {
   CompLoad,          // n: the compensation entry loaded; a: its length; b: its radius
   // NC-110 ASSET file I/O.
   Asset,             // text: the statement ("read 1 record 3"); n: its code of table 5.2, 0 when it worked
-  Input,             // text: the prompt and the value offered; a: the operator's answer (NC-110 INP)
+  Input,             // text: the prompt and the value offered; a: the operator's answer (NC-110 INP);
+                     // n = 1: a text answered, after a line break in text
   Screen,            // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
   Sync,              // text: what a process did with the others: "restart process 2", "wait for process 1" (NC-110 chapter 4)
 };

@@ -120,6 +120,8 @@ namespace ncc::vm {
   X(AssetDelete, "s", 0, 0, "delete file strings[s]")                                          \
   X(Input, "s", 1, 1, "pop the value offered after prompt strings[s]; push the operator's answer (NC-110 INP)") \
   X(InputField, "", 2, 1, "pop the value offered, then a screen field whose text is the prompt; push the answer") \
+  X(InputText, "vns", 1, 0, "pop a byte index: the operator answers the n bytes of memory v there after prompt strings[s]") \
+  X(InputFieldText, "vn", 2, 0, "pop a byte index, then a screen field whose text is the prompt; the same") \
   X(ScreenOn, "", 0, 0, "the user screen on, clear, without fields (NC-110 SCR)")              \
   X(ScreenOff, "", 0, 0, "the user screen off")                                                 \
   X(ScreenDefineText, "s", 5, 0, "pop attribute, format, column, row, field; define it with text strings[s] (DEF)") \
@@ -128,6 +130,8 @@ namespace ncc::vm {
   X(ScreenShowAll, "", 0, 0, "show every defined field not shown yet")                          \
   X(ScreenShowValue, "", 2, 0, "pop a value, then a field; show the field with that value")   \
   X(ScreenShowText, "s", 1, 0, "pop a field; show it with text strings[s]")                    \
+  X(ScreenDefineMem, "vn", 6, 0, "pop a byte index, attribute, format, column, row, field; define it with n bytes of memory v") \
+  X(ScreenShowMem, "vn", 2, 0, "pop a byte index, then a field; show the field with n bytes of memory v there") \
   X(ProcStart, "e", 1, 0, "pop a process; start process entry e in it once it is free (NC-110 EXE)") \
   X(ProcRelease, "", 0, 0, "end the program: its process is free (NC-110 REL)")              \
   X(ProcWait, "", 1, 0, "pop a process; wait for a restart from it (NC-110 WAI)")             \

@@ -506,28 +506,11 @@ RunStatus Vm::resume() {
         break;
       case Op::NoBlock: return fail(pc, DiagId::JumpTargetMissing, shortest(pop()));
       case Op::Input:
-      case Op::InputField: {
-        // NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps
-        // the value offered. A run reads the answers of --input, in order.
-        const double offered = pop();
-        std::string prompt;
-        if (op == Op::InputField) {
-          const double field = pop();
-          auto text = shared_.screen.text(whole_operand(field, 255));
-          if (!text) return fail(pc, DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
-          prompt = *text;
-        } else {
-          prompt = m_.strings[u32_at(operands)];
-        }
-        double answer = offered;
-        if (options_.input) {
-          if (shared_.answers >= options_.input->size()) return fail(pc, DiagId::InputExhausted, shared_.answers);
-          answer = (*options_.input)[shared_.answers++].value_or(offered);
-        }
-        machine_.operator_input(prompt + shortest(offered), answer, m_.source_of(pc));
-        st.push_back(answer);
+      case Op::InputField:
+      case Op::InputText:
+      case Op::InputFieldText:
+        if (!input(op, operands, pc)) return RunStatus::Error;
         break;
-      }
       case Op::ScreenOn:
       case Op::ScreenOff:
       case Op::ScreenDefineText:
@@ -536,6 +519,8 @@ RunStatus Vm::resume() {
       case Op::ScreenShowAll:
       case Op::ScreenShowValue:
       case Op::ScreenShowText:
+      case Op::ScreenDefineMem:
+      case Op::ScreenShowMem:
         if (!user_screen(op, operands, pc)) return RunStatus::Error;
         break;
       case Op::AssetBind:
@@ -885,6 +870,57 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
 
 // ---- The user screen (NC-110 §5.6) -------------------------------------------------------
 
+// NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps the value
+// offered. A run reads the answers of --input, in order; a dry run keeps every value.
+bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
+  const bool text = op == Op::InputText || op == Op::InputFieldText;
+  const uint8_t chars = text ? operands[1] : 0;
+  const double index = text ? pop_value() : 0;
+  uint8_t* memory = text ? bytes(operands[0], index, chars, pc) : nullptr;
+  if (text && !memory) return false;
+  const double offered = text ? 0 : pop_value();
+  std::string prompt;
+  if (op == Op::InputField || op == Op::InputFieldText) {
+    const double field = pop_value();
+    auto shown = shared_.screen.text(whole_operand(field, 255));
+    if (!shown) return fail(pc, DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field))), false;
+    prompt = *shown;
+  } else {
+    prompt = m_.strings[u32_at(operands + (text ? 2 : 0))];
+  }
+  Answer answer;
+  if (options_.input) {
+    if (shared_.answers >= options_.input->size()) return fail(pc, DiagId::InputExhausted, shared_.answers), false;
+    answer = (*options_.input)[shared_.answers++];
+  }
+  if (!text) {
+    if (answer.text) return fail(pc, DiagId::InputAnswer, fmt::format("\"{}\"", *answer.text), "a text", "a number"), false;
+    machine_.operator_input(prompt + shortest(offered), answer.number.value_or(offered), m_.source_of(pc));
+    process_.stack.push_back(answer.number.value_or(offered));
+    return true;
+  }
+  std::string now(reinterpret_cast<const char*>(memory), chars);
+  std::string shown = now;
+  std::replace(shown.begin(), shown.end(), '\0', ' ');  // memory never written holds zeros
+  if (answer.number) return fail(pc, DiagId::InputAnswer, shortest(*answer.number), "a number", "a text in quotes"), false;
+  std::string typed = answer.text.value_or(now);
+  if (typed.size() > chars)
+    return fail(pc, DiagId::InputAnswer, fmt::format("\"{}\"", typed), fmt::format("{} bytes long", typed.size()),
+                fmt::format("a text of at most {} bytes", chars)), false;
+  typed.resize(chars, ' ');  // the rest of the field blank
+  machine_.operator_input(prompt + shown, typed, m_.source_of(pc));
+  std::copy(typed.begin(), typed.end(), memory);
+  shared_.written_at = std::max(shared_.written_at, eval_time());
+  return true;
+}
+
+// A text in memory: operands v n, its byte index popped.
+bool Vm::memory_text(const uint8_t* operands, uint32_t pc, std::string& out) {
+  const uint8_t* b = bytes(operands[0], pop_value(), operands[1], pc);
+  if (b) out.assign(reinterpret_cast<const char*>(b), operands[1]);
+  return b != nullptr;
+}
+
 bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
   auto pop = [&] { return pop_value(); };
   const uint32_t source = m_.source_of(pc);
@@ -899,10 +935,12 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
       machine_.screen_event("off", source);
       return true;
     case Op::ScreenDefineText:
+    case Op::ScreenDefineMem:
     case Op::ScreenDefineValue: {
-      screen::Content init{op == Op::ScreenDefineText, {}, 0};
-      if (init.is_text) init.text = m_.strings[read_operand(operands, 4)];
-      else init.value = pop();
+      screen::Content init{op != Op::ScreenDefineValue, {}, 0};
+      if (op == Op::ScreenDefineText) init.text = m_.strings[read_operand(operands, 4)];
+      else if (op == Op::ScreenDefineMem && !memory_text(operands, pc, init.text)) return false;
+      else if (op == Op::ScreenDefineValue) init.value = pop();
       const double attribute = pop(), format = pop(), column = pop(), row = pop(), field = pop();
       std::optional<screen::Format> f;
       if (format >= 1 && format <= 7 && format == std::trunc(format)) f = static_cast<screen::Format>(format);
@@ -919,10 +957,12 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
     }
     case Op::ScreenShowAll: why = shared_.screen.show_all(); break;
     case Op::ScreenShowValue:
-    case Op::ScreenShowText: {
-      screen::Content c{op == Op::ScreenShowText, {}, 0};
-      if (c.is_text) c.text = m_.strings[read_operand(operands, 4)];
-      else c.value = pop();
+    case Op::ScreenShowText:
+    case Op::ScreenShowMem: {
+      screen::Content c{op != Op::ScreenShowValue, {}, 0};
+      if (op == Op::ScreenShowText) c.text = m_.strings[read_operand(operands, 4)];
+      else if (op == Op::ScreenShowMem && !memory_text(operands, pc, c.text)) return false;
+      else if (op == Op::ScreenShowValue) c.value = pop();
       why = shared_.screen.show_with(whole_operand(pop(), 255), c);
       break;
     }

@@ -38,13 +38,20 @@ class ProcessHost {
   virtual bool assume_met() { return false; }
 };
 
+// The operator's answer to INP (NC-110 §5.5): a number, a text, or neither: ENTER, the
+// value offered stays.
+struct Answer {
+  std::optional<double> number;
+  std::optional<std::string> text;
+};
+
 struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
   bool trace_blocks = false;  // a `block` event as each block starts
   asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect
   // The operator's answers to INP, in order (nullopt: ENTER, the offered value stays);
   // none: a dry run, every answer is the offered value.
-  std::vector<std::optional<double>>* input = nullptr;
+  std::vector<Answer>* input = nullptr;
   SharedState* shared = nullptr;        // none: the VM's own
   ProcessHost* processes = nullptr;     // none: one process, which EXE, WAI and SND cannot leave
   uint8_t process = 0;                  // its number (0: the only one)
@@ -143,6 +150,8 @@ class Vm {
   std::map<uint32_t, std::vector<AssetField>> structures_;
   // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
   bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
+  bool memory_text(const uint8_t* operands, uint32_t pc, std::string& out);  // false: reported
+  bool input(Op op, const uint8_t* operands, uint32_t pc);                    // false: reported
   double pop_value() {  // the verifier has checked the stack holds it
     const double v = process_.stack.back();
     process_.stack.pop_back();

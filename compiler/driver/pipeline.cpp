@@ -148,11 +148,11 @@ std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& 
   return {};
 }
 
-// The input script (--input): the operator's answers to INP, a line each, a number or
-// ENTER (keep the value offered), and the PLC's signals (SA12=1), each given when no
+// The input script (--input): the operator's answers to INP, a line each, a number, a
+// "text" or ENTER (keep the value offered), and the PLC's signals (SA12=1), each given when no
 // process can go on without it; blank lines and '#' comments are skipped. Problems
 // at their place.
-bool read_answers(Session& s, const vm::Module& m, const std::string& path, std::vector<std::optional<double>>& answers,
+bool read_answers(Session& s, const vm::Module& m, const std::string& path, std::vector<vm::Answer>& answers,
                   std::deque<vm::PlcWrite>& plc) {
   auto text = read_file(path);
   if (!text) {
@@ -172,12 +172,13 @@ bool read_answers(Session& s, const vm::Module& m, const std::string& path, std:
     auto [stop, ec] = std::from_chars(answer.data(), answer.data() + answer.size(), v);
     vm::PlcWrite w;
     std::string why;
-    if (answer == "ENTER") answers.push_back(std::nullopt);
-    else if (ec == std::errc() && stop == answer.data() + answer.size() && std::isfinite(v)) answers.push_back(v);
+    if (answer == "ENTER") answers.push_back({});
+    else if (ec == std::errc() && stop == answer.data() + answer.size() && std::isfinite(v)) answers.push_back({v, {}});
+    else if (answer.size() >= 2 && answer.front() == '"' && answer.back() == '"') answers.push_back({{}, std::string(answer.substr(1, answer.size() - 2))});
     else if ((why = plc_write(m, answer, w)).empty()) plc.push_back(w);
     else
       s.diags.report(DiagId::InputScript, {id, n, static_cast<uint32_t>(begin + 1), n, static_cast<uint32_t>(end + 1)},
-                     fmt::format("'{}' is {}: a line is an answer, a number or ENTER to keep the value offered, or a PLC signal such as SA12=1",
+                     fmt::format("'{}' is {}: a line is an answer, a number, a \"text\" or ENTER to keep the value offered, or a PLC signal such as SA12=1",
                                  answer, why == "not an answer" ? why : "not a PLC signal: " + why));
   }
   return s.diags.error_count() == errors;
@@ -202,7 +203,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   // ASSET files (NC-110 chapter 5) in the sandbox of --files; a dry run leaves them
   // alone: they are the machine's, not the program's.
   std::unique_ptr<asset::Store> store;
-  std::vector<std::optional<double>> answers;
+  std::vector<vm::Answer> answers;
   if (!dry) {
     if (!settings.files.empty()) {
       std::string why;

@@ -336,42 +336,60 @@ class Lowering {
   }
 
   // INP: the variable's value is offered, the answer stored back (a memory's index
-  // goes first, under the value, for StoreMem).
+  // goes first, under the value, for StoreMem); a text goes straight to memory.
   void input(const ir::Stmt& s) {
     const ir::Expr& target = p_->exprs[s.target];
+    const ir::Expr& prompt = p_->exprs[s.items[0].value];
+    const bool field = !(prompt.op == ir::ExprOp::Number && prompt.number == 0);  // else the text `label`
+    const bool text = target.op == ir::ExprOp::Text;
     if (target.op == ir::ExprOp::Mem) expr(target.a);
-    if (s.label.empty()) expr(s.items[0].value);  // the prompt is a screen field's text
-    expr(s.target);
-    if (s.label.empty()) {
-      op(Op::InputField);
+    if (field) expr(s.items[0].value);
+    expr(text ? target.a : s.target);
+    if (text) {
+      op(field ? Op::InputFieldText : Op::InputText);
+      u8(target.space);
+      u8(target.count);
     } else {
-      op(Op::Input);
-      u32(string(s.label));
+      op(field ? Op::InputField : Op::Input);
     }
+    if (!field) u32(string(s.label));
     if (target.op == ir::ExprOp::Mem) {
       op(Op::StoreMem);
       u8(target.space);
       u8(static_cast<uint32_t>(target.format));
-    } else {
+    } else if (!text) {
       op(Op::Store);
       u8(target.space);
       u32(static_cast<uint32_t>(p_->exprs[target.a].number));  // E<n>: written (the front end)
     }
     if (s.items.size() == 2) {  // the field that shows the answer
       expr(s.items[1].value);
-      expr(s.target);
-      op(Op::ScreenShowValue);
+      if (text) {
+        expr(target.a);
+        op(Op::ScreenShowMem);
+        u8(target.space);
+        u8(target.count);
+      } else {
+        expr(s.target);
+        op(Op::ScreenShowValue);
+      }
     }
   }
 
   // NC-110 SCR, DEF, OUT (§5.6): the operands in order, then the instruction.
   void user_screen(const ir::Stmt& s) {
-    // Item i: a text in quotes goes with `with_text`, a value is computed for `with_value`.
-    auto text_or_value = [&](size_t i, Op with_text, Op with_value) {
+    // Item i: a text in quotes goes with `with_text`, a text in memory with `with_memory`,
+    // a value is computed for `with_value`.
+    auto text_or_value = [&](size_t i, Op with_text, Op with_memory, Op with_value) {
       const ir::Expr& e = p_->exprs[s.items[i].value];
       if (e.op == ir::ExprOp::String) {
         op(with_text);
         u32(string(p_->texts[e.text]));
+      } else if (e.op == ir::ExprOp::Text) {
+        expr(e.a);
+        op(with_memory);
+        u8(e.space);
+        u8(e.count);
       } else {
         expr(s.items[i].value);
         op(with_value);
@@ -386,7 +404,7 @@ class Lowering {
         // The attribute: -1 none, 256 inverse (R), else the colour (An).
         const double attribute = s.label.empty() ? -1 : s.label == "R" ? 256 : std::atof(s.label.c_str() + 1);
         constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
-        text_or_value(3, Op::ScreenDefineText, Op::ScreenDefineValue);
+        text_or_value(3, Op::ScreenDefineText, Op::ScreenDefineMem, Op::ScreenDefineValue);
         break;
       }
       case ir::StmtKind::ScreenShow:
@@ -398,7 +416,7 @@ class Lowering {
         break;
       default:  // ScreenShowWith
         expr(s.items[0].value);
-        text_or_value(1, Op::ScreenShowText, Op::ScreenShowValue);
+        text_or_value(1, Op::ScreenShowText, Op::ScreenShowMem, Op::ScreenShowValue);
     }
   }
 

@@ -395,7 +395,6 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Target: {
       std::optional<MemoryRef> ref;
       if (!variable({}, "an E parameter, or SYVAR, SA or SK", ref)) return std::nullopt;
-      if (ref && ref->chars > 0) return fail("a text is not entered from the keyboard yet: a number");
       if (ref) op.value = memory_expr(*ref, op.range);
       break;
     }
@@ -578,6 +577,19 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
     if (item.in_group && !group_present) continue;
     size_t taken = 0;
     while (next < operands.size() && (taken == 0 || item.repeat == '*' || item.repeat == '+')) {
+      if (operands[next].empty() && item.repeat == '~') {
+        // Left out (an empty place between commas): the column 1, no prompt (§5.5, §5.6.2.2).
+        SourceRange at = next < commas.size() ? commas[next] : code_range;
+        Operand none;
+        none.kind = item.kind;
+        none.range = at;
+        if (item.kind == OperandKind::Prompt) none.is_text = true;
+        else none.value = program_.number(1, at);
+        matched.push_back(std::move(none));
+        ++next;
+        ++taken;
+        continue;
+      }
       if (operands[next].empty()) {
         SourceRange at = next < commas.size() ? commas[next] : code_range;
         diags_.report(DiagId::OperandMissing, at, code, kind_name(item.kind) + " here: the operand is empty");
@@ -761,15 +773,12 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       break;
     }
     case Action::Input:
-      // The prompt in quotes, or the text of a screen field; a field may show the answer.
+      // The prompt in quotes (or none), or the text of a screen field; a field may show the answer.
       s = ir::Stmt(ir::StmtKind::Input, block_.range);
-      if (ops[0].is_text) s.label = ops[0].name;
-      else s.items.push_back({ops[0].value, VarType::Integer});
+      s.label = ops[0].name;
+      s.items.push_back({ops[0].is_text ? program_.number(0, code_range) : ops[0].value, VarType::Integer});
       s.target = ops[1].value;
-      if (ops.size() > 2) {
-        if (ops[0].is_text) s.items.push_back({program_.number(0, code_range), VarType::Integer});  // no prompt field
-        s.items.push_back({ops[2].value, VarType::Integer});
-      }
+      if (ops.size() > 2) s.items.push_back({ops[2].value, VarType::Integer});
       break;
     case Action::Screen: {
       s = ir::Stmt(sig.screen, block_.range);
@@ -781,22 +790,12 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         if (op.kind == OperandKind::Attribute) s.label = op.name;
         else s.items.push_back({op.value, op.type});
       }
-      if (sig.screen == ir::StmtKind::ScreenDefine) {
-        // The initial value is a number or a text in quotes (a text variable: later).
-        const ir::Expr& init = program_.exprs[s.items[3].value];
-        if (ops[3].is_text && init.op != ir::ExprOp::String)
-          return fail(DiagId::OperandKind, ops[3].range, ops[3].text, "an initial value", sig.code,
-                      "a text variable is not an initial value yet: a text in quotes or a number");
-        break;
-      }
+      if (sig.screen == ir::StmtKind::ScreenDefine) break;
       // OUT: fields (a constant field may have '-': inverse), at most six; with two
       // operands the second is the first's new value (§5.6.2.3, decision 61).
       if (ops.size() == 2) {
         s = ir::Stmt(ir::StmtKind::ScreenShowWith, block_.range);
         s.items = {{ops[0].value, VarType::Integer}, {ops[1].value, ops[1].type}};
-        if (ops[1].is_text && program_.exprs[ops[1].value].op != ir::ExprOp::String)
-          return fail(DiagId::OperandKind, ops[1].range, ops[1].text, "a value", sig.code,
-                      "a text variable is not shown yet: a text in quotes or a number");
       }
       if (ops.size() > 6)
         return fail(DiagId::OperandKind, ops[6].range, ops[6].text, "a screen field", sig.code, "OUT shows at most 6 fields");

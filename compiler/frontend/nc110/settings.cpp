@@ -36,13 +36,13 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       ++i;
       continue;
     }
-    size_t end = text.find_first_of(" []?*+", i);
+    size_t end = text.find_first_of(" []?*+~", i);
     if (end == std::string_view::npos) end = text.size();
     auto it = kKinds.find(text.substr(i, end - i));
     if (it == kKinds.end()) return false;
     OperandItem item{it->second, '1', group};
     i = end;
-    if (i < text.size() && (text[i] == '?' || text[i] == '*' || text[i] == '+')) item.repeat = text[i++];
+    if (i < text.size() && (text[i] == '?' || text[i] == '*' || text[i] == '+' || text[i] == '~')) item.repeat = text[i++];
     out.push_back(item);
   }
   // Only the last item (of the signature or of its group) may repeat.

@@ -26,7 +26,7 @@ enum class OperandKind : uint8_t {
 
 struct OperandItem {
   OperandKind kind = OperandKind::Origin;
-  char repeat = '1';  // '1' once, '?' optional, '*' any number, '+' at least one
+  char repeat = '1';  // '1' once, '?' optional, '*' any number, '+' at least one, '~' once, maybe empty
   bool in_group = false;  // inside the signature's optional [...] group
 };
 
