@@ -20,8 +20,8 @@ struct Processes::Slot {
   double free_at = 0;      // when its last program ended
 };
 
-// Its machine's time, and a millisecond a block: a controller takes time to run a
-// block, so that a loop of blocks that do not move lets the other processes on.
+// When its next block is evaluated, and a millisecond a block: a controller takes
+// time to run a block, so that a loop of blocks that do not move lets the others on.
 double Processes::schedule_time(size_t i) const {
   const Slot& s = *slots_[i];
   return s.vm->eval_time() + static_cast<double>(s.vm->steps()) * kBlockCycle;
