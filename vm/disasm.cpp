@@ -56,7 +56,9 @@ std::string disassemble(const Module& m) {
   for (const Entry& e : m.entries) {
     static constexpr const char* kKinds[] = {"program", "main block", "subprogram", "process"};
     out += fmt::format(";   {:<10} {:<10} at {}", e.name, kKinds[static_cast<int>(e.kind)], e.pc);
-    out += e.process ? fmt::format(", started in process {}\n", e.process) : "\n";
+    for (int n = 1; n <= kMaxProcesses; ++n)
+      if (e.processes >> (n - 1) & 1) out += fmt::format(", started in process {}", n);
+    out += "\n";
   }
   out += "; code\n";
   size_t line = 0;

@@ -171,7 +171,7 @@ void write_section(uint32_t t, ByteWriter& w, const Module& m) {
       w.str(e.name);
       w.u8(static_cast<uint8_t>(e.kind));
       w.u32(e.pc);
-      w.u8(e.process);
+      w.u8(e.processes);
     }
   } else if (t == kVars) {
     w.u32(static_cast<uint32_t>(m.spaces.size()));
@@ -362,7 +362,7 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
       e.name = r.str();
       if (!enum_value(r, EntryKind::Process, e.kind)) return false;
       e.pc = r.u32();
-      e.process = r.u8();
+      e.processes = r.u8();
     }
   } else if (t == kVars) {
     if (!count(r, 27, n)) return false;
@@ -638,10 +638,12 @@ std::string verify(const Module& m) {
     if (!at_boundary(to)) return fmt::format("a jump goes to {}, which is not an instruction", to);
     if (to <= from && !at_step(to)) return fmt::format("the jump back from {} to {} does not land on a Step", from, to);
   }
+  uint8_t started = 1;  // process 1 runs the programs of the medium
   for (const Entry& e : m.entries) {
     if (!at_step(e.pc)) return fmt::format("entry point {} does not start with a Step", printable(e.name));
-    if (e.process > kMaxProcesses || (e.process && e.kind != EntryKind::Process))
-      return fmt::format("entry point {} starts in process {}", printable(e.name), e.process);
+    if ((e.processes & started) || e.processes >> kMaxProcesses || (e.processes && e.kind != EntryKind::Process))
+      return fmt::format("entry point {} starts in processes {:#x}, one of them taken or none of a process entry's", printable(e.name), e.processes);
+    started |= e.processes;
   }
   for (uint32_t end : range_ends)
     if (!at_boundary(end) || code[end] != static_cast<uint8_t>(Op::RangeEnd))

@@ -29,7 +29,7 @@ struct Entry {
   std::string name;  // "%0001", ":100"
   EntryKind kind = EntryKind::Program;
   uint32_t pc = 0;
-  uint8_t process = 0;  // a Process entry started in this process when the run starts (0: by EXE only)
+  uint8_t processes = 0;  // a Process entry started in process n when the run starts: bit n-1 (none: by EXE only)
 };
 
 // From `pc` on, the code belongs to source block `source` (until the next entry).

@@ -20,13 +20,6 @@ struct Processes::Slot {
   double free_at = 0;      // when its last program ended
 };
 
-// When its next block is evaluated, and a millisecond a block: a controller takes
-// time to run a block, so that a loop of blocks that do not move lets the others on.
-double Processes::schedule_time(size_t i) const {
-  const Slot& s = *slots_[i];
-  return s.vm->eval_time() + static_cast<double>(s.vm->steps()) * kBlockCycle;
-}
-
 Processes::Processes(ProcessSetup setup) : setup_(std::move(setup)) {
   const auto& entries = setup_.module.entries;
   several_ = std::any_of(entries.begin(), entries.end(), [](const Entry& e) { return e.kind == EntryKind::Process; });
@@ -65,22 +58,29 @@ bool Processes::run(size_t first) {
   one.entry = first;
   one.running = first < entries.size();  // a file without a program runs nothing
   if (one.running) one.vm->start(static_cast<uint32_t>(first));
-  for (size_t i = 0; i < entries.size(); ++i) {
-    if (!entries[i].process || entries[i].process > slots_.size()) continue;
-    Slot& s = slot(entries[i].process);
-    s.entry = i;
-    s.vm->start(static_cast<uint32_t>(i));
-    s.running = true;
-  }
+  for (size_t i = 0; i < entries.size(); ++i)
+    for (uint8_t n = 2; n <= kMaxProcesses; ++n) {
+      if (!(entries[i].processes >> (n - 1) & 1)) continue;
+      if (n > slots_.size()) {  // selected for a process this machine lacks
+        number(n, entries[i].pc, "--process");
+        one.running = false;
+        return false;
+      }
+      Slot& s = slot(n);
+      s.entry = i;
+      s.vm->start(static_cast<uint32_t>(i));
+      s.running = true;
+    }
   bool ok = true;
   while (ok) {
-    // The process furthest behind in time runs a block (decision 63); one that still
-    // waits lets the next one try.
+    // The process whose next block is evaluated first runs it (decision 63); one that
+    // still waits lets the next one try.
     std::vector<size_t> order;
     for (size_t i = 0; i < slots_.size(); ++i)
       if (slots_[i] && slots_[i]->running) order.push_back(i);
     if (order.empty()) break;
-    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return schedule_time(a) < schedule_time(b); });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t a, size_t b) { return slots_[a]->vm->eval_time() < slots_[b]->vm->eval_time(); });
     bool progress = false;
     for (size_t i : order) {
       Slot& s = *slots_[i];
@@ -110,19 +110,17 @@ bool Processes::run(size_t first) {
     }
     // No process can go on: the PLC's next signal, in the dry run a condition taken
     // as met, else a deadlock.
-    if (!setup_.plc.empty()) {
+    Slot* waiter = nullptr;  // the first that waits for a condition
+    for (size_t i : order)
+      if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->blocked_pc]) == Op::ProcWaitUntil) waiter = slots_[i].get();
+    if (waiter && !setup_.plc.empty()) {
       const PlcWrite w = setup_.plc.front();
       setup_.plc.pop_front();
-      // It comes after every process stopped, and shows at the first that waits for a condition.
-      Slot* waiter = nullptr;
-      for (size_t i : order) {
-        shared_.written_at = std::max(shared_.written_at, slots_[i]->vm->eval_time());
-        if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->blocked_pc]) == Op::ProcWaitUntil) waiter = slots_[i].get();
-      }
-      if (!waiter) waiter = slots_[order.front()].get();
+      // It comes once every process stopped, and shows at the first that waits for a condition.
+      for (size_t i : order) shared_.written_at = std::max(shared_.written_at, slots_[i]->vm->eval_time());
       waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->blocked_pc));
       waiter->vm->write_memory(w.space, w.format, w.index, w.value);
-    } else if (setup_.dry && !assume_) {
+    } else if (waiter && setup_.dry && !assume_) {
       assume_ = true;
     } else {
       deadlock();
@@ -194,42 +192,28 @@ double Processes::remaining(int process, int axis) {
   return slots_[process - 1]->machine->remaining_at(axis, slot(current_).vm->eval_time());
 }
 
-// Two processes meet: both go on at the later of their times.
-void Processes::meet(Vm& a, Vm& b) {
-  const double t = std::max(a.eval_time(), b.eval_time());
-  a.wait_until(t);
-  b.wait_until(t);
-}
-
 // WAI n and SND n meet (a rendezvous, decision 63): whichever comes first waits for
 // the other; both go on, at the later of their times.
-ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) {
-  const uint8_t n = number(process, pc, "(WAI)");
-  if (!n) return Answer::Error;
-  Slot& me = slot(current_);
-  if (me.delivered) {
-    me.delivered = false;
-    return Answer::Done;
-  }
-  Slot* sender = slots_[n - 1].get();
-  if (!sender || !waits_at(*sender, Op::ProcSignal, current_)) return Answer::Wait;
-  sender->delivered = true;
-  meet(*me.vm, *sender->vm);
-  return Answer::Done;
-}
+ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) { return meet(process, pc, "(WAI)", Op::ProcSignal); }
 
-ProcessHost::Answer Processes::signal(double process, uint32_t pc) {
-  const uint8_t n = number(process, pc, "(SND)");
+ProcessHost::Answer Processes::signal(double process, uint32_t pc) { return meet(process, pc, "(SND)", Op::ProcWait); }
+
+// This process's WAI or SND `what` meets process `process` if that one waits at
+// `partner` naming this one; else it waits, until that one comes and marks it met.
+ProcessHost::Answer Processes::meet(double process, uint32_t pc, const char* what, Op partner) {
+  const uint8_t n = number(process, pc, what);
   if (!n) return Answer::Error;
   Slot& me = slot(current_);
   if (me.delivered) {
     me.delivered = false;
     return Answer::Done;
   }
-  Slot* waiter = slots_[n - 1].get();
-  if (!waiter || !waits_at(*waiter, Op::ProcWait, current_)) return Answer::Wait;
-  waiter->delivered = true;
-  meet(*me.vm, *waiter->vm);
+  Slot* other = slots_[n - 1].get();
+  if (!other || !waits_at(*other, partner, current_)) return Answer::Wait;
+  other->delivered = true;
+  const double t = std::max(me.vm->eval_time(), other->vm->eval_time());
+  me.vm->wait_until(t);
+  other->vm->wait_until(t);
   return Answer::Done;
 }
 

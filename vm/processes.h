@@ -1,8 +1,8 @@
 // The processes of a run (NC-110 chapter 4): up to five programs side by side, each
 // with its own machine, E parameters, ASSET channels and VM, sharing SYVAR, SA, SK
 // and the user screen. A deterministic scheduler runs them a block at a time, the
-// one furthest behind in time first (decision 63); a run with no Process entry is
-// process 1 alone, run to the end in one go.
+// one whose next block is evaluated first (decision 63); a run with no Process entry
+// is process 1 alone, run to the end in one go.
 #pragma once
 
 #include <deque>
@@ -63,9 +63,7 @@ class Processes final : public ProcessHost, public RemainingPaths {
   bool waits_at(const Slot& s, Op op, uint8_t partner) const;     // s is blocked at `op` naming `partner`
   bool next_program(Slot& s);                 // process 1: the next program on the medium
   void deadlock();
-  double schedule_time(size_t slot) const;
-  static void meet(Vm& a, Vm& b);
-  static constexpr double kBlockCycle = 0.001;  // seconds
+  Answer meet(double process, uint32_t pc, const char* what, Op partner);
 
   ProcessSetup setup_;
   bool several_;  // a run of several processes: turns, and traces marked with the process

@@ -161,7 +161,6 @@ bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double&
 bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   double v = value;
-  shared_.written_at = std::max(shared_.written_at, eval_time());
   static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real,
                                        VarType::LongReal};
   bool fits = f == MemFormat::Bit ? (v == 0 || v == 1) : convert_value(kTypes[static_cast<int>(f)], 0, v);
@@ -170,6 +169,7 @@ bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint3
     fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
     return false;
   }
+  wrote_memory();
   if (f == MemFormat::Bit) {
     uint8_t* b = bytes(space, index >= 0 ? std::floor(index / 8) : index, 1, pc);
     if (!b || index != std::trunc(index)) return false;
@@ -211,12 +211,14 @@ void Vm::restore_locals(const std::vector<double>& saved) {
 }
 
 // The block is evaluated once the look-ahead has room: when the block look_ahead
-// blocks back has ended its motion.
+// blocks back has ended its motion, and a block cycle after the block before (a
+// controller takes time to run a block: a loop that does not move lets the others on).
 void Vm::look_ahead() {
   const size_t n = options_.look_ahead;
   if (ends_.empty()) ends_.assign(n, 0);
   const uint64_t k = steps_ + 1;  // this block, counted from 1
   if (k > 1) ends_[(k - 2) % n] = machine_.clock();  // the block before ended its motion then
+  eval_ += kBlockCycle;
   if (k > n) eval_ = std::max(eval_, ends_[(k - 1) % n]);
 }
 
@@ -429,6 +431,7 @@ RunStatus Vm::resume() {
         break;
       }
       case Op::Exec: {
+        if (options_.look_ahead) machine_.wait_until(eval_);  // a move does not start before its block is evaluated
         BlockRequest request{codes_.data(), codes_.size(), &words_, m_.source_of(pc), dynamic_codes_};
         BlockResult result = machine_.execute(request);
         codes_.clear();
@@ -606,6 +609,7 @@ RunStatus Vm::resume() {
         uint8_t* b = bytes(operands[0], pop(), static_cast<uint32_t>(text.size()), pc);
         if (!b) return RunStatus::Error;
         std::memcpy(b, text.data(), text.size());
+        wrote_memory();
         break;
       }
       case Op::CopyText: {
@@ -614,6 +618,7 @@ RunStatus Vm::resume() {
         uint8_t* to = from ? bytes(operands[0], pop(), n, pc) : nullptr;
         if (!to) return RunStatus::Error;
         std::memmove(to, from, n);
+        wrote_memory();
         break;
       }
       case Op::EqText: {
@@ -697,6 +702,7 @@ bool Vm::asset_store(const std::vector<AssetField>& fields, const std::vector<as
       uint8_t* b = bytes(f.space, f.index, f.chars, pc);
       if (!b) return false;
       std::memcpy(b, values[i].chars.data(), std::min<size_t>(f.chars, values[i].chars.size()));
+      wrote_memory();
     } else if (!store_mem(f.space, f.format, f.index, values[i].number, pc)) {
       return false;
     }
@@ -910,7 +916,7 @@ bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
   typed.resize(chars, ' ');  // the rest of the field blank
   machine_.operator_input(prompt + shown, typed, m_.source_of(pc));
   std::copy(typed.begin(), typed.end(), memory);
-  shared_.written_at = std::max(shared_.written_at, eval_time());
+  wrote_memory();
   return true;
 }
 

@@ -135,6 +135,8 @@ class Vm {
   uint8_t* bytes(uint8_t space, double index, uint32_t count, uint32_t pc);
   bool load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out);
   bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
+  // A memory changed now: a WAI condition it meets goes on from this time.
+  void wrote_memory() { shared_.written_at = std::max(shared_.written_at, eval_time()); }
   // ASSET (NC-110 chapter 5): one instruction of it; the structures' variables.
   bool asset(Op op, const uint8_t* operands, uint32_t pc);  // false: the run stops (reported)
   struct AssetField {
@@ -163,6 +165,7 @@ class Vm {
   // The look-ahead: the time the block being run is evaluated, and when each of the
   // last look_ahead blocks ended its motion (a ring, by block count).
   void look_ahead();
+  static constexpr double kBlockCycle = 0.001;  // seconds
   double eval_ = 0;
   std::vector<double> ends_;
   bool waiting_ = false;  // the instruction at pc waits (Blocked)

@@ -244,6 +244,12 @@ class Cli {
   // compiled (and must have no errors).
   std::optional<vm::Module> module(FileKind kind, uint32_t file, int& status) {
     if (kind == FileKind::Bytecode) {
+      if (!o_.processes.empty()) {  // compiled in: the module holds its processes' programs
+        s_.diags.report(DiagId::ProcessOption, {}, fmt::format("{}={}", o_.processes[0].first, o_.processes[0].second),
+                        "a bytecode file holds the programs it was compiled with: give --process to ncc compile");
+        status = kUsage;
+        return std::nullopt;
+      }
       auto m = load_module(s_, file);
       if (!m) status = kUsage;
       return m;

@@ -67,8 +67,8 @@ class IssueReporter final : public RuntimeIssues {
     SourceRange range;
     if (block) {
       const SourceBlock& b = *block;
-      const uint32_t file = block_range(b).file;
       range = block_range(b);
+      const uint32_t file = range.file;
       if (i.slot >= 0 || i.code >= 0) {
         int skip = i.nth;
         for (const WordPosition& p : map.words(i.source)) {
@@ -117,7 +117,7 @@ RunResult cannot_start() {
 std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& out) {
   const size_t equals = text.find('=');
   size_t name = 0;
-  while (name < equals && std::isalpha(static_cast<unsigned char>(text[name]))) ++name;
+  while (name < std::min(equals, text.size()) && std::isalpha(static_cast<unsigned char>(text[name]))) ++name;
   size_t space = 0;
   while (space < m.spaces.size() && !(m.spaces[space].memory && m.spaces[space].name == text.substr(0, name))) ++space;
   if (equals == std::string_view::npos || space == m.spaces.size()) return "not an answer";
@@ -135,12 +135,13 @@ std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& 
   }
   const uint64_t bytes = out.format == MemFormat::Bit ? (uint64_t{index} + 8) / 8 : (uint64_t{index} + 1) * mem_size(out.format);
   if (bytes > m.spaces[space].size) return fmt::format("{} has {} bytes", m.spaces[space].name, m.spaces[space].size);
+  // What the memory's format holds, as a store would take it (BL: 0 or 1).
+  static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real, VarType::LongReal};
   auto v = parse_number<double>(value);
-  static constexpr double kLimits[][2] = {{0, 1}, {0, 255}, {-32768, 32767}, {-2147483648.0, 2147483647}, {-3.4e38, 3.4e38}, {-1.7e308, 1.7e308}};
-  const auto& [lo, hi] = kLimits[static_cast<int>(out.format)];
+  double kept = v.value_or(0);
+  const bool fits = v && (out.format == MemFormat::Bit ? *v == 0 || *v == 1 : convert_value(kTypes[static_cast<int>(out.format)], 0, kept));
   const bool whole = out.format != MemFormat::Real && out.format != MemFormat::LongReal;
-  if (!v || *v < lo || *v > hi || (whole && *v != std::trunc(*v)))
-    return fmt::format("the value must be {} from {} to {}", whole ? "a whole number" : "a number", shortest(lo), shortest(hi));
+  if (!fits || (whole && kept != *v)) return fmt::format("'{}' is not a value of format {}", value, kFormats[static_cast<int>(out.format)]);
   out.space = static_cast<uint8_t>(space);
   out.text = text;
   out.index = index;
@@ -278,7 +279,8 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
   s.profile->report_unused(s.diags);
   if (!frontend || s.diags.error_count() != errors) return nullptr;
   if (!s.processes.empty() && frontend->rules().processes < 2) {
-    s.diags.report(DiagId::DialectUnknown, {}, fmt::format("--process: the {} dialect runs one process", dialect));
+    s.diags.report(DiagId::ProcessOption, {}, fmt::format("{}={}", s.processes[0].first, s.processes[0].second),
+                   fmt::format("the {} dialect runs one process", dialect));
     return nullptr;
   }
   return frontend;

@@ -216,7 +216,7 @@ struct Unit {
   // Of them, the ones the blocks held name (indices in streamed_labels, in order).
   std::vector<size_t> named_streamed_labels() const;
   bool ends_information = false;  // terminated by end of information (M30)
-  uint8_t process = 0;  // a Process unit started in this process when the run starts (0: by EXE only)
+  uint8_t processes = 0;  // a Process unit started in process n when the run starts: bit n-1 (none: by EXE only)
 };
 
 struct Program {

@@ -551,7 +551,7 @@ class Lowering {
       s.col = unit.range.col;
       m_.source_map.add(s, {});
       m_.lines.push_back({pc(), m_.source_map.size() - 1});
-      m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.process});
+      m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.processes});
       op(Op::Step);
     }
     uint32_t end = pc();
@@ -587,7 +587,7 @@ class Lowering {
     m_.lines.push_back({pc(), source});
     for (; st.starting_loops > 0; --st.starting_loops) st.loop_start.push_back(pc());
     if (!st.entry_added) {
-      m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.process});
+      m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.processes});
       st.entry_added = true;
     }
     if (b.main_block && b.number)

@@ -812,8 +812,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       if (s.kind == ir::StmtKind::ProcessStart) {
         // A program of device MP0..MP3 (§4.1.1), read like a called one (decision 62).
         const Operand& program = ops[1];
-        if (!program.device.empty() && (program.device.size() != 3 || !program.device.starts_with("MP") || program.device[2] < '0' ||
-                                        program.device[2] > '3'))
+        if (!program.device.empty() && !exe_device(program.device))
           return fail(DiagId::OperandKind, program.range, program.text, kind_name(OperandKind::Program), sig.code,
                       "EXE loads from devices MP0 to MP3");
         const std::string device = program.device.empty() ? s_.default_device : program.device;

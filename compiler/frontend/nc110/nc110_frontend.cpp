@@ -8,6 +8,7 @@
 #include <set>
 
 #include "reader.h"
+#include "runtime/asset_store.h"
 
 namespace ncc::nc110 {
 
@@ -56,8 +57,14 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       size_t slash = name.find('/');
       CallSite site{name.substr(0, slash), slash == std::string::npos ? s_.default_device : name.substr(slash + 1), "", {}, 0, 0,
                     ir::UnitKind::Process};
+      // As EXE names a program (decision 62).
+      if (!asset::parse_file_name(site.name, 1) || !exe_device(site.device)) {
+        diags.report(DiagId::ProcessOption, {}, fmt::format("{}={}", process, name),
+                     "a program is 1 to 6 capitals and digits, a letter first, then /MP0 to /MP3 or nothing");
+        continue;
+      }
       site.entry = site.device + "/" + site.name;
-      selected[site.entry] = process;
+      selected[site.entry] |= static_cast<uint8_t>(1u << (process - 1));
       pending.push_front(site);
     }
     // Each program once as a subprogram (CLS) and once as a process's program (EXE).
@@ -88,7 +95,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       program.files.push_back(f);
       read_unit(f, call.kind, call.entry);
       if (auto it = selected.find(call.entry); call.kind == ir::UnitKind::Process && it != selected.end())
-        program.units.back().process = it->second;
+        program.units.back().processes = it->second;
     }
 
     set_power_on(program, s_.tables, s_.power_on);

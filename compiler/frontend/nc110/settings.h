@@ -24,6 +24,9 @@ enum class OperandKind : uint8_t {
   Process, Wait  // EXE, SND, WAI (chapter 4)
 };
 
+// A device EXE loads a program from (§4.1.1): MP0..MP3.
+inline bool exe_device(std::string_view d) { return d.size() == 3 && d.starts_with("MP") && d[2] >= '0' && d[2] <= '3'; }
+
 struct OperandItem {
   OperandKind kind = OperandKind::Origin;
   char repeat = '1';  // '1' once, '?' optional, '*' any number, '+' at least one, '~' once, maybe empty
