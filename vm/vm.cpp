@@ -920,10 +920,19 @@ bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
   return true;
 }
 
-// A text in memory: operands v n, its byte index popped.
-bool Vm::memory_text(const uint8_t* operands, uint32_t pc, std::string& out) {
+// What DEF or OUT gives a field: strings[s], a text in memory (operands v n, its byte
+// index popped) or a value popped.
+bool Vm::field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c) {
+  const bool string = op == Op::ScreenDefineText || op == Op::ScreenShowText;
+  const bool memory = op == Op::ScreenDefineMem || op == Op::ScreenShowMem;
+  c.is_text = string || memory;
+  if (string) c.text = m_.strings[read_operand(operands, 4)];
+  if (!memory) {
+    if (!string) c.value = pop_value();
+    return true;
+  }
   const uint8_t* b = bytes(operands[0], pop_value(), operands[1], pc);
-  if (b) out.assign(reinterpret_cast<const char*>(b), operands[1]);
+  if (b) c.text.assign(reinterpret_cast<const char*>(b), operands[1]);
   return b != nullptr;
 }
 
@@ -943,10 +952,8 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
     case Op::ScreenDefineText:
     case Op::ScreenDefineMem:
     case Op::ScreenDefineValue: {
-      screen::Content init{op != Op::ScreenDefineValue, {}, 0};
-      if (op == Op::ScreenDefineText) init.text = m_.strings[read_operand(operands, 4)];
-      else if (op == Op::ScreenDefineMem && !memory_text(operands, pc, init.text)) return false;
-      else if (op == Op::ScreenDefineValue) init.value = pop();
+      screen::Content init;
+      if (!field_content(op, operands, pc, init)) return false;
       const double attribute = pop(), format = pop(), column = pop(), row = pop(), field = pop();
       std::optional<screen::Format> f;
       if (format >= 1 && format <= 7 && format == std::trunc(format)) f = static_cast<screen::Format>(format);
@@ -965,10 +972,8 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
     case Op::ScreenShowValue:
     case Op::ScreenShowText:
     case Op::ScreenShowMem: {
-      screen::Content c{op != Op::ScreenShowValue, {}, 0};
-      if (op == Op::ScreenShowText) c.text = m_.strings[read_operand(operands, 4)];
-      else if (op == Op::ScreenShowMem && !memory_text(operands, pc, c.text)) return false;
-      else if (op == Op::ScreenShowValue) c.value = pop();
+      screen::Content c;
+      if (!field_content(op, operands, pc, c)) return false;
       why = shared_.screen.show_with(whole_operand(pop(), 255), c);
       break;
     }

@@ -152,7 +152,7 @@ class Vm {
   std::map<uint32_t, std::vector<AssetField>> structures_;
   // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
   bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
-  bool memory_text(const uint8_t* operands, uint32_t pc, std::string& out);  // false: reported
+  bool field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c);  // false: reported
   bool input(Op op, const uint8_t* operands, uint32_t pc);                    // false: reported
   double pop_value() {  // the verifier has checked the stack holds it
     const double v = process_.stack.back();

@@ -335,6 +335,14 @@ class Lowering {
     }
   }
 
+  // An instruction `o` with operands v n that takes a text in memory: its byte index first.
+  void memory_text(const ir::Expr& text, Op o) {
+    expr(text.a);
+    op(o);
+    u8(text.space);
+    u8(text.count);
+  }
+
   // INP: the variable's value is offered, the answer stored back (a memory's index
   // goes first, under the value, for StoreMem); a text goes straight to memory.
   void input(const ir::Stmt& s) {
@@ -365,10 +373,7 @@ class Lowering {
     if (s.items.size() == 2) {  // the field that shows the answer
       expr(s.items[1].value);
       if (text) {
-        expr(target.a);
-        op(Op::ScreenShowMem);
-        u8(target.space);
-        u8(target.count);
+        memory_text(target, Op::ScreenShowMem);
       } else {
         expr(s.target);
         op(Op::ScreenShowValue);
@@ -386,10 +391,7 @@ class Lowering {
         op(with_text);
         u32(string(p_->texts[e.text]));
       } else if (e.op == ir::ExprOp::Text) {
-        expr(e.a);
-        op(with_memory);
-        u8(e.space);
-        u8(e.count);
+        memory_text(e, with_memory);
       } else {
         expr(s.items[i].value);
         op(with_value);
@@ -507,10 +509,7 @@ class Lowering {
         op(Op::Show);
         u32(string(p_->texts[e.text]));
       } else if (e.op == ir::ExprOp::Text) {
-        expr(e.a);
-        op(Op::ShowText);
-        u8(e.space);
-        u8(e.count);
+        memory_text(e, Op::ShowText);
       } else {
         expr(item.value);
         op(Op::ShowValue);
