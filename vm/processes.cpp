@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "support/text.h"
 
@@ -75,14 +76,17 @@ bool Processes::run(size_t first) {
   while (ok) {
     // The process whose next block is evaluated first runs it (decision 63); one that
     // still waits lets the next one try.
-    std::vector<size_t> order;
+    // (At most five: sorted in place, ties to the lower number, nothing allocated.)
+    std::pair<double, size_t> by_time[kMaxProcesses];
+    size_t count = 0;
     for (size_t i = 0; i < slots_.size(); ++i)
-      if (slots_[i] && slots_[i]->running) order.push_back(i);
-    if (order.empty()) break;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return slots_[a]->vm->eval_time() < slots_[b]->vm->eval_time(); });
+      if (slots_[i] && slots_[i]->running) by_time[count++] = {slots_[i]->vm->eval_time(), i};
+    if (count == 0) break;
+    for (size_t a = 1; a < count; ++a)
+      for (size_t b = a; b > 0 && by_time[b] < by_time[b - 1]; --b) std::swap(by_time[b], by_time[b - 1]);
+    std::span<const std::pair<double, size_t>> order(by_time, count);
     bool progress = false;
-    for (size_t i : order) {
+    for (auto [time, i] : order) {
       Slot& s = *slots_[i];
       current_ = static_cast<uint8_t>(i + 1);
       const RunStatus status = s.vm->resume();
@@ -111,13 +115,13 @@ bool Processes::run(size_t first) {
     // No process can go on: the PLC's next signal, in the dry run a condition taken
     // as met, else a deadlock.
     Slot* waiter = nullptr;  // the first that waits for a condition
-    for (size_t i : order)
+    for (auto [time, i] : order)
       if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->blocked_pc]) == Op::ProcWaitUntil) waiter = slots_[i].get();
     if (waiter && !setup_.plc.empty()) {
       const PlcWrite w = setup_.plc.front();
       setup_.plc.pop_front();
       // It comes once every process stopped, and shows at the first that waits for a condition.
-      for (size_t i : order) shared_.written_at = std::max(shared_.written_at, slots_[i]->vm->eval_time());
+      for (auto [time, i] : order) shared_.written_at = std::max(shared_.written_at, time);
       waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->blocked_pc));
       waiter->vm->write_memory(w.space, w.format, w.index, w.value);
     } else if (waiter && setup_.dry && !assume_) {

@@ -49,8 +49,8 @@ struct VmOptions {
   uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
   bool trace_blocks = false;  // a `block` event as each block starts
   asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect
-  // The operator's answers to INP, in order (nullopt: ENTER, the offered value stays);
-  // none: a dry run, every answer is the offered value.
+  // The operator's answers to INP, in order; none: a dry run, every answer is the value
+  // offered.
   std::vector<Answer>* input = nullptr;
   SharedState* shared = nullptr;        // none: the VM's own
   ProcessHost* processes = nullptr;     // none: one process, which EXE, WAI and SND cannot leave
@@ -116,7 +116,8 @@ class Vm {
   struct Loop {
     int64_t remaining;
   };
-  // The execution state of one process. Multi-process dialects run several.
+  // The execution state of the process this VM runs (a run of several processes has
+  // a VM for each: processes.h).
   struct Process {
     uint32_t pc = 0;
     std::vector<double> stack;
