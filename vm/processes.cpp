@@ -13,9 +13,7 @@ struct Processes::Slot {
   std::unique_ptr<Machine> machine;
   std::unique_ptr<asset::Channels> channels;
   std::unique_ptr<Vm> vm;
-  bool running = false;    // a program is loaded (it may wait)
-  bool blocked = false;    // its last turn ended waiting, at blocked_pc
-  uint32_t blocked_pc = 0;
+  bool running = false;    // a program is loaded (it may wait: vm->waiting(), at vm->pc())
   bool delivered = false;  // a partner met its WAI or SND: it completes when it runs again
   size_t entry = 0;        // the entry running (process 1: its place on the medium)
   double free_at = 0;      // when its last program ended
@@ -89,10 +87,10 @@ bool Processes::run(size_t first) {
     for (auto [time, i] : order) {
       Slot& s = *slots_[i];
       current_ = static_cast<uint8_t>(i + 1);
+      const bool was_waiting = s.vm->waiting();
+      const uint32_t was_at = s.vm->pc();
       const RunStatus status = s.vm->resume();
-      progress = status != RunStatus::Blocked || !s.blocked || s.vm->pc() != s.blocked_pc;
-      s.blocked = status == RunStatus::Blocked;
-      s.blocked_pc = s.vm->pc();
+      progress = status != RunStatus::Blocked || !was_waiting || s.vm->pc() != was_at;
       switch (status) {
         case RunStatus::Yield:
         case RunStatus::Blocked: break;
@@ -116,13 +114,13 @@ bool Processes::run(size_t first) {
     // as met, else a deadlock.
     Slot* waiter = nullptr;  // the first that waits for a condition
     for (auto [time, i] : order)
-      if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->blocked_pc]) == Op::ProcWaitUntil) waiter = slots_[i].get();
+      if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->vm->pc()]) == Op::ProcWaitUntil) waiter = slots_[i].get();
     if (waiter && !setup_.plc.empty()) {
       const PlcWrite w = setup_.plc.front();
       setup_.plc.pop_front();
       // It comes once every process stopped, and shows at the first that waits for a condition.
       for (auto [time, i] : order) shared_.written_at = std::max(shared_.written_at, time);
-      waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->blocked_pc));
+      waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->vm->pc()));
       waiter->vm->write_memory(w.space, w.format, w.index, w.value);
     } else if (waiter && setup_.dry && !assume_) {
       assume_ = true;
@@ -157,20 +155,19 @@ uint64_t Processes::steps() const {
 }
 
 uint8_t Processes::number(double process, uint32_t pc, const char* what) {
-  const std::string shown = shortest(process);
   std::string why;
   if (!(process >= 1 && process <= static_cast<double>(slots_.size()) && process == std::trunc(process)))
     why = fmt::format("{} names no process: the machine has processes 1 to {} (machine.processes)", what, slots_.size());
   else if (process == current_)
     why = fmt::format("{} names the process that runs it", what);
   if (why.empty()) return static_cast<uint8_t>(process);
-  setup_.issues.issue({DiagId::ProcessError, diag_message(DiagId::ProcessError, shown, why), setup_.module.source_of(pc)});
+  setup_.issues.issue({DiagId::ProcessError, diag_message(DiagId::ProcessError, shortest(process), why), setup_.module.source_of(pc)});
   return 0;
 }
 
 // (A process a partner met already waits only to run again.)
 bool Processes::waits_at(const Slot& s, Op op, uint8_t partner) const {
-  return s.running && s.blocked && !s.delivered && static_cast<Op>(setup_.module.code[s.blocked_pc]) == op && s.vm->blocked_operand() == partner;
+  return s.running && s.vm->waiting() && !s.delivered && static_cast<Op>(setup_.module.code[s.vm->pc()]) == op && s.vm->blocked_operand() == partner;
 }
 
 // EXE: the program starts when its process is free (decision 63), at the time of
@@ -186,7 +183,6 @@ ProcessHost::Answer Processes::start(double process, uint32_t entry, uint32_t pc
   target.entry = entry;
   target.vm->start(entry);
   target.running = true;
-  target.blocked = false;
   return Answer::Done;
 }
 
@@ -229,10 +225,10 @@ void Processes::deadlock() {
   for (size_t i = 0; i < slots_.size(); ++i) {
     if (!slots_[i] || !slots_[i]->running) continue;
     const Slot& s = *slots_[i];
-    const uint32_t source = setup_.module.source_of(s.blocked_pc);
+    const uint32_t source = setup_.module.source_of(s.vm->pc());
     if (first) issue.source = source;
     first = false;
-    const Op op = static_cast<Op>(setup_.module.code[s.blocked_pc]);
+    const Op op = static_cast<Op>(setup_.module.code[s.vm->pc()]);
     condition = condition || op == Op::ProcWaitUntil;
     // The process it waits for may run nothing, and never will.
     const double partner = s.vm->blocked_operand();

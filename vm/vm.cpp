@@ -879,6 +879,10 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
 // NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps the value
 // offered. A run reads the answers of --input, in order; a dry run keeps every value.
 bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
+  auto refuse = [&](DiagId id, const auto&... args) {
+    fail(pc, id, args...);
+    return false;
+  };
   const bool text = op == Op::InputText || op == Op::InputFieldText;
   const uint8_t chars = text ? operands[1] : 0;
   const double index = text ? pop_value() : 0;
@@ -889,18 +893,18 @@ bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
   if (op == Op::InputField || op == Op::InputFieldText) {
     const double field = pop_value();
     auto shown = shared_.screen.text(whole_operand(field, 255));
-    if (!shown) return fail(pc, DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field))), false;
+    if (!shown) return refuse(DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
     prompt = *shown;
   } else {
     prompt = m_.strings[u32_at(operands + (text ? 2 : 0))];
   }
   Answer answer;
   if (options_.input) {
-    if (shared_.answers >= options_.input->size()) return fail(pc, DiagId::InputExhausted, shared_.answers), false;
+    if (shared_.answers >= options_.input->size()) return refuse(DiagId::InputExhausted, shared_.answers);
     answer = (*options_.input)[shared_.answers++];
   }
   if (!text) {
-    if (answer.text) return fail(pc, DiagId::InputAnswer, fmt::format("\"{}\"", *answer.text), "a text", "a number"), false;
+    if (answer.text) return refuse(DiagId::InputAnswer, fmt::format("\"{}\"", *answer.text), "a text", "a number");
     machine_.operator_input(prompt + shortest(offered), answer.number.value_or(offered), m_.source_of(pc));
     process_.stack.push_back(answer.number.value_or(offered));
     return true;
@@ -908,11 +912,11 @@ bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
   std::string now(reinterpret_cast<const char*>(memory), chars);
   std::string shown = now;
   std::replace(shown.begin(), shown.end(), '\0', ' ');  // memory never written holds zeros
-  if (answer.number) return fail(pc, DiagId::InputAnswer, shortest(*answer.number), "a number", "a text in quotes"), false;
+  if (answer.number) return refuse(DiagId::InputAnswer, shortest(*answer.number), "a number", "a text in quotes");
   std::string typed = answer.text.value_or(now);
   if (typed.size() > chars)
-    return fail(pc, DiagId::InputAnswer, fmt::format("\"{}\"", typed), fmt::format("{} bytes long", typed.size()),
-                fmt::format("a text of at most {} bytes", chars)), false;
+    return refuse(DiagId::InputAnswer, fmt::format("\"{}\"", typed), fmt::format("{} bytes long", typed.size()),
+                fmt::format("a text of at most {} bytes", chars));
   typed.resize(chars, ' ');  // the rest of the field blank
   machine_.operator_input(prompt + shown, typed, m_.source_of(pc));
   std::copy(typed.begin(), typed.end(), memory);

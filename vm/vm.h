@@ -81,6 +81,7 @@ class Vm {
   RunStatus resume();
   uint64_t steps() const { return steps_; }
   uint32_t pc() const { return process_.pc; }  // where the last run stopped (Blocked: the waiting instruction)
+  bool waiting() const { return waiting_; }  // the last resume returned Blocked, at pc()
   const std::string& waits() const { return waits_; }  // Blocked: what for ("wait for process 2")
   double blocked_operand() const { return process_.stack.empty() ? 0 : process_.stack.back(); }  // Blocked: the process named
   // When the block being run is evaluated: with a look-ahead, while earlier motion

@@ -225,6 +225,13 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
   };
   // An E parameter (of `classes`, if any are named), or a memory (SYVAR10.IN): `ref`
   // takes the memory's reference; for a parameter, op's value and type are set.
+  // The letters the operand starts with, before piece `end`, begin with a memory's name
+  // (SYVAR, SA, SK).
+  auto names_memory = [&](size_t end) {
+    std::string letters;
+    for (size_t i = 0; i < end && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
+    return std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); });
+  };
   auto variable = [&](const std::vector<std::string>& classes, const char* what, std::optional<MemoryRef>& ref) {
     if (auto e = parameter_at()) {
       if (!classes.empty() && !check_class(*e, classes, op.range, code)) return false;
@@ -233,10 +240,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       return true;
     }
     if (bad_parameter) return false;
-    std::string letters;
-    for (size_t i = 0; i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
-    if (!std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); }))
-      return fail(what), false;
+    if (!names_memory(pieces.size())) return fail(what), false;
     ref = memory_ref(op.text, op.range);
     at = pieces.size();
     return ref.has_value();
@@ -319,16 +323,12 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       // NAME[/DEVice]: 1-6 capitals and digits, a letter first; a device of 2-3 (§2.13.2.2).
       bool ok = false;
       op.name = letters_and_digits(ok);
-      auto good = [](const std::string& s, size_t lo, size_t hi) {
-        if (s.size() < lo || s.size() > hi || !(s[0] >= 'A' && s[0] <= 'Z')) return false;
-        return std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
-      };
       if (!ok) return fail("a program name is written without blanks");
-      if (!good(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits, a letter first");
+      if (!capitals_and_digits(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits, a letter first");
       if (type(at) == Nc110Lexer::SLASH) {
         ++at;
         op.device = letters_and_digits(ok);
-        if (!ok || !good(op.device, 2, 3)) return fail("a device name is 2 or 3 capitals and digits, a letter first");
+        if (!ok || !capitals_and_digits(op.device, 2, 3)) return fail("a device name is 2 or 3 capitals and digits, a letter first");
       }
       break;
     }
@@ -409,10 +409,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         break;
       }
       const std::string& rel = pieces[relop].text;
-      std::string letters;
-      for (size_t i = 0; i < relop && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
-      if (!std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); }))
-        return fail(fmt::format("SYVAR, SA or SK comes before '{}'", rel));
+      if (!names_memory(relop)) return fail(fmt::format("SYVAR, SA or SK comes before '{}'", rel));
       SourceRange left{file_, line_no_, pieces[0].range.col, line_no_, pieces[relop - 1].range.end_col};
       auto ref = memory_ref(line_.substr(left.col - 1, left.end_col - left.col), left);
       if (!ref) return std::nullopt;
@@ -454,12 +451,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       }
       if (type(0) == Nc110Lexer::LETTER) {
         bool ok = false;
-        std::string name;
-        size_t i = 0;
-        while (i < pieces.size() && pieces[i].type == Nc110Lexer::LETTER) name += pieces[i++].text;
-        bool memory = std::any_of(s_.memories.begin(), s_.memories.end(),
-                                  [&](const Memory& m) { return name.starts_with(m.name); });
-        if (memory) {
+        if (names_memory(pieces.size())) {
           auto ref = memory_ref(op.text, op.range);
           if (!ref) return std::nullopt;
           op.value = memory_expr(*ref, op.range);

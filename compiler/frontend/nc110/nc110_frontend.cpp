@@ -8,7 +8,6 @@
 #include <set>
 
 #include "reader.h"
-#include "runtime/asset_store.h"
 
 namespace ncc::nc110 {
 
@@ -58,7 +57,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       CallSite site{name.substr(0, slash), slash == std::string::npos ? s_.default_device : name.substr(slash + 1), "", {}, 0, 0,
                     ir::UnitKind::Process};
       // As EXE names a program (decision 62).
-      if (!asset::parse_file_name(site.name, 1) || !exe_device(site.device)) {
+      if (!capitals_and_digits(site.name, 1, 6) || !exe_device(site.device)) {
         diags.report(DiagId::ProcessOption, {}, fmt::format("{}={}", process, name),
                      "a program is 1 to 6 capitals and digits, a letter first, then /MP0 to /MP3 or nothing");
         continue;

@@ -24,6 +24,14 @@ enum class OperandKind : uint8_t {
   Process, Wait  // EXE, SND, WAI (chapter 4)
 };
 
+// A program or device name (§2.13.2.2): lo to hi capitals and digits, a letter first.
+inline bool capitals_and_digits(std::string_view s, size_t lo, size_t hi) {
+  if (s.size() < lo || s.size() > hi || !(s[0] >= 'A' && s[0] <= 'Z')) return false;
+  for (char c : s)
+    if (!((c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'))) return false;
+  return true;
+}
+
 // A device EXE loads a program from (§4.1.1): MP0..MP3.
 inline bool exe_device(std::string_view d) { return d.size() == 3 && d.starts_with("MP") && d[2] >= '0' && d[2] <= '3'; }
 
