@@ -59,6 +59,7 @@ struct Reader::Branch {
   std::vector<std::pair<size_t, size_t>> exits;     // the jumps of the bodies to the end
   bool in_body = false, closed = false, has_else = false;
   std::optional<size_t> close_block;                // the '}' block of the last body
+  SourceRange head;                                 // of its last IF, ELIF or ELSE
 };
 
 // Maps ANTLR syntax errors to diagnostics at the right column.
@@ -242,6 +243,10 @@ void Reader::end_unit() {
     unit_.blocks[l.do_block].has_errors = true;  // its jump out has nowhere to go
   }
   loops_.clear();
+  if (expect_brace_) {
+    diags_.report(DiagId::ProgramStructure, branches_.back().head, "a multi-line IF needs its '{'");
+    drop_branch();
+  }
   // A multi-line IF still open at the end: its last '}' ends it, if it has one.
   while (!branches_.empty()) {
     if (branches_.back().closed) {
@@ -249,12 +254,8 @@ void Reader::end_unit() {
       continue;
     }
     diags_.report(DiagId::ProgramStructure, branches_.back().range, "this IF has no closing '}' in its program");
-    for (auto [block, stmt] : branches_.back().exits) unit_.blocks[block].has_errors = true;
-    if (branches_.back().next) unit_.blocks[branches_.back().next->first].has_errors = true;
-    branches_.pop_back();
+    drop_branch();
   }
-  if (expect_brace_) diags_.report(DiagId::ProgramStructure, unit_.range, "a multi-line IF needs its '{'");
-  expect_brace_ = false;
   // §8.33 (E-29): M97 subprograms stand after M02/M30, at a block that exists. (A
   // block compiled while it was read stands before them.)
   std::set<std::string> called, streamed;
@@ -340,8 +341,18 @@ void Reader::open_brace(const Piece& at) {
 // nothing, so that its braces raise no more errors.
 void Reader::orphan_head(SourceRange r) {
   new_block(r).has_errors = true;
-  branches_.push_back({r, std::nullopt, {}, false, false, true, std::nullopt});
+  branches_.push_back({r, std::nullopt, {}, false, false, true, std::nullopt, r});
   expect_brace_ = true;
+}
+
+// A multi-line IF that cannot be completed (reported): its jumps have nowhere to go,
+// so the blocks that hold them have errors.
+void Reader::drop_branch() {
+  const Branch& b = branches_.back();
+  for (auto [block, stmt] : b.exits) unit_.blocks[block].has_errors = true;
+  if (b.next) unit_.blocks[b.next->first].has_errors = true;
+  branches_.pop_back();
+  expect_brace_ = false;
 }
 
 // A closed multi-line IF that no ELIF or ELSE continues: its jumps land on its last '}'.
@@ -445,10 +456,7 @@ void Reader::read(const Piece& piece) {
   }
   if (expect_brace_) {
     diags_.report(DiagId::ProgramStructure, whole, "a multi-line IF needs its '{' before the next block");
-    expect_brace_ = false;
-    // The IF is not one: its jump has nowhere to go.
-    if (branches_.back().next) unit_.blocks[branches_.back().next->first].has_errors = true;
-    branches_.pop_back();
+    drop_branch();
   }
 
   ir::Block& block = new_block(whole);
@@ -530,8 +538,9 @@ void Reader::read(const Piece& piece) {
         words(i->words(), cond);
       }
     } else if (head) {
-      if (head->IF()) branches_.push_back({range(head), std::nullopt, {}, false, false, false, std::nullopt});
+      if (head->IF()) branches_.push_back({range(head), std::nullopt, {}, false, false, false, std::nullopt, range(head)});
       Branch& b = branches_.back();
+      b.head = range(head);
       if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = label_of(index);
       b.next.reset();
       if (head->expr()) {

@@ -57,6 +57,7 @@ class Reader {
   void open_brace(const Piece& at);
   void close_brace(const Piece& at);
   void finish_branch();
+  void drop_branch();
   void orphan_head(SourceRange r);
 
   // Parse-tree walking.
