@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
+
+#include "utf8.h"
 
 namespace ncc {
 
@@ -13,29 +16,25 @@ constexpr std::array kCatalogue = {
 #undef DIAG
 };
 
-// The length of the valid, printable UTF-8 sequence at s[i], or 0.
-size_t utf8_length(std::string_view s, size_t i) {
-  unsigned char c = static_cast<unsigned char>(s[i]);
-  if (c >= 0x20 && c < 0x7F) return 1;
-  size_t n = c >= 0xF0 && c < 0xF5 ? 4 : c >= 0xE0 ? (c < 0xF0 ? 3 : 0) : c >= 0xC2 ? 2 : 0;
-  if (n == 0 || i + n > s.size()) return 0;
-  for (size_t k = 1; k < n; ++k)
-    if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return 0;
-  return n;
+// One character of a quoted line as printed: a UTF-8 character takes a column (a
+// control character prints as a space), a byte that is not UTF-8 four (`\xF4`).
+struct Printed {
+  size_t length = 1;  // bytes
+  size_t width = 1;   // columns
+};
+Printed printed_at(std::string_view s, size_t i) {
+  const Utf8Char c = decode_utf8(s, i);
+  return c.length ? Printed{c.length, 1} : Printed{1, 4};
 }
 
-// Display width of a line prefix: one column per character, valid or not.
 size_t display_width(std::string_view s) {
   size_t w = 0;
-  for (size_t i = 0; i < s.size(); ++w) {
-    size_t n = utf8_length(s, i);
-    i += n ? n : 1;
-  }
+  for (size_t i = 0; i < s.size(); i += printed_at(s, i).length) w += printed_at(s, i).width;
   return w;
 }
 
-// The line as printed under a diagnostic: control characters become spaces so the
-// caret stays aligned; very long lines are cut to a window around the column.
+// The line as printed under a diagnostic: valid UTF-8 whatever the file holds, with
+// the caret under the column; a long line is cut to a window around the column.
 struct Excerpt {
   std::string text;
   size_t caret_col = 0;  // 0-based display column
@@ -43,41 +42,47 @@ struct Excerpt {
 };
 
 Excerpt make_excerpt(std::string_view line, uint32_t col, uint32_t end_col) {
-  constexpr size_t kWindow = 120;
+  constexpr size_t kWindow = 120;  // columns
+  const size_t start = std::min<size_t>(col > 0 ? col - 1 : 0, line.size());
+  const size_t end = end_col > col ? std::min<size_t>(end_col - 1, line.size()) : start + 1;
+  // The window begins at most half of it before the column, on a character.
   size_t begin = 0;
-  size_t start = col > 0 ? col - 1 : 0;
-  start = std::min(start, line.size());
-  size_t end = (end_col > col) ? std::min<size_t>(end_col - 1, line.size()) : start + 1;
-  if (line.size() > kWindow && start > kWindow / 2) begin = start - kWindow / 2;
-  // Keep whole UTF-8 sequences.
-  while (begin > 0 && begin < line.size() && (static_cast<unsigned char>(line[begin]) & 0xC0) == 0x80) --begin;
-  size_t stop = std::min(line.size(), begin + kWindow);
-  while (stop < line.size() && (static_cast<unsigned char>(line[stop]) & 0xC0) == 0x80) ++stop;
+  if (display_width(line) > kWindow) {
+    std::deque<std::pair<size_t, size_t>> recent;  // (offset, columns before it) of the characters before `start`
+    size_t width = 0;
+    for (size_t i = 0; i < start;) {
+      recent.push_back({i, width});
+      const Printed p = printed_at(line, i);
+      width += p.width;
+      i += p.length;
+      while (width - recent.front().second > kWindow / 2) recent.pop_front();
+    }
+    if (!recent.empty() && width > kWindow / 2) begin = recent.front().first;
+  }
   Excerpt e;
   if (begin > 0) e.text = "...";
-  // Control characters print as spaces and broken UTF-8 as '?', one column each.
-  for (size_t i = begin; i < stop;) {
-    unsigned char c = static_cast<unsigned char>(line[i]);
-    size_t n = utf8_length(line, i);
-    if (n == 0) {
-      e.text += (c < 0x80 && (c < 0x20 || c == 0x7F)) ? ' ' : '?';
-      ++i;
-    } else {
-      e.text.append(line.substr(i, n));
-      i += n;
-    }
+  const size_t prefix = e.text.size();
+  size_t width = 0, stop = begin;
+  for (; stop < line.size() && width < kWindow; ) {
+    const Printed p = printed_at(line, stop);
+    const unsigned char c = static_cast<unsigned char>(line[stop]);
+    if (p.width == 4) e.text += fmt::format("\\x{:02X}", c);
+    else if (c < 0x20 || c == 0x7F) e.text += ' ';
+    else e.text.append(line.substr(stop, p.length));
+    if (stop < start) e.caret_col += p.width;
+    else if (stop < end) e.caret_len += p.width;
+    width += p.width;
+    stop += p.length;
   }
   if (stop < line.size()) e.text += "...";
-  size_t prefix = begin > 0 ? 3 : 0;
-  e.caret_col = prefix + display_width(line.substr(begin, start - begin));
-  size_t visible_end = std::min(end, stop);
-  e.caret_len = visible_end > start ? std::max<size_t>(1, display_width(line.substr(start, visible_end - start))) : 1;
+  e.caret_col += prefix;
+  e.caret_len = std::max<size_t>(1, e.caret_len - 1);
   return e;
 }
 
 std::string location_text(const SourceRange& r, const SourceManager& sources) {
   if (!r.valid() || r.file >= sources.size()) return "ncc";
-  return fmt::format("{}:{}:{}", sources.file(r.file).path(), r.line, r.col);
+  return fmt::format("{}:{}:{}", escape_invalid_utf8(sources.file(r.file).path()), r.line, r.col);
 }
 
 void append_quote(std::string& out, const SourceRange& r, const SourceManager& sources, bool color) {
@@ -104,10 +109,13 @@ const char* severity_color(Severity s) {
   return "";
 }
 
-// SARIF counts columns in characters (columnKind unicodeCodePoints); ncc in bytes.
+// SARIF counts columns in characters (columnKind unicodeCodePoints; a byte that is not
+// UTF-8 is one, U+FFFD in the JSON); ncc in bytes.
 uint32_t char_column(const SourceManager& sources, const SourceRange& r, uint32_t byte_col, uint32_t line) {
-  std::string_view text = sources.file(r.file).line(line);
-  return static_cast<uint32_t>(display_width(text.substr(0, std::min<size_t>(byte_col - 1, text.size())))) + 1;
+  std::string_view text = sources.file(r.file).line(line).substr(0, byte_col - 1);
+  uint32_t chars = 1;
+  for (size_t i = 0; i < text.size(); i += printed_at(text, i).length) ++chars;
+  return chars;
 }
 
 std::string sarif_region(const SourceManager& sources, const SourceRange& r) {
@@ -180,13 +188,13 @@ std::string format_text(const Diagnostic& d, const SourceManager& sources, bool 
   std::string out;
   if (color)
     out = fmt::format("\033[1m{}: {}{}:\033[0m \033[1m{}\033[0m [{}]\n", location_text(d.range, sources),
-                      severity_color(d.severity), severity_name(d.severity), d.message, diag_code(d.id));
+                      severity_color(d.severity), severity_name(d.severity), escape_invalid_utf8(d.message), diag_code(d.id));
   else
-    out = fmt::format("{}: {}: {} [{}]\n", location_text(d.range, sources), severity_name(d.severity), d.message,
-                      diag_code(d.id));
+    out = fmt::format("{}: {}: {} [{}]\n", location_text(d.range, sources), severity_name(d.severity),
+                      escape_invalid_utf8(d.message), diag_code(d.id));
   append_quote(out, d.range, sources, color);
   for (const Note& n : d.notes) {
-    out += fmt::format("{}: note: {}\n", location_text(n.range, sources), n.message);
+    out += fmt::format("{}: note: {}\n", location_text(n.range, sources), escape_invalid_utf8(n.message));
     append_quote(out, n.range, sources, color);
   }
   return out;
@@ -198,8 +206,8 @@ std::string json_escape(std::string_view s) {
   for (size_t i = 0; i < s.size(); ++i) {
     unsigned char c = static_cast<unsigned char>(s[i]);
     if (c >= 0x80) {
-      // JSON text is UTF-8: a byte that starts no valid sequence becomes U+FFFD.
-      size_t n = utf8_length(s, i);
+      // JSON text is UTF-8: a byte that is not becomes U+FFFD.
+      const size_t n = decode_utf8(s, i).length;
       if (n == 0) {
         out += "\\ufffd";
       } else {

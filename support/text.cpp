@@ -24,6 +24,11 @@ std::string printable(std::string_view s) {
   return out;
 }
 
+std::string abbreviated(std::string_view s) {
+  if (s.size() <= 40) return std::string(s);
+  return fmt::format("{}...{} ({} characters)", s.substr(0, 16), s.substr(s.size() - 8), s.size());
+}
+
 std::vector<std::string> split(std::string_view s, char sep) {
   std::vector<std::string> out;
   size_t start = 0;

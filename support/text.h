@@ -16,6 +16,9 @@ std::string four_decimals(double v);
 // Text from a file or a bytecode file, safe to print on a terminal: control
 // characters become '?'.
 std::string printable(std::string_view s);
+// `s` for a message: one longer than 40 characters is cut to its first 16 and last
+// 8 with "..." between, and says how long it is.
+std::string abbreviated(std::string_view s);
 // The pieces of `s` between the separators (empty ones too).
 std::vector<std::string> split(std::string_view s, char sep);
 // `s` without the blanks (space, tab, CR) around it.

@@ -2,6 +2,10 @@
 
 #include <filesystem>
 
+#include "limits.h"
+#include "support/text.h"
+#include "support/utf8.h"
+
 #include "gost/gost_frontend.h"
 #include "nc110/nc110_frontend.h"
 #include "iso/iso_frontend.h"
@@ -45,7 +49,11 @@ std::optional<uint32_t> load_called_file(SourceManager& sources, const std::stri
   std::string tried;
   for (std::string_view ext : extensions) {
     const std::string path = base.string() + std::string(ext);
-    if (auto text = read_called_file(path)) return sources.add(path, std::move(*text));
+    if (auto text = read_called_file(path)) {
+      const uint32_t file = sources.add(path, std::move(*text));
+      if (!admit_text(sources.file(file), file, diags)) return std::nullopt;
+      return file;
+    }
     if (!ext.empty()) tried += (tried.empty() ? "" : "|") + std::string(ext);
   }
   diags.report(DiagId::ProgramNotFound, at, shown, base.string() + (tried.empty() ? "" : "[" + tried + "]"));
@@ -58,22 +66,17 @@ std::string describe_char(std::string_view text, size_t at, size_t& length) {
   if (c >= 'a' && c <= 'z') return fmt::format("lower-case '{}'", static_cast<char>(c));
   if (c >= 0x20 && c < 0x7F) return fmt::format("'{}'", static_cast<char>(c));
   if (c < 0x80) return fmt::format("control character 0x{:02X}", c);
-  // A whole UTF-8 sequence, if it is one.
-  size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC0 ? 2 : 0;
-  if (n && at + n <= text.size()) {
-    uint32_t cp = c & (0x7F >> n);
-    bool valid = true;
-    for (size_t i = 1; i < n; ++i) {
-      unsigned char cc = static_cast<unsigned char>(text[at + i]);
-      valid = valid && (cc & 0xC0) == 0x80;
-      cp = (cp << 6) | (cc & 0x3F);
-    }
-    if (valid) {
-      length = n;
-      return fmt::format("'{}' (U+{:04X})", text.substr(at, n), cp);
-    }
+  if (const Utf8Char u = decode_utf8(text, at); u.length) {
+    length = u.length;
+    return fmt::format("'{}' (U+{:04X})", text.substr(at, u.length), u.code_point);
   }
-  return fmt::format("byte 0x{:02X}", c);
+  return fmt::format("byte 0x{:02X}", c);  // (admit_text lets none through)
+}
+
+std::optional<double> read_number(std::string_view written, SourceRange at, Diagnostics& diags) {
+  if (auto v = parse_number<double>(written)) return v;
+  diags.report(DiagId::NumberOutOfRange, at, abbreviated(written));
+  return std::nullopt;
 }
 
 int32_t program_code(ir::Program& program, const CodeDesc& desc) {
@@ -89,7 +92,8 @@ void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, con
     CodeDesc desc;
     if (token.size() > 1 && (token[0] == 'G' || token[0] == 'M') && std::isdigit(static_cast<unsigned char>(token[1]))) {
       const auto& codes = token[0] == 'G' ? tables.g_codes : tables.m_codes;
-      auto it = codes.find(std::stoi(token.substr(1)));
+      auto number = parse_number<int>(std::string_view(token).substr(1));
+      auto it = number ? codes.find(*number) : codes.end();
       if (it == codes.end()) continue;
       desc = it->second.desc;
     } else {

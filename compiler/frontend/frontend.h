@@ -89,7 +89,8 @@ std::optional<std::string> read_called_file(const std::string& path);
 // else the calling program's folder.
 std::string library_root(const ReadOptions& options, const std::string& setting, const std::string& caller);
 // The program file a call names: the first `<root>/<name><extension>` that is one,
-// added to the sources; nothing (reported at `at` as program `shown`) if none is.
+// added to the sources; nothing (reported at `at` as program `shown`) if none is, or
+// if it is not text (admit_text).
 std::optional<uint32_t> load_called_file(SourceManager& sources, const std::string& root, const std::string& name,
                                          std::initializer_list<std::string_view> extensions, const std::string& shown,
                                          SourceRange at, Diagnostics& diags);
@@ -97,6 +98,10 @@ std::optional<uint32_t> load_called_file(SourceManager& sources, const std::stri
 // A character outside a comment, for a message: "'*'", "lower-case 'x'", "'Д'
 // (U+0414)", "byte 0xFF"; `length` is set to its bytes.
 std::string describe_char(std::string_view text, size_t at, size_t& length);
+
+// A number as a program writes it, digits and a point ("12", "12.5", ".5", "12."): its
+// value, or nothing when it is out of a double's range (reported at `at`, NC1040).
+std::optional<double> read_number(std::string_view written, SourceRange at, Diagnostics& diags);
 
 // The index of a code in the program's code table, adding it on first use.
 int32_t program_code(ir::Program& program, const CodeDesc& desc);

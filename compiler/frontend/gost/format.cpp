@@ -2,6 +2,8 @@
 
 #include <charconv>
 
+#include "support/text.h"
+
 namespace ncc::gost {
 
 namespace {
@@ -41,8 +43,7 @@ std::string written(char letter, const WrittenNumber& n) {
   if (n.has_sign) s += n.negative ? '-' : '+';
   s += n.before;
   if (n.has_point) s += '.' + n.after;
-  if (s.size() > 40) s = fmt::format("{}...{} ({} characters)", s.substr(0, 16), s.substr(s.size() - 8), s.size());
-  return s;
+  return abbreviated(s);
 }
 
 }  // namespace

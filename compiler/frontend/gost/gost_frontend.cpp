@@ -8,6 +8,7 @@
 #include "GostLexer.h"
 #include "GostParser.h"
 #include "GostParserBaseVisitor.h"
+#include "frontend/limits.h"
 #include "frontend/plain_words.h"
 #include "settings.h"
 
@@ -81,7 +82,6 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   enum class State { Leader, Program, Trailer };
 
   // Tape level (§1).
-  bool binary_file();
   void start_program(std::string_view line, uint32_t line_no, uint32_t col);
   void end_program(SourceRange at, bool terminated);
   void read_block(std::string_view line, uint32_t line_no);
@@ -166,22 +166,7 @@ void Reader::parse(std::string_view text, uint32_t line_no, uint32_t base) {
   listener_.reset(text, file_, line_no, base);
 }
 
-bool Reader::binary_file() {
-  // Control characters other than those the NC ignores (Table 2 note 2) mark a
-  // binary file; bytes above 0x7F may be 8-bit text (KOI8-R comments) and do not.
-  std::string_view text = source_.text().substr(0, 4096);
-  size_t bad = 0;
-  for (unsigned char c : text)
-    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\0') ++bad;
-  if (bad * 10 > text.size() && bad > 2) {
-    diags_.report(DiagId::BinaryFile, SourceRange::point(file_, 1, 1), bad, text.size());
-    return true;
-  }
-  return false;
-}
-
 void Reader::run() {
-  if (binary_file()) return;
   for (uint32_t line_no = 1; line_no <= source_.line_count() && !diags_.limit_reached(); ++line_no) {
     std::string_view line = source_.line(line_no);
     size_t first = 0;
@@ -229,6 +214,8 @@ void Reader::start_program(std::string_view line, uint32_t line_no, uint32_t col
   bool first_program = !any_program_;
   any_program_ = true;
   if (line.empty()) return;  // a format without '%': the program starts at its first block
+  if (!block_fits(line.size(), {file_, line_no, col + 1, line_no, col + 1 + static_cast<uint32_t>(line.size())}, diags_))
+    return;
   parse(line, line_no, col);
   GostParser::ProgramStartContext* ctx = parser_.programStart();
   unit_.range = range(ctx);
@@ -275,6 +262,12 @@ void Reader::read_block(std::string_view line, uint32_t line_no) {
   optional_comments_from_ = SIZE_MAX;
   uint32_t errors = diags_.error_count();
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+  if (!block_fits(line.size(), block_.range, diags_)) {
+    block_.has_errors = true;
+    first_block_ = false;
+    unit_.blocks.push_back(std::move(block_));
+    return;
+  }
   // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
   // rest (both give the same IR: tests/fastpath).
   if (fast_path_ && scan_plain(line)) {
@@ -588,7 +581,7 @@ class GostFrontend final : public DialectFrontend<Settings> {
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
     ir::Program program = start_program("gost", file);
     Reader reader(s_, program, sources.file(file), file, diags, options);
-    reader.run();
+    if (admit_text(sources.file(file), file, diags)) reader.run();
     // §8: the functions set at power-on and after M02/M30 for the control type.
     set_power_on(program, s_.tables, s_.tables.power_on.at(s_.control_type));
     return program;

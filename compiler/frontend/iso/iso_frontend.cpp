@@ -6,6 +6,7 @@
 #include <deque>
 #include <set>
 
+#include "frontend/limits.h"
 #include "reader.h"
 
 namespace ncc::iso {
@@ -30,7 +31,7 @@ class IsoFrontend final : public DialectFrontend<Settings> {
     program.spaces.push_back(vars);
 
     Reader main(s_, program, sources.file(file), file, diags, space, std::nullopt, options.fast_path, options.sink);
-    main.run();
+    if (admit_text(sources.file(file), file, diags)) main.run();
     std::deque<ProgramCall> pending(main.calls().begin(), main.calls().end());
     // Called programs the file does not hold: O<nnnn>[.nc] in the library (decision 12).
     const std::string root = library_root(options, s_.library, sources.file(file).path());

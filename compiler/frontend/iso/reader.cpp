@@ -6,6 +6,7 @@
 #include <set>
 
 #include "frontend/frontend.h"
+#include "frontend/limits.h"
 #include "support/text.h"
 
 namespace ncc::iso {
@@ -212,9 +213,20 @@ void Reader::load(const Piece& piece) {
 }
 
 IsoParser::BlockContext* Reader::parse() {
+  // The tokens first: a block beyond the limits of nesting and length is not parsed.
+  static const ExpressionTokens kTokens{
+      {IsoLexer::LBRACKET},
+      {IsoLexer::RBRACKET},
+      {IsoLexer::PLUS, IsoLexer::MINUS},
+      {IsoLexer::STAR, IsoLexer::SLASH, IsoLexer::MOD, IsoLexer::AND, IsoLexer::OR, IsoLexer::XOR, IsoLexer::EQ,
+       IsoLexer::NE, IsoLexer::GT, IsoLexer::GE, IsoLexer::LT, IsoLexer::LE},
+      {IsoLexer::NUMBER, IsoLexer::RBRACKET}};
   input_.load(sanitized_);
   lexer_.setInputStream(&input_);
   tokens_.setTokenSource(&lexer_);
+  tokens_.fill();
+  if (!expression_fits(tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_))
+    return nullptr;
   parser_.setTokenStream(&tokens_);
   return parser_.block();
 }
@@ -382,6 +394,12 @@ void Reader::close_brace(const Piece& at) {
 // ---- Blocks -----------------------------------------------------------------------------
 
 void Reader::read(const Piece& piece) {
+  SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
+  if (!block_fits(piece.end - piece.begin, whole, diags_)) {
+    corner_.reset();
+    new_block(whole).has_errors = true;
+    return;
+  }
   load(piece);
   if (trim(sanitized_).empty() && piece.comments.empty()) {
     // §8.3 (E-05): an empty block (a lone ';') cannot follow a chamfer or fillet.
@@ -393,7 +411,6 @@ void Reader::read(const Piece& piece) {
     }
     return;
   }
-  SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
   std::vector<std::string> comments;
   for (auto [from, to] : piece.comments) comments.emplace_back(source_.text().substr(from + 1, to - from - 2));
   // §8.3 (E-05): what follows a chamfer or fillet is a move, not an empty or comment block.
@@ -470,6 +487,7 @@ void Reader::read(const Piece& piece) {
   block_.range = whole;
   if (fast) {
     block_.skippable = plain.skip;
+    block_.has_errors = plain.has_errors;
     if (plain.sequence) number_block(plain.sequence->first, plain.sequence->second, index);
     words(plain.words, nullptr, ir::kNoExpr);
     return finish_read(index);
@@ -554,7 +572,7 @@ void Reader::read(const Piece& piece) {
       }
       expect_brace_ = true;
     } else if (auto* w = body->whileStmt()) {
-      const int n = std::atoi(w->NUMBER()->getText().c_str());
+      const int n = parse_number<int>(w->NUMBER()->getText()).value_or(0);
       SourceRange r = range(w);
       if (w->NUMBER()->getText().find('.') != std::string::npos || n < 1 || n > kMaxLoopDepth)
         diags_.report(DiagId::RepeatUnbalanced, r, fmt::format("the loop index is 1, 2 or 3, not {}", w->NUMBER()->getText()));
@@ -571,7 +589,7 @@ void Reader::read(const Piece& piece) {
       }
       loops_.push_back(loop);
     } else if (auto* e = body->endStmt()) {
-      const int n = std::atoi(e->NUMBER()->getText().c_str());
+      const int n = parse_number<int>(e->NUMBER()->getText()).value_or(0);
       SourceRange r = range(e);
       if (loops_.empty() || loops_.back().index != n) {
         diags_.report(DiagId::RepeatUnbalanced, r,
@@ -636,6 +654,7 @@ bool Reader::scan_plain(FastBlock& out) {
   PlainBlock& block = plain_words_;
   out.words.clear();
   out.sequence.reset();
+  out.has_errors = false;
   if (!scan_plain_words(sanitized_, kRules, block)) return false;
   auto at = [&](size_t from, size_t to) {
     return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_, base_ + static_cast<uint32_t>(to) + 1};
@@ -647,11 +666,11 @@ bool Reader::scan_plain(FastBlock& out) {
       out.sequence = {std::string(p.before), at(p.from, p.to)};
       continue;
     }
-    double v = 0;
-    std::from_chars(p.number.data(), p.number.data() + p.number.size(), v);
+    auto v = read_number(p.number, at(static_cast<size_t>(p.number.data() - sanitized_.data()), p.to), diags_);
+    out.has_errors = out.has_errors || !v;
     RawWord w;
     w.letter = p.letter;
-    w.value = program_.number(p.sign == '-' ? -v : v, at(p.value_from, p.to));
+    w.value = program_.number(p.sign == '-' ? -v.value_or(0) : v.value_or(0), at(p.value_from, p.to));
     w.text = (p.sign ? std::string(1, p.sign) : std::string()) + std::string(p.number);
     w.range = at(p.from, p.to);
     w.literal = !p.point;
@@ -1027,6 +1046,13 @@ ir::ExprId Reader::checked(ir::ExprId e, const ir::Word& w, const std::string& a
   return c;
 }
 
+// The value of a number as written; 0 when it is out of range (reported).
+double Reader::number(antlr4::tree::TerminalNode* n) {
+  auto v = read_number(n->getText(), range(n->getSymbol(), n->getSymbol()), diags_);
+  block_.has_errors = block_.has_errors || !v;
+  return v.value_or(0);
+}
+
 // Macro B arithmetic reads a vacant variable as 0; a comparison EQ/NE, an assignment
 // and an address keep it vacant (decision 3).
 ir::ExprId Reader::operand(ir::ExprId e) {
@@ -1092,12 +1118,7 @@ ir::ExprId Reader::factor(IsoParser::FactorContext* ctx) {
 }
 
 ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
-  if (auto* n = dynamic_cast<IsoParser::NumberPrimaryContext*>(ctx)) {
-    std::string text = n->NUMBER()->getText();
-    double v = 0;
-    std::from_chars(text.data(), text.data() + text.size(), v);
-    return program_.number(v, range(ctx));
-  }
+  if (auto* n = dynamic_cast<IsoParser::NumberPrimaryContext*>(ctx)) return program_.number(number(n->NUMBER()), range(ctx));
   if (auto* v = dynamic_cast<IsoParser::VariablePrimaryContext*>(ctx)) return variable(v->variable(), false);
   if (auto* g = dynamic_cast<IsoParser::GroupPrimaryContext*>(ctx)) return expr(g->expr());
   auto* c = dynamic_cast<IsoParser::CallPrimaryContext*>(ctx);
@@ -1135,8 +1156,7 @@ ir::ExprId Reader::variable(IsoParser::VariableContext* ctx, bool target) {
   ir::ExprId index;
   if (auto* n = ctx->NUMBER()) {
     std::string text = n->getText();
-    double v = 0;
-    std::from_chars(text.data(), text.data() + text.size(), v);
+    double v = number(n);
     if (v >= 1000 && v == std::trunc(v)) {
       // A system variable (decision 48).
       auto it = s_.system.find(static_cast<uint32_t>(v));
@@ -1172,8 +1192,7 @@ ir::ExprId Reader::value(IsoParser::ValueContext* ctx, bool& literal_integer) {
   literal_integer = false;
   if (auto* n = ctx->NUMBER()) {
     std::string text = n->getText();
-    double v = 0;
-    std::from_chars(text.data(), text.data() + text.size(), v);
+    double v = number(n);
     literal_integer = text.find('.') == std::string::npos;
     if (ctx->MINUS()) v = -v;
     return program_.number(v, range(ctx));

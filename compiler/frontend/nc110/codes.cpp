@@ -127,8 +127,10 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       report_cyrillic(p.range, p.text);
       return std::nullopt;
     }
-  // [sign] digits [. digits] | . digits
+  // [sign] digits [. digits] | . digits. `bad_number`: one out of range, already reported.
+  bool bad_number = false;
   auto number = [&](std::string& written, bool signs = true) -> std::optional<double> {
+    bad_number = false;
     size_t i = at;
     std::string text;
     if (signs && (type(i) == Nc110Lexer::PLUS || type(i) == Nc110Lexer::MINUS)) text += pieces[i++].text;
@@ -139,16 +141,12 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       if (type(i) == Nc110Lexer::DIGITS && adjacent(i)) text += pieces[i++].text, digits = true;
     }
     if (!digits) return std::nullopt;
+    const SourceRange r{file_, line_no_, pieces[at].range.col, line_no_, pieces[i - 1].range.end_col};
     at = i;
     written = text;
-    std::string clean = text;
-    if (clean[0] == '+') clean.erase(0, 1);
-    if (clean.back() == '.') clean.pop_back();
-    size_t dot = clean.find('.');
-    if (dot != std::string::npos && (dot == 0 || !std::isdigit(static_cast<unsigned char>(clean[dot - 1]))))
-      clean = clean.substr(0, dot) + "0" + clean.substr(dot);
-    double v = 0;
-    std::from_chars(clean.data(), clean.data() + clean.size(), v);
+    auto v = read_number(text[0] == '+' ? text.substr(1) : text, r, diags_);
+    bad_number = !v;
+    block_.has_errors = block_.has_errors || bad_number;
     return v;
   };
   // E<digits> (a blank between them is allowed, as in `ZE 35`). `bad_parameter`: one
@@ -175,6 +173,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     if (bad_parameter) return false;
     std::string written;
     auto v = number(written);
+    if (bad_number) return false;
     if (!v) {
       if (letter_o(at) && pieces.size() == 1)
         fail("the letter O where the digit 0 is meant");
@@ -211,6 +210,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     std::string written;
     size_t start = at;
     auto v = adjacent(at) ? number(written) : std::nullopt;
+    if (bad_number) return false;
     if (!v) {
       at = start;
       out = program_.number(0, op.range);
@@ -469,7 +469,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         if (digits != std::string::npos) {
           if (written.find_first_not_of("0123456789", digits) != std::string::npos || written.size() - digits > 6)
             return fail("not a value");
-          n = static_cast<uint32_t>(std::stoul(written.substr(digits)));
+          n = parse_number<uint32_t>(std::string_view(written).substr(digits));  // at most 6 digits
         }
         if (!ok) return fail("not a value");
         const SystemName* entry = nullptr;
@@ -484,6 +484,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       }
       std::string written;
       auto v = number(written);
+      if (bad_number) return std::nullopt;
       if (!v) return fail("not a value");
       op.value = program_.number(*v, op.range);
       break;

@@ -4,6 +4,7 @@
 #include <charconv>
 
 #include "reader.h"
+#include "frontend/frontend.h"
 #include "support/text.h"
 
 namespace ncc::nc110 {
@@ -96,7 +97,7 @@ std::optional<Reader::MemoryRef> Reader::memory_ref(std::string_view written, So
   size_t digits = at;
   while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') ++digits;
   if (digits - at > 9) return fail(fmt::format("'{}' has too large an index", text));
-  ref.index = digits > at ? static_cast<uint32_t>(std::stoul(text.substr(at, digits - at))) : 0;
+  ref.index = parse_number<uint32_t>(std::string_view(text).substr(at, digits - at)).value_or(0);  // at most 9 digits
   ref.format = ref.memory->format;
   if (digits < text.size()) {
     if (text[digits] != '.') return fail(fmt::format("'{}' is not a reference", text));
@@ -108,7 +109,7 @@ std::optional<Reader::MemoryRef> Reader::memory_ref(std::string_view written, So
                                                               {"IN", MemFormat::Integer}, {"LI", MemFormat::Long},
                                                               {"RE", MemFormat::Real},    {"LR", MemFormat::LongReal}};
     if (format == "CH") {
-      ref.chars = count.empty() ? 1 : static_cast<uint32_t>(std::min<size_t>(std::stoul(count.substr(0, 4)), 9999));
+      ref.chars = count.empty() ? 1 : parse_number<uint32_t>(std::string_view(count).substr(0, 4)).value_or(0);
       if (ref.chars < 1 || ref.chars > kMaxTextChars)
         return fail(fmt::format("a text holds 1 to {} characters, not {}", kMaxTextChars, count));
     } else if (auto f = kFormats.find(format); f != kFormats.end() && count.empty()) {
@@ -151,8 +152,10 @@ bool Reader::system_number(antlr4::tree::TerminalNode* n, const std::string& nam
     block_.has_errors = true;
     return false;
   }
-  out = static_cast<uint32_t>(std::min(std::stod(text), 1e6));
-  return true;
+  auto v = read_number(text, r, diags_);
+  block_.has_errors = block_.has_errors || !v;
+  if (v) out = static_cast<uint32_t>(std::min(*v, 1e6));
+  return v.has_value();
 }
 
 std::optional<SysRef> Reader::system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r,
@@ -232,13 +235,11 @@ ir::ExprId Reader::primary(Nc110Parser::PrimaryContext* ctx) {
   SourceRange r = range(ctx);
   auto invalid = [&] { return program_.number(0, r); };  // after an error, so the tree stays whole
   if (auto* n = dynamic_cast<Nc110Parser::NumberPrimaryContext*>(ctx)) {
-    // Constants may have any number of digits in expressions (§2.12, `-0.00000124`).
-    std::string digits = n->NUMBER()->getText();
-    if (digits.back() == '.') digits.pop_back();
-    if (digits.front() == '.') digits.insert(digits.begin(), '0');
-    double v = 0;
-    std::from_chars(digits.data(), digits.data() + digits.size(), v);
-    return program_.number(v, r);
+    // Constants may have any number of digits in expressions (§2.12, `-0.00000124`),
+    // as long as they are numbers.
+    auto v = read_number(n->NUMBER()->getText(), r, diags_);
+    block_.has_errors = block_.has_errors || !v;
+    return v ? program_.number(*v, r) : invalid();
   }
   if (auto* p = dynamic_cast<Nc110Parser::ParameterPrimaryContext*>(ctx)) {
     auto index = parameter(p->EREF()->getText(), r);

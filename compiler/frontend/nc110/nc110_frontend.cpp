@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "frontend/limits.h"
 #include "reader.h"
 
 namespace ncc::nc110 {
@@ -47,7 +48,7 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       program.units.push_back(std::move(unit));
       for (const CallSite& c : reader.calls()) pending.push_back(c);
     };
-    read_unit(file, ir::UnitKind::Program, main_path.stem().string());
+    if (admit_text(sources.file(file), file, diags)) read_unit(file, ir::UnitKind::Program, main_path.stem().string());
     // Programs selected for other processes (SPG), by name as EXE names them, read
     // first, in the order given.
     std::map<std::string, uint8_t> selected;
@@ -85,12 +86,21 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
           found = candidate;
           break;
         }
+      // A call of a program that cannot be read has errors (a process's program an
+      // option selects has no call).
+      auto unread = [&] {
+        if (call.range.file != 0 || call.range.line != 0) program.units[call.unit].blocks[call.block].has_errors = true;
+      };
       if (!text) {
         diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
-        if (call.range.file != 0 || call.range.line != 0) program.units[call.unit].blocks[call.block].has_errors = true;
+        unread();
         continue;
       }
       uint32_t f = sources.add(found.string(), std::move(*text));
+      if (!admit_text(sources.file(f), f, diags)) {
+        unread();
+        continue;
+      }
       program.files.push_back(f);
       read_unit(f, call.kind, call.entry);
       if (auto it = selected.find(call.entry); call.kind == ir::UnitKind::Process && it != selected.end())

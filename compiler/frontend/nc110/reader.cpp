@@ -1,6 +1,8 @@
 // The NC-110 reader: lines, the leading fields and ISO blocks (§2.4-§2.8).
 #include "reader.h"
+#include "frontend/limits.h"
 #include "support/text.h"
+#include "support/utf8.h"
 
 #include <charconv>
 
@@ -24,29 +26,6 @@ char latin_twin(uint32_t cp) {
   for (auto [c, l] : kTwins)
     if (c == cp) return l;
   return 0;
-}
-
-// Decodes one UTF-8 character at `at`; 0 bytes if it is not one.
-uint32_t decode_utf8(std::string_view s, size_t at, size_t& length) {
-  unsigned char c = static_cast<unsigned char>(s[at]);
-  length = 1;
-  if (c < 0x80) return c;
-  size_t n = c >= 0xF0 && c < 0xF5 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 ? 2 : 0;
-  if (!n || at + n > s.size()) {
-    length = 0;
-    return 0;
-  }
-  uint32_t cp = c & (0x7F >> n);
-  for (size_t i = 1; i < n; ++i) {
-    unsigned char cc = static_cast<unsigned char>(s[at + i]);
-    if ((cc & 0xC0) != 0x80) {
-      length = 0;
-      return 0;
-    }
-    cp = (cp << 6) | (cc & 0x3F);
-  }
-  length = n;
-  return cp;
 }
 
 // Where the leading fields end (§2.4.4): '/', "label", N number, '#' or '&', in any
@@ -121,8 +100,9 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
           r_.diags_.report(DiagId::CommentInline, range);
         } else {
           unsigned char c = text.empty() ? 0 : static_cast<unsigned char>(text[0]);
-          size_t length = 0;
-          uint32_t cp = c >= 0x80 ? decode_utf8(text, 0, length) : 0;
+          const Utf8Char u = c >= 0x80 ? decode_utf8(text, 0) : Utf8Char{};
+          const size_t length = u.length;
+          const uint32_t cp = u.code_point;
           // Typographic quotes come with texts copied from word processors.
           bool quote = cp == 0x201C || cp == 0x201D || cp == 0x201E || cp == 0xAB || cp == 0xBB;
           r_.diags_.report(DiagId::CharInvalid, range,
@@ -194,8 +174,7 @@ void Reader::report_gtl(const SourceRange& range, std::string_view text, std::st
 }
 
 void Reader::report_cyrillic(const SourceRange& range, const std::string& letter) {
-  size_t length = 0;
-  uint32_t cp = decode_utf8(letter, 0, length);
+  const uint32_t cp = decode_utf8(letter, 0).code_point;
   // A twin only where the Latin letter is one of Table 2.1 (no lower-case y).
   char twin = latin_twin(cp);
   if (twin >= 'a' && twin <= 'z' && kLowerCase.find(twin) == std::string_view::npos) twin = 0;
@@ -260,25 +239,25 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   line_no_ = line_no;
   block_ = ir::Block{};
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
+  // A line far beyond the 128 characters of a block is not read at all.
+  if (!block_fits(line.size(), block_.range, diags_)) {
+    block_.has_errors = true;
+    return keep_block();
+  }
   // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
   // rest (both give the same IR: tests/fastpath).
   if (fast_path_ && line.size() <= kMaxBlockLength && scan_plain(line)) return keep_block();
 
-  // Code points for ANTLR; a byte that is not UTF-8 becomes U+0001 (INVALID), and
-  // every character keeps its byte column.
-  std::string decoded;
+  // Code points for ANTLR, each with its byte column. The text is UTF-8 (admit_text);
+  // were a byte not, U+0001 (INVALID) would stand for it: ANTLR's input throws on one.
+  decoded_.clear();
   byte_of_.clear();
   for (size_t i = 0; i < line.size();) {
-    size_t length = 0;
-    decode_utf8(line, i, length);
+    const size_t length = decode_utf8(line, i).length;
     byte_of_.push_back(static_cast<uint32_t>(i));
-    if (length == 0) {
-      decoded += '\x01';
-      length = 1;
-    } else {
-      decoded.append(line.substr(i, length));
-    }
-    i += length;
+    if (length) decoded_.append(line.substr(i, length));
+    else decoded_ += '\x01';
+    i += std::max<size_t>(length, 1);
   }
   byte_of_.push_back(static_cast<uint32_t>(line.size()));
   uint32_t errors = diags_.error_count();
@@ -301,11 +280,23 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
                                                              : Kind::Iso;
   kind_ = kind;
 
-  input_.load(decoded);
+  input_.load(decoded_);
   lexer_.setInputStream(&input_);
   size_t mode = kind == Kind::Iso ? size_t{Nc110Lexer::DEFAULT_MODE} : kind == Kind::Assign ? size_t{Nc110Lexer::ASSIGN} : size_t{Nc110Lexer::TLC};
   lexer_.setMode(mode);
   tokens_.setTokenSource(&lexer_);
+  // The tokens first: a block beyond the limits of nesting and length is not parsed.
+  static const ExpressionTokens kTokens{{Nc110Lexer::LPAREN},
+                                        {Nc110Lexer::RPAREN},
+                                        {Nc110Lexer::PLUS, Nc110Lexer::MINUS},
+                                        {Nc110Lexer::STAR, Nc110Lexer::SLASH},
+                                        {Nc110Lexer::NUMBER, Nc110Lexer::EREF, Nc110Lexer::VARREF, Nc110Lexer::NAME,
+                                         Nc110Lexer::RPAREN, Nc110Lexer::DIGITS}};
+  tokens_.fill();
+  if (!expression_fits(tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_)) {
+    block_.has_errors = true;
+    return keep_block();
+  }
   parser_.setTokenStream(&tokens_);
   // A block the grammar rejects keeps its label and number; its body is not read on
   // (the syntax error says what is wrong with it).
@@ -378,9 +369,8 @@ void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
         size_t count = 0;
         std::string bad;
         for (size_t i = 0; i < label.size();) {
-          size_t length = 0;
-          uint32_t cp = decode_utf8(label, i, length);
-          if (!length) length = 1;
+          const auto [cp, decoded] = decode_utf8(label, i);
+          const size_t length = std::max<size_t>(decoded, 1);
           bool ok = (cp >= 'A' && cp <= 'Z') || (cp >= '0' && cp <= '9') || (cp >= 0x410 && cp <= 0x42F) || cp == 0x401;
           if (!ok && bad.empty()) bad = label.substr(i, length);
           ++count;
@@ -456,12 +446,9 @@ void Reader::add_word(char letter, int slot, ir::ExprId value, std::string text,
 
 std::optional<double> Reader::constant(char letter, std::string_view written, bool negative, SourceRange r,
                                        const std::string& shown) {
-  double v = 0;
-  std::string digits(written);
-  if (!digits.empty() && digits.back() == '.') digits.pop_back();
-  if (!digits.empty() && digits.front() == '.') digits.insert(digits.begin(), '0');
-  std::from_chars(digits.data(), digits.data() + digits.size(), v);
-  if (negative) v = -v;
+  auto parsed = read_number(written, r, diags_);
+  if (!parsed) return std::nullopt;
+  const double v = negative ? -*parsed : *parsed;
   auto entry = s_.tables.addresses.find(letter);
   if (entry == s_.tables.addresses.end() || !entry->second.ranged) return v;
   const stdlib::AddressEntry& a = entry->second;
@@ -492,7 +479,7 @@ void Reader::block_number(std::string_view digits, SourceRange r) {
     block_.has_errors = true;
     return;
   }
-  block_.number = static_cast<uint32_t>(std::stoul(std::string(digits)));
+  block_.number = parse_number<uint32_t>(digits).value_or(0);  // at most 4 digits
   ir::Word w;
   w.kind = ir::WordKind::BlockNumber;
   w.slot = static_cast<uint8_t>(letter_slot('N'));
@@ -616,7 +603,7 @@ void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
     std::string_view digits = number_text;
     if (digits.find('.') != std::string_view::npos) return fail(DiagId::WholeNumber, shown);
     if (digits.size() > 2) return fail(DiagId::TooManyDigits, shown, digits.size(), std::string(1, letter) + "2", 2);
-    int number = std::stoi(std::string(digits));
+    const int number = parse_number<int>(digits).value_or(0);  // at most 2 digits
     int32_t code = code_index(letter, number);
     if (code < 0) return fail(letter == 'G' ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, fmt::format("{}{:02}", letter, number));
     add_word(letter, letter_slot(letter), program_.number(number, r), v ? written : "", r, ir::WordKind::Code, code);
@@ -661,7 +648,7 @@ void Reader::tool_word(Nc110Parser::ToolWordContext* ctx) {
       block_.has_errors = true;
       return;
     } else {
-      values[i] = program_.number(part.empty() ? 0 : std::stoi(part), r);
+      values[i] = program_.number(part.empty() ? 0 : parse_number<int>(part).value_or(0), r);  // at most 4 digits
     }
   }
   last_operand_ = shown;

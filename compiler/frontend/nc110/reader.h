@@ -148,6 +148,7 @@ class Reader {
   bool fast_path_;
   BlockSink* sink_;
   PlainBlock plain_;
+  std::string decoded_;            // the line as ANTLR reads it
   std::vector<uint32_t> byte_of_;  // the byte offset of each code point of the line, and the end
   ir::Unit* unit_ = nullptr;
   ir::Block block_;

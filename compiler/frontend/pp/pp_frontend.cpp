@@ -5,6 +5,7 @@
 #include <deque>
 #include <set>
 
+#include "frontend/limits.h"
 #include "reader.h"
 
 namespace ncc::pp {
@@ -31,7 +32,7 @@ class PpFrontend final : public DialectFrontend<Settings> {
     program.spaces.push_back(counters);
 
     Reader main(s_, program, sources.file(file), file, diags, spaces, std::nullopt, options.fast_path, options.sink);
-    main.run();
+    if (admit_text(sources.file(file), file, diags)) main.run();
     std::deque<MacroCall> pending(main.macro_calls().begin(), main.macro_calls().end());
     // Macros live in files L<nnnn> of the library (§2.3.5, decision 13).
     const std::string root = library_root(options, s_.library, sources.file(file).path());

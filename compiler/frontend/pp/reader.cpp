@@ -4,6 +4,7 @@
 #include <set>
 
 #include "frontend/frontend.h"
+#include "frontend/limits.h"
 #include "support/text.h"
 
 namespace ncc::pp {
@@ -47,13 +48,6 @@ Written parse_written(std::string_view v) {
   w.before = std::string(v.substr(0, point));
   if (w.point) w.after = std::string(v.substr(point + 1));
   return w;
-}
-
-double to_number(const Written& w) {
-  std::string text = (w.before.empty() ? "0" : w.before) + (w.after.empty() ? "" : "." + w.after);
-  double v = 0;
-  std::from_chars(text.data(), text.data() + text.size(), v);
-  return w.negative ? -v : v;
 }
 
 size_t significant_integer_digits(const std::string& digits) {
@@ -172,10 +166,12 @@ void Reader::read_tape() {
 void Reader::read_start(uint32_t line_no, size_t pct) {
   const size_t base = source_.line_offset(line_no);
   std::string_view line = source_.line(line_no);
+  start_range_ = SourceRange::point(file_, line_no, static_cast<uint32_t>(pct - base + 1));
+  number_ = "%";
+  if (!block_fits(base + line.size() - pct, start_range_, diags_)) return;
   load(Piece{line_no, static_cast<uint32_t>(pct - base + 1), pct, base + line.size()});
   PpParser::ProgramStartContext* ctx = parser_.programStart();
   start_range_ = range(ctx->getStart(), ctx->getStart());
-  number_ = "%";
   // §2.3.1: a whole number 1..999999.
   if (auto* n = ctx->NUMBER()) {
     std::string digits = n->getText();
@@ -247,8 +243,10 @@ void Reader::read_block(const Piece& piece) {
   while (end > piece.col - 1 && is_space(first_line[end - 1])) --end;
   block_.range = {file_, piece.line, piece.col, piece.line, static_cast<uint32_t>(end + 1)};
   // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
-  // rest (both give the same IR: tests/fastpath).
-  if (!fast_path_ || !scan_plain(piece)) {
+  // rest (both give the same IR: tests/fastpath). A block beyond the limit is not read.
+  if (!block_fits(piece.end - piece.begin, block_.range, diags_)) {
+    block_.has_errors = true;
+  } else if (!fast_path_ || !scan_plain(piece)) {
     load(piece);
     PpParser::BlockContext* ctx = parser_.block();
     antlr4::Token* n = ctx->number;
@@ -434,7 +432,10 @@ std::optional<ir::ExprId> Reader::value(std::string_view text, char letter, cons
     if (w.negative && entry.word_class == stdlib::WordClass::Feed)
       return (diags_.report(DiagId::SignNotAllowed, r, shown, "a feed is not negative"), std::nullopt);
   }
-  double v = to_number(w);
+  // A number without dimension has any number of digits: it may be out of range.
+  auto magnitude = read_number(w.before + (w.point ? "." + w.after : ""), r, diags_);
+  if (!magnitude) return std::nullopt;
+  const double v = w.negative ? -*magnitude : *magnitude;
   if (entry.ranged && (v < entry.min || v > entry.max)) {
     diags_.report(DiagId::ValueRange, r, shown, std::string(1, letter), shortest(entry.min), shortest(entry.max));
     return std::nullopt;
