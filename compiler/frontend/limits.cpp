@@ -96,9 +96,10 @@ bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags) {
     if (uint32_t l = position(source, i).first; l != last_line) ++lines, last_line = l;
     ++i;
   }
+  const std::string bytes = more == 1 ? "is 1 more byte" : fmt::format("are {} more bytes", more);
   const std::string others = more == 0   ? std::string()
-                             : lines == 1 ? fmt::format(", nor are {} more bytes on its line", more)
-                                          : fmt::format(", nor are {} more bytes on {} lines", more, lines);
+                             : lines == 1 ? fmt::format(", nor {} on its line", bytes)
+                                          : fmt::format(", nor {} on {} lines", bytes, lines);
   std::string_view code = text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF") ? "UTF-16" : guess_code_page(text);
   const std::string looks = code.empty()        ? std::string()
                             : code == "UTF-16" ? std::string("; it begins like UTF-16 text")

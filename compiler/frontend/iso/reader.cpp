@@ -1046,11 +1046,12 @@ ir::ExprId Reader::checked(ir::ExprId e, const ir::Word& w, const std::string& a
   return c;
 }
 
-// The value of a number as written; 0 when it is out of range (reported).
-double Reader::number(antlr4::tree::TerminalNode* n) {
+// The value of a number as written; nothing when it is out of range (reported: the
+// block has errors).
+std::optional<double> Reader::number(antlr4::tree::TerminalNode* n) {
   auto v = read_number(n->getText(), range(n->getSymbol(), n->getSymbol()), diags_);
   block_.has_errors = block_.has_errors || !v;
-  return v.value_or(0);
+  return v;
 }
 
 // Macro B arithmetic reads a vacant variable as 0; a comparison EQ/NE, an assignment
@@ -1118,7 +1119,8 @@ ir::ExprId Reader::factor(IsoParser::FactorContext* ctx) {
 }
 
 ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
-  if (auto* n = dynamic_cast<IsoParser::NumberPrimaryContext*>(ctx)) return program_.number(number(n->NUMBER()), range(ctx));
+  if (auto* n = dynamic_cast<IsoParser::NumberPrimaryContext*>(ctx))
+    return program_.number(number(n->NUMBER()).value_or(0), range(ctx));
   if (auto* v = dynamic_cast<IsoParser::VariablePrimaryContext*>(ctx)) return variable(v->variable(), false);
   if (auto* g = dynamic_cast<IsoParser::GroupPrimaryContext*>(ctx)) return expr(g->expr());
   auto* c = dynamic_cast<IsoParser::CallPrimaryContext*>(ctx);
@@ -1156,7 +1158,9 @@ ir::ExprId Reader::variable(IsoParser::VariableContext* ctx, bool target) {
   ir::ExprId index;
   if (auto* n = ctx->NUMBER()) {
     std::string text = n->getText();
-    double v = number(n);
+    const std::optional<double> parsed = number(n);
+    if (!parsed) return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, program_.number(0, r), ir::kNoExpr, r});
+    double v = *parsed;
     if (v >= 1000 && v == std::trunc(v)) {
       // A system variable (decision 48).
       auto it = s_.system.find(static_cast<uint32_t>(v));
@@ -1192,7 +1196,7 @@ ir::ExprId Reader::value(IsoParser::ValueContext* ctx, bool& literal_integer) {
   literal_integer = false;
   if (auto* n = ctx->NUMBER()) {
     std::string text = n->getText();
-    double v = number(n);
+    double v = number(n).value_or(0);
     literal_integer = text.find('.') == std::string::npos;
     if (ctx->MINUS()) v = -v;
     return program_.number(v, range(ctx));

@@ -74,7 +74,7 @@ class Reader {
   ir::ExprId primary(IsoParser::PrimaryContext* ctx);
   ir::ExprId variable(IsoParser::VariableContext* ctx, bool target);
   ir::ExprId value(IsoParser::ValueContext* ctx, bool& literal_integer);
-  double number(antlr4::tree::TerminalNode* n);
+  std::optional<double> number(antlr4::tree::TerminalNode* n);
   ir::ExprId operand(ir::ExprId e);  // vacant reads as 0
   ir::ExprId checked(ir::ExprId e, const ir::Word& w, const std::string& address, double lo, double hi);
   ir::ExprId condition(IsoParser::ExprContext* ctx, const char* what);

@@ -369,8 +369,11 @@ void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vec
       diags_.report(DiagId::ProgramStructure, r, "'%' begins the program and stands once, before its first block");
       return;
     default: {
+      // Each byte of a character outside 7-bit ASCII is a token: the first reports it.
+      const size_t at = piece_.begin + t->getStartIndex();
+      if ((static_cast<unsigned char>(source_.text()[at]) & 0xC0) == 0x80) return;
       size_t length = 1;
-      std::string what = describe_char(source_.text(), piece_.begin + t->getStartIndex(), length);
+      std::string what = describe_char(source_.text(), at, length);
       diags_.report(DiagId::CharInvalid, {r.file, r.line, r.col, r.line, r.col + static_cast<uint32_t>(length)}, what);
       return;
     }
