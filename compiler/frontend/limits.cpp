@@ -28,9 +28,13 @@ std::string_view guess_code_page(std::string_view text) {
   // the index in а..я of each.
   static constexpr std::array<int, 32> kKoi8 = {30, 0,  1,  22, 4,  5,  20, 3,  21, 8,  9,  10, 11, 12, 13, 14,
                                                 15, 31, 16, 17, 18, 19, 6,  2,  28, 27, 7,  24, 29, 25, 23, 26};
+  // The letter a byte above 0x7F is in each page (Ё counts as Е), or -1.
   auto cp1251 = [](unsigned char b) { return b >= 0xC0 ? (b - 0xC0) % 32 : b == 0xA8 || b == 0xB8 ? 5 : -1; };
   auto cp866 = [](unsigned char b) {
-    return b < 0xB0 ? (b < 0xA0 ? b - 0x80 : b - 0xA0) : b >= 0xE0 && b < 0xF0 ? b - 0xE0 + 16 : b == 0xF0 || b == 0xF1 ? 5 : -1;
+    if (b < 0xA0) return b - 0x80;                     // А..Я
+    if (b < 0xB0) return b - 0xA0;                     // а..п
+    if (b >= 0xE0 && b < 0xF0) return b - 0xE0 + 16;  // р..я
+    return b == 0xF0 || b == 0xF1 ? 5 : -1;
   };
   auto koi8 = [](unsigned char b) { return b >= 0xC0 ? kKoi8[(b - 0xC0) % 32] : b == 0xA3 || b == 0xB3 ? 5 : -1; };
   struct Candidate {
@@ -73,10 +77,10 @@ bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags) {
   const std::string_view text = source.text();
   // Binary data: control characters no text holds, in more than 1 byte of 100.
   const std::string_view probe = text.substr(0, kBinaryProbe);
-  const size_t control = static_cast<size_t>(std::count_if(probe.begin(), probe.end(), [](char c) { return binary_byte(c); }));
+  const auto is_control = [](char c) { return binary_byte(static_cast<unsigned char>(c)); };
+  const auto control = static_cast<size_t>(std::count_if(probe.begin(), probe.end(), is_control));
   if (control > 2 && control * 100 > probe.size()) {
-    const size_t first = static_cast<size_t>(std::find_if(probe.begin(), probe.end(), [](char c) { return binary_byte(c); }) - probe.begin());
-    auto [line, col] = position(source, first);
+    auto [line, col] = position(source, static_cast<size_t>(std::find_if(probe.begin(), probe.end(), is_control) - probe.begin()));
     diags.report(DiagId::BinaryFile, SourceRange::point(file, line, col), control, probe.size());
     return false;
   }
@@ -100,12 +104,13 @@ bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags) {
   const std::string others = more == 0   ? std::string()
                              : lines == 1 ? fmt::format(", nor {} on its line", bytes)
                                           : fmt::format(", nor {} on {} lines", bytes, lines);
-  std::string_view code = text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF") ? "UTF-16" : guess_code_page(text);
-  const std::string looks = code.empty()        ? std::string()
-                            : code == "UTF-16" ? std::string("; it begins like UTF-16 text")
-                                               : fmt::format("; it reads as Cyrillic text in {}", code);
-  diags.report(DiagId::TextEncoding, SourceRange::point(file, line, col), static_cast<unsigned char>(text[first]), others, looks,
-               code.empty() ? "CP1251" : code);
+  const bool utf16 = text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF");  // its byte-order mark
+  const std::string_view code = utf16 ? "UTF-16" : guess_code_page(text);
+  const std::string looks = utf16          ? std::string("; it begins like UTF-16 text")
+                            : code.empty() ? std::string()
+                                           : fmt::format("; it reads as Cyrillic text in {}", code);
+  diags.report(DiagId::TextEncoding, SourceRange::point(file, line, col), static_cast<unsigned char>(text[first]), others,
+               looks, code.empty() ? "CP1251" : code);
   return false;
 }
 
@@ -117,7 +122,9 @@ bool block_fits(size_t bytes, SourceRange at, Diagnostics& diags) {
 
 bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens& kinds, const TokenRange& range,
                      Diagnostics& diags) {
-  auto is = [](const std::vector<size_t>& set, size_t type) { return std::find(set.begin(), set.end(), type) != set.end(); };
+  auto is = [](const std::vector<size_t>& set, size_t type) {
+    return std::find(set.begin(), set.end(), type) != set.end();
+  };
   // The first place beyond each limit, by token index; the earliest is reported.
   constexpr size_t kNone = SIZE_MAX;
   size_t deep = kNone, run_at = kNone, beyond = kNone;
