@@ -9,6 +9,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "support/text.h"
 #include "vm/opcodes.h"
 
 namespace ncc {
@@ -403,8 +404,10 @@ class Lowering {
         for (size_t i = 0; i < 3; ++i) expr(s.items[i].value);  // field, row, column
         if (s.items.size() > 4) expr(s.items[4].value);
         else constant(Op::Const, Op::ConstDec, std::nullopt, 0);  // no format
-        // The attribute: -1 none, 256 inverse (R), else the colour (An).
-        const double attribute = s.label.empty() ? -1 : s.label == "R" ? 256 : std::atof(s.label.c_str() + 1);
+        // The attribute: -1 none, 256 inverse (R), else the colour (An, 0..255: the front end).
+        const double attribute = s.label.empty() ? -1
+                                 : s.label == "R" ? 256
+                                                  : parse_number<double>(std::string_view(s.label).substr(1)).value_or(-1);
         constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
         text_or_value(3, Op::ScreenDefineText, Op::ScreenDefineMem, Op::ScreenDefineValue);
         break;
