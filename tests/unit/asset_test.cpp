@@ -216,15 +216,26 @@ TEST(AssetStore, AKilledWriterNeverTearsAFile) {
   std::mt19937 random(6);
   std::set<char> seen;  // the versions found: the writers got on
   for (int round = 0; round < 20; ++round) {
+    // The writer says each version it has written, so that it is killed after some
+    // whatever the machine's load, and at a random moment of the next.
+    int done[2];
+    ASSERT_EQ(::pipe(done), 0);
     pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
+      ::close(done[0]);
       auto store = box.store();
-      for (uint32_t v = 1;; ++v)
+      for (uint32_t v = 1;; ++v) {
         if (store->replace(name("LOG/MP1"), version(v)) != Code::Ok) ::_exit(1);
+        if (::write(done[1], "v", 1) != 1) ::_exit(1);
+      }
     }
-    ::usleep(1000 + random() % 20000);
+    ::close(done[1]);
+    char written = 0;
+    for (unsigned n = 1 + random() % 3; n > 0; --n) ASSERT_EQ(::read(done[0], &written, 1), 1);
+    ::usleep(random() % 5000);
     ::kill(child, SIGKILL);
+    ::close(done[0]);
     int status = 0;
     ::waitpid(child, &status, 0);
     ASSERT_TRUE(WIFSIGNALED(status)) << "the writer stopped by itself";
