@@ -785,7 +785,7 @@ void Machine::arc_block_rules() {
   const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (!arc || !has_axis_word()) return;
   // §8.11 (E-15): the length offset does not change on a helix.
-  if (has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.length_before)
+  if (modal_.plane.w >= 0 && has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.length_before)
     report(DiagId::ArcForm, 0, "the tool length offset cannot change in a helical move (E-15): change it on a straight move");
   // §8.10: compensation starts and ends on a straight move (E-11, E-13; the path checks
   // the first move after a G41/G42/G40 of a block of its own), and changes side or

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <array>
+#include <limits>
 
 namespace ncc {
 
@@ -38,6 +39,9 @@ std::optional<std::string_view> sys_value_error(SysRef ref, double value) {
     case SysVar::Position: return "it is read-only";
     case SysVar::Timer:
       if (ref.index == 0) return "it is the clock, read-only";
+      [[fallthrough]];
+    case SysVar::TotalTime:
+      if (!(std::fabs(value) <= std::numeric_limits<float>::max())) return "it is a real (RE), at most 3.4E38 in magnitude";
       break;
     case SysVar::AssetStatus: return "it is read-only";
     case SysVar::BlockEnable:

@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "embedded.h"
+#include "support/numbers.h"
 
 namespace ncc::stdlib {
 
@@ -325,16 +326,16 @@ void read_axes(const Profile& p, MachineConfig& m, Diagnostics& diags) {
 }
 
 void read_asset(const Profile& p, AssetConfig& asset, Diagnostics& diags) {
-  auto whole = [&](const char* key, double lo, double hi, auto& out) {
+  auto whole = [&](const char* key, auto lo, auto hi, auto& out) {
     const std::string name = std::string("asset.") + key;
     if (auto v = p.number(name, diags)) {
-      if (*v >= lo && *v <= hi && *v == std::trunc(*v)) out = static_cast<std::remove_reference_t<decltype(out)>>(*v);
+      if (auto n = whole_in<std::remove_reference_t<decltype(out)>>(*v, lo, hi)) out = *n;
       else p.report_value(diags, name, fmt::format("must be a whole number from {} to {}", lo, hi));
     }
   };
-  whole("channels", 1, 255, asset.channels);
-  whole("structures", 1, 255, asset.structures);
-  whole("device_bytes", 0, 1e15, asset.device_bytes);
+  whole("channels", 1u, 255u, asset.channels);
+  whole("structures", 1u, 255u, asset.structures);
+  whole("device_bytes", uint64_t{0}, uint64_t{1'000'000'000'000'000}, asset.device_bytes);
 }
 
 void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
@@ -377,11 +378,11 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   if (auto v = p.boolean("machine.block_skip", diags)) m.block_skip = *v;
   if (auto v = p.boolean("machine.optional_stop", diags)) m.optional_stop = *v;
   if (auto v = p.number("machine.processes", diags)) {
-    if (*v >= 1 && *v <= 5 && *v == std::trunc(*v)) m.processes = static_cast<uint8_t>(*v);
+    if (auto n = whole_in<uint8_t>(*v, 1, 5)) m.processes = *n;
     else p.report_value(diags, "machine.processes", "must be a whole number from 1 to 5");
   }
   if (auto v = p.number("machine.look_ahead", diags)) {
-    if (*v >= 1 && *v <= 64 && *v == std::trunc(*v)) m.look_ahead = static_cast<uint32_t>(*v);
+    if (auto n = whole_in<uint32_t>(*v, 1, 64)) m.look_ahead = *n;
     else p.report_value(diags, "machine.look_ahead", "must be a whole number of blocks from 1 to 64");
   }
   if (auto v = p.boolean("machine.spindle_encoder", diags)) m.spindle_encoder = *v;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <span>
 
+#include "support/numbers.h"
 #include "support/text.h"
 
 namespace ncc::vm {
@@ -156,11 +157,12 @@ uint64_t Processes::steps() const {
 
 uint8_t Processes::number(double process, uint32_t pc, const char* what) {
   std::string why;
-  if (!(process >= 1 && process <= static_cast<double>(slots_.size()) && process == std::trunc(process)))
+  const std::optional<uint8_t> n = whole_in<uint8_t>(process, 1, static_cast<uint8_t>(slots_.size()));
+  if (!n)
     why = fmt::format("{} names no process: the machine has processes 1 to {} (machine.processes)", what, slots_.size());
-  else if (process == current_)
+  else if (*n == current_)
     why = fmt::format("{} names the process that runs it", what);
-  if (why.empty()) return static_cast<uint8_t>(process);
+  if (why.empty()) return *n;
   setup_.issues.issue({DiagId::ProcessError, diag_message(DiagId::ProcessError, shortest(process), why), setup_.module.source_of(pc)});
   return 0;
 }

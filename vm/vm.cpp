@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "opcodes.h"
+#include "support/numbers.h"
 #include "support/text.h"
 #include "stdlib/builtins.h"
 
@@ -20,11 +21,11 @@ constexpr size_t kMaxLoops = 64;
 // An operand numbering something 1..hi (an ASSET channel, structure or record, a
 // screen field): the number, or 0, which numbers nothing (so the statement answers
 // with its code or error).
-uint32_t whole_operand(double v, double hi) { return v >= 1 && v <= hi && v == std::trunc(v) ? static_cast<uint32_t>(v) : 0; }
-constexpr double kMaxRepeat = 2147483647;
+uint32_t whole_operand(double v, uint32_t hi) { return whole_in<uint32_t>(v, 1, hi).value_or(0); }
+constexpr int64_t kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
 const double kVacant = std::numeric_limits<double>::quiet_NaN();
-constexpr double kMaxCallCount = 9999;  // pp Q (the largest count a dialect writes)
+constexpr int64_t kMaxCallCount = 9999;  // pp Q (the largest count a dialect writes)
 
 inline uint32_t u32_at(const uint8_t* p) { return read_operand(p, 4); }
 inline uint16_t u16_at(const uint8_t* p) { return static_cast<uint16_t>(read_operand(p, 2)); }
@@ -44,13 +45,24 @@ void write_le(uint8_t* p, T value) {
   for (size_t i = 0; i < sizeof(T); ++i) p[i] = static_cast<uint8_t>(v >> (8 * i));
 }
 
+// The byte where element `index` of a memory in format f begins (bits: eight to a
+// byte), for bytes(); an index that is no element (a fraction, a negative) as it is,
+// which bytes() refuses.
+double first_byte(double index, MemFormat f) {
+  const std::optional<uint64_t> i = whole_in<uint64_t>(index, 0, UINT64_MAX);
+  if (!i) return index;
+  return f == MemFormat::Bit ? static_cast<double>(*i / 8) : static_cast<double>(*i) * mem_size(f);
+}
+// The bit in its byte of bit `index`, which first_byte() has found in the memory.
+uint32_t bit_of(double index) { return static_cast<uint32_t>(whole_in<uint64_t>(index, 0, UINT64_MAX).value_or(0) % 8); }
+
 // How DIS shows a value of each type (NC-110 D20).
 std::string show(VarType type, double v) {
   switch (type) {
     case VarType::Byte:
     case VarType::Integer:
     case VarType::Long:
-      if (std::fabs(v) < 9e18) return fmt::format("{}", static_cast<int64_t>(v));
+      if (auto n = whole_in<int64_t>(std::trunc(v), INT64_MIN, INT64_MAX)) return fmt::format("{}", *n);
       return fmt::format("{:.10g}", v);  // only a hostile file gets here: no integer type holds it
     case VarType::Real: return fmt::format("{:.7g}", v == 0 ? 0.0 : v);
     default: return fmt::format("{:.10g}", v == 0 ? 0.0 : v);
@@ -87,68 +99,56 @@ RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... 
   return RunStatus::Error;
 }
 
-double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
+std::optional<uint32_t> Vm::variable(uint8_t space, double index, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
-  if (!(index >= 0 && index < s.size) || index != std::trunc(index)) {
-    fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)), s.name);
-    ok = false;
-    return 0;
-  }
-  if (type_at(space, static_cast<uint32_t>(index)) == VarType::Unavailable) {
-    fail(pc, DiagId::VariableNumber, shortest(index));
-    ok = false;
-    return 0;
-  }
-  return vars_[space][static_cast<size_t>(index)];
+  const std::optional<uint32_t> i = s.size ? whole_in<uint32_t>(index, 0, s.size - 1) : std::nullopt;
+  if (!i) fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)), fmt::format("{}: 0 to {}", s.name, s.size - 1));
+  else if (type_at(space, *i) == VarType::Unavailable) return (fail(pc, DiagId::VariableNumber, *i), std::nullopt);
+  return i;
+}
+
+double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
+  const std::optional<uint32_t> i = variable(space, index, pc);
+  ok = i.has_value();
+  return i ? vars_[space][*i] : 0;
 }
 
 bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
-  if (!(index >= 0 && index < s.size) || index != std::trunc(index)) {
-    fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)), s.name);
-    return false;
-  }
-  double v = value;
   if (s.vacant && index == 0) {
     fail(pc, DiagId::VacantVariable, fmt::format("{}0", s.name));
     return false;
   }
-  const VarType type = type_at(space, static_cast<uint32_t>(index));
-  if (type == VarType::Unavailable) {
-    fail(pc, DiagId::VariableNumber, shortest(index));
-    return false;
-  }
-  if (s.vacant && std::isnan(v)) {
-    vars_[space][static_cast<size_t>(index)] = kVacant;
+  const std::optional<uint32_t> i = variable(space, index, pc);
+  if (!i) return false;
+  if (s.vacant && std::isnan(value)) {
+    vars_[space][*i] = kVacant;
     return true;
   }
-  if (!convert_value(type, s.limit, v)) {
-    fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, shortest(index)));
+  double v = value;
+  if (!convert_value(type_at(space, *i), s.limit, v)) {
+    fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, *i));
     return false;
   }
-  vars_[space][static_cast<size_t>(index)] = v;
+  vars_[space][*i] = v;
   return true;
 }
 
 uint8_t* Vm::bytes(uint8_t space, double index, uint32_t count, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
-  if (!(index >= 0 && index + count <= s.size) || index != std::trunc(index)) {
+  const std::optional<uint32_t> at = count <= s.size ? whole_in<uint32_t>(index, 0, s.size - count) : std::nullopt;
+  if (!at) {
     fail(pc, DiagId::MemoryRange, s.name, shortest(index), count, s.size);
     return nullptr;
   }
-  return shared_.memories[space].data() + static_cast<size_t>(index);
+  return shared_.memories[space].data() + *at;
 }
 
 bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out) {
-  if (f == MemFormat::Bit) {
-    const uint8_t* b = bytes(space, index >= 0 ? std::floor(index / 8) : index, 1, pc);
-    if (!b || index != std::trunc(index)) return false;
-    out = (*b >> (static_cast<uint64_t>(index) % 8)) & 1;
-    return true;
-  }
-  const uint8_t* p = bytes(space, index * mem_size(f), mem_size(f), pc);
+  const uint8_t* p = bytes(space, first_byte(index, f), mem_size(f), pc);
   if (!p) return false;
   switch (f) {
+    case MemFormat::Bit: out = (*p >> bit_of(index)) & 1; break;
     case MemFormat::Byte: out = *p; break;
     case MemFormat::Integer: out = read_le<int16_t>(p); break;
     case MemFormat::Long: out = read_le<int32_t>(p); break;
@@ -169,18 +169,16 @@ bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint3
     fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
     return false;
   }
-  wrote_memory();
-  if (f == MemFormat::Bit) {
-    uint8_t* b = bytes(space, index >= 0 ? std::floor(index / 8) : index, 1, pc);
-    if (!b || index != std::trunc(index)) return false;
-    uint8_t bit = static_cast<uint8_t>(1u << (static_cast<uint64_t>(index) % 8));
-    *b = v != 0 ? (*b | bit) : (*b & ~bit);
-    return true;
-  }
-  uint8_t* p = bytes(space, index * mem_size(f), mem_size(f), pc);
+  uint8_t* p = bytes(space, first_byte(index, f), mem_size(f), pc);
   if (!p) return false;
+  wrote_memory();
   switch (f) {
-    case MemFormat::Byte: *p = static_cast<uint8_t>(v); break;
+    case MemFormat::Bit: {
+      const auto bit = static_cast<uint8_t>(1u << bit_of(index));
+      *p = v != 0 ? (*p | bit) : (*p & ~bit);
+      break;
+    }
+    case MemFormat::Byte: *p = static_cast<uint8_t>(v); break;  // convert_value made it a whole number that fits
     case MemFormat::Integer: write_le(p, static_cast<int16_t>(v)); break;
     case MemFormat::Long: write_le(p, static_cast<int32_t>(v)); break;
     case MemFormat::Real: write_le(p, std::bit_cast<uint32_t>(static_cast<float>(v))); break;
@@ -411,9 +409,9 @@ RunStatus Vm::resume() {
         const int nth = static_cast<int>(std::count(dynamic_slots_.begin(), dynamic_slots_.end(), operands[0]));
         if (it == numbered.end()) {
           // As the table writes it: G05.
-          bool two_digits = v >= 0 && v < 100 && v == std::trunc(v);
+          const std::optional<int> two_digits = whole_in(v, 0, 99);
           return fail_at(pc, operands[0], nth, DiagId::CodeUnknown, slot_name(operands[0]),
-                         two_digits ? fmt::format("{:02}", static_cast<int>(v)) : shortest(v));
+                         two_digits ? fmt::format("{:02}", *two_digits) : shortest(v));
         }
         if (codes_.size() >= 64) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 64 codes in a block");
         dynamic_codes_ |= uint64_t{1} << codes_.size();
@@ -454,16 +452,17 @@ RunStatus Vm::resume() {
       }
       case Op::Comment: machine_.comment(m_.strings[u32_at(operands)], m_.source_of(pc)); break;
       case Op::Repeat: {
-        double count = pop();
-        double limit = std::min(m_.numbers[u32_at(operands + 4)], kMaxRepeat);
-        if (!(count >= 0 && count <= limit) || count != std::trunc(count))
-          return fail(pc, DiagId::RepeatCount, shortest(count), shortest(limit));
-        if (count < 1) {
+        const double count = pop();
+        // The dialect's largest count (a whole number the lowering writes).
+        const int64_t limit = std::min(kMaxRepeat, whole_in<int64_t>(std::floor(m_.numbers[u32_at(operands + 4)]), 0, kMaxRepeat).value_or(0));
+        const std::optional<int64_t> n = whole_in<int64_t>(count, 0, limit);
+        if (!n) return fail(pc, DiagId::RepeatCount, shortest(count), limit);
+        if (*n == 0) {
           p.pc = u32_at(operands);
           break;
         }
         if (p.loops.size() >= kMaxLoops) return fail(pc, DiagId::CallDepth, kMaxLoops);
-        p.loops.push_back({static_cast<int64_t>(count)});
+        p.loops.push_back({*n});
         break;
       }
       case Op::EndRepeat:
@@ -477,15 +476,15 @@ RunStatus Vm::resume() {
       case Op::CallShared: {
         if (op == Op::CallShared && !args_.empty())
           return fail(pc, DiagId::BytecodeInvalid, "program", "arguments to a call that keeps the caller's locals");
-        double count = pop();
-        if (!(count >= 1 && count <= kMaxCallCount) || count != std::trunc(count))
-          return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
-                      fmt::format("whole numbers from 1 to {}", kMaxCallCount));
+        const double count = pop();
+        const std::optional<int64_t> n = whole_in<int64_t>(count, 1, kMaxCallCount);
+        if (!n) return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
+                            fmt::format("whole numbers from 1 to {}", kMaxCallCount));
         uint32_t limit = m_.semantics.conventions.max_call_depth;
         if (p.frames.size() >= kMaxFrames || (limit && calls() >= limit))
           return fail(pc, DiagId::CallDepth, limit ? limit : kMaxFrames);
         const uint32_t start = m_.entries[u16_at(operands)].pc;
-        p.frames.push_back({p.pc, p.loops.size(), false, 0, 0, p.loops.size(), start, static_cast<int64_t>(count) - 1,
+        p.frames.push_back({p.pc, p.loops.size(), false, 0, 0, p.loops.size(), start, *n - 1,
                             op == Op::CallShared ? std::vector<double>{} : take_locals(args_), op == Op::CallShared,
                             std::move(args_)});
         args_.clear();
@@ -725,9 +724,10 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
     if (op == Op::AssetBindText) f.chars = operands[1];
     if (f.memory) {
       const double index = pop();
-      if (!(index >= 0 && index < m_.spaces[f.space].size) || index != std::trunc(index))
-        return stop(DiagId::MemoryRange, m_.spaces[f.space].name, shortest(index), f.chars ? f.chars : 1, m_.spaces[f.space].size);
-      f.index = static_cast<uint32_t>(index);
+      const uint32_t size = m_.spaces[f.space].size;
+      const std::optional<uint32_t> i = size ? whole_in<uint32_t>(index, 0, size - 1) : std::nullopt;
+      if (!i) return stop(DiagId::MemoryRange, m_.spaces[f.space].name, shortest(index), f.chars ? f.chars : 1, size);
+      f.index = *i;
     }
     fields_.push_back(f);
     return true;
@@ -960,11 +960,12 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
       if (!field_content(op, operands, pc, init)) return false;
       const double attribute = pop(), format = pop(), column = pop(), row = pop(), field = pop();
       std::optional<screen::Format> f;
-      if (format >= 1 && format <= 7 && format == std::trunc(format)) f = static_cast<screen::Format>(format);
+      if (auto n = whole_in(format, 1, 7)) f = static_cast<screen::Format>(*n);
       else if (format != 0) why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
-      screen::Attributes a{attribute == 256, attribute >= 0 && attribute <= 255 ? static_cast<int>(attribute) : -1};
-      const auto whole = [](double v) { return v == std::trunc(v) && std::fabs(v) < 1e6 ? static_cast<int>(v) : 0; };
-      if (why.empty()) why = shared_.screen.define(whole_operand(field, 255), whole(row), whole(column), init, f, a);
+      screen::Attributes a{attribute == 256, whole_in(attribute, 0, 255).value_or(-1)};
+      // A row or column that is no whole number of six digits is 0, which define() refuses.
+      const auto place = [](double v) { return whole_in<int>(v, -999999, 999999).value_or(0); };
+      if (why.empty()) why = shared_.screen.define(whole_operand(field, 255), place(row), place(column), init, f, a);
       break;
     }
     case Op::ScreenShow: {

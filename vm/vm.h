@@ -131,6 +131,8 @@ class Vm {
   RunStatus fail(uint32_t pc, DiagId id, const Args&... args);
   template <typename... Args>
   RunStatus fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args);
+  // The variable `index` names in `space`, or none (reported).
+  std::optional<uint32_t> variable(uint8_t space, double index, uint32_t pc);
   double load(uint8_t space, double index, uint32_t pc, bool& ok);
   bool store(uint8_t space, double index, double value, uint32_t pc);
   // A run of `count` bytes of memory `space` at byte `index`, or nullptr (reported).

@@ -49,10 +49,12 @@ struct BlockScratch {
 
 namespace {
 
+int code_number(const ir::Program& p, const ir::Word& w) { return ir::code_number(p, w.value); }
+
 // A code written without digits (NC-110 "G" is G00, decision 4) is named by its number.
 std::string word_text(const ir::Program& p, const ir::Word& w) {
   if (w.text.empty() && w.kind == ir::WordKind::Code && w.value != ir::kNoExpr)
-    return fmt::format("{}{:02}", w.address, static_cast<int>(p.exprs[w.value].number));
+    return fmt::format("{}{:02}", w.address, code_number(p, w));
   return w.address + w.text;
 }
 
@@ -65,11 +67,9 @@ SourceRange range_operands(const ir::Stmt& s) {
 
 const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rules, const ir::Word& w) {
   const auto& table = w.address == "G" ? rules.tables->g_codes : rules.tables->m_codes;
-  auto it = table.find(static_cast<int>(p.exprs[w.value].number));
+  auto it = table.find(code_number(p, w));
   return it == table.end() ? nullptr : &it->second;
 }
-
-int code_number(const ir::Program& p, const ir::Word& w) { return static_cast<int>(p.exprs[w.value].number); }
 
 void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
                       const std::string& a, const std::string& b = {}, const std::string& c = {}) {

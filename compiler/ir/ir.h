@@ -21,6 +21,7 @@
 #include "runtime/program_semantics.h"
 #include "runtime/system_vars.h"
 #include "stdlib/builtins.h"
+#include "support/numbers.h"
 #include "support/source.h"
 #include "vm/variables.h"
 
@@ -235,6 +236,12 @@ struct Program {
   ExprId number(double v, SourceRange range) { return add({ExprOp::Number, Builtin::Sin, 0, v, kNoExpr, kNoExpr, range}); }
   bool is_constant(ExprId id) const { return id != kNoExpr && exprs[id].op == ExprOp::Number; }
 };
+
+// The number of a code whose value is written (G01): the front ends write whole
+// numbers; -1, which no code table holds, for any other value.
+inline int code_number(const Program& program, ExprId value) {
+  return whole_in(program.exprs[value].number, 0, INT32_MAX).value_or(-1);
+}
 
 std::string print(const Program& program, const SourceManager& sources);
 std::string print_expr(const Program& program, ExprId id);

@@ -9,6 +9,7 @@
 #include <set>
 #include <unordered_map>
 
+#include "support/numbers.h"
 #include "support/text.h"
 #include "vm/opcodes.h"
 
@@ -136,9 +137,9 @@ class Lowering {
   std::optional<std::pair<uint32_t, int32_t>> decimal(double v) {
     if (!std::isfinite(v) || (v == 0 && std::signbit(v))) return std::nullopt;
     for (uint32_t places = 0; places <= vm::kMaxDecimalPlaces; ++places) {
-      const double digits = std::nearbyint(v * vm::kPowersOfTen[places]);
-      if (std::fabs(digits) > INT32_MAX) break;
-      if (vm::decimal(places, static_cast<int32_t>(digits)) == v) return std::pair{places, static_cast<int32_t>(digits)};
+      const auto digits = whole_in<int32_t>(std::nearbyint(v * vm::kPowersOfTen[places]), -INT32_MAX, INT32_MAX);
+      if (!digits) break;
+      if (vm::decimal(places, *digits) == v) return std::pair{places, *digits};
     }
     return std::nullopt;
   }
@@ -178,6 +179,14 @@ class Lowering {
     return m_.source_map.size() - 1;
   }
 
+  // The index of a variable when it is written and names one of its space; none when
+  // it is computed, or names none (LOADX, STOREX: the VM reports it where it runs).
+  std::optional<uint32_t> written_index(const ir::Expr& var) const {
+    if (!p_->is_constant(var.a)) return std::nullopt;
+    const uint32_t size = p_->spaces[var.space].size;
+    return size ? whole_in<uint32_t>(p_->exprs[var.a].number, 0, size - 1) : std::nullopt;
+  }
+
   void expr(ir::ExprId id) {
     const ir::Expr& e = p_->exprs[id];
     switch (e.op) {
@@ -185,10 +194,10 @@ class Lowering {
         constant(Op::Const, Op::ConstDec, std::nullopt, e.number);
         return;
       case ir::ExprOp::Var:
-        if (p_->is_constant(e.a)) {
+        if (auto index = written_index(e)) {
           op(Op::Load);
           u8(e.space);
-          u32(static_cast<uint32_t>(p_->exprs[e.a].number));
+          u32(*index);
         } else {
           expr(e.a);
           op(Op::LoadX);
@@ -297,10 +306,10 @@ class Lowering {
       case ir::AssetOp::Define:
         for (size_t i = 1; i < s.items.size(); ++i) {
           const ir::Expr& v = p_->exprs[s.items[i].value];
-          if (v.op == ir::ExprOp::Var) {  // an E parameter: its index is written (the front end)
+          if (v.op == ir::ExprOp::Var) {  // an E parameter: the front end writes its index
             op(Op::AssetBind);
             u8(v.space);
-            u32(static_cast<uint32_t>(p_->exprs[v.a].number));
+            u32(written_index(v).value_or(0));
             continue;
           }
           expr(v.a);
@@ -369,7 +378,7 @@ class Lowering {
     } else if (!text) {
       op(Op::Store);
       u8(target.space);
-      u32(static_cast<uint32_t>(p_->exprs[target.a].number));  // E<n>: written (the front end)
+      u32(written_index(target).value_or(0));  // E<n>: the front end writes it
     }
     if (s.items.size() == 2) {  // the field that shows the answer
       expr(s.items[1].value);
@@ -461,11 +470,11 @@ class Lowering {
     const ir::Expr& target = p_->exprs[s.target];
     switch (target.op) {
       case ir::ExprOp::Var:
-        if (p_->is_constant(target.a)) {
+        if (auto index = written_index(target)) {
           expr(s.value);
           op(Op::Store);
           u8(target.space);
-          u32(static_cast<uint32_t>(p_->exprs[target.a].number));
+          u32(*index);
         } else {
           expr(target.a);
           expr(s.value);

@@ -308,7 +308,7 @@ void Reader::finish_block() {
     auto has_group = [&](std::string_view group) {
       for (const ir::Word& w : block_.words)
         if (w.kind == ir::WordKind::Code && w.address == "G" && w.code >= 0) {
-          auto it = s_.tables.g_codes.find(static_cast<int>(program_.exprs[w.value].number));
+          auto it = s_.tables.g_codes.find(ir::code_number(program_, w.value));
           if (it != s_.tables.g_codes.end() && it->second.group == group) return true;
         }
       return false;
@@ -455,7 +455,7 @@ void Reader::block_number(bool main, const WrittenNumber& n, SourceRange r, cons
   }
   auto value = decode(letter, *format, n, s_.decode, r, diags_);
   if (!value) return;
-  block_.number = static_cast<uint32_t>(*value);
+  block_.number = whole_in<uint32_t>(*value, 0, UINT32_MAX);  // at most 9 digits: the format
   block_.main_block = main;
   ir::Word w;
   w.kind = ir::WordKind::BlockNumber;
@@ -504,13 +504,13 @@ void Reader::address_word(char letter, const WrittenNumber& n, SourceRange r, st
   w.value = program_.number(*value, r);
   if (letter == 'G' || letter == 'M') {
     w.kind = ir::WordKind::Code;
-    w.code = code_index(letter, static_cast<int>(*value));
+    w.code = code_index(letter, ir::code_number(program_, w.value));
   }
   if (letter == 'T' && s_.tool_digits > 0) {
     // §3.3.5: T may carry the tool number and then the offset number.
     int scale = 1;
     for (int i = 0; i < s_.offset_digits; ++i) scale *= 10;
-    int all = static_cast<int>(*value);
+    const int all = whole_in(*value, 0, INT32_MAX).value_or(0);  // at most 9 digits: the format
     int tool = all / scale, offset = all % scale;
     if (tool == 0 && all != 0)
       diags_.report(DiagId::ToolSplitZero, r, "T" + w.text, tool, offset, s_.tool_digits + s_.offset_digits);

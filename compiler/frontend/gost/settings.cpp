@@ -139,10 +139,11 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
 
   if (auto split = p.numbers("gost.tool_word_split", diags)) {
     const WordFormat* t = s.format.word('T');
-    if (split->size() == 2 && t && (*split)[0] >= 1 && (*split)[1] >= 1 &&
-        (*split)[0] + (*split)[1] == t->int_digits) {
-      s.tool_digits = static_cast<int>((*split)[0]);
-      s.offset_digits = static_cast<int>((*split)[1]);
+    const auto tool = split->size() == 2 ? whole_in((*split)[0], 1, 9) : std::nullopt;
+    const auto offset = split->size() == 2 ? whole_in((*split)[1], 1, 9) : std::nullopt;
+    if (tool && offset && t && *tool + *offset == t->int_digits) {
+      s.tool_digits = *tool;
+      s.offset_digits = *offset;
     } else if (!split->empty()) {
       ok &= (p.report_value(diags, "gost.tool_word_split",
                             "must be [tool digits, offset digits] adding up to the digits of T in the format"),

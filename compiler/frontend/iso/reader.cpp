@@ -7,6 +7,7 @@
 
 #include "frontend/frontend.h"
 #include "frontend/limits.h"
+#include "support/numbers.h"
 #include "support/text.h"
 
 namespace ncc::iso {
@@ -18,7 +19,7 @@ constexpr int kMaxLoopDepth = 3;        // DO1..DO3 (§8.34.3)
 
 // #0..#33 are local to a macro call (§8.16), #100..#199 and #500..#999 common
 // (decision 3); #0 is always vacant.
-bool variable_exists(double n) { return n == 0 || (n >= 1 && n <= 33) || (n >= 100 && n <= 199) || (n >= 500 && n <= 999); }
+bool variable_exists(uint32_t n) { return n <= 33 || (n >= 100 && n <= 199) || (n >= 500 && n <= 999); }
 
 // G65 argument specification I (§8.16): the letter's local variable; 0 = not an argument.
 uint32_t argument_of(char letter) {
@@ -716,13 +717,14 @@ ir::Stmt Reader::go_to(IsoParser::GotoStmtContext* ctx) {
   ir::ExprId target = value(ctx->value(), literal);
   if (program_.is_constant(target)) {
     // §8.34.2 (E-33): the target is a block number.
-    double n = program_.exprs[target].number;
-    if (n != std::trunc(n) || n < 0 || n > 99999) {
+    const double n = program_.exprs[target].number;
+    const std::optional<uint32_t> number = whole_in<uint32_t>(n, 0, 99999);
+    if (!number) {
       diags_.report(DiagId::ValueForm, range(ctx->value()), "GOTO", "a block number 0 to 99999", shortest(n));
       block_.has_errors = true;
       return s;  // no target: a block with errors does not jump
     }
-    s.label = fmt::format("N{}", static_cast<int64_t>(n));
+    s.label = fmt::format("N{}", *number);
   } else {
     s.value = operand(target);  // found among the unit's numbered blocks at run time
   }
@@ -756,13 +758,12 @@ std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t 
     block_.has_errors = true;
     return std::nullopt;
   }
-  double v = program_.exprs[w.value].number;
-  if (v != std::trunc(v) || v < min || v > max) {
+  const std::optional<uint32_t> v = whole_in(program_.exprs[w.value].number, min, max);
+  if (!v) {
     diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{}, a whole number {} to {}", what, min, max), w.address + w.text);
     block_.has_errors = true;
-    return std::nullopt;
   }
-  return static_cast<uint32_t>(v);
+  return v;
 }
 
 void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond) {
@@ -793,15 +794,14 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       w.kind = ir::WordKind::Code;
       if (!program_.is_constant(e)) {
         w.code = ir::kDynamicCode;  // G#4 (§8.34.1): the code comes at run time
-      } else if (double v = program_.exprs[e].number; v != std::trunc(v) || v < 0 || v > 999) {
+      } else if (const std::optional<int> n = whole_in(program_.exprs[e].number, 0, 999); !n) {
         diags_.report(DiagId::ValueForm, w.range, w.address, "a code number", w.address + w.text);
         w.kind = ir::WordKind::Ignored;
         block_.has_errors = true;
       } else {
-        const int n = static_cast<int>(v);
-        if (n >= 0 && n < 1000) (letter == 'G' ? g : m).set(static_cast<size_t>(n));
+        (letter == 'G' ? g : m).set(static_cast<size_t>(*n));
         const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
-        auto it = table.find(n);
+        auto it = table.find(*n);
         if (it == table.end()) w.code = -1;  // the checks report it
         else if (it->second.desc.calls.empty()) w.kind = ir::WordKind::Control;  // G65 M97 M98 M99
         else w.code = program_code(program_, it->second.desc);
@@ -839,7 +839,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     if (!g.test(own)) continue;
     for (const ir::Word& w : block_.words) {
       const bool code = w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Control;
-      const int n = code && program_.is_constant(w.value) ? static_cast<int>(program_.exprs[w.value].number) : -1;
+      const int n = code && program_.is_constant(w.value) ? whole_in(program_.exprs[w.value].number, 0, 999).value_or(-1) : -1;
       const bool allowed = w.kind == ir::WordKind::BlockNumber || (w.kind == ir::WordKind::Parameter && w.address != "F" &&
                            w.address != "S" && w.address != "T" && w.address != "D" && w.address != "H") ||
                            (code && w.address == "G" && (n == own || n == 90 || n == 91 || (n >= 17 && n <= 19)));
@@ -1156,37 +1156,41 @@ ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
 ir::ExprId Reader::variable(IsoParser::VariableContext* ctx, bool target) {
   SourceRange r = range(ctx);
   ir::ExprId index;
+  std::string text;  // as written after '#': "12", "[12]"
   if (auto* n = ctx->NUMBER()) {
-    std::string text = n->getText();
-    const std::optional<double> parsed = number(n);
-    if (!parsed) return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, program_.number(0, r), ir::kNoExpr, r});
-    double v = *parsed;
-    if (v >= 1000 && v == std::trunc(v)) {
-      // A system variable (decision 48).
-      auto it = s_.system.find(static_cast<uint32_t>(v));
-      if (it == s_.system.end()) {
-        diags_.report(DiagId::VariableNumber, r, text);
-        block_.has_errors = true;
-      } else if (target && !sys_writable(it->second)) {
-        diags_.report(DiagId::SystemNotWritable, r, "#" + text, "is read-only");
-        block_.has_errors = true;
-      } else {
-        ir::ExprId e = program_.add({ir::ExprOp::Sys, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, r});
-        program_.exprs[e].sys = it->second.packed();
-        return e;
-      }
-      v = 0;
-    } else if (!variable_exists(v)) {
+    text = n->getText();
+    const std::optional<double> v = number(n);
+    if (!v) return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, program_.number(0, r), ir::kNoExpr, r});
+    index = program_.number(*v, r);
+  } else {
+    text = ctx->getText().substr(1);
+    index = operand(expr(ctx->expr()));  // #[...]: checked when it runs, unless it is a number
+  }
+  if (!program_.is_constant(index)) return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, index, ir::kNoExpr, r});
+  // A variable number that is written (decision 3): #12 or #[12].
+  const std::optional<uint32_t> n = whole_in<uint32_t>(program_.exprs[index].number, 0, UINT32_MAX);
+  if (n && *n >= 1000) {
+    // A system variable (decision 48).
+    auto it = s_.system.find(*n);
+    if (it == s_.system.end()) {
       diags_.report(DiagId::VariableNumber, r, text);
       block_.has_errors = true;
-      v = 0;
-    } else if (target && v == 0) {
-      diags_.report(DiagId::VacantVariable, r, "#0");
+    } else if (target && !sys_writable(it->second)) {
+      diags_.report(DiagId::SystemNotWritable, r, "#" + text, "is read-only");
       block_.has_errors = true;
+    } else {
+      ir::ExprId e = program_.add({ir::ExprOp::Sys, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, r});
+      program_.exprs[e].sys = it->second.packed();
+      return e;
     }
-    index = program_.number(v, r);
-  } else {
-    index = operand(expr(ctx->expr()));  // #[...]: checked when it runs
+    program_.exprs[index].number = 0;  // the block has an error: the dry run reads #0
+  } else if (!n || !variable_exists(*n)) {
+    diags_.report(DiagId::VariableNumber, r, text);
+    block_.has_errors = true;
+    program_.exprs[index].number = 0;
+  } else if (target && *n == 0) {
+    diags_.report(DiagId::VacantVariable, r, "#0");
+    block_.has_errors = true;
   }
   return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, index, ir::kNoExpr, r});
 }

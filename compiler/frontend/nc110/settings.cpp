@@ -210,7 +210,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   stdlib::add_class_pairs(s.tables);
 
   if (auto v = p.number("nc110.e_count", diags)) {
-    if (*v >= 1 && *v <= 65536 && *v == static_cast<uint32_t>(*v)) s.e_count = static_cast<uint32_t>(*v);
+    if (auto n = whole_in<uint32_t>(*v, 1, 65536)) s.e_count = *n;
     else ok = (p.report_value(diags, "nc110.e_count", "must be a whole number from 1 to 65536"), false);
   }
   if (auto sizes = p.number_table("nc110.memories", diags)) {
@@ -218,10 +218,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       auto it = std::find_if(s.memories.begin(), s.memories.end(), [&](const Memory& m) { return m.name == name; });
       if (it == s.memories.end()) {
         ok = (p.report_value(diags, "nc110.memories." + name, "is not a memory (SA, SK, SYVAR)"), false);
-      } else if (!(bytes >= 1 && bytes <= 1 << 20) || bytes != static_cast<uint32_t>(bytes)) {
-        ok = (p.report_value(diags, "nc110.memories." + name, "must be a whole number of bytes, 1 to 1048576"), false);
+      } else if (auto n = whole_in<uint32_t>(bytes, 1, 1 << 20)) {
+        it->bytes = *n;
       } else {
-        it->bytes = static_cast<uint32_t>(bytes);
+        ok = (p.report_value(diags, "nc110.memories." + name, "must be a whole number of bytes, 1 to 1048576"), false);
       }
     }
   }

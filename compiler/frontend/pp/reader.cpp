@@ -477,7 +477,7 @@ void Reader::word(std::string_view written, SourceRange r) {
         w.code = ir::kDynamicCode;
       } else {
         const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
-        auto it = table.find(static_cast<int>(program_.exprs[*v].number));
+        auto it = table.find(ir::code_number(program_, *v));
         w.code = it == table.end() ? -1 : program_code(program_, it->second.desc);
       }
     } else {
@@ -531,7 +531,7 @@ Reader::Flow Reader::flow_of(const ir::Block& b) const {
     }
     if (w.address == "L" && w.kind != ir::WordKind::Ignored) {
       f.l_word = &w;
-      if (program_.is_constant(w.value)) f.l = static_cast<uint32_t>(program_.exprs[w.value].number);
+      if (program_.is_constant(w.value)) f.l = whole_in<uint32_t>(program_.exprs[w.value].number, 0, UINT32_MAX);  // 1..9999: the table
     }
     if (w.address == "Q" && w.kind != ir::WordKind::Ignored) f.q_word = &w;
   }

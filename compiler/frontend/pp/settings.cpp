@@ -152,7 +152,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
   c.max_call_depth = 8;                       // decision 15
   if (auto v = p.number("pp.max_call_depth", diags)) {
-    if (*v >= 1 && *v <= 32 && *v == static_cast<int>(*v)) c.max_call_depth = static_cast<uint8_t>(*v);
+    if (auto n = whole_in<uint8_t>(*v, 1, 32)) c.max_call_depth = *n;
     else ok = (p.report_value(diags, "pp.max_call_depth", "must be a whole number from 1 to 32"), false);
   }
   if (!ok) return std::nullopt;

@@ -2,7 +2,7 @@
 #1=33;
 #[#1]=5;
 G01 X#33 F100;
-(#34 and #200 do not exist: written literally they are NC2026)
+(#200 and #1000 do not exist: an index written as a number is checked as #200 is, NC2026)
 #1=#1+1;
 #[#1]=6;
 G01 X#[#1];
