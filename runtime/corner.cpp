@@ -4,6 +4,8 @@
 #include <numbers>
 #include <vector>
 
+#include "support/numbers.h"
+
 namespace ncc::corner {
 
 namespace {
@@ -96,6 +98,8 @@ double fraction(const Element& e, const Vec& p) {
 }
 
 }  // namespace
+
+int turns(double degrees) { return whole_in(std::ceil(degrees / 360 - 1e-9), 1, INT32_MAX).value_or(1); }
 
 Vec tangent(const Element& e, const Vec& p) {
   if (!e.arc) return (e.b - e.a).normalized();

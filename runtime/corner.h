@@ -32,6 +32,9 @@ struct Cut {
   double in_fraction = 1, out_fraction = 0;  // where T1 and T2 lie along their elements (0..1)
 };
 
+// The whole turns an arc of `degrees` sweep makes, at least 1 (an arc event's rotation).
+int turns(double degrees);
+
 // The direction of travel at point p of the element.
 Vec tangent(const Element& e, const Vec& p);
 // The points where the element's offset by `size` to `side` (+1 left of travel, -1

@@ -50,8 +50,22 @@ struct CutterPath::State {
   }
   bool right_angle_ = false;  // compensation started in a block of its own
   Plane plane_;
-  // The move waiting for the next one, and what came after it.
+  // The move waiting for the next one, and what came after it, with their bytes (the
+  // run's memory budget: a loop that never moves in the plane makes them grow).
   std::vector<Event> held_;
+  uint64_t held_bytes_ = 0;
+  void hold(const Event& e) {
+    held_bytes_ += sizeof(Event) + e.text.capacity();
+    held_.push_back(e);
+  }
+  void drop_held() {
+    held_.clear();
+    held_bytes_ = 0;
+  }
+  void send_held() {
+    for (const Event& e : held_) out_.event(e);
+    drop_held();
+  }
   std::optional<size_t> waiting_;
   corner::Element element_;   // its programmed element
   int waiting_side_ = 0;
@@ -64,10 +78,13 @@ CutterPath::CutterPath(TraceSink& out, Report report, void* context) : s_(std::m
 CutterPath::~CutterPath() = default;
 void CutterPath::event(const Event& e, const AxisValues* start) { s_->event(e, start); }
 
+uint64_t CutterPath::held_bytes() const { return s_->held_bytes_; }
+size_t CutterPath::held_events() const { return s_->held_.size(); }
+
 bool CutterPath::passes_moves() const { return !s_->waiting_ && (s_->side_ == 0 || s_->radius_ <= 0); }
 
 void CutterPath::State::send(const Event& e) {
-  if (waiting_) held_.push_back(e);
+  if (waiting_) hold(e);
   else out_.event(e);
 }
 
@@ -118,7 +135,7 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
   }
   if (!in_plane(e, *start)) {
     // A move along the plane's normal keeps the offset it stands at.
-    if (waiting_) held_.push_back(e);
+    if (waiting_) hold(e);
     else out_.event(e);
     return;
   }
@@ -162,7 +179,7 @@ void CutterPath::State::begin(const Event& move, const corner::Element& el, cons
     from_ = el.a;
     startup_ = move.kind != EventKind::Arc;  // an arc cannot start it (E-11, reported by the runtime)
   }
-  held_.push_back(move);
+  hold(move);
   waiting_ = held_.size() - 1;
   element_ = el;
   waiting_side_ = side_;
@@ -184,8 +201,7 @@ void CutterPath::State::end_waiting(const Vec& end) {
     // Whole turns as the programmed arc has them (a full circle, a helix).
     while (sweep + 2 * kPi - element_.sweep < element_.sweep - sweep) sweep += 2 * kPi;
     w.b = sweep * 180 / kPi;
-    const int n = std::max(1, static_cast<int>(std::ceil(w.b / 360 - 1e-9)));
-    w.rotation = w.rotation < 0 ? -n : n;
+    w.rotation = w.rotation < 0 ? -corner::turns(w.b) : corner::turns(w.b);
   }
   // Moves along the normal after it stand at its end.
   for (size_t i = *waiting_ + 1; i < held_.size(); ++i)
@@ -263,13 +279,12 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
     around->pos = last_move().pos;
     around->pos[u] = next.x();
     around->pos[v] = next.y();
-    held_.push_back(*around);
+    hold(*around);
   }
-  for (const Event& e : held_) out_.event(e);
-  held_.clear();
+  send_held();
   waiting_.reset();
   from_ = next;
-  held_.push_back(move);
+  hold(move);
   waiting_ = 0;
   element_ = el;
   waiting_side_ = side_;
@@ -279,7 +294,7 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
 
 // A path that would cut into the part (reported): nothing of it goes on.
 void CutterPath::State::abandon() {
-  held_.clear();
+  drop_held();
   waiting_.reset();
   startup_ = false;
 }
@@ -296,11 +311,10 @@ void CutterPath::State::leave(bool right_angle) {
     back.pos = last_move().pos;
     back.pos[plane_.u] = p.x();
     back.pos[plane_.v] = p.y();
-    held_.push_back(back);
+    hold(back);
   }
   leaving_ = false;
-  for (const Event& e : held_) out_.event(e);
-  held_.clear();
+  send_held();
   waiting_.reset();
   startup_ = false;
 }

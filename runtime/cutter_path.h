@@ -33,6 +33,10 @@ class CutterPath {
   // The end of the run: a path still waiting leaves at a right angle (`exit`), or just
   // ends beside its last point (a run an error stopped).
   void finish(bool exit = true);
+  // The events held while a move waits for the next (a loop that never moves in the
+  // plane makes them grow), and their bytes.
+  size_t held_events() const;
+  uint64_t held_bytes() const;
 
   struct State;  // the geometry (Eigen) stays out of this header
 

@@ -150,6 +150,18 @@ bool Machine::block_has(Fn fn) const {
   return false;
 }
 
+uint64_t Machine::held_bytes() const {
+  return path_.held_bytes() + held_.size() * sizeof(Event) +
+         spline_.points.size() * (sizeof(AxisValues) + sizeof(uint32_t));
+}
+
+std::string Machine::held_what() const {
+  if (spline_.points.size() * (sizeof(AxisValues) + sizeof(uint32_t)) > path_.held_bytes())
+    return fmt::format("the spline holds {} points (G06 blocks since its BSP)", spline_.points.size());
+  return fmt::format("cutter radius compensation holds {} events while its move waits for the next move in the plane",
+                     path_.held_events());
+}
+
 void Machine::out(const Event& e, const AxisValues* start) {
   if (!holding_) return to_path(e, start);
   held_.push_back(e);
@@ -601,11 +613,12 @@ void Machine::registers() {
     emit(e);
     // NC-110 T tool.corrector: the corrector takes effect at M06 (§2.7.7).
     if (conv_.corrector_in_tool_word) {
-      double corrector = slot_if(second_slot('T')).value_or(0);
-      if (corrector != 0 && !tool_offsets_.count(static_cast<int>(corrector)))
+      const double corrector = slot_if(second_slot('T')).value_or(0);
+      const std::optional<int> n = whole_in(corrector, 0, 999999999);
+      if (!n || (*n != 0 && !tool_offsets_.count(*n)))
         report_slot(DiagId::OffsetUnknown, second_slot('T'), "corrector", shortest(corrector));
       else
-        corrector_selected_ = static_cast<int>(corrector);
+        corrector_selected_ = *n;
     }
   }
   // pp H, P: auxiliary functions the machine's logic carries out (H, then P).
@@ -631,8 +644,8 @@ void Machine::registers() {
 
 std::optional<int> Machine::whole_number(char letter, const char* what) {
   if (!has(letter)) return std::nullopt;
-  double v = word(letter);
-  if (v >= 0 && v <= 999999999 && v == std::trunc(v)) return static_cast<int>(v);
+  const double v = word(letter);
+  if (auto n = whole_in(v, 0, 999999999)) return n;
   report(DiagId::DomainError, letter, fmt::format("{}{}", letter, four_decimals(v)), what);
   return std::nullopt;
 }
@@ -657,8 +670,9 @@ void Machine::link() {
   const double v = slot_value(kLinkSlot);
   const size_t n = std::min(conv_.link_axes.size(), modal_.link.size());
   std::array<uint8_t, 4> digits{};
-  bool ok = v >= 0 && v < std::pow(10.0, static_cast<double>(n)) && v == std::trunc(v);
-  for (auto rest = static_cast<uint32_t>(ok ? v : 0), i = static_cast<uint32_t>(n); ok && i-- > 0; rest /= 10) {
+  const std::optional<uint32_t> all = whole_in<uint32_t>(v, 0, static_cast<uint32_t>(std::pow(10.0, static_cast<double>(n))) - 1);
+  bool ok = all.has_value();
+  for (uint32_t rest = all.value_or(0), i = static_cast<uint32_t>(n); ok && i-- > 0; rest /= 10) {
     digits[i] = static_cast<uint8_t>(rest % 10);
     ok = digits[i] <= 2;
   }

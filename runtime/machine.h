@@ -22,6 +22,7 @@
 #include "machine_config.h"
 #include "program_semantics.h"
 #include "support/diagnostics.h"
+#include "support/numbers.h"
 #include "system_vars.h"
 #include "trace.h"
 
@@ -128,7 +129,11 @@ class Machine {
   bool set_system(SysRef ref, double value, uint32_t source);
   // Values the last block measured, by index of the result space (NC-110 G72-G74).
   std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
-  // Seconds of motion and dwell so far.
+  // What the runtime holds that grows with the blocks a run makes (the run's memory
+  // budget, limits.run_memory_mib): the events cutter radius compensation and a
+  // corner hold back for a later move, the points of a spline; in bytes, and in words.
+  uint64_t held_bytes() const;
+  std::string held_what() const;
 
  private:
   struct Modal {

@@ -32,11 +32,12 @@ void Machine::repeat_cycle() {
   for (char letter : conv_.cycle_repeat_words) {
     if (!has(letter)) continue;
     const double v = word(letter);
-    if (v < 0 || v > 9999 || v != std::trunc(v)) {
+    const std::optional<int> n = whole_in(v, 0, 9999);
+    if (!n) {
       report(DiagId::RepeatCount, letter, shortest(v), 9999);
       return;
     }
-    count = static_cast<int>(v);
+    count = *n;
     break;
   }
   if (count == 0) cycle_registers();  // L0: the cycle's words are stored, no hole is made
@@ -592,12 +593,12 @@ void Machine::measure() {
   const ProbeConfig& probe = config_.probe;
   const AxisValues start = machine_;
   // Where the values go: the block's E word (a code chosen at run time has none).
-  const double e = has('E') ? word('E') : -1;
-  if (!(e >= 0 && e < 65536)) {
+  const std::optional<uint32_t> e = has('E') ? whole_in<uint32_t>(word('E'), 0, 65535) : std::nullopt;
+  if (!e) {
     report(DiagId::ResultWord, 0, fmt::format("{} needs the E parameter its results go to, e.g. E40", name));
     return;
   }
-  const uint32_t first = static_cast<uint32_t>(e);
+  const uint32_t first = *e;
   // The next contact of the simulated probe, or the nominal one when the list has ended.
   const size_t index = next_contact_++;
   const ProbeContact* contact = index < probe.contacts.size() ? &probe.contacts[index] : nullptr;
@@ -723,7 +724,8 @@ void Machine::measure() {
     auto slot = slot_if(second_slot(letter));
     if (!slot || !has(letter)) continue;
     double value = fn == Fn::MeasurePoint ? measured[a] : wanted[a] - measured[a];
-    results_.push_back({static_cast<uint32_t>(*slot), program_axis(a, value)});
+    // E<n>, which the front end writes (anything else: an index the VM's store refuses).
+    results_.push_back({whole_in<uint32_t>(*slot, 0, 65535).value_or(UINT32_MAX), program_axis(a, value)});
   }
 }
 

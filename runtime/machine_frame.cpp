@@ -345,15 +345,12 @@ void Machine::reference_approach() {
 bool Machine::frame_function(FnCall call) {
   // The operands: #1, #2... at the operand slots; axes at their letters' slots.
   auto operand = [&](int i) { return slot_if(operand_slot(i)); };
-  auto whole = [&](int i, double lo, double hi, const char* what) -> std::optional<int> {
+  auto whole = [&](int i, int lo, int hi, const char* what) -> std::optional<int> {
     auto v = operand(i);
     if (!v) return std::nullopt;
-    if (*v < lo || *v > hi || *v != std::trunc(*v)) {
-      report_slot(DiagId::OperandValue, operand_slot(i), what, shortest(*v),
-                  fmt::format("a whole number from {} to {}", shortest(lo), shortest(hi)));
-      return std::nullopt;
-    }
-    return static_cast<int>(*v);
+    const std::optional<int> n = whole_in(*v, lo, hi);
+    if (!n) report_slot(DiagId::OperandValue, operand_slot(i), what, shortest(*v), fmt::format("a whole number from {} to {}", lo, hi));
+    return n;
   };
   std::vector<int> listed;  // the axes the operands name, in canonical order
   for (char letter : conv_.axes)

@@ -325,7 +325,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   if (std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; }) ||
       std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; })) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
-    int chords = static_cast<int>(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0));
+    const int chords = whole_in(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0), 1, 100000).value_or(1);
     // The fractions of the sweep: the chords' ends and where the arc is farthest
     // along u or v (the quarter turns from the start's angle, in the first and the
     // last turn: a helix repeats them in between).
@@ -359,10 +359,9 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     AxisValues off = origins();
     e.centre[0] = program_axis(u, centre.x() - off[u]);
     e.centre[1] = program_axis(v, centre.y() - off[v]);
-    int turns = std::max(1, static_cast<int>(std::ceil(sweep / kTwoPi - 1e-9)));
-    e.rotation = clockwise ? -turns : turns;
     e.a = to_program(r0);
     e.b = sweep * 180 / kPi;
+    e.rotation = clockwise ? -corner::turns(e.b) : corner::turns(e.b);
     emit(e);
   }
   move_to(t);
@@ -803,8 +802,7 @@ void Machine::corner_finish(bool another, size_t block_from) {
   };
   auto shorten = [&](Event& e, double radians) {
     e.b -= radians * 180 / kPi;
-    const int turns = std::max(1, static_cast<int>(std::ceil(e.b / 360 - 1e-9)));
-    e.rotation = e.rotation < 0 ? -turns : turns;
+    e.rotation = e.rotation < 0 ? -corner::turns(e.b) : corner::turns(e.b);
   };
   const AxisValues t2 = point(corner_point, next.pos, cut->out_fraction, cut->t2);
   in.pos = point(c.start, corner_point, cut->in_fraction, cut->t1);

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "support/numbers.h"
+
 namespace ncc::screen {
 
 namespace {
@@ -52,7 +54,12 @@ std::string show_value(Format f, double value, int width) {
     case Format::Bool: s = value != 0 ? "1" : "0"; break;
     case Format::Byte:
     case Format::Integer:
-    case Format::Long: s = fmt::format("{}", static_cast<long long>(std::llround(value))); break;
+    case Format::Long: {
+      const auto n = whole_in<int64_t>(std::round(value), INT64_MIN, INT64_MAX);
+      if (!n) return std::string(static_cast<size_t>(width), '*');  // more digits than any mask holds
+      s = fmt::format("{}", *n);
+      break;
+    }
     default: {
       s = fmt::format("{:.4f}", value);
       while (s.back() == '0') s.pop_back();

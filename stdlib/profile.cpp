@@ -385,6 +385,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     if (auto n = whole_in<uint32_t>(*v, 1, 64)) m.look_ahead = *n;
     else p.report_value(diags, "machine.look_ahead", "must be a whole number of blocks from 1 to 64");
   }
+  if (auto v = p.number("limits.run_memory_mib", diags)) {
+    if (auto n = whole_in<uint64_t>(*v, 1, 1 << 20)) m.run_memory = *n << 20;
+    else p.report_value(diags, "limits.run_memory_mib", "must be a whole number of MiB from 1 to 1048576");
+  }
   if (auto v = p.boolean("machine.spindle_encoder", diags)) m.spindle_encoder = *v;
   if (auto v = p.number("machine.max_rpm", diags)) {
     if (*v >= 0) m.max_rpm = *v;

@@ -47,16 +47,25 @@ constexpr Command kCommands[] = {
     {"check", "check a program and report every problem", "ncc check [options] FILE",
      R"(  --block-skip              run the dry run with the block-skip switch on
   --optional-stop           run the dry run with the optional-stop switch on
-  --max-steps N             stop the dry run after N blocks
+  --max-steps N             stop the dry run after N blocks (default: the program's blocks + 1000000),
+                            with a warning (NC4092): a long loop is not an error
+  --max-memory MIB          stop the dry run when the runtime holds more for later moves (default:
+                            the profile's limits.run_memory_mib, 256)
 )"},
     {"compile", "compile a program to a bytecode file", "ncc compile [options] FILE -o OUT.ncb",
      R"(  -o FILE                   the bytecode file to write
+  --max-steps N             stop the dry run after N blocks (default: the program's blocks + 1000000),
+                            with a warning (NC4092): a long loop is not an error
+  --max-memory MIB          stop the dry run when the runtime holds more for later moves (default:
+                            the profile's limits.run_memory_mib, 256)
 )"},
     {"run", "run a program (source or .ncb) and write its trace", "ncc run [options] FILE",
      R"(  --trace FILE              write the trace to FILE ('-' = stdout, the default; 'none' = no trace)
   --trace-format F          text | jsonl | canon (default text; docs/trace.md)
   --trace-blocks            a 'block' event as each block starts (which blocks ran, how often)
   --max-steps N             stop after N executed blocks (default: the program's blocks + 100000000)
+  --max-memory MIB          stop when the runtime holds more for later moves (default: the profile's
+                            limits.run_memory_mib, 256)
   --block-skip              the block-skip switch is on: '/' parts are skipped
   --optional-stop           the optional-stop switch is on: M01 stops
   --start-block N           start at main block ':N' (GOST 20999 §2.6)
@@ -165,6 +174,9 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
     } else if (a == "--max-steps" && allowed("--max-steps")) {
       if (!number(n)) return "--max-steps needs a number";
       o.run.max_steps = n;
+    } else if (a == "--max-memory" && allowed("--max-memory")) {
+      if (!number(n) || n < 1 || n > (1 << 20)) return "--max-memory needs a number of MiB, 1 to 1048576";
+      o.run.max_memory = n;
     } else if (a == "--trace-blocks" && allowed("--trace-blocks")) {
       o.run.trace_blocks = true;
     } else if (a == "--block-skip" && allowed("--block-skip")) {

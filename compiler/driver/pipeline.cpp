@@ -18,7 +18,11 @@ namespace ncc {
 
 namespace {
 
+// The blocks a run may execute beyond the program's own (--max-steps sets another
+// bound): a run, long loops included; the dry run of check and compile, which runs
+// each block of a CAM file once and the loops of a parametric program (docs/limits.md).
 constexpr uint64_t kDefaultExtraSteps = 100'000'000;
+constexpr uint64_t kDryRunExtraSteps = 1'000'000;
 
 // A source file named by a bytecode file, read only to quote its lines: never a
 // device, a pipe or something huge.
@@ -47,17 +51,26 @@ std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
 // Turns runtime issues into diagnostics at the block, or the word, they concern.
 // A loop meets the same problem again and again: each is reported once. The source
 // files are registered (and read, to quote their lines) at the first issue: a run
-// without one never reads source.
+// without one never reads source. A dry run's step limit is its bound (`bound` says
+// which): a warning, not an error of the program.
 class IssueReporter final : public RuntimeIssues {
  public:
-  IssueReporter(Session& s, const vm::Module& m, bool dry) : s_(s), m_(m), dry_(dry) {}
+  IssueReporter(Session& s, const vm::Module& m, bool dry, std::string bound)
+      : s_(s), m_(m), dry_(dry), bound_(std::move(bound)) {}
 
-  void issue(const RuntimeIssue& i) override {
+  void issue(const RuntimeIssue& stopped) override {
+    RuntimeIssue i = stopped;
+    if (dry_ && i.id == DiagId::StepLimit) {
+      i.id = DiagId::DryRunBound;
+      i.message = bound_;
+    }
     if (!seen_.insert({static_cast<int>(i.id), i.source, i.slot, i.code, i.nth}).second) return;
-    // In a dry run a block the compiler already rejected would only repeat its errors.
+    // In a dry run a block the compiler already rejected would only repeat its errors;
+    // a limit of the run stops it there all the same, and says so.
     const SourceMap& map = m_.source_map;
     const std::optional<SourceBlock> block = i.source < map.size() ? std::optional(map.block(i.source)) : std::nullopt;
-    if (dry_ && block && block->has_errors) return;
+    const bool run_limit = i.id == DiagId::DryRunBound || i.id == DiagId::RunMemory;
+    if (dry_ && block && block->has_errors && !run_limit) return;
     if (!file_ids_) file_ids_ = source_files(s_, m_);
     const std::vector<uint32_t>& file_ids = *file_ids_;
     auto block_range = [&](const SourceBlock& b) {
@@ -90,6 +103,7 @@ class IssueReporter final : public RuntimeIssues {
   const vm::Module& m_;
   std::optional<std::vector<uint32_t>> file_ids_;
   bool dry_;
+  std::string bound_;
   std::set<std::tuple<int, uint32_t, int, int, int>> seen_;
 };
 
@@ -194,9 +208,15 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   if (s.diags.error_count() != errors) return cannot_start();
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
-  IssueReporter reporter(s, m, dry);
   vm::VmOptions options;
-  options.max_steps = settings.max_steps.value_or(m.source_map.size() + kDefaultExtraSteps);
+  const uint64_t blocks = m.source_map.size();
+  options.max_steps = settings.max_steps.value_or(blocks + (dry ? kDryRunExtraSteps : kDefaultExtraSteps));
+  options.max_memory = settings.max_memory ? *settings.max_memory << 20 : config.run_memory;
+  IssueReporter reporter(s, m, dry,
+                         diag_message(DiagId::DryRunBound, options.max_steps,
+                                      settings.max_steps ? std::string("--max-steps")
+                                                         : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
+                                                                       blocks, kDryRunExtraSteps)));
   options.trace_blocks = settings.trace_blocks;
   vm::ProcessSetup setup{m, config, trace, reporter, options};
   setup.dry = dry;

@@ -31,7 +31,8 @@ struct Session {
 bool load_profile(Session& s, const std::string& path);
 
 struct RunSettings {
-  std::optional<uint64_t> max_steps;  // default: the program's blocks + 100,000,000
+  std::optional<uint64_t> max_steps;  // default: the program's blocks + 100,000,000; a dry run's: + 1,000,000
+  std::optional<uint64_t> max_memory;  // MiB the runtime may hold (--max-memory); default: the profile's limits.run_memory_mib
   bool block_skip = false;
   bool optional_stop = false;
   bool trace_blocks = false;
