@@ -53,14 +53,14 @@ struct CutterPath::State {
   // The move waiting for the next one, and what came after it, with their bytes (the
   // run's memory budget: a loop that never moves in the plane makes them grow).
   std::vector<Event> held_;
-  uint64_t held_bytes_ = 0;
+  uint64_t held_text_ = 0;  // bytes of their texts
   void hold(const Event& e) {
-    held_bytes_ += sizeof(Event) + e.text.capacity();
+    held_text_ += e.text.capacity();
     held_.push_back(e);
   }
   void drop_held() {
     held_.clear();
-    held_bytes_ = 0;
+    held_text_ = 0;
   }
   void send_held() {
     for (const Event& e : held_) out_.event(e);
@@ -78,7 +78,7 @@ CutterPath::CutterPath(TraceSink& out, Report report, void* context) : s_(std::m
 CutterPath::~CutterPath() = default;
 void CutterPath::event(const Event& e, const AxisValues* start) { s_->event(e, start); }
 
-uint64_t CutterPath::held_bytes() const { return s_->held_bytes_; }
+uint64_t CutterPath::held_bytes() const { return s_->held_.capacity() * sizeof(Event) + s_->held_text_; }
 size_t CutterPath::held_events() const { return s_->held_.size(); }
 
 bool CutterPath::passes_moves() const { return !s_->waiting_ && (s_->side_ == 0 || s_->radius_ <= 0); }

@@ -150,13 +150,14 @@ bool Machine::block_has(Fn fn) const {
   return false;
 }
 
-uint64_t Machine::held_bytes() const {
-  return path_.held_bytes() + held_.size() * sizeof(Event) +
-         spline_.points.size() * (sizeof(AxisValues) + sizeof(uint32_t));
+uint64_t Machine::held_bytes() const { return path_.held_bytes() + held_.capacity() * sizeof(Event) + spline_bytes(); }
+
+uint64_t Machine::spline_bytes() const {
+  return spline_.points.capacity() * sizeof(AxisValues) + spline_.sources.capacity() * sizeof(uint32_t);
 }
 
 std::string Machine::held_what() const {
-  if (spline_.points.size() * (sizeof(AxisValues) + sizeof(uint32_t)) > path_.held_bytes())
+  if (spline_bytes() > path_.held_bytes())
     return fmt::format("the spline holds {} points (G06 blocks since its BSP)", spline_.points.size());
   return fmt::format("cutter radius compensation holds {} events while its move waits for the next move in the plane",
                      path_.held_events());
