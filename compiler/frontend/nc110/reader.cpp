@@ -709,7 +709,7 @@ void Reader::check_iso_block() {
     if (!hole && (axes < 1 || axes > 3))
       fail(measure->range, fmt::format("{} measures 1 to 3 axes; this block has {}", name, axes));
     uint32_t count = hole ? 3 : static_cast<uint32_t>(std::max(axes, 1));
-    uint32_t first = static_cast<uint32_t>(program_.exprs[result->value].number);
+    const uint32_t first = whole_in<uint32_t>(program_.exprs[result->value].number, 0, s_.e_count - 1).value_or(0);  // result_word() checked it
     uint32_t last = first + count - 1;
     if (last >= s_.e_count) {
       diags_.report(DiagId::ParameterRange, result->range, fmt::format("E{}", last), s_.e_count - 1);
