@@ -154,7 +154,7 @@ bool Reader::system_number(antlr4::tree::TerminalNode* n, const std::string& nam
   }
   auto v = read_number(text, r, diags_);
   block_.has_errors = block_.has_errors || !v;
-  if (v) out = static_cast<uint32_t>(std::min(*v, 1e6));
+  if (v) out = whole_in<uint32_t>(*v, 0, 999999).value_or(1000000);  // (digits only) beyond: no system variable has it
   return v.has_value();
 }
 
