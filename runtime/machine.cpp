@@ -897,12 +897,18 @@ void Machine::action() {
   }
 
   if (modal_.cycle >= 0) {
-    if (conv_.cycle_two_levels) nc110_cycle();
-    else if (modal_.plane.w < 0)  // pp G14-G16 may select two axes with none along their normal
-      report(DiagId::PlaneState, 0, "canned cycle " + sem_.cycles[modal_.cycle].name,
-             fmt::format("plane {}, which has no axis along its normal to drill along,", plane_name(modal_.plane)));
-    else if (axes || (conv_.cycle_level_word && has(conv_.cycle_level_word))) conv_.fanuc_cycles ? repeat_cycle() : cycle();
-    else cycle_registers();
+    const bool drills = axes || (conv_.cycle_level_word && has(conv_.cycle_level_word));
+    if (conv_.cycle_two_levels) {
+      nc110_cycle();
+    } else if (modal_.plane.w < 0) {  // pp G14-G16 may select two axes with none along their normal
+      if (drills)
+        report(DiagId::PlaneState, 0, "canned cycle " + sem_.cycles[modal_.cycle].name,
+               fmt::format("plane {}, which has no axis along its normal to drill along,", plane_name(modal_.plane)));
+    } else if (drills) {
+      conv_.fanuc_cycles ? repeat_cycle() : cycle();
+    } else {
+      cycle_registers();
+    }
     if (block_.dwell_end) dwell_seconds(timer_dwell());
     return;
   }
