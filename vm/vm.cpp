@@ -455,8 +455,9 @@ RunStatus Vm::resume() {
       case Op::Comment: machine_.comment(m_.strings[u32_at(operands)], m_.source_of(pc)); break;
       case Op::Repeat: {
         const double count = pop();
-        // The dialect's largest count (a whole number the lowering writes).
-        const int64_t limit = std::min(kMaxRepeat, whole_in<int64_t>(std::floor(m_.numbers[u32_at(operands + 4)]), 0, kMaxRepeat).value_or(0));
+        // The dialect's largest count, which the lowering writes (at most kMaxRepeat).
+        const double largest = std::min(std::floor(m_.numbers[u32_at(operands + 4)]), static_cast<double>(kMaxRepeat));
+        const int64_t limit = whole_in<int64_t>(largest, 0, kMaxRepeat).value_or(0);
         const std::optional<int64_t> n = whole_in<int64_t>(count, 0, limit);
         if (!n) return fail(pc, DiagId::RepeatCount, shortest(count), limit);
         if (*n == 0) {
