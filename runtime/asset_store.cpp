@@ -25,6 +25,11 @@ constexpr std::string_view kMagic = "NCAF";
 constexpr uint16_t kVersion = 1;
 constexpr size_t kHeader = 24;
 constexpr std::string_view kSuffix = ".nca";
+// The bytes of a file: its header, its layout, its records.
+constexpr uint64_t file_bytes(uint64_t fields, uint64_t data) { return kHeader + 2 * fields + data; }
+// The largest well-formed file: 17 fields of 32 characters in 32767 records.
+constexpr uint64_t kMaxFileBytes = file_bytes(kMaxFields, uint64_t{kMaxRecords} * kMaxFields * kMaxChars);
+static_assert(kMaxFileBytes == 17'825'306);
 
 uint32_t crc_of(std::string_view s) { return crc32({reinterpret_cast<const uint8_t*>(s.data()), s.size()}); }
 
@@ -225,7 +230,7 @@ Code decode(std::string_view bytes, File& f) {
   if (r.failed() || head_crc != crc_of(bytes.substr(0, kHeader - 4)) || (flags & ~1u) || fields == 0 ||
       fields > kMaxFields || records == 0 || records > kMaxRecords)
     return Code::Logical;
-  if (bytes.size() != kHeader + 2 * size_t{fields} + size_t{records} * length || body_crc != crc_of(bytes.substr(kHeader)))
+  if (bytes.size() != file_bytes(fields, uint64_t{records} * length) || body_crc != crc_of(bytes.substr(kHeader)))
     return Code::Logical;
   File out;
   out.write_protected = flags & 1;
@@ -268,7 +273,8 @@ Code Store::load(const FileName& name, File& f) const {
   if (file.fd < 0) return errno == ENOENT ? Code::NotFound : errno == ELOOP ? Code::Logical : Code::Hardware;
   struct stat st;
   if (::fstat(file.fd, &st) != 0) return Code::Hardware;
-  if (!S_ISREG(st.st_mode)) return Code::Logical;
+  // No larger file is well formed: its size is not memory to give it.
+  if (!S_ISREG(st.st_mode) || static_cast<uint64_t>(st.st_size) > kMaxFileBytes) return Code::Logical;
   std::string bytes(static_cast<size_t>(st.st_size), '\0');
   size_t got = 0;
   while (got < bytes.size()) {
@@ -302,11 +308,11 @@ Code Store::write(const FileName& name, const File& f, bool fresh) {
   if (fresh && exists) return Code::Exists;
   if (!fresh && !exists) return Code::NotFound;
   if (exists && !S_ISREG(old.st_mode)) return Code::Logical;
-  const std::string bytes = encode(f);
   // The device's room: its other files and this one (a file that does not grow, as a
   // WRT's, takes no more: the folder is not listed for it).
-  if (!exists || bytes.size() > static_cast<uint64_t>(old.st_size)) {
-    uint64_t used = bytes.size();
+  const uint64_t size = file_bytes(f.layout.size(), f.data.size());
+  if (!exists || size > static_cast<uint64_t>(old.st_size)) {
+    uint64_t used = size;
     for (const FileName& other : list(name.device)) {
       struct stat st;
       if (other.name != name.name && ::fstatat(dev.fd, (other.name + std::string(kSuffix)).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
@@ -315,6 +321,7 @@ Code Store::write(const FileName& name, const File& f, bool fresh) {
     if (used > options_.device_bytes) return Code::Overflow;
   }
 
+  const std::string bytes = encode(f);
   const std::string temp = "." + final_name + ".tmp";
   ::unlinkat(dev.fd, temp.c_str(), 0);  // left by a run that died
   Fd out{::openat(dev.fd, temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644)};

@@ -75,15 +75,16 @@ bool decode_block(ByteReader& r, uint32_t line, SourceBlock& b, std::vector<Word
 
 }  // namespace
 
-bool SourceMap::read(ByteReader& r, uint32_t count) {
+bool SourceMap::read(std::string encoded, uint32_t count) {
+  ByteReader r(encoded);
   for (uint32_t i = 0; i < count; ++i) {
-    const size_t from = r.pos();
+    if (count_ % kCheckpointEvery == 0) checkpoints_.push_back({count_, r.pos(), last_line_});
     SourceBlock b;
     if (!decode_block(r, last_line_, b, nullptr)) return false;
-    checkpoint();
-    bytes_ += r.data().substr(from, r.pos() - from);
     added(b.line);
   }
+  if (!r.at_end()) return false;
+  bytes_ = std::move(encoded);
   return true;
 }
 

@@ -45,10 +45,11 @@ class SourceMap {
   std::vector<WordPosition> words(uint32_t i) const;
   // Every block in order, with its words.
   void visit(const std::function<void(const SourceBlock&, const std::vector<WordPosition>&)>& f) const;
-  // The blocks as the file stores them after their count; read() takes `count` of
-  // them from a file, checked (false if they are not well formed).
+  // The blocks as the file stores them after their count; read() takes the
+  // `encoded` bytes of `count` blocks from a file, checked (false if they are not
+  // exactly that), and keeps them as they are.
   std::string_view encoded() const { return bytes_; }
-  bool read(ByteReader& r, uint32_t count);
+  bool read(std::string encoded, uint32_t count);
   bool operator==(const SourceMap& o) const {
     return files == o.files && count_ == o.count_ && encoded() == o.encoded();
   }

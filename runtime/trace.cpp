@@ -74,6 +74,9 @@ std::string json_number(double v) { return std::isfinite(v) ? shortest(v) : std:
 
 // A JSON (and C) string literal: control characters escaped, broken UTF-8 as U+FFFD.
 std::string quoted(const std::string& s) { return "\"" + json_escape(s) + "\""; }
+// A text from the program or a file that ends the line (a statement, a field shown, a
+// function): escaped as in a string literal, its quotes as they are.
+std::string free_text(const std::string& s) { return json_escape(s, false); }
 
 // Writes through a large buffer; formatting never waits on the stream.
 class BufferedSink : public TraceSink {
@@ -221,17 +224,17 @@ class TextSink final : public BufferedSink {
       case EventKind::OffsetLoad: return fmt::format("offset_load {} {}", e.n, position(e.pos));
       case EventKind::Diameter: return e.n ? "diameter on" : "diameter off";
       case EventKind::FeedReduction: return e.n ? "feed_reduction on" : "feed_reduction off";
-      case EventKind::Aux: return "aux " + e.text;
+      case EventKind::Aux: return "aux " + free_text(e.text);
       case EventKind::Block: return "block";
       case EventKind::CompLoad:
         return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
-      case EventKind::Asset: return "asset " + asset_text(e);
+      case EventKind::Asset: return "asset " + free_text(asset_text(e));
       case EventKind::Input: {
         const auto [shown, answer] = input_parts(e);
         return fmt::format("input {} {}", quoted(shown), e.n ? quoted(answer) : four_decimals(e.a));
       }
-      case EventKind::Screen: return "screen " + e.text;
-      case EventKind::Sync: return "sync " + e.text;
+      case EventKind::Screen: return "screen " + free_text(e.text);
+      case EventKind::Sync: return "sync " + free_text(e.text);
     }
     return "?";
   }
@@ -485,9 +488,9 @@ class CanonSink final : public BufferedSink {
       case EventKind::FeedReduction:
         line(fmt::format("COMMENT(\"ncc: {} {}\")", event_name(e.kind), e.n ? "on" : "off"));
         break;
-      case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", e.text)); break;
+      case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", json_escape(e.text))); break;
       case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
-      case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", asset_text(e))); break;
+      case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", json_escape(asset_text(e)))); break;
       case EventKind::Input: {
         const auto [shown, answer] = input_parts(e);
         line(fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(shown), e.n ? json_escape(answer) : canon_number(e.a)));

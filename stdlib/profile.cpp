@@ -71,11 +71,8 @@ std::optional<Profile> Profile::parse(SourceManager& sources, std::string name, 
 
 std::optional<Profile> Profile::load(SourceManager& sources, const std::string& path, Diagnostics& diags) {
   if (path.empty()) return parse(sources, "", "", diags);
-  auto read = read_file(path);
-  if (!read) {
-    diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno));
-    return std::nullopt;
-  }
+  auto read = read_file(path, kProfileFile, diags);
+  if (!read) return std::nullopt;
   std::string text = std::move(*read);
   if (text.empty()) text = "\n";  // an empty profile is valid: everything is the default
   return parse(sources, path, std::move(text), diags);
@@ -85,6 +82,15 @@ std::string Profile::resolve_path(std::string_view relative) const {
   std::filesystem::path p(relative);
   if (p.is_absolute() || dir_.empty()) return p.string();
   return (std::filesystem::path(dir_) / p).string();
+}
+
+std::optional<std::string> Profile::file_text(std::string_view key, const std::string& file, std::string& path,
+                                              Diagnostics& diags) const {
+  path = resolve_path(file);
+  int error = 0;
+  auto text = read_file(path, kProfileFile, error);
+  if (!text) report_value(diags, key, "names a file that cannot be read: " + read_error(error, kProfileFile));
+  return text;
 }
 
 Profile::Lookup Profile::find(std::string_view key) const {

@@ -17,6 +17,9 @@
 
 namespace ncc::stdlib {
 
+// A machine profile, and the files it names (tables, a format), are a few kilobytes.
+inline constexpr FileLimit kProfileFile{16 << 20, "a machine profile or a file it names"};
+
 class Profile {
  public:
   // Parses a profile file (path "" = the default alone). Syntax errors are reported
@@ -29,6 +32,10 @@ class Profile {
   const std::string& name() const { return name_; }
   const std::string& text() const { return text_; }  // the user's text; "" for the default
   std::string resolve_path(std::string_view relative) const;
+  // The text of the file the string `key` names (from the profile's folder), and its
+  // path; nothing, reported at the key, if it cannot be read.
+  std::optional<std::string> file_text(std::string_view key, const std::string& file, std::string& path,
+                                       Diagnostics& diags) const;
 
   // Typed lookups by dotted key ("gost.format"). A key of the wrong type is
   // reported and treated as absent.

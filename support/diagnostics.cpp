@@ -200,7 +200,7 @@ std::string format_text(const Diagnostic& d, const SourceManager& sources, bool 
   return out;
 }
 
-std::string json_escape(std::string_view s) {
+std::string json_escape(std::string_view s, bool quotes) {
   std::string out;
   out.reserve(s.size());
   for (size_t i = 0; i < s.size(); ++i) {
@@ -217,7 +217,7 @@ std::string json_escape(std::string_view s) {
       continue;
     }
     switch (c) {
-      case '"': out += "\\\""; break;
+      case '"': out += quotes ? "\\\"" : "\""; break;
       case '\\': out += "\\\\"; break;
       case '\n': out += "\\n"; break;
       case '\r': out += "\\r"; break;

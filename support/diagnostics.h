@@ -92,6 +92,9 @@ enum class DiagFormat { Text, Json, Sarif };
 std::string format_text(const Diagnostic& d, const SourceManager& sources, bool color = false);
 std::string format_all(const std::vector<Diagnostic>& list, const SourceManager& sources, DiagFormat format,
                        bool color = false);
-std::string json_escape(std::string_view s);
+// `s` as the inside of a JSON (and C) string literal: control characters and the
+// backslash escaped, bytes that are not UTF-8 as \ufffd; `quotes` false leaves '"' as it
+// is (a text no quotes delimit, read to the end of its line).
+std::string json_escape(std::string_view s, bool quotes = true);
 
 }  // namespace ncc

@@ -1,6 +1,16 @@
 #include "source.h"
 
-#include <cstdio>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "diagnostics.h"
 
 namespace ncc {
 
@@ -24,23 +34,56 @@ uint32_t SourceManager::add(std::string path, std::string text) {
   return static_cast<uint32_t>(files_.size() - 1);
 }
 
-std::optional<std::string> read_file(const std::string& path) {
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) return std::nullopt;
-  std::string text;
-  // A regular file's size is known: one allocation; then whatever else comes.
-  if (std::fseek(f, 0, SEEK_END) == 0) {
-    const long size = std::ftell(f);
-    if (size > 0) text.resize(static_cast<size_t>(size));
-    std::rewind(f);
+std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, int& error) {
+  // O_NONBLOCK: opening a FIFO does not wait for a writer before it is known to be one.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) {
+    error = errno;
+    return std::nullopt;
   }
-  size_t have = std::fread(text.data(), 1, text.size(), f);
-  text.resize(have);
+  struct stat st;
+  error = 0;
+  if (::fstat(fd, &st) != 0) error = errno;
+  else if (S_ISDIR(st.st_mode)) error = EISDIR;
+  else if (S_ISREG(st.st_mode) && static_cast<uint64_t>(st.st_size) > limit.bytes) error = EFBIG;
+  else if (!S_ISREG(st.st_mode) && limit.regular_only) error = EINVAL;
+  else if (::fcntl(fd, F_SETFL, 0) != 0) error = errno;  // reads wait again
+  std::string text;
+  // A regular file's size is known: one allocation, read into; then whatever else
+  // comes (a file that grew, a pipe) in pieces, up to one byte past the limit.
+  if (!error && S_ISREG(st.st_mode)) text.resize(static_cast<size_t>(st.st_size));
+  size_t have = 0;
   char piece[1 << 16];
-  while (size_t n = std::fread(piece, 1, sizeof piece, f)) text.append(piece, n);
-  const bool failed = std::ferror(f);
-  std::fclose(f);
-  if (failed) return std::nullopt;
+  while (!error) {
+    const bool room = have < text.size();
+    const ssize_t n = room ? ::read(fd, text.data() + have, text.size() - have) : ::read(fd, piece, sizeof piece);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) error = errno;
+    if (n <= 0) break;
+    if (!room) text.append(piece, static_cast<size_t>(n));
+    have += static_cast<size_t>(n);
+    if (have > limit.bytes) error = EFBIG;
+  }
+  ::close(fd);
+  if (error) return std::nullopt;
+  text.resize(have);
+  return text;
+}
+
+std::string read_error(int error, const FileLimit& limit) {
+  switch (error) {
+    case EISDIR: return "it is a directory";
+    case EFBIG: return fmt::format("it holds more than {} bytes, the most ncc reads of {}", limit.bytes, limit.what);
+    case EINVAL: return "it is not a regular file";
+    default: return std::strerror(error);
+  }
+}
+
+std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, Diagnostics& diags,
+                                     SourceRange at) {
+  int error = 0;
+  auto text = read_file(path, limit, error);
+  if (!text) diags.report(DiagId::FileUnreadable, at, path, read_error(error, limit));
   return text;
 }
 

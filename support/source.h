@@ -53,8 +53,28 @@ class SourceManager {
   std::deque<SourceFile> files_;
 };
 
-// The bytes of the file at `path` in one string, read straight into it (a pipe or a
-// device too, piece by piece); nothing if it cannot be opened or read (errno says why).
-std::optional<std::string> read_file(const std::string& path);
+class Diagnostics;
+
+// The most bytes ncc reads of a kind of file, what the kind is (for the message) and
+// whether it must be a regular file (never a device or a pipe, which could hang a read).
+struct FileLimit {
+  uint64_t bytes;
+  std::string_view what;
+  bool regular_only = false;
+};
+// A program or bytecode file: every position in it, and one past its end, is a 32-bit
+// number (line starts, columns, lengths, code offsets).
+inline constexpr FileLimit kProgramFile{UINT32_MAX - 1, "a program file (positions in it are 32-bit)"};
+
+// The bytes of the file at `path`, read straight into one string (a pipe or a device
+// too, piece by piece). Nothing if it cannot be read, and why in `error`: EISDIR a
+// directory, EFBIG more than `limit` bytes (a regular file's size is checked before it
+// is read), EINVAL not a regular file where `limit` wants one, or the system's errno.
+std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, int& error);
+// Why read_file gave nothing, as a message says it: "it is a directory".
+std::string read_error(int error, const FileLimit& limit);
+// read_file, reporting why not at `at` (NC6001).
+std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, Diagnostics& diags,
+                                     SourceRange at = {});
 
 }  // namespace ncc

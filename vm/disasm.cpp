@@ -15,7 +15,9 @@ namespace ncc::vm {
 namespace {
 
 constexpr std::string_view kFormatNames[] = {"bit", "byte", "int16", "int32", "float", "double"};
+static_assert(std::size(kFormatNames) == static_cast<size_t>(MemFormat::Count));
 constexpr std::string_view kTypeNames[] = {"long_real", "real", "byte", "integer", "long", "thousandths"};
+static_assert(std::size(kTypeNames) == kShownTypes);
 
 
 std::string source_text(const Module& m, uint32_t source) {
@@ -34,6 +36,37 @@ std::string calls_text(const CodeDesc& c) {
     if (call.fn == Fn::WorkOffset || call.fn == Fn::Cycle) s += fmt::format("({})", call.arg);
   }
   return s;
+}
+
+// An operand as text, by its kind (verified: in range).
+std::string operand_text(const Module& m, Operand kind, uint32_t v, uint32_t places) {
+  switch (kind) {
+    case Operand::Number: return shortest(m.numbers[v]);
+    case Operand::String: return "\"" + json_escape(m.strings[v]) + "\"";
+    case Operand::Code: return m.semantics.codes[v].name;
+    case Operand::Slot: return slot_name(static_cast<int>(v));
+    case Operand::Target: return fmt::format("-> {}", v);
+    case Operand::Entry: return m.entries[v].name;
+    case Operand::Space: return m.spaces[v].name;
+    case Operand::Index: return fmt::format("[{}]", v);
+    case Operand::Builtin: return std::string(builtin_info(static_cast<Builtin>(v)).name);
+    case Operand::Format: return std::string(kFormatNames[v]);
+    case Operand::Type: return std::string(kTypeNames[v]);
+    case Operand::Bytes:
+    case Operand::Relation:
+    case Operand::LoopDepth:
+    case Operand::Rule: return fmt::format("{}", v);
+    case Operand::SysVar: {
+      const SysRef ref = SysRef::unpack(static_cast<uint16_t>(v));
+      std::string s(sys_name(ref.var));
+      if (sys_indices(ref.var) > 1) s += fmt::format("[{}]", ref.index);
+      return s;
+    }
+    case Operand::Places: break;  // shown with its digits
+    case Operand::Digits: return shortest(decimal(places, static_cast<int32_t>(v)));
+    case Operand::Count: break;
+  }
+  return "?";
 }
 
 }  // namespace
@@ -77,34 +110,12 @@ std::string disassemble(const Module& m) {
     for (char f : info.format) {
       uint32_t v = read_operand(&m.code[at], operand_size(f));
       at += static_cast<uint32_t>(operand_size(f));
-      if (f == 'p') {  // shown with its digits: WORDDEC X, 12.5
+      if (operand_kind(f) == Operand::Places) {  // shown with its digits: WORDDEC X, 12.5
         places = v;
         continue;
       }
       if (!operands.empty()) operands += ", ";
-      switch (f) {
-        case 'm': operands += shortest(decimal(places, static_cast<int32_t>(v))); break;
-        case 'k': operands += fmt::format("{}", shortest(m.numbers[v])); break;
-        case 's': operands += "\"" + json_escape(m.strings[v]) + "\""; break;
-        case 'c': operands += m.semantics.codes[v].name; break;
-        case 'w': operands += slot_name(v); break;
-        case 'j': operands += fmt::format("-> {}", v); break;
-        case 'e': operands += m.entries[v].name; break;
-        case 'v': operands += m.spaces[v].name; break;
-        case 'i': operands += fmt::format("[{}]", v); break;
-        case 'b': operands += builtin_info(static_cast<Builtin>(v)).name; break;
-        case 'f': operands += std::string(kFormatNames[v]); break;
-        case 't': operands += std::string(kTypeNames[v]); break;
-        case 'n':
-        case 'd':
-        case 'r': operands += fmt::format("{}", v); break;
-        case 'y': {
-          SysRef ref = SysRef::unpack(static_cast<uint16_t>(v));
-          operands += std::string(sys_name(ref.var));
-          if (sys_indices(ref.var) > 1) operands += fmt::format("[{}]", ref.index);
-          break;
-        }
-      }
+      operands += operand_text(m, operand_kind(f), v, places);
     }
     // A name of ten letters or more keeps a blank before its operands.
     out += fmt::format("{:5}  {:<10}{}{}\n", pc, info.name, info.name.size() >= 10 && !operands.empty() ? " " : "", operands);

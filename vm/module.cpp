@@ -4,8 +4,12 @@
 #include <cmath>
 #include <array>
 #include <map>
+#include <cerrno>
+#include <cstring>
+#include <unistd.h>
 
 #include "opcodes.h"
+#include "runtime/asset_store.h"
 #include "runtime/system_vars.h"
 #include "stdlib/builtins.h"
 #include "support/bytes.h"
@@ -316,13 +320,16 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   return !r.failed();
 }
 
-bool read_sources(ByteReader& r, SourceMap& m) {
+// The section's bytes: the files, then the blocks, which the map keeps as they are.
+bool read_sources(std::string bytes, SourceMap& m) {
+  ByteReader r(bytes);
   uint32_t n = 0;
   if (!count(r, 4, n)) return false;
   m.files.resize(n);
   for (std::string& f : m.files) f = r.str();
   if (!count(r, 7, n)) return false;
-  return m.read(r, n) && !r.failed();
+  bytes.erase(0, r.pos());
+  return m.read(std::move(bytes), n);
 }
 
 bool read_section(uint32_t t, ByteReader& r, Module& m) {
@@ -341,9 +348,6 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
     if (!count(r, 4, n)) return false;
     m.strings.resize(n);
     for (std::string& s : m.strings) s = r.str();
-  } else if (t == kCode) {
-    std::string_view bytes = r.bytes(r.remaining());
-    m.code.assign(bytes.begin(), bytes.end());
   } else if (t == kLine) {
     if (!count(r, 2, n)) return false;
     m.lines.resize(n);
@@ -383,11 +387,75 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
         if (!enum_value(r, VarType::Unavailable, range.type)) return false;
       }
     }
-  } else if (t == kSrcs) {
-    return read_sources(r, m.source_map);
   }
   return !r.failed();
 }
+
+// The range of each operand kind of opcodes.h (NCC_OPERANDS) in a module, one
+// function a kind: `fits` calls them through the table, so a kind added there does not
+// build until it has its rule here.
+class OperandRanges {
+ public:
+  OperandRanges(const Module& m, Op op) : m_(m), op_(op) {}
+  bool fits(Operand kind, uint32_t v) {
+    switch (kind) {
+#define NCC_OPERAND_FITS(kind, letter, size, doc) \
+  case Operand::kind: return fits_##kind(v);
+      NCC_OPERANDS(NCC_OPERAND_FITS)
+#undef NCC_OPERAND_FITS
+      case Operand::Count: break;
+    }
+    return false;
+  }
+  int targets = 0;  // the Target operands seen so far
+
+ private:
+#define NCC_OPERAND_RULE(kind, letter, size, doc) bool fits_##kind(uint32_t v);
+  NCC_OPERANDS(NCC_OPERAND_RULE)
+#undef NCC_OPERAND_RULE
+
+  const Module& m_;
+  Op op_;
+  uint32_t space_ = 0;  // the Space operand before an Index
+};
+
+bool OperandRanges::fits_Number(uint32_t v) { return v < m_.numbers.size(); }
+// The ASSET statements name their file by a string: a name the store takes (the VM
+// prints it in the trace as it is).
+bool OperandRanges::fits_String(uint32_t v) {
+  const bool file = op_ == Op::AssetOpen || op_ == Op::AssetOpenWrite || op_ == Op::AssetCreate || op_ == Op::AssetDelete;
+  return v < m_.strings.size() && (!file || asset::parse_file_name(m_.strings[v], 1));
+}
+bool OperandRanges::fits_Code(uint32_t v) { return v < m_.semantics.codes.size(); }
+bool OperandRanges::fits_Slot(uint32_t v) { return v < kWordSlots; }
+bool OperandRanges::fits_Target(uint32_t) {  // on an instruction: checked once every instruction is known
+  ++targets;
+  return true;
+}
+bool OperandRanges::fits_Entry(uint32_t v) {
+  return v < m_.entries.size() && (m_.entries[v].kind == EntryKind::Process) == (op_ == Op::ProcStart);
+}
+// Numbered variables go through Load/Store, memories through the others.
+bool OperandRanges::fits_Space(uint32_t v) {
+  const bool numbered = op_ == Op::Load || op_ == Op::LoadX || op_ == Op::Store || op_ == Op::StoreX ||
+                        op_ == Op::Arg || op_ == Op::AssetBind;
+  space_ = v;
+  return v < m_.spaces.size() && m_.spaces[v].memory != numbered;
+}
+bool OperandRanges::fits_Index(uint32_t v) { return space_ < m_.spaces.size() && v < m_.spaces[space_].size; }
+bool OperandRanges::fits_Builtin(uint32_t v) {
+  return v < static_cast<uint32_t>(Builtin::Count) &&
+         builtin_info(static_cast<ncc::Builtin>(v)).arity == (op_ == Op::Call1 ? 1 : 2);
+}
+bool OperandRanges::fits_Format(uint32_t v) { return v < static_cast<uint32_t>(MemFormat::Count); }
+bool OperandRanges::fits_Bytes(uint32_t v) { return v > 0; }
+bool OperandRanges::fits_Relation(uint32_t v) { return v >= 1 && v <= 4; }
+bool OperandRanges::fits_Type(uint32_t v) { return v < kShownTypes; }
+bool OperandRanges::fits_SysVar(uint32_t v) { return SysRef::unpack(static_cast<uint16_t>(v)).valid(); }
+bool OperandRanges::fits_LoopDepth(uint32_t) { return true; }  // the VM closes only the loops it has
+bool OperandRanges::fits_Rule(uint32_t v) { return v < m_.semantics.value_rules.size(); }
+bool OperandRanges::fits_Places(uint32_t v) { return v <= kMaxDecimalPlaces; }
+bool OperandRanges::fits_Digits(uint32_t) { return true; }  // any i32
 
 }  // namespace
 
@@ -441,7 +509,78 @@ bool write_module(const Module& m, std::FILE* out) {
          std::fseek(out, 0, SEEK_END) == 0;
 }
 
-std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags) {
+namespace {
+
+// The bytes of a bytecode file as read_module takes them, in order: all in memory, or
+// from a file a section at a time (so that the file is never held beside the module).
+// The checksum runs over every byte after the header.
+class ModuleInput {
+ public:
+  virtual ~ModuleInput() = default;
+  // The next n bytes into `out` (through the checksum unless `sum` is false); false
+  // if fewer remain.
+  bool take(size_t n, void* out, bool sum = true) {
+    if (n > remaining() || !read(n, out)) return false;
+    if (sum) crc_ = crc32({static_cast<const uint8_t*>(out), n}, crc_);
+    return true;
+  }
+  // Whatever is left, through the checksum; false if it could not be read.
+  bool skip_rest() {
+    char piece[1 << 16];
+    while (remaining() > 0)
+      if (!take(std::min<uint64_t>(remaining(), sizeof piece), piece)) return false;
+    return true;
+  }
+  virtual uint64_t remaining() const = 0;
+  uint32_t crc() const { return crc_; }
+
+ private:
+  virtual bool read(size_t n, void* out) = 0;
+  uint32_t crc_ = 0;
+};
+
+class MemoryInput final : public ModuleInput {
+ public:
+  explicit MemoryInput(std::string_view bytes) : bytes_(bytes) {}
+  uint64_t remaining() const override { return bytes_.size(); }
+
+ private:
+  bool read(size_t n, void* out) override {
+    std::memcpy(out, bytes_.data(), n);
+    bytes_.remove_prefix(n);
+    return true;
+  }
+  std::string_view bytes_;
+};
+
+class FileInput final : public ModuleInput {
+ public:
+  FileInput(int fd, uint64_t size) : fd_(fd), left_(size) {}
+  uint64_t remaining() const override { return left_; }
+
+ private:
+  bool read(size_t n, void* out) override {
+    for (size_t got = 0; got < n;) {
+      const ssize_t r = ::read(fd_, static_cast<char*>(out) + got, n - got);
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0) return false;
+      got += static_cast<size_t>(r);
+    }
+    left_ -= n;
+    return true;
+  }
+  int fd_;
+  uint64_t left_;
+};
+
+std::optional<Module> read_module(ModuleInput& in, const std::string& name, Diagnostics& diags) {
+  char head[kHeaderSize];
+  const size_t have = static_cast<size_t>(std::min<uint64_t>(in.remaining(), kHeaderSize));
+  if (!in.take(have, head, false)) {
+    diags.report(DiagId::FileUnreadable, {}, name, std::strerror(errno));
+    return std::nullopt;
+  }
+  const std::string_view bytes(head, have);
   if (bytes.substr(0, 4) != kMagic) {
     diags.report(DiagId::BytecodeUnreadable, {}, name, "it does not start with the magic \"NCCB\"");
     return std::nullopt;
@@ -463,38 +602,73 @@ std::optional<Module> read_module(std::string_view bytes, const std::string& nam
     diags.report(DiagId::BytecodeInvalid, {}, name, fmt::format("its header has unknown flags {:#06x}", flags));
     return std::nullopt;
   }
-  std::string_view body = bytes.substr(kHeaderSize);
-  uint32_t actual = crc32({reinterpret_cast<const uint8_t*>(body.data()), body.size()});
-  if (actual != stored) {
-    diags.report(DiagId::BytecodeChecksum, {}, name, stored, actual);
+  // The sections as they come; the first problem is reported once the checksum is
+  // known, which takes precedence (a damaged file is damaged, whatever it looks like).
+  Module m;
+  std::string problem;
+  std::map<uint32_t, bool> seen;
+  std::string buffer;
+  for (uint32_t i = 0; i < section_count && problem.empty(); ++i) {
+    char tag_size[8];
+    if (!in.take(sizeof tag_size, tag_size)) {
+      problem = fmt::format("section {} is truncated", i);
+      break;
+    }
+    ByteReader r({tag_size, sizeof tag_size});
+    const uint32_t t = r.u32(), size = r.u32();
+    if (size > in.remaining()) problem = fmt::format("section {} is truncated", i);
+    else if (std::find(kSections.begin(), kSections.end(), t) == kSections.end())
+      problem = fmt::format("unknown section '{}'", tag_name(t));
+    else if (seen[t]) problem = fmt::format("section '{}' appears twice", tag_name(t));
+    else if (i >= kSections.size() || kSections[i] != t) problem = fmt::format("section '{}' is out of order", tag_name(t));
+    if (!problem.empty()) break;
+    seen[t] = true;
+    bool ok = false;
+    if (t == kCode) {  // straight into the module
+      m.code.resize(size);
+      ok = in.take(size, m.code.data());
+    } else {
+      buffer.resize(size);
+      ok = in.take(size, buffer.data());
+      if (t == kSrcs) {
+        ok = ok && read_sources(std::move(buffer), m.source_map);
+      } else {
+        ByteReader section(buffer);
+        ok = ok && read_section(t, section, m) && section.at_end();
+      }
+    }
+    if (!ok) problem = fmt::format("section '{}' is malformed", tag_name(t));
+  }
+  if (problem.empty() && in.remaining() > 0) problem = "bytes follow the last section";
+  if (!in.skip_rest()) {
+    diags.report(DiagId::FileUnreadable, {}, name, std::strerror(errno));
     return std::nullopt;
   }
-  Module m;
-  ByteReader r(body);
-  std::map<uint32_t, bool> seen;
+  if (in.crc() != stored) {
+    diags.report(DiagId::BytecodeChecksum, {}, name, stored, in.crc());
+    return std::nullopt;
+  }
   auto invalid = [&](const std::string& why) {
     diags.report(DiagId::BytecodeInvalid, {}, name, why);
     return std::nullopt;
   };
-  for (uint32_t i = 0; i < section_count; ++i) {
-    uint32_t t = r.u32();
-    uint32_t size = r.u32();
-    if (r.failed() || size > r.remaining()) return invalid(fmt::format("section {} is truncated", i));
-    if (std::find(kSections.begin(), kSections.end(), t) == kSections.end())
-      return invalid(fmt::format("unknown section '{}'", tag_name(t)));
-    if (seen[t]) return invalid(fmt::format("section '{}' appears twice", tag_name(t)));
-    if (i >= kSections.size() || kSections[i] != t)
-      return invalid(fmt::format("section '{}' is out of order", tag_name(t)));
-    seen[t] = true;
-    ByteReader section(r.bytes(size));
-    if (!read_section(t, section, m) || !section.at_end())
-      return invalid(fmt::format("section '{}' is malformed", tag_name(t)));
-  }
-  if (!r.at_end()) return invalid("bytes follow the last section");
+  if (!problem.empty()) return invalid(problem);
   for (uint32_t t : kSections)
     if (!seen[t]) return invalid(fmt::format("section '{}' is missing", tag_name(t)));
-  if (std::string problem = verify(m); !problem.empty()) return invalid(problem);
+  if (std::string why = verify(m); !why.empty()) return invalid(why);
   return m;
+}
+
+}  // namespace
+
+std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags) {
+  MemoryInput in(bytes);
+  return read_module(in, name, diags);
+}
+
+std::optional<Module> read_module(int fd, uint64_t size, const std::string& name, Diagnostics& diags) {
+  FileInput in(fd, size);
+  return read_module(in, name, diags);
 }
 
 std::string verify(const Module& m) {
@@ -578,61 +752,57 @@ std::string verify(const Module& m) {
 
   // Instructions: every opcode known, every operand in range.
   const std::vector<uint8_t>& code = m.code;
-  std::vector<bool> boundary(code.size() + 1, false);
   std::vector<std::pair<uint32_t, uint32_t>> jumps;  // (pc, target)
   std::vector<uint32_t> range_ends;                   // second targets of CallRange
   for (size_t pc = 0; pc < code.size();) {
-    boundary[pc] = true;
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
     Op op = static_cast<Op>(code[pc]);
     const OpInfo& info = op_info(op);
     size_t size = static_cast<size_t>(instruction_size(op));
     if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info.name, pc);
+    OperandRanges ranges(m, op);
     size_t at = pc + 1;
-    uint8_t space = 0;
-    // Numbered variables go through Load/Store, memories through the others.
-    const bool wants_memory =
-        op != Op::Load && op != Op::LoadX && op != Op::Store && op != Op::StoreX && op != Op::Arg && op != Op::AssetBind;
-    for (size_t i = 0; i < info.format.size(); ++i) {
-      const char f = info.format[i];
-      uint32_t v = read_operand(&code[at], operand_size(f));
+    for (char f : info.format) {
+      const uint32_t v = read_operand(&code[at], operand_size(f));
       at += static_cast<size_t>(operand_size(f));
-      bool ok = true;
-      switch (f) {
-        case 'k': ok = v < m.numbers.size(); break;
-        case 's': ok = v < m.strings.size(); break;
-        case 'c': ok = v < s.codes.size(); break;
-        case 'w': ok = v < kWordSlots; break;
-        case 'e': ok = v < m.entries.size() && (m.entries[v].kind == EntryKind::Process) == (op == Op::ProcStart); break;
-        case 'v':
-          ok = v < m.spaces.size() && m.spaces[v].memory == wants_memory;
-          space = static_cast<uint8_t>(v);
-          break;
-        case 'i': ok = v < m.spaces[space].size; break;
-        case 'b':
-          ok = v < static_cast<uint32_t>(Builtin::Count) &&
-               builtin_info(static_cast<Builtin>(v)).arity == (op == Op::Call1 ? 1 : 2);
-          break;
-        case 'f': ok = v < static_cast<uint32_t>(MemFormat::Count); break;
-        case 't': ok = v < static_cast<uint32_t>(VarType::Count); break;
-        case 'n': ok = v > 0; break;
-        case 'd': ok = true; break;
-        case 'r': ok = v < m.semantics.value_rules.size(); break;
-        case 'p': ok = v <= kMaxDecimalPlaces; break;
-        case 'm': ok = true; break;
-        case 'y': ok = SysRef::unpack(static_cast<uint16_t>(v)).valid(); break;
-        case 'j':
-          if (op == Op::CallRange && i == 1) range_ends.push_back(v);
-          else jumps.emplace_back(static_cast<uint32_t>(pc), v);
-          break;
+      if (!ranges.fits(operand_kind(f), v))
+        return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
+      if (operand_kind(f) == Operand::Target) {
+        if (op == Op::CallRange && ranges.targets == 2) range_ends.push_back(v);
+        else jumps.emplace_back(static_cast<uint32_t>(pc), v);
       }
-      if (!ok) return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
     }
     pc += size;
   }
+  for (size_t i = 0; i < m.lines.size(); ++i) {
+    if (i > 0 && m.lines[i].pc <= m.lines[i - 1].pc) return "the line table is not in code order";
+    if (m.lines[i].source >= map.size()) return "the line table names a block that does not exist";
+  }
+
+  // The landings: where control arrives other than from the instruction before (jump
+  // targets, entry points, range ends), each once, in code order. The verifier keeps
+  // what it knows of them alone, never a byte per byte of code: a second walk over
+  // the code finds those that are not instructions, and the line table's.
+  std::vector<uint32_t> landings;
+  for (auto [from, to] : jumps) landings.push_back(to);
+  for (const Entry& e : m.entries) landings.push_back(e.pc);
+  landings.insert(landings.end(), range_ends.begin(), range_ends.end());
+  std::sort(landings.begin(), landings.end());
+  landings.erase(std::unique(landings.begin(), landings.end()), landings.end());
+  std::vector<uint32_t> between;  // the landings inside an instruction or past the code, in order
+  size_t next_landing = 0, next_line = 0;
+  for (size_t pc = 0; pc < code.size(); pc += static_cast<size_t>(instruction_size(static_cast<Op>(code[pc])))) {
+    for (; next_landing < landings.size() && landings[next_landing] <= pc; ++next_landing)
+      if (landings[next_landing] < pc) between.push_back(landings[next_landing]);
+    if (next_line < m.lines.size() && m.lines[next_line].pc < pc) return "the line table points between instructions";
+    if (next_line < m.lines.size() && m.lines[next_line].pc == pc) ++next_line;
+  }
+  between.insert(between.end(), landings.begin() + static_cast<std::ptrdiff_t>(next_landing), landings.end());
+  if (next_line < m.lines.size()) return "the line table points between instructions";
+
   // Every loop and every call passes a Step, so --max-steps bounds every run: a
   // jump backwards, and every entry point, lands on a Step.
-  auto at_boundary = [&](uint32_t pc) { return pc < code.size() && boundary[pc]; };
+  auto at_boundary = [&](uint32_t pc) { return pc < code.size() && !std::binary_search(between.begin(), between.end(), pc); };
   auto at_step = [&](uint32_t pc) { return at_boundary(pc) && code[pc] == static_cast<uint8_t>(Op::Step); };
   for (auto [from, to] : jumps) {
     if (!at_boundary(to)) return fmt::format("a jump goes to {}, which is not an instruction", to);
@@ -648,61 +818,66 @@ std::string verify(const Module& m) {
   for (uint32_t end : range_ends)
     if (!at_boundary(end) || code[end] != static_cast<uint8_t>(Op::RangeEnd))
       return fmt::format("a range ends at {}, which is not a RangeEnd", end);
-  for (size_t i = 0; i < m.lines.size(); ++i) {
-    if (!at_boundary(m.lines[i].pc)) return "the line table points between instructions";
-    if (i > 0 && m.lines[i].pc <= m.lines[i - 1].pc) return "the line table is not in code order";
-    if (m.lines[i].source >= map.size()) return "the line table names a block that does not exist";
-  }
 
   // The stack: each instruction is reached with one depth, never below its pops,
-  // never above kMaxStack, and no path runs off the end of the code.
+  // never above kMaxStack, and no path runs off the end of the code. The depth is
+  // kept at the landings: from one to the next, control goes from each instruction to
+  // the one after it, and each such stretch is walked once, from the landing that
+  // starts it.
   static_assert(kMaxStack < INT16_MAX);
-  std::vector<int16_t> depth(code.size(), -1);
-  std::vector<uint32_t> work;
+  std::vector<int16_t> depth(landings.size(), -1);
+  std::vector<size_t> work;
+  auto landing = [&](uint32_t pc) {
+    return static_cast<size_t>(std::lower_bound(landings.begin(), landings.end(), pc) - landings.begin());
+  };
+  std::string problem;
+  auto arrive = [&](size_t i, int d) {  // control arrives at landing i with d values
+    if (depth[i] == -1) {
+      depth[i] = static_cast<int16_t>(d);
+      work.push_back(i);
+    } else if (depth[i] != d) {
+      problem = fmt::format("the stack depth at {} differs between paths ({} and {})", landings[i], depth[i], d);
+    }
+    return problem.empty();
+  };
   for (const Entry& e : m.entries) {
-    if (depth[e.pc] > 0) return fmt::format("entry point {} is reached with values on the stack", e.name);
-    depth[e.pc] = 0;
-    work.push_back(e.pc);
+    if (depth[landing(e.pc)] > 0) return fmt::format("entry point {} is reached with values on the stack", e.name);
+    arrive(landing(e.pc), 0);
   }
   while (!work.empty()) {
-    uint32_t pc = work.back();
+    const size_t from = work.back();
     work.pop_back();
-    Op op = static_cast<Op>(code[pc]);
-    const OpInfo& info = op_info(op);
-    int d = depth[pc];
-    if (d < info.pop) return fmt::format("{} at {} pops more values than the stack holds", info.name, pc);
-    d = d - info.pop + info.push;
-    if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
-    if ((op == Op::Return || op == Op::End || op == Op::CallRange || op == Op::RangeEnd) && d != 0)
-      return fmt::format("{} at {} leaves {} values on the stack", info.name, pc, d);
-    const uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
-    uint32_t successors[2];
-    size_t count = 0;
-    switch (op) {
-      case Op::Jump: successors[count++] = read_operand(&code[pc + 1], 4); break;
-      case Op::JumpIf:
-      case Op::JumpIfNot:
-      case Op::JumpSkip:
-      case Op::Repeat:
-      case Op::EndRepeat:
-      case Op::CallRange:
-        successors[count++] = read_operand(&code[pc + 1], 4);
-        successors[count++] = next;
-        break;
-      case Op::Return:
-      case Op::End:
-      case Op::NoBlock: break;
-      default: successors[count++] = next;
-    }
-    for (size_t i = 0; i < count; ++i) {
-      const uint32_t to = successors[i];
-      if (to >= code.size()) return fmt::format("execution can run past the end of the code after {}", pc);
-      if (depth[to] == -1) {
-        depth[to] = static_cast<int16_t>(d);
-        work.push_back(to);
-      } else if (depth[to] != d) {
-        return fmt::format("the stack depth at {} differs between paths ({} and {})", to, depth[to], d);
+    uint32_t pc = landings[from];
+    int d = depth[from];
+    for (size_t after = from + 1;;) {  // after: the first landing after pc
+      Op op = static_cast<Op>(code[pc]);
+      const OpInfo& info = op_info(op);
+      if (d < info.pop) return fmt::format("{} at {} pops more values than the stack holds", info.name, pc);
+      d = d - info.pop + info.push;
+      if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
+      if ((op == Op::Return || op == Op::End || op == Op::CallRange || op == Op::RangeEnd) && d != 0)
+        return fmt::format("{} at {} leaves {} values on the stack", info.name, pc, d);
+      switch (op) {
+        case Op::Jump:
+        case Op::JumpIf:
+        case Op::JumpIfNot:
+        case Op::JumpSkip:
+        case Op::Repeat:
+        case Op::EndRepeat:
+        case Op::CallRange:  // the first operand: a landing, checked above
+          if (!arrive(landing(read_operand(&code[pc + 1], 4)), d)) return problem;
+          break;
+        default: break;
       }
+      if (op == Op::Jump || op == Op::Return || op == Op::End || op == Op::NoBlock) break;
+      const uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
+      if (next >= code.size()) return fmt::format("execution can run past the end of the code after {}", pc);
+      while (after < landings.size() && landings[after] < next) ++after;
+      if (after < landings.size() && landings[after] == next) {
+        if (!arrive(after, d)) return problem;
+        break;
+      }
+      pc = next;
     }
   }
   return {};

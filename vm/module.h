@@ -60,6 +60,9 @@ std::string write_module(const Module& m);
 bool write_module(const Module& m, std::FILE* out);
 // Parses, checks the checksum and verifies; reports and returns nothing on failure.
 std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags);
+// The same from the `size` bytes of the file open at `fd`, read a section at a time:
+// loading holds the module, not the file beside it.
+std::optional<Module> read_module(int fd, uint64_t size, const std::string& name, Diagnostics& diags);
 // "" when the module is sound, else the first problem found.
 std::string verify(const Module& m);
 std::string disassemble(const Module& m);

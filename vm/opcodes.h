@@ -1,17 +1,9 @@
 // The ncc VM instruction set. This page is the whole VM: read it first.
 //
 // Code is a byte string. Each instruction is an opcode byte followed by its
-// operands, little-endian, as its format says:
-//   k  u32  index into the number constants      s  u32  index into the strings
-//   c  u16  index into the program's codes        w  u8   word slot (runtime/word_slots.h)
-//   j  u32  code offset of an instruction         e  u16  index into the entry points
-//   v  u8   variable space                        i  u32  variable index
-//   b  u8   builtin function (stdlib/builtins.h)  f  u8   memory format (variables.h)
-//   n  u8   a count                               t  u8   value type (variables.h)
-//   y  u16  system variable: its number << 8 | its index (runtime/system_vars.def)
-//   d  u8   a repeat-loop depth (0: outside every loop)
-//   r  u8   index into the program's value rules (ProgramSemantics::value_rules)
-//   p  u8   decimal places 0..9, then  m  i32  the digits: the number m / 10^p
+// operands, little-endian, as its format says: one letter an operand, of the kinds
+// NCC_OPERANDS lists below (its letter, its size and its meaning). The verifier checks
+// the range of every operand by its kind (vm/module.cpp), the disassembler prints it.
 // `pop` and `push` are the fixed stack effects the verifier checks.
 //
 // A machine block is built up and then run: CODE and WORD/WORDPOP fill the pending
@@ -38,6 +30,35 @@
 #include <string_view>
 
 namespace ncc::vm {
+
+// The operand kinds: name, letter, bytes, what the value is (and the range the verifier
+// allows it).
+#define NCC_OPERANDS(X)                                                                          \
+  X(Number, 'k', 4, "index into the number constants")                                         \
+  X(String, 's', 4, "index into the strings (an ASSET statement's: a file name, docs/asset.md)") \
+  X(Code, 'c', 2, "index into the program's codes")                                             \
+  X(Slot, 'w', 1, "word slot (runtime/word_slots.h)")                                           \
+  X(Target, 'j', 4, "code offset of an instruction")                                            \
+  X(Entry, 'e', 2, "index into the entry points (ProcStart: a process entry; others: not one)") \
+  X(Space, 'v', 1, "variable space (Load, Store, Arg, AssetBind: numbered; others: a memory)")  \
+  X(Index, 'i', 4, "variable index, below the size of the space before it")                     \
+  X(Builtin, 'b', 1, "builtin function of the instruction's arity (stdlib/builtins.h)")         \
+  X(Format, 'f', 1, "memory format (variables.h)")                                              \
+  X(Bytes, 'n', 1, "a count of bytes, 1..255")                                                  \
+  X(Relation, 'q', 1, "a comparison: 1 =, 2 <, 3 >, 4 not =")                                   \
+  X(Type, 't', 1, "value type a value is shown as (variables.h), not Unavailable")              \
+  X(SysVar, 'y', 2, "system variable: its number << 8 | its index (runtime/system_vars.def)")  \
+  X(LoopDepth, 'd', 1, "a repeat-loop depth (0: outside every loop)")                           \
+  X(Rule, 'r', 1, "index into the program's value rules (ProgramSemantics::value_rules)")       \
+  X(Places, 'p', 1, "decimal places 0..9, then")                                                \
+  X(Digits, 'm', 4, "the digits, an i32: the number m / 10^p")
+
+enum class Operand : uint8_t {
+#define NCC_OPERAND_ENUM(kind, letter, size, doc) kind,
+  NCC_OPERANDS(NCC_OPERAND_ENUM)
+#undef NCC_OPERAND_ENUM
+  Count
+};
 
 #define NCC_OPCODES(X)                                                                         \
   X(Nop, "", 0, 0, "do nothing")                                                               \
@@ -135,7 +156,7 @@ namespace ncc::vm {
   X(ProcStart, "e", 1, 0, "pop a process; start process entry e in it once it is free (NC-110 EXE)") \
   X(ProcRelease, "", 0, 0, "end the program: its process is free (NC-110 REL)")              \
   X(ProcWait, "", 1, 0, "pop a process; wait for a restart from it (NC-110 WAI)")             \
-  X(ProcWaitUntil, "vfns", 2, 0, "pop a value, an index; wait until memory v (format f) there relates to it by n (1 = 2 < 3 > 4 not =); s: as written") \
+  X(ProcWaitUntil, "vfqs", 2, 0, "pop a value, an index; wait until memory v (format f) there relates to it by q; s: as written") \
   X(ProcSignal, "", 1, 0, "pop a process; restart it once it waits for this one (NC-110 SND)")
 
 enum class Op : uint8_t {
@@ -154,14 +175,31 @@ struct OpInfo {
 };
 
 const OpInfo& op_info(Op op);
-// Bytes an operand of this format character takes.
-constexpr int operand_size(char f) {
-  switch (f) {
-    case 'k': case 's': case 'j': case 'i': case 'm': return 4;
-    case 'c': case 'e': case 'y': return 2;
-    default: return 1;  // w v b f n t d r p
-  }
+// The kind of an operand letter (Operand::Count: no kind has it).
+constexpr Operand operand_kind(char letter) {
+#define NCC_OPERAND_KIND(kind, l, size, doc) \
+  if (letter == l) return Operand::kind;
+  NCC_OPERANDS(NCC_OPERAND_KIND)
+#undef NCC_OPERAND_KIND
+  return Operand::Count;
 }
+// Bytes an operand of this letter takes.
+constexpr int operand_size(char letter) {
+#define NCC_OPERAND_SIZE(kind, l, size, doc) \
+  if (letter == l) return size;
+  NCC_OPERANDS(NCC_OPERAND_SIZE)
+#undef NCC_OPERAND_SIZE
+  return 0;
+}
+constexpr bool known_operands(std::string_view format) {
+  for (char f : format)
+    if (operand_kind(f) == Operand::Count) return false;
+  return true;
+}
+#define NCC_OP_FORMAT_CHECK(name, format, pop, push, doc) \
+  static_assert(known_operands(format), #name "'s format has a letter of no operand kind");
+NCC_OPCODES(NCC_OP_FORMAT_CHECK)
+#undef NCC_OP_FORMAT_CHECK
 // The size of a whole instruction with opcode `op` (inline: the VM steps by it).
 constexpr int operand_bytes(std::string_view format) {
   int size = 0;

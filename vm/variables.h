@@ -15,6 +15,8 @@ namespace ncc {
 // types and Thousandths round half away from zero; a value out of range is an error.
 // Unavailable: no variable has these numbers (Macro B #34-#99); using one is an error.
 enum class VarType : uint8_t { LongReal, Real, Byte, Integer, Long, Thousandths, Unavailable, Count };
+// The types a value may be shown as (NC-110 DIS): those a variable holds.
+constexpr uint32_t kShownTypes = static_cast<uint32_t>(VarType::Unavailable);
 
 // The formats of a byte-addressed memory (NC-110 §2.10.5, Table 2.7): a bit, a byte,
 // 16 and 32-bit integers, IEEE float and double, little-endian. The index of a

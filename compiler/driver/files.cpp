@@ -256,12 +256,24 @@ class Files {
   int init(const std::string& dir) {
     for (int d = -1; d < asset::kDevices; ++d) {
       const std::string path = d < 0 ? dir : fmt::format("{}/MP{}", dir, d);
-      if (::mkdir(path.c_str(), 0755) != 0 && errno != EEXIST) {
-        diags_.report(DiagId::FileUnwritable, {}, path, std::strerror(errno));
+      if (std::string why = folder_problem(path, d >= 0); !why.empty()) {
+        diags_.report(DiagId::FileUnwritable, {}, path, why);
         return finish(kUsage);
       }
     }
     return finish(kOk);
+  }
+
+  // Why `path` cannot be a folder of the sandbox, made if it is missing ("" if it can).
+  // A device's must not be a link: the store follows none (the device would not be
+  // connected, code 15).
+  static std::string folder_problem(const std::string& path, bool device) {
+    if (::mkdir(path.c_str(), 0755) == 0) return "";
+    if (errno != EEXIST) return std::strerror(errno);
+    struct stat st;
+    if ((device ? ::lstat(path.c_str(), &st) : ::stat(path.c_str(), &st)) != 0) return std::strerror(errno);
+    if (S_ISLNK(st.st_mode)) return "it is a symbolic link, which the sandbox does not follow";
+    return S_ISDIR(st.st_mode) ? "" : "it is not a directory";
   }
 
   bool open(const std::string& dir) {
@@ -317,11 +329,10 @@ class Files {
   int load(const std::vector<std::string>& texts) {
     std::vector<std::pair<FileName, File>> files;
     for (const std::string& path : texts) {
-      auto bytes = read_file(path);
-      if (!bytes) {
-        diags_.report(DiagId::FileUnreadable, {}, path, std::strerror(errno));
-        return finish(kUsage);
-      }
+      // The text of the largest files: 17.8 MB each, a byte up to four characters.
+      constexpr FileLimit kFilesText{256 << 20, "a text of ASSET files"};
+      auto bytes = read_file(path, kFilesText, diags_);
+      if (!bytes) return finish(kUsage);
       const uint32_t id = sources_.add(path, std::move(*bytes));
       for (auto& f : TextReader(sources_.file(id), id, diags_).read()) files.push_back(std::move(f));
     }

@@ -335,7 +335,8 @@ class Cli {
       size_t rows = lines.size();
       while (rows > 0 && lines[rows - 1].empty()) --rows;
       std::fprintf(out, "--- screen\n");
-      for (size_t r = 0; r < rows; ++r) std::fprintf(out, "%2zu |%s\n", r + 1, lines[r].c_str());
+      // Memory never written shows as zeros: escaped, as the trace escapes them.
+      for (size_t r = 0; r < rows; ++r) std::fprintf(out, "%2zu |%s\n", r + 1, json_escape(lines[r], false).c_str());
     }
     if (close && std::fclose(out) != 0) s_.diags.report(DiagId::FileUnwritable, {}, o_.trace, std::strerror(errno));
     return finish(result.usage_error ? kUsage : result.ok ? kOk : kProgramErrors, stderr);
@@ -364,6 +365,23 @@ class Cli {
   bool color_ = false;
 };
 
+int run_command(const Command& command, const std::vector<std::string>& rest) {
+  if (command.name == "files") return files_command(rest);
+  for (const std::string& a : rest)
+    if (a == "-h" || a == "--help") {
+      print_command_help(command);
+      return kOk;
+    }
+  Options options;
+  options.command = std::string(command.name);
+  if (std::string error = parse_args(rest, command, options); !error.empty()) {
+    std::fprintf(stderr, "ncc %s: error: %s\nusage: %s\n", options.command.c_str(), error.c_str(),
+                 std::string(command.usage).c_str());
+    return kUsage;
+  }
+  return Cli(std::move(options)).run();
+}
+
 }  // namespace
 }  // namespace ncc
 
@@ -385,22 +403,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "ncc: error: unknown command '%s' (try 'ncc --help')\n", args[0].c_str());
     return kUsage;
   }
-  std::vector<std::string> rest(args.begin() + 1, args.end());
-  if (command->name == "files") return files_command(rest);
-  for (const std::string& a : rest)
-    if (a == "-h" || a == "--help") {
-      print_command_help(*command);
-      return kOk;
-    }
-  Options options;
-  options.command = std::string(command->name);
-  if (std::string error = parse_args(rest, *command, options); !error.empty()) {
-    std::fprintf(stderr, "ncc %s: error: %s\nusage: %s\n", options.command.c_str(), error.c_str(),
-                 std::string(command->usage).c_str());
-    return kUsage;
-  }
+  // Sizes an input gives are checked before they are allocated; an allocation that
+  // fails all the same ends the command, not the process.
   try {
-    return Cli(std::move(options)).run();
+    return run_command(*command, {args.begin() + 1, args.end()});
   } catch (const std::bad_alloc&) {
     std::fprintf(stderr, "ncc: error: out of memory\n");
     return kUsage;

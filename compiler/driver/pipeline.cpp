@@ -7,6 +7,10 @@
 #include <deque>
 #include <set>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include "check/check.h"
 #include "frontend/frontend.h"
 #include "lower/lower.h"
@@ -27,10 +31,9 @@ constexpr uint64_t kDryRunExtraSteps = 1'000'000;
 // A source file named by a bytecode file, read only to quote its lines: never a
 // device, a pipe or something huge.
 std::string quotable_file(const std::string& path) {
-  std::error_code ec;
-  constexpr uintmax_t kMaxQuoted = 64 << 20;
-  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxQuoted || ec) return {};
-  return read_file(path).value_or("");
+  constexpr FileLimit kQuoted{64 << 20, "a source file a bytecode file names", true};
+  int error = 0;
+  return read_file(path, kQuoted, error).value_or("");
 }
 
 // The module's source files as SourceManager indices (registered on first use). A
@@ -169,11 +172,10 @@ std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& 
 // at their place.
 bool read_answers(Session& s, const vm::Module& m, const std::string& path, std::vector<vm::Answer>& answers,
                   std::deque<vm::PlcWrite>& plc) {
-  auto text = read_file(path);
-  if (!text) {
-    s.diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno));
-    return false;
-  }
+  // A line an answer: a run that needs more has stopped long before.
+  constexpr FileLimit kInputScript{64 << 20, "an input script"};
+  auto text = read_file(path, kInputScript, s.diags);
+  if (!text) return false;
   const uint32_t id = s.sources.add(path, std::move(*text));
   const SourceFile& f = s.sources.file(id);
   const uint32_t errors = s.diags.error_count();
@@ -271,18 +273,32 @@ bool load_profile(Session& s, const std::string& path) {
   return true;
 }
 
+namespace {
+
+constexpr std::string_view kBytecodeMagic = "NCCB";
+
+// A regular file whose first bytes are a bytecode file's magic.
+bool bytecode_file(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st;
+  char magic[4];
+  const bool found = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
+                     ::pread(fd, magic, sizeof magic, 0) == sizeof magic && std::string_view(magic, 4) == kBytecodeMagic;
+  ::close(fd);
+  return found;
+}
+
+}  // namespace
+
+// A bytecode file in a regular file is read when it is loaded, a section at a time
+// (load_module): here its path alone is registered. Anything else is read whole (a
+// pipe cannot be read twice).
 std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::string& path) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    s.diags.report(DiagId::FileUnreadable, {}, path, "it is a directory");
-    return std::nullopt;
-  }
-  auto text = read_file(path);
-  if (!text) {
-    s.diags.report(DiagId::FileUnreadable, {}, path, std::strerror(errno ? errno : EIO));
-    return std::nullopt;
-  }
-  FileKind kind = text->compare(0, 4, "NCCB") == 0 ? FileKind::Bytecode : FileKind::Source;
+  if (bytecode_file(path)) return std::pair{FileKind::Bytecode, s.sources.add(path, "")};
+  auto text = read_file(path, kProgramFile, s.diags);
+  if (!text) return std::nullopt;
+  FileKind kind = text->starts_with(kBytecodeMagic) ? FileKind::Bytecode : FileKind::Source;
   return std::pair{kind, s.sources.add(path, std::move(*text))};
 }
 
@@ -391,7 +407,17 @@ void dry_run(Session& s, const vm::Module& module, const RunSettings& settings) 
 }
 
 std::optional<vm::Module> load_module(Session& s, uint32_t file) {
-  return vm::read_module(s.sources.file(file).text(), s.sources.file(file).path(), s.diags);
+  const SourceFile& f = s.sources.file(file);
+  if (!f.text().empty()) return vm::read_module(f.text(), f.path(), s.diags);
+  const int fd = ::open(f.path().c_str(), O_RDONLY | O_CLOEXEC);
+  struct stat st;
+  int error = fd < 0 || ::fstat(fd, &st) != 0 ? errno : 0;
+  if (!error && static_cast<uint64_t>(st.st_size) > kProgramFile.bytes) error = EFBIG;
+  std::optional<vm::Module> m;
+  if (error) s.diags.report(DiagId::FileUnreadable, {}, f.path(), read_error(error, kProgramFile));
+  else m = vm::read_module(fd, static_cast<uint64_t>(st.st_size), f.path(), s.diags);
+  if (fd >= 0) ::close(fd);
+  return m;
 }
 
 RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace) {

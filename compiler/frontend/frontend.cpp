@@ -26,12 +26,16 @@ constexpr DialectEntry kDialects[] = {
 };
 }  // namespace
 
-std::optional<std::string> read_called_file(const std::string& path) {
-  constexpr uintmax_t kMaxFileSize = 256 << 20;
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec) || std::filesystem::file_size(path, ec) > kMaxFileSize || ec)
-    return std::nullopt;
-  return read_file(path);
+std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at, bool& reported) {
+  constexpr FileLimit kCalledProgram{256 << 20, "a called program (its IR is held whole)", true};
+  int error = 0;
+  auto text = read_file(path, kCalledProgram, error);
+  // A folder or a device of that name is no program file: the next name is tried.
+  if (!text && error != ENOENT && error != EISDIR && error != EINVAL) {
+    diags.report(DiagId::FileUnreadable, at, path, read_error(error, kCalledProgram));
+    reported = true;
+  }
+  return text;
 }
 
 std::string library_root(const ReadOptions& options, const std::string& setting, const std::string& caller) {
@@ -47,13 +51,15 @@ std::optional<uint32_t> load_called_file(SourceManager& sources, const std::stri
                                          SourceRange at, Diagnostics& diags) {
   const std::filesystem::path base = std::filesystem::path(root) / name;
   std::string tried;
+  bool reported = false;
   for (std::string_view ext : extensions) {
     const std::string path = base.string() + std::string(ext);
-    if (auto text = read_called_file(path)) {
+    if (auto text = read_called_file(path, diags, at, reported)) {
       const uint32_t file = sources.add(path, std::move(*text));
       if (!admit_text(sources.file(file), file, diags)) return std::nullopt;
       return file;
     }
+    if (reported) return std::nullopt;
     if (!ext.empty()) tried += (tried.empty() ? "" : "|") + std::string(ext);
   }
   diags.report(DiagId::ProgramNotFound, at, shown, base.string() + (tried.empty() ? "" : "[" + tried + "]"));
@@ -158,10 +164,10 @@ bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std:
     const std::string key = fmt::format("{}.tables.{}_codes", section, letter == 'G' ? 'g' : 'm');
     auto file = p.string(key, diags);
     if (!file || file->empty()) continue;
-    std::string path = p.resolve_path(*file);
-    auto text = read_file(path);
+    std::string path;
+    auto text = p.file_text(key, *file, path, diags);
     if (!text) {
-      ok = (p.report_value(diags, key, "names a file that cannot be read"), false);
+      ok = false;
       continue;
     }
     size_t errors = diags.error_count();

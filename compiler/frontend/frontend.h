@@ -81,9 +81,10 @@ std::unique_ptr<Frontend> make_dialect_frontend(std::optional<Settings> settings
 
 std::vector<std::string_view> dialect_names();
 
-// The text of a program file a program calls (NC-110 CLS, pp G72): nothing if it is
-// not a regular file of at most 256 MiB or cannot be read.
-std::optional<std::string> read_called_file(const std::string& path);
+// The text of a program file a program calls (NC-110 CLS, pp G72), a regular file of
+// at most 256 MiB (its IR is held whole); nothing if there is none at `path`, or if
+// there is one that cannot be read: that is reported at `at`, and `reported` set.
+std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at, bool& reported);
 
 // Where the programs a program calls are: --lib, else the dialect's profile setting,
 // else the calling program's folder.

@@ -67,11 +67,9 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   std::string format_key = "gost.format";
   if (auto file = p.string("gost.format_file", diags); file && !file->empty()) {
     format_key = "gost.format_file";
-    auto text = read_file(p.resolve_path(*file));
-    if (!text) {
-      p.report_value(diags, "gost.format_file", "names a file that cannot be read");
-      return std::nullopt;
-    }
+    std::string path;
+    auto text = p.file_text(format_key, *file, path, diags);
+    if (!text) return std::nullopt;
     format_text = std::string(format_line_of_file(*text));
   } else if (auto text = p.string("gost.format", diags)) {
     format_text = *text;

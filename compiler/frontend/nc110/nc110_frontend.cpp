@@ -81,8 +81,9 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       std::vector<fs::path> candidates = {root / call.device / call.name, root / call.device / (call.name + ".nc")};
       std::optional<std::string> text;
       fs::path found;
+      bool reported = false;
       for (const fs::path& candidate : candidates)
-        if ((text = read_called_file(candidate.string()))) {
+        if ((text = read_called_file(candidate.string(), diags, call.range, reported)) || reported) {
           found = candidate;
           break;
         }
@@ -92,7 +93,8 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
         if (call.range.file != 0 || call.range.line != 0) program.units[call.unit].blocks[call.block].has_errors = true;
       };
       if (!text) {
-        diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
+        if (!reported)
+          diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
         unread();
         continue;
       }

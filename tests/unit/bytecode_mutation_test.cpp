@@ -1,0 +1,175 @@
+// No bytecode file crashes ncc: golden programs of every dialect that together use
+// every instruction the compiler makes are compiled, and each byte of each module is
+// changed in turn (and random groups of bytes), the checksum recomputed. Each changed
+// file must be refused with an NC5xxx diagnostic, or disassemble and run (a step limit,
+// a trace, an ASSET sandbox) without touching memory out of bounds: the sanitizer build
+// of the suite is the judge of that.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <random>
+#include <set>
+
+#include "driver/pipeline.h"
+#include "runtime/asset_store.h"
+#include "support/bytes.h"
+#include "vm/opcodes.h"
+
+namespace ncc {
+namespace {
+
+struct Sample {
+  const char* dialect;
+  const char* file;  // in tests/golden/<dialect>/
+  const char* lib = "";
+  const char* machine = "";
+};
+
+// Chosen greedily from the goldens (the most instructions not yet used, the smallest
+// program first); their union is checked below.
+const Sample kSamples[] = {
+    {"nc110", "asset-codes.nc"},
+    {"nc110", "asset-operands.nc"},
+    {"nc110", "screen-text.nc"},
+    {"nc110", "expressions-manual-examples.nc"},
+    {"nc110", "epp-jump-out-loops.nc"},
+    {"nc110", "corpus-4.3-PROG91.nc", "lib"},
+    {"nc110", "branches-text.nc"},
+    {"nc110", "corpus-5.6-user-screen.nc"},
+    {"nc110", "screen-off.nc"},
+    {"nc110", "screen-mismatch.nc"},
+    {"nc110", "expressions-mod-zero.nc"},
+    {"nc110", "inp-text-errors.nc"},
+    {"nc110", "memory-text.nc"},
+    {"nc110", "corpus-5.3.2.6-CRE.nc"},
+    {"nc110", "corpus-5.3.2.7-CAN.nc"},
+    {"nc110", "parameters-classes.nc"},
+    {"iso", "macro-logic.nc"},
+    {"iso", "g65-error-location.nc", "sub-lib"},
+    {"iso", "corpus-8.34.1-address-values.nc", "", "simulator.toml"},
+    {"iso", "corpus-8.34.2-IF-example-2.nc", "", "simulator.toml"},
+    {"iso", "macro-vars.nc"},
+    {"iso", "sub-l-zero.nc"},
+    {"iso", "bytecode-constants.nc"},
+    {"gost", "comments-8bit.nc"},
+    {"pp", "jumps.pp"},
+    {"pp", "dynamic-codes-g.pp"},
+};
+
+std::string golden_dir(const Sample& x) { return std::string(NCC_TEST_DATA "/golden/") + x.dialect; }
+
+std::string compile_sample(const Sample& x) {
+  Session s;
+  const std::string dir = golden_dir(x);
+  if (*x.machine) {
+    EXPECT_TRUE(load_profile(s, dir + "/" + x.machine));
+  }
+  if (*x.lib) s.library = dir + "/" + x.lib;
+  auto input = read_input(s, dir + "/" + x.file);
+  EXPECT_TRUE(input);
+  if (!input) return {};
+  auto m = compile_source(s, input->second, x.dialect);
+  EXPECT_TRUE(m && !s.diags.has_errors()) << x.file;
+  return m ? vm::write_module(*m) : std::string();
+}
+
+std::set<vm::Op> opcodes_of(const vm::Module& m) {
+  std::set<vm::Op> ops;
+  for (size_t pc = 0; pc < m.code.size(); pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc]))))
+    ops.insert(static_cast<vm::Op>(m.code[pc]));
+  return ops;
+}
+
+void fix_checksum(std::string& bytes) {
+  const uint32_t crc = crc32({reinterpret_cast<const uint8_t*>(bytes.data()) + 16, bytes.size() - 16});
+  for (int i = 0; i < 4; ++i) bytes[12 + i] = static_cast<char>((crc >> (8 * i)) & 0xFF);
+}
+
+// A fresh ASSET sandbox with every device, removed at the end; in memory where there is
+// a tmpfs (the store syncs every file it writes).
+struct Sandbox {
+  std::filesystem::path dir;
+  Sandbox() {
+    const std::filesystem::path tmp =
+        std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
+    dir = tmp / ("ncc-mutation-" + std::to_string(::getpid()) + "-" + testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::remove_all(dir);
+    for (int d = 0; d < asset::kDevices; ++d) std::filesystem::create_directories(dir / ("MP" + std::to_string(d)));
+  }
+  ~Sandbox() { std::filesystem::remove_all(dir); }
+};
+
+// Refused with a bytecode diagnostic, or disassembled and run; true if it ran.
+bool load_disassemble_and_run(const std::string& bytes, const Sandbox& sandbox, TraceFormat format) {
+  Session s;
+  auto m = vm::read_module(bytes, "x.ncb", s.diags);
+  if (!m) {
+    EXPECT_EQ(s.diags.all().size(), 1u);
+    for (const Diagnostic& d : s.diags.all()) EXPECT_EQ(diag_info(d.id).number / 1000, 5) << d.message;
+    return false;
+  }
+  EXPECT_FALSE(vm::disassemble(*m).empty());
+  RunSettings settings;
+  settings.max_steps = 2000;
+  settings.files = sandbox.dir.string();
+  std::FILE* out = std::fopen("/dev/null", "wb");
+  auto writer = make_trace_writer(format, out, m->source_map, m->semantics.conventions.axes);
+  run_module(s, *m, settings, *writer);
+  writer.reset();
+  std::fclose(out);
+  return true;
+}
+
+TEST(BytecodeMutation, TheSamplesUseEveryInstructionTheCompilerMakes) {
+  std::set<vm::Op> used;
+  for (const Sample& x : kSamples) {
+    Session s;
+    auto m = vm::read_module(compile_sample(x), x.file, s.diags);
+    ASSERT_TRUE(m) << x.file << ": " << (s.diags.all().empty() ? "" : s.diags.all()[0].message);
+    for (vm::Op op : opcodes_of(*m)) used.insert(op);
+  }
+  for (size_t i = 0; i < static_cast<size_t>(vm::Op::Count); ++i) {
+    const auto op = static_cast<vm::Op>(i);
+    if (op == vm::Op::Nop || op == vm::Op::Pow) continue;  // the lowering makes neither
+    EXPECT_TRUE(used.count(op)) << vm::op_info(op).name << " is in no sample";
+  }
+}
+
+class EveryByte : public testing::TestWithParam<Sample> {};
+
+TEST_P(EveryByte, IsRefusedOrRunsSafely) {
+  const std::string bytes = compile_sample(GetParam());
+  ASSERT_FALSE(bytes.empty());
+  const Sandbox sandbox;
+  size_t ran = 0, tried = 0;
+  auto attempt = [&](std::string bad) {
+    fix_checksum(bad);
+    ran += load_disassemble_and_run(bad, sandbox, static_cast<TraceFormat>(tried++ % 3));
+  };
+  for (size_t i = 16; i < bytes.size(); ++i)
+    for (uint8_t mask : {0x01, 0x80, 0xFF}) {
+      std::string bad = bytes;
+      bad[i] = static_cast<char>(bad[i] ^ mask);
+      attempt(bad);
+    }
+  // Groups of two to eight bytes anywhere after the header, set at random.
+  std::mt19937 random(20261127);
+  for (int n = 0; n < 500; ++n) {
+    std::string bad = bytes;
+    const int count = 2 + static_cast<int>(random() % 7);
+    for (int k = 0; k < count; ++k) bad[16 + random() % (bad.size() - 16)] = static_cast<char>(random());
+    attempt(bad);
+  }
+  // Many changes only change a number or a name, and those files are still sound.
+  EXPECT_GT(ran, 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Goldens, EveryByte, testing::ValuesIn(kSamples), [](const testing::TestParamInfo<Sample>& sample) {
+  std::string name = std::string(sample.param.dialect) + "_" + sample.param.file;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+});
+
+}  // namespace
+}  // namespace ncc
