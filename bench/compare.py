@@ -14,7 +14,7 @@ for each program measures, one process at a time:
            its ratio to the source size
   run      `ncc run --trace none` from source (compile and run): s, blocks run per
            second, peak RSS
-  ncb      `ncc run X.ncb --trace none`: the VM and runtime alone
+  ncb      `ncc run X.ncb --trace none`: the VM and runtime alone, s and peak RSS
   canon    iso only: `ncc run --trace-format canon --trace /dev/null`, the output
            rs274 always produces (a fairer match for rs274's own work)
   rs274    iso only: `rs274 -g TWIN.ngc /dev/null` on the LinuxCNC twin (HOME and the
@@ -400,6 +400,7 @@ def main(argv=None):
             fmt_s(r.get("run")), fmt_rate(blocks / r["run"].wall) if ok("run") else "-",
             f"{mb(r['run'].rss):.0f}" if ok("run") else "-",
             fmt_s(r.get("ncb")),
+            f"{mb(r['ncb'].rss):.0f}" if ok("ncb") else "-",
             fmt_s(r.get("canon")) if d == "iso" else "",
             fmt_s(r.get("rs274")) if twin else "",
             f"{mb(r['rs274'].rss):.0f}" if ok("rs274") else ("-" if twin else ""),
@@ -434,7 +435,7 @@ def main(argv=None):
                f"best of {a.repeat} ({max(a.repeat, SHORT_REPEAT)} for runs under {SHORT:.0f} s); generated in {gen_s:.1f} s, whole run {total_s / 60:.1f} min")
     out.append("")
     hdr = ["program", "MB", "blocks", "check s", "MB/s", "compile s", "MB/s", "RSS MB", "RSS/src",
-           "run s", "blocks/s", "RSS MB", "ncb s", "canon s", "rs274 s", "RSS MB", "rs274/ncc"]
+           "run s", "blocks/s", "RSS MB", "ncb s", "RSS MB", "canon s", "rs274 s", "RSS MB", "rs274/ncc"]
     out += table(hdr, rows)
     out.append("")
     out.append("check = ncc check (front end + checks + dry run); compile = ncc compile -o .ncb; run = ncc run "
@@ -473,6 +474,13 @@ def main(argv=None):
             tl.append([f"peak RSS compiling {d} plain / source size", f"<= {T_COMPILE_RSS:.0f}x",
                        f"{v:.1f}x ({mb(r['compile'].rss):.0f} MB for {mb(e['bytes']):.1f} MB)",
                        verdict(v <= T_COMPILE_RSS, f"{v / T_COMPILE_RSS:.1f}x over")])
+    for d in a.dialects.split(","):
+        e_r = res.get(f"{d}-plain")
+        if e_r and all(e_r[1].get(step) and e_r[1][step].ok for step in ("compile", "ncb")):
+            e, r = e_r
+            tl.append([f"peak RSS running {d} plain .ncb / compiling", "< 1x",
+                       f"{r['ncb'].rss / r['compile'].rss:.2f}x ({mb(r['ncb'].rss):.0f} MB)",
+                       verdict(r["ncb"].rss < r["compile"].rss, "more")])
     if flat_res:
         grow = mb(flat_res[1].rss - flat_res[0].rss)
         tl.append([f"iso loop of {flat:,} iterations in flat memory", f"<= +{T_FLAT_MB:.0f} MB over 1,000",
