@@ -546,7 +546,7 @@ class MemoryInput final : public ModuleInput {
 
  private:
   bool read(size_t n, void* out) override {
-    std::memcpy(out, bytes_.data(), n);
+    if (n > 0) std::memcpy(out, bytes_.data(), n);
     bytes_.remove_prefix(n);
     return true;
   }
@@ -563,6 +563,7 @@ class FileInput final : public ModuleInput {
     for (size_t got = 0; got < n;) {
       const ssize_t r = ::read(fd_, static_cast<char*>(out) + got, n - got);
       if (r < 0 && errno == EINTR) continue;
+      if (r == 0) errno = EIO;  // the file is shorter than it was
       if (r <= 0) return false;
       got += static_cast<size_t>(r);
     }

@@ -1,12 +1,15 @@
 // No bytecode file crashes ncc: golden programs of every dialect that together use
 // every instruction the compiler makes are compiled, and each byte of each module is
-// changed in turn (and random groups of bytes), the checksum recomputed. Each changed
-// file must be refused with an NC5xxx diagnostic, or disassemble and run (a step limit,
-// a trace, an ASSET sandbox) without touching memory out of bounds: the sanitizer build
-// of the suite is the judge of that.
+// changed in turn (three ways), each operand byte of each instruction takes every
+// value (in the first sample that has the instruction), and random groups of bytes
+// are set, the checksum recomputed each time. Each changed file must be refused with
+// an NC5xxx diagnostic, or disassemble and run (a step limit, a trace, an ASSET
+// sandbox) without touching memory out of bounds: the sanitizer build of the suite is
+// the judge of that.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
 #include <random>
 #include <set>
 
@@ -73,11 +76,28 @@ std::string compile_sample(const Sample& x) {
   return m ? vm::write_module(*m) : std::string();
 }
 
-std::set<vm::Op> opcodes_of(const vm::Module& m) {
-  std::set<vm::Op> ops;
+// The first instruction of each opcode the module's code has, by its pc.
+std::map<vm::Op, size_t> first_instructions(const vm::Module& m) {
+  std::map<vm::Op, size_t> first;
   for (size_t pc = 0; pc < m.code.size(); pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc]))))
-    ops.insert(static_cast<vm::Op>(m.code[pc]));
-  return ops;
+    first.emplace(static_cast<vm::Op>(m.code[pc]), pc);
+  return first;
+}
+
+vm::Module module_of(const std::string& bytes) {
+  Session s;
+  auto m = vm::read_module(bytes, "x.ncb", s.diags);
+  EXPECT_TRUE(m);
+  return m ? *m : vm::Module{};
+}
+
+// Where the code section's bytes start in a file (docs/bytecode.md: a 16-byte header,
+// then sections of a tag, a size and the bytes).
+size_t code_offset(const std::string& bytes) {
+  size_t at = 16;
+  while (at + 8 <= bytes.size() && bytes.compare(at, 4, "CODE") != 0)
+    at += 8 + ByteReader(std::string_view(bytes).substr(at + 4, 4)).u32();
+  return at + 8;
 }
 
 void fix_checksum(std::string& bytes) {
@@ -126,7 +146,7 @@ TEST(BytecodeMutation, TheSamplesUseEveryInstructionTheCompilerMakes) {
     Session s;
     auto m = vm::read_module(compile_sample(x), x.file, s.diags);
     ASSERT_TRUE(m) << x.file << ": " << (s.diags.all().empty() ? "" : s.diags.all()[0].message);
-    for (vm::Op op : opcodes_of(*m)) used.insert(op);
+    for (auto [op, pc] : first_instructions(*m)) used.insert(op);
   }
   for (size_t i = 0; i < static_cast<size_t>(vm::Op::Count); ++i) {
     const auto op = static_cast<vm::Op>(i);
@@ -152,6 +172,21 @@ TEST_P(EveryByte, IsRefusedOrRunsSafely) {
       bad[i] = static_cast<char>(bad[i] ^ mask);
       attempt(bad);
     }
+  // Every value of each operand byte of the instructions no sample before this one has.
+  std::set<vm::Op> earlier;
+  for (const Sample& x : kSamples) {
+    if (std::string_view(x.dialect) == GetParam().dialect && std::string_view(x.file) == GetParam().file) break;
+    for (auto [op, pc] : first_instructions(module_of(compile_sample(x)))) earlier.insert(op);
+  }
+  const size_t code = code_offset(bytes);
+  for (auto [op, pc] : first_instructions(module_of(bytes)))
+    if (!earlier.count(op))
+      for (size_t i = code + pc + 1; i < code + pc + static_cast<size_t>(vm::instruction_size(op)); ++i)
+        for (int v = 0; v < 256; ++v) {
+          std::string bad = bytes;
+          bad[i] = static_cast<char>(v);
+          attempt(bad);
+        }
   // Groups of two to eight bytes anywhere after the header, set at random.
   std::mt19937 random(20261127);
   for (int n = 0; n < 500; ++n) {
