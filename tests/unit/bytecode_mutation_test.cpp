@@ -54,7 +54,7 @@ const Sample kSamples[] = {
     {"iso", "macro-vars.nc"},
     {"iso", "sub-l-zero.nc"},
     {"iso", "bytecode-constants.nc"},
-    {"gost", "comments-8bit.nc"},
+    {"gost", "skip-whole-block.nc"},
     {"pp", "jumps.pp"},
     {"pp", "dynamic-codes-g.pp"},
 };
