@@ -71,12 +71,12 @@ std::string describe_char(std::string_view text, size_t at, size_t& length) {
   unsigned char c = static_cast<unsigned char>(text[at]);
   if (c >= 'a' && c <= 'z') return fmt::format("lower-case '{}'", static_cast<char>(c));
   if (c >= 0x20 && c < 0x7F) return fmt::format("'{}'", static_cast<char>(c));
-  if (c < 0x80) return fmt::format("control character 0x{:02X}", c);
+  if (c < 0x80) return fmt::format("0x{:02X} (a control character)", c);
   if (const Utf8Char u = decode_utf8(text, at); u.length) {
     length = u.length;
     return fmt::format("'{}' (U+{:04X})", text.substr(at, u.length), u.code_point);
   }
-  return fmt::format("byte 0x{:02X}", c);  // (admit_text lets none through)
+  return fmt::format("0x{:02X} (not UTF-8)", c);  // (admit_text lets none through)
 }
 
 std::optional<double> read_number(std::string_view written, SourceRange at, Diagnostics& diags) {

@@ -4,7 +4,7 @@ namespace ncc {
 
 namespace {
 
-bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
+bool blank(char c) { return c == ' ' || c == '\t'; }
 bool digit(char c) { return c >= '0' && c <= '9'; }
 bool capital(char c) { return c >= 'A' && c <= 'Z'; }
 
@@ -13,7 +13,10 @@ bool capital(char c) { return c >= 'A' && c <= 'Z'; }
 bool scan_plain_words(std::string_view t, const PlainRules& rules, PlainBlock& out) {
   out.skip = false;
   out.words.clear();
-  const size_t n = t.size();
+  // A CR ending the text is what is left of a CRLF line end; any other is the
+  // dialect's to judge (a line end in pp, an error in NC-110): the parser's.
+  size_t n = t.size();
+  while (n > 0 && t[n - 1] == '\r') --n;
   size_t i = 0;
   auto blanks = [&] {
     while (i < n && blank(t[i])) ++i;

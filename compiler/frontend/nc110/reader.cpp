@@ -107,8 +107,8 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
           bool quote = cp == 0x201C || cp == 0x201D || cp == 0x201E || cp == 0xAB || cp == 0xBB;
           r_.diags_.report(DiagId::CharInvalid, range,
                            c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
-                           : c < 0x80          ? fmt::format("control character 0x{:02X}", c)
-                           : length == 0       ? fmt::format("byte 0x{:02X}", c)
+                           : c < 0x80          ? fmt::format("0x{:02X} (a control character)", c)
+                           : length == 0       ? fmt::format("0x{:02X} (not UTF-8)", c)
                            : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
                                    : fmt::format("'{}' (U+{:04X})", text, cp));
         }
