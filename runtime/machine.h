@@ -344,7 +344,8 @@ class Machine {
   bool frame_function(FnCall call);                 // the NC-110 three-letter functions
   void origin_event();
   void transform_event();
-  bool path_allowed(const std::vector<AxisValues>& path);  // limits and protected zones
+  bool path_allowed(const std::vector<AxisValues>& path);  // a position's range, limits and protected zones
+  bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
   void set_position();
   void load_offset();      // pp G92
   void load_compensation();  // pp G93

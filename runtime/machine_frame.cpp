@@ -15,8 +15,13 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180;
 
 // Programmed positions live on a nanometre grid, so that increments add up exactly
-// as decimals do (0.1 + 0.2 is 0.3) and traces stay bit-for-bit stable.
-double snap(double v) { return std::round(v * 1e9) / 1e9; }
+// as decimals do (0.1 + 0.2 is 0.3) and traces stay bit-for-bit stable. Beyond 2^53
+// nanometres (9 km) a double holds no finer grid.
+double snap(double v) { return std::fabs(v) < 9e6 ? std::round(v * 1e9) / 1e9 : v; }
+
+// A position no machine reaches (mm or degrees: 10,000 km, 28 million turns) is a
+// value gone wrong: X1E300, a scale on a huge offset.
+constexpr double kMaxPosition = 1e10;
 
 }  // namespace
 
@@ -137,6 +142,14 @@ AxisValues Machine::program_target() {
   return p;
 }
 
+bool Machine::position_in_range(int axis, double v) {
+  if (std::fabs(v) <= kMaxPosition) return true;
+  const char letter = kAxisLetters[axis];
+  report(DiagId::PositionRange, has(letter) ? letter : 0, letter, shortest(program_axis(axis, v - origin(axis))),
+         "10,000,000,000 mm (or degrees)");
+  return false;
+}
+
 AxisValues Machine::target() {
   const AxisValues& from = parabola_middle_ ? *parabola_middle_ : machine_;
   const AxisValues off = target_frame();
@@ -155,6 +168,9 @@ AxisValues Machine::target() {
       if (has(letter) || (polar && (i == u || i == v))) t[i] = snap(p[i] + off[i]);
     }
   }
+  // A position out of any machine's range is refused: the axis stays.
+  for (int i = 0; i < kAxisCount; ++i)
+    if (!position_in_range(i, t[i])) t[i] = from[i];
   // An endless rotary axis goes the way the target's sign says; 0 the short way
   // (NC-110 §2.8.4, decision 48), with or without a transform.
   if (!modal_.absolute && !block_.machine_frame) return t;
@@ -623,6 +639,10 @@ bool Machine::frame_function(FnCall call) {
 // ---- Working limits and protected zones (NC-110 §2.13.5.3, §2.13.5.5) --------------
 
 bool Machine::path_allowed(const std::vector<AxisValues>& path) {
+  // What target() has not refused (a cycle's levels, an arc's centre) is refused here.
+  for (const AxisValues& p : path)
+    for (int a = 0; a < kAxisCount; ++a)
+      if (!position_in_range(a, p[a])) return false;
   bool limits = std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; });
   bool zones = std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; });
   if (!limits && !zones) return true;
