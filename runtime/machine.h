@@ -134,6 +134,9 @@ class Machine {
   // corner hold back for a later move, the points of a spline; in bytes, and in words.
   uint64_t held_bytes() const;
   std::string held_what() const;
+  // The moves blocks made beyond their first (a cycle's holes and pecks): work a run's
+  // step budget counts besides its blocks (--max-steps).
+  uint64_t moves_beyond_first() const { return moves_beyond_first_; }
 
  private:
   struct Modal {
@@ -234,6 +237,7 @@ class Machine {
     std::vector<FnCall> restore;  // modal functions to restore after a block-only code
     bool moved = false;           // the block made a feed move
     bool rapid_moved = false;     // ... a rapid move
+    uint32_t moves = 0;           // the moves it made
     bool operands = false;        // a three-letter function took the block's words
     bool reference = false;       // pp G30: the named axes go to the reference point
     bool offset_load = false;     // pp G92: the axis words load a work offset
@@ -431,6 +435,7 @@ class Machine {
   std::optional<Corner> corner_;
   std::vector<Event> held_;
   bool holding_ = false;
+  uint64_t moves_beyond_first_ = 0;
   AxisValues hold_start_{};                   // where the first held move starts
   std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
   void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back

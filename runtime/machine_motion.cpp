@@ -35,6 +35,11 @@ double wrap(double a) {
 void Machine::move_to(const AxisValues& t) {
   if (t != machine_) (modal_.motion == Fn::MotionRapid ? block_.rapid_moved : block_.moved) = true;
   machine_ = t;
+  // A block's work is bounded, whatever its holes and pecks: a repeat stops at the error.
+  constexpr uint32_t kMaxMovesPerBlock = 1'000'000;
+  if (block_.moves++ == 0) return;
+  ++moves_beyond_first_;
+  if (block_.moves == kMaxMovesPerBlock + 1) report(DiagId::BlockMoves, 0, kMaxMovesPerBlock);
 }
 
 Event Machine::motion_event(EventKind kind, const AxisValues& t) const {

@@ -370,7 +370,8 @@ RunStatus Vm::resume() {
         }
         stepped = true;
         if (options_.look_ahead) look_ahead();
-        if (++steps_ > options_.max_steps && options_.max_steps) return fail(pc, DiagId::StepLimit, options_.max_steps);
+        if (++steps_ + machine_.moves_beyond_first() > options_.max_steps && options_.max_steps)
+          return fail(pc, DiagId::StepLimit, options_.max_steps);
         if (options_.max_memory && machine_.held_bytes() > options_.max_memory)
           return fail(pc, DiagId::RunMemory, options_.max_memory >> 20, machine_.held_what());
         // A block that the block-skip switch skips whole (its JUMPSKIP follows) does not run.

@@ -46,7 +46,7 @@ struct Answer {
 };
 
 struct VmOptions {
-  uint64_t max_steps = 0;  // executed blocks before StepLimit; 0 = no limit
+  uint64_t max_steps = 0;  // steps before StepLimit: blocks, and moves beyond a block's first; 0 = no limit
   uint64_t max_memory = 0;  // bytes the runtime may hold (Machine::held_bytes) before RunMemory; 0 = no limit
   bool trace_blocks = false;  // a `block` event as each block starts
   asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect

@@ -47,15 +47,17 @@ constexpr Command kCommands[] = {
     {"check", "check a program and report every problem", "ncc check [options] FILE",
      R"(  --block-skip              run the dry run with the block-skip switch on
   --optional-stop           run the dry run with the optional-stop switch on
-  --max-steps N             stop the dry run after N blocks (default: the program's blocks + 1000000),
-                            with a warning (NC4092): a long loop is not an error
+  --max-steps N             stop the dry run after N steps: blocks, and moves beyond a block's first
+                            (default: the program's blocks + 1000000), with a warning (NC4092): a long
+                            loop is not an error
   --max-memory MIB          stop the dry run when the runtime holds more for later moves (default:
                             the profile's limits.run_memory_mib, 256)
 )"},
     {"compile", "compile a program to a bytecode file", "ncc compile [options] FILE -o OUT.ncb",
      R"(  -o FILE                   the bytecode file to write
-  --max-steps N             stop the dry run after N blocks (default: the program's blocks + 1000000),
-                            with a warning (NC4092): a long loop is not an error
+  --max-steps N             stop the dry run after N steps: blocks, and moves beyond a block's first
+                            (default: the program's blocks + 1000000), with a warning (NC4092): a long
+                            loop is not an error
   --max-memory MIB          stop the dry run when the runtime holds more for later moves (default:
                             the profile's limits.run_memory_mib, 256)
 )"},
@@ -63,7 +65,8 @@ constexpr Command kCommands[] = {
      R"(  --trace FILE              write the trace to FILE ('-' = stdout, the default; 'none' = no trace)
   --trace-format F          text | jsonl | canon (default text; docs/trace.md)
   --trace-blocks            a 'block' event as each block starts (which blocks ran, how often)
-  --max-steps N             stop after N executed blocks (default: the program's blocks + 100000000)
+  --max-steps N             stop after N steps: the blocks run, and the moves a block makes beyond its
+                            first, a cycle's holes and pecks (default: the program's blocks + 100000000)
   --max-memory MIB          stop when the runtime holds more for later moves (default: the profile's
                             limits.run_memory_mib, 256)
   --block-skip              the block-skip switch is on: '/' parts are skipped
