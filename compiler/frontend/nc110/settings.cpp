@@ -215,7 +215,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
   if (auto sizes = p.number_table("nc110.memories", diags)) {
     for (const auto& [name, bytes] : *sizes) {
-      auto it = std::find_if(s.memories.begin(), s.memories.end(), [&](const Memory& m) { return m.name == name; });
+      auto it = std::ranges::find(s.memories, name, &Memory::name);
       if (it == s.memories.end()) {
         ok = (p.report_value(diags, "nc110.memories." + name, "is not a memory (SA, SK, SYVAR)"), false);
       } else if (auto n = whole_in<uint32_t>(bytes, 1, 1 << 20)) {
