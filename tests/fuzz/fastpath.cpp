@@ -1,17 +1,19 @@
 // Fuzz target: the fast path and the ANTLR parser give the same IR and diagnostics.
 //
-// Each input is a program of one dialect; it goes through the front end and the checks
-// twice, with the hand-written scanner for plain blocks and with every block by ANTLR,
-// and the two printed IRs and diagnostic lists must be equal byte for byte.
+// Each input is a program of one dialect (its first byte picks the dialect: iso, gost,
+// pp, nc110); it goes through the front end and the checks twice, with the
+// hand-written scanner for plain blocks and with every block by ANTLR, and the two
+// printed IRs and diagnostic lists must be equal byte for byte.
 //
 //   ncc_fuzz_fastpath [--dialect D] [--programs N] [--seed S]   deterministic random programs
 //   ncc_fuzz_fastpath --replay FILE --dialect D                 one program from a file
+//   ncc_fuzz_fastpath FILE|DIR...                               fuzz inputs, once each (fuzz.h)
 //
 // The random programs mix well-formed address words (the scanner's), their near misses
 // (a blank inside a value, a second point, a sign alone, lower case, E and R
 // parameters, labels, comments, multi-byte characters) and byte mutations, so that most
-// blocks sit on the boundary between the two paths. Built with Clang and
-// -DNCC_LIBFUZZER=ON it is a libFuzzer target instead (the first byte picks the dialect).
+// blocks sit on the boundary between the two paths. Built with -DNCC_LIBFUZZER=ON
+// (Clang) it is a libFuzzer target instead.
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -20,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "driver/pipeline.h"
+#include "fuzz.h"
 
 namespace {
 
@@ -29,8 +31,8 @@ const std::vector<std::string> kDialects = {"iso", "gost", "pp", "nc110"};
 // The printed IR and diagnostics of `text` read as `dialect`.
 std::string read_as(const std::string& dialect, const std::string& text, bool fast_path) {
   ncc::Session s(0);
+  ncc::fuzz::start_session(s);
   s.fast_path = fast_path;
-  s.library = "/nonexistent/ncc-fuzz";  // calls find nothing, on both paths alike
   uint32_t file = s.sources.add("fuzz.nc", text);
   auto program = ncc::analyse(s, file, dialect);
   std::string out = program ? ncc::ir::print(*program, s.sources) : std::string("(no program)\n");
@@ -141,19 +143,17 @@ class Generator {
 
 }  // namespace
 
-#ifdef NCC_LIBFUZZER
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
   const std::string& dialect = kDialects[data[0] % kDialects.size()];
   std::string diff = compare(dialect, std::string(reinterpret_cast<const char*>(data) + 1, size - 1));
-  if (!diff.empty()) {
-    std::fprintf(stderr, "fast path and ANTLR differ (%s): %s\n", dialect.c_str(), diff.c_str());
-    std::abort();
-  }
+  if (!diff.empty()) ncc::fuzz::fail("fast path and ANTLR differ (" + dialect + "): " + diff);
   return 0;
 }
-#else
+
+#ifndef NCC_LIBFUZZER
 int main(int argc, char** argv) {
+  if (argc > 1 && !std::string_view(argv[1]).starts_with("--")) return ncc::fuzz::replay(argc, argv);
   std::vector<std::string> dialects = kDialects;
   int programs = 200;
   uint32_t seed = 1;
