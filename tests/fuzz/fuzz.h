@@ -1,8 +1,8 @@
 // What the fuzz targets share (docs/limits.md, "Fuzzing"). Each target defines
 // LLVMFuzzerTestOneInput. Built with -DNCC_LIBFUZZER=ON (Clang), libFuzzer drives it;
 // otherwise replay() is its main and runs the inputs it is given once each, so that
-// the crashes found (tests/fuzz/regressions/) run in every build's test suite.
-// Everything runs in-process and prints nothing.
+// the crashes found (tests/fuzz/regressions/) run in every build's test suite. A
+// target runs ncc in-process and prints nothing unless an invariant breaks.
 #pragma once
 
 #include <cstdint>
@@ -12,9 +12,9 @@
 namespace ncc::fuzz {
 
 // Prepares a fresh session as ncc does for a source program: the built-in machine
-// profile (parsed once, then shared: parsing it anew took a
-// quarter of each input's time), no program library (an input may call any program it
-// names; calls find nothing).
+// profile (parsed once, then shared: parsing it anew took a quarter of each input's
+// time), no program library (an input may call any program it names; calls find
+// nothing).
 void start_session(Session& s);
 
 // How every dry run and run goes: at most 10,000 blocks (a program that loops forever
