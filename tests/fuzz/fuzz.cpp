@@ -24,7 +24,7 @@ void start_session(Session& s) {
 
 RunSettings run_settings() {
   RunSettings settings;
-  settings.max_steps = 10'000;
+  settings.max_steps = 2'000;
   return settings;
 }
 

@@ -17,8 +17,8 @@ namespace ncc::fuzz {
 // nothing).
 void start_session(Session& s);
 
-// How every dry run and run goes: at most 10,000 blocks (a program that loops forever
-// costs little), no ASSET sandbox, no input script.
+// How every dry run and run goes: at most 2,000 steps (a program that loops forever,
+// or a cycle repeated 10^6 times, costs little), no ASSET sandbox, no input script.
 RunSettings run_settings();
 
 // Writes the module and reads it back: it must load (verified) and disassemble to the
