@@ -34,6 +34,11 @@ uint32_t SourceManager::add(std::string path, std::string text) {
   return static_cast<uint32_t>(files_.size() - 1);
 }
 
+std::string program_text(std::string bytes) {
+  if (bytes.starts_with("\xEF\xBB\xBF")) bytes.erase(0, 3);
+  return bytes;
+}
+
 std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, int& error) {
   // O_NONBLOCK: opening a FIFO does not wait for a writer before it is known to be one.
   const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);

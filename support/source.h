@@ -73,6 +73,11 @@ inline constexpr FileLimit kProgramFile{UINT32_MAX - 1, "a program file (positio
 std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, int& error);
 // Why read_file gave nothing, as a message says it: "it is a directory".
 std::string read_error(int error, const FileLimit& limit);
+// A program's text as its author sees it: the bytes of its file without the UTF-8
+// byte-order mark (EF BB BF) that some editors write first and none shows, so that
+// line 1's columns are the editor's.
+std::string program_text(std::string bytes);
+
 // read_file, reporting why not at `at` (NC6001).
 std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, Diagnostics& diags,
                                      SourceRange at = {});

@@ -33,7 +33,7 @@ constexpr uint64_t kDryRunExtraSteps = 1'000'000;
 std::string quotable_file(const std::string& path) {
   constexpr FileLimit kQuoted{64 << 20, "a source file a bytecode file names", true};
   int error = 0;
-  return read_file(path, kQuoted, error).value_or("");
+  return program_text(read_file(path, kQuoted, error).value_or(""));
 }
 
 // The module's source files as SourceManager indices (registered on first use). A
@@ -298,8 +298,8 @@ std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::s
   if (bytecode_file(path)) return std::pair{FileKind::Bytecode, s.sources.add(path, "")};
   auto text = read_file(path, kProgramFile, s.diags);
   if (!text) return std::nullopt;
-  FileKind kind = text->starts_with(kBytecodeMagic) ? FileKind::Bytecode : FileKind::Source;
-  return std::pair{kind, s.sources.add(path, std::move(*text))};
+  if (text->starts_with(kBytecodeMagic)) return std::pair{FileKind::Bytecode, s.sources.add(path, std::move(*text))};
+  return std::pair{FileKind::Source, s.sources.add(path, program_text(std::move(*text)))};
 }
 
 namespace {

@@ -24,6 +24,25 @@ constexpr DialectEntry kDialects[] = {
     {"pp", pp::make_pp_frontend},
     {"iso", iso::make_iso_frontend},
 };
+
+// What a character nobody sees on screen is, so that a message names it rather than
+// printing it: they come from text pasted out of web pages and word processors.
+std::string_view invisible(uint32_t code_point) {
+  switch (code_point) {
+    case 0x00A0: return "a no-break space";
+    case 0x00AD: return "a soft hyphen";
+    case 0x202F: return "a narrow no-break space";
+    case 0x2028: return "a line separator";
+    case 0x2029: return "a paragraph separator";
+    case 0x3000: return "an ideographic space";
+    case 0xFEFF: return "a byte-order mark";
+  }
+  if (code_point >= 0x2000 && code_point <= 0x200A) return "a typographic space";
+  if ((code_point >= 0x200B && code_point <= 0x200F) || (code_point >= 0x2060 && code_point <= 0x2064))
+    return "an invisible formatting character";
+  return {};
+}
+
 }  // namespace
 
 std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at, bool& reported) {
@@ -35,6 +54,7 @@ std::optional<std::string> read_called_file(const std::string& path, Diagnostics
     diags.report(DiagId::FileUnreadable, at, path, read_error(error, kCalledProgram));
     reported = true;
   }
+  if (text) *text = program_text(std::move(*text));
   return text;
 }
 
@@ -74,6 +94,7 @@ std::string describe_char(std::string_view text, size_t at, size_t& length) {
   if (c < 0x80) return fmt::format("0x{:02X} (a control character)", c);
   if (const Utf8Char u = decode_utf8(text, at); u.length) {
     length = u.length;
+    if (std::string_view what = invisible(u.code_point); !what.empty()) return fmt::format("U+{:04X} ({})", u.code_point, what);
     return fmt::format("'{}' (U+{:04X})", text.substr(at, u.length), u.code_point);
   }
   return fmt::format("0x{:02X} (not UTF-8)", c);  // (admit_text lets none through)

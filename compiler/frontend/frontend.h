@@ -97,7 +97,8 @@ std::optional<uint32_t> load_called_file(SourceManager& sources, const std::stri
                                          SourceRange at, Diagnostics& diags);
 
 // A character outside a comment, for a message: "'*'", "lower-case 'x'", "'Д'
-// (U+0414)", "0x0D (a control character)"; `length` is set to its bytes.
+// (U+0414)", "0x0D (a control character)", one nobody sees by name: "U+00A0 (a
+// no-break space)"; `length` is set to its bytes.
 std::string describe_char(std::string_view text, size_t at, size_t& length);
 
 // A number as a program writes it, digits and a point ("12", "12.5", ".5", "12."): its

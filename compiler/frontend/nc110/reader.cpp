@@ -100,17 +100,14 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
           r_.diags_.report(DiagId::CommentInline, range);
         } else {
           unsigned char c = text.empty() ? 0 : static_cast<unsigned char>(text[0]);
-          const Utf8Char u = c >= 0x80 ? decode_utf8(text, 0) : Utf8Char{};
-          const size_t length = u.length;
-          const uint32_t cp = u.code_point;
+          const uint32_t cp = c >= 0x80 ? decode_utf8(text, 0).code_point : c;
           // Typographic quotes come with texts copied from word processors.
           bool quote = cp == 0x201C || cp == 0x201D || cp == 0x201E || cp == 0xAB || cp == 0xBB;
+          size_t length = 0;
           r_.diags_.report(DiagId::CharInvalid, range,
                            c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
-                           : c < 0x80          ? fmt::format("0x{:02X} (a control character)", c)
-                           : length == 0       ? fmt::format("0x{:02X} (not UTF-8)", c)
                            : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
-                                   : fmt::format("'{}' (U+{:04X})", text, cp));
+                                   : describe_char(text, 0, length));
         }
         return;
       case Nc110Lexer::TRAILING:
@@ -250,12 +247,15 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
 
   // Code points for ANTLR, each with its byte column. The text is UTF-8 (admit_text);
   // were a byte not, U+0001 (INVALID) would stand for it: ANTLR's input throws on one.
+  // So does a byte-order mark first on the line, which ANTLR's input would drop,
+  // shifting every column after it.
   decoded_.clear();
   byte_of_.clear();
   for (size_t i = 0; i < line.size();) {
-    const size_t length = decode_utf8(line, i).length;
+    const Utf8Char c = decode_utf8(line, i);
+    const size_t length = c.length;
     byte_of_.push_back(static_cast<uint32_t>(i));
-    if (length) decoded_.append(line.substr(i, length));
+    if (length && !(i == 0 && c.code_point == 0xFEFF)) decoded_.append(line.substr(i, length));
     else decoded_ += '\x01';
     i += std::max<size_t>(length, 1);
   }
