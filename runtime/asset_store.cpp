@@ -174,11 +174,15 @@ bool set_number(File& f, uint32_t record, size_t field, double value) {
       if (value != std::trunc(value) || value < -32768 || value > 32767) return false;
       w.u16(static_cast<uint16_t>(static_cast<int16_t>(value)));
       break;
-    case FieldType::Real:
-      // Beyond FLT_MAX and half its last step the nearest binary32 is infinite.
-      if (!(std::fabs(value) < double{std::numeric_limits<float>::max()} + 0x1p103)) return false;
-      w.u32(std::bit_cast<uint32_t>(static_cast<float>(value)));
+    case FieldType::Real: {
+      // Beyond FLT_MAX and half its last step the nearest binary32 is infinite; below
+      // that it is FLT_MAX, which the clamp gives without converting a value a float
+      // cannot hold.
+      constexpr double kMax = std::numeric_limits<float>::max();
+      if (!(std::fabs(value) < kMax + 0x1p103)) return false;
+      w.u32(std::bit_cast<uint32_t>(static_cast<float>(std::clamp(value, -kMax, kMax))));
       break;
+    }
     case FieldType::LongReal:
       if (!std::isfinite(value)) return false;
       w.f64(value);
