@@ -3,9 +3,9 @@
 // comment. Each dialect front end gives the rows their meaning.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <optional>
-#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -66,12 +66,19 @@ struct CodeEntry {
   std::string meaning;
 };
 
+// Pairs of code numbers, sorted, each once: a vector, so that copying the tables
+// (load_dialect_tables) is a copy of memory, not thousands of allocations.
+using CodePairs = std::vector<std::pair<int, int>>;
+inline bool has_pair(const CodePairs& pairs, int a, int b) {
+  return std::binary_search(pairs.begin(), pairs.end(), std::pair{a, b});
+}
+
 struct DialectTables {
   std::map<char, AddressEntry> addresses;
   // G codes that must not share a block (a compatibility matrix, NC-110 Table 2.4):
   // pairs of G numbers, both orders. Empty when the dialect has no matrix.
-  std::set<std::pair<int, int>> incompatible;  // printed pairs and class pairs (add_class_pairs)
-  std::set<std::pair<int, int>> printed_incompatible;  // the matrix as the manual prints it
+  CodePairs incompatible;  // printed pairs and class pairs (add_class_pairs)
+  CodePairs printed_incompatible;  // the matrix as the manual prints it
   std::map<int, CodeEntry> g_codes;
   std::map<int, CodeEntry> m_codes;
   std::vector<CyclePattern> cycles;

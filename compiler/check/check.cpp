@@ -139,7 +139,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         if (addr->second.repeat == stdlib::Repeat::Group && matrix) {
           // A compatibility matrix says which codes may share a block (NC-110 Table 2.4).
           for (const ir::Word* other : seen.g_codes)
-            if (rules.tables->incompatible.count({code_number(p, *other), code_number(p, w)})) {
+            if (stdlib::has_pair(rules.tables->incompatible, code_number(p, *other), code_number(p, w))) {
               report_with_note(p, diags, DiagId::CodesIncompatible, w, *other, word_text(p, *other), word_text(p, w));
               break;
             }

@@ -207,7 +207,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   // Table 2.3 is "purely indicative": the machine logic adds or changes M codes (and
   // the NC-2xx/3xx add G codes of their own).
   bool ok = read_machine_codes(p, "nc110", "GM", s.tables, diags);
-  stdlib::add_class_pairs(s.tables);
+  // G codes of the machine's join or leave classes (Table 2.5): the class pairs anew.
+  if (p.user_sets("nc110.tables.g_codes")) stdlib::add_class_pairs(s.tables);
 
   if (auto v = p.number("nc110.e_count", diags)) {
     if (auto n = whole_in<uint32_t>(*v, 1, 65536)) s.e_count = *n;
