@@ -611,7 +611,8 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
   }
   if (next < operands.size()) {
     const auto& pieces = operands[next];
-    SourceRange at = pieces.empty() ? commas[next - 1]
+    // An empty one is the comma before it (operand i follows comma i).
+    SourceRange at = pieces.empty() ? (next < commas.size() ? commas[next] : code_range)
                                     : SourceRange{file_, line_no_, pieces.front().range.col, line_no_,
                                                   pieces.back().range.end_col};
     diags_.report(DiagId::OperandExtra, at, code, std::string(line_.substr(at.col - 1, at.end_col - at.col)));
