@@ -68,10 +68,21 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       pending.push_front(site);
     }
     // Each program once as a subprogram (CLS) and once as a process's program (EXE).
+    // One that cannot be read is reported once; every call of it has errors.
     std::set<std::pair<ir::UnitKind, std::string>> done;
+    std::set<std::string> missing;
     while (!pending.empty() && !diags.limit_reached()) {
       CallSite call = pending.front();
       pending.pop_front();
+      // A call of a program that cannot be read has errors (a process's program an
+      // option selects has no call).
+      auto unread = [&] {
+        if (call.range.file != 0 || call.range.line != 0) program.units[call.unit].blocks[call.block].has_errors = true;
+      };
+      if (missing.count(call.entry)) {
+        unread();
+        continue;
+      }
       if (!done.insert({call.kind, call.entry}).second) continue;
       // Lexically normal, so that messages and the trace name each file one way.
       fs::path root = (!options.library.empty() ? fs::path(options.library)
@@ -87,19 +98,16 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
           found = candidate;
           break;
         }
-      // A call of a program that cannot be read has errors (a process's program an
-      // option selects has no call).
-      auto unread = [&] {
-        if (call.range.file != 0 || call.range.line != 0) program.units[call.unit].blocks[call.block].has_errors = true;
-      };
       if (!text) {
         if (!reported)
           diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
+        missing.insert(call.entry);
         unread();
         continue;
       }
       uint32_t f = sources.add(found.string(), std::move(*text));
       if (!admit_text(sources.file(f), f, diags)) {
+        missing.insert(call.entry);
         unread();
         continue;
       }

@@ -36,15 +36,19 @@ class PpFrontend final : public DialectFrontend<Settings> {
     std::deque<MacroCall> pending(main.macro_calls().begin(), main.macro_calls().end());
     // Macros live in files L<nnnn> of the library (§2.3.5, decision 13).
     const std::string root = library_root(options, s_.library, sources.file(file).path());
-    std::set<uint32_t> done;
+    // A macro that cannot be read is reported at its first call; every call of it has
+    // errors (the check says nothing more of them).
+    std::set<uint32_t> done, missing;
     while (!pending.empty() && !diags.limit_reached()) {
       MacroCall call = pending.front();
       pending.pop_front();
+      if (missing.count(call.number)) program.units[call.unit].blocks[call.block].has_errors = true;
       if (!done.insert(call.number).second) continue;
       auto f = load_called_file(sources, root, Reader::macro_name(call.number), {"", ".pp"},
                                 "L" + std::to_string(call.number), call.range, diags);
       if (!f) {
         program.units[call.unit].blocks[call.block].has_errors = true;
+        missing.insert(call.number);
         continue;
       }
       program.files.push_back(*f);

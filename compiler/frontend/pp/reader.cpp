@@ -235,6 +235,7 @@ std::string Reader::comment_text(antlr4::Token* t) const {
 
 void Reader::read_block(const Piece& piece) {
   block_ = ir::Block{};
+  char_reported_ = false;
   assignments_.clear();
   slash_ = false;
   const size_t errors = diags_.error_count();
@@ -325,7 +326,9 @@ void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vec
     case PpLexer::OPEN_COMMENT: block_.comments.push_back(comment_text(t)); return;
     default: break;
   }
-  // A damaged word: what is next to it says what was meant.
+  // A damaged word: what is next to it says what was meant. After a character
+  // outside the alphabet, what looks damaged is most likely more of the same text.
+  if (char_reported_) return;
   auto adjacent = [&](size_t a, size_t b) {  // only spaces between elements a and b
     if (b >= all.size()) return false;
     antlr4::Token* x = all[a]->getStop();
@@ -369,9 +372,12 @@ void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vec
       diags_.report(DiagId::ProgramStructure, r, "'%' begins the program and stands once, before its first block");
       return;
     default: {
-      // Each byte of a character outside 7-bit ASCII is a token: the first reports it.
+      // One character a block: a line of foreign text (a comment in another dialect's
+      // parentheses) is one mistake, not one a letter. Each byte of a character
+      // outside 7-bit ASCII is a token: its first reports it.
       const size_t at = piece_.begin + t->getStartIndex();
-      if ((static_cast<unsigned char>(source_.text()[at]) & 0xC0) == 0x80) return;
+      if (char_reported_ || (static_cast<unsigned char>(source_.text()[at]) & 0xC0) == 0x80) return;
+      char_reported_ = true;
       size_t length = 1;
       std::string what = describe_char(source_.text(), at, length);
       diags_.report(DiagId::CharInvalid, {r.file, r.line, r.col, r.line, r.col + static_cast<uint32_t>(length)}, what);

@@ -110,6 +110,7 @@ class Reader {
   PpParser parser_{&tokens_};
   std::string sanitized_;
   Piece piece_;  // the text being parsed
+  bool char_reported_ = false;  // the block's first character outside the alphabet is
 
   std::string number_;  // the program number, "%35"
   std::string title_;
