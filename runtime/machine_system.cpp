@@ -25,9 +25,11 @@ double Machine::system(SysRef ref) const {
     case SysVar::ModalCode: {
       // The number of the program's code that sets the group's state now.
       const FnCall now = current(static_cast<FnGroup>(ref.index));
+      // Vacant (NaN) when no code of the program sets it.
       for (const CodeDesc& c : sem_.codes)
-        if (!c.calls.empty() && c.calls.front() == now && c.name.size() > 1) return std::atof(c.name.c_str() + 1);
-      return std::numeric_limits<double>::quiet_NaN();  // vacant: no code of the program sets it
+        if (!c.calls.empty() && c.calls.front() == now && c.name.size() > 1)
+          return parse_number<double>(std::string_view(c.name).substr(1)).value_or(std::numeric_limits<double>::quiet_NaN());
+      return std::numeric_limits<double>::quiet_NaN();
     }
     case SysVar::ModalWord:
       switch ('A' + ref.index) {

@@ -58,14 +58,15 @@ std::optional<std::string> read_file(const std::string& path, const FileLimit& l
   // comes (a file that grew, a pipe) in pieces, up to one byte past the limit.
   if (!error && S_ISREG(st.st_mode)) text.resize(static_cast<size_t>(st.st_size));
   size_t have = 0;
-  char piece[1 << 16];
+  std::string piece;  // on the heap: an embedding controller's thread may have a small stack
   while (!error) {
     const bool room = have < text.size();
-    const ssize_t n = room ? ::read(fd, text.data() + have, text.size() - have) : ::read(fd, piece, sizeof piece);
+    if (!room) piece.resize(1 << 16);
+    const ssize_t n = room ? ::read(fd, text.data() + have, text.size() - have) : ::read(fd, piece.data(), piece.size());
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) error = errno;
     if (n <= 0) break;
-    if (!room) text.append(piece, static_cast<size_t>(n));
+    if (!room) text.append(piece.data(), static_cast<size_t>(n));
     have += static_cast<size_t>(n);
     if (have > limit.bytes) error = EFBIG;
   }

@@ -526,9 +526,9 @@ class ModuleInput {
   }
   // Whatever is left, through the checksum; false if it could not be read.
   bool skip_rest() {
-    char piece[1 << 16];
+    std::string piece(std::min<uint64_t>(remaining(), 1 << 16), '\0');  // on the heap: see read_file
     while (remaining() > 0)
-      if (!take(std::min<uint64_t>(remaining(), sizeof piece), piece)) return false;
+      if (!take(std::min<uint64_t>(remaining(), piece.size()), piece.data())) return false;
     return true;
   }
   virtual uint64_t remaining() const = 0;

@@ -102,9 +102,9 @@ enum class Operand : uint8_t {
   X(Comment, "s", 0, 0, "show strings[s] to the operator")                                     \
   X(Repeat, "jk", 1, 0, "pop a count 0..numbers[k]; open a repeat loop, or go to j if it is 0") \
   X(EndRepeat, "j", 0, 0, "count down the innermost repeat loop; go to j while it runs")       \
-  X(Unloop, "d", 0, 0, "the next jump lands at repeat-loop depth n of its code: close deeper loops") \
+  X(Unloop, "d", 0, 0, "the next jump lands at repeat-loop depth d of its code: close deeper loops") \
   X(CallEntry, "e", 1, 0, "pop a count 1..9999; call entry point e that many times, one after the other") \
-  X(CallRange, "jjd", 0, 0, "run the code from j1 (at loop depth n) to the RANGEEND at j2, then come back") \
+  X(CallRange, "jjd", 0, 0, "run the code from j1 (at loop depth d) to the RANGEEND at j2, then come back") \
   X(RangeEnd, "", 0, 0, "the end of a range: come back if the innermost frame runs it")       \
   X(Return, "", 0, 0, "return from a call")                                                    \
   X(End, "", 0, 0, "end of the program unit")                                                  \

@@ -102,7 +102,9 @@ RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... 
 std::optional<uint32_t> Vm::variable(uint8_t space, double index, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   const std::optional<uint32_t> i = s.size ? whole_in<uint32_t>(index, 0, s.size - 1) : std::nullopt;
-  if (!i) fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)), fmt::format("{}: 0 to {}", s.name, s.size - 1));
+  if (!i)
+    fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)),
+         s.size ? fmt::format("{}: 0 to {}", s.name, s.size - 1) : fmt::format("{}, which has no variables", s.name));
   else if (type_at(space, *i) == VarType::Unavailable) return (fail(pc, DiagId::VariableNumber, *i), std::nullopt);
   return i;
 }

@@ -22,8 +22,8 @@ namespace ncc {
 
 namespace {
 
-// The blocks a run may execute beyond the program's own (--max-steps sets another
-// bound): a run, long loops included; the dry run of check and compile, which runs
+// The steps (blocks, and a cycle's moves beyond its first) a run may take beyond the
+// program's blocks (--max-steps sets another bound): a run, long loops included; the dry run of check and compile, which runs
 // each block of a CAM file once and the loops of a parametric program (docs/limits.md).
 constexpr uint64_t kDefaultExtraSteps = 100'000'000;
 constexpr uint64_t kDryRunExtraSteps = 1'000'000;
