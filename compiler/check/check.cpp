@@ -220,14 +220,17 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
   auto callable = [&](const std::string& name) {
     return name.starts_with(own) ? labels.count(name.substr(own.size())) > 0 : entries.count(name) > 0;
   };
+  // A block refused whole may hold the label a jump names: its own error says enough.
+  const bool unread = std::ranges::any_of(unit.blocks, [](const ir::Block& b) { return b.unread; });
+  auto undefined = [&](const std::string& label) { return !unread && !labels.count(label); };
   for (ir::Block& b : unit.blocks) {
     uint32_t errors = diags.error_count();
     for (const ir::Stmt& s : b.stmts) {
-      if (s.kind == ir::StmtKind::Jump && !s.label.empty() && !labels.count(s.label))
+      if (s.kind == ir::StmtKind::Jump && !s.label.empty() && undefined(s.label))
         diags.report(DiagId::LabelUndefined, s.range, "jump to", s.label);
       if (s.kind == ir::StmtKind::CallRange) {
-        if (!labels.count(s.label)) diags.report(DiagId::LabelUndefined, s.range, "block range from", s.label);
-        if (!labels.count(s.end_label)) diags.report(DiagId::LabelUndefined, s.end_range, "block range to", s.end_label);
+        if (undefined(s.label)) diags.report(DiagId::LabelUndefined, s.range, "block range from", s.label);
+        if (undefined(s.end_label)) diags.report(DiagId::LabelUndefined, s.end_range, "block range to", s.end_label);
       }
       if (s.kind == ir::StmtKind::Call && !callable(s.label) && !b.has_errors)
         diags.report(DiagId::CallUndefined, s.range, s.label);

@@ -263,7 +263,7 @@ void Reader::read_block(std::string_view line, uint32_t line_no) {
   uint32_t errors = diags_.error_count();
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
   if (!block_fits(line.size(), block_.range, diags_)) {
-    block_.has_errors = true;
+    block_.has_errors = block_.unread = true;
     first_block_ = false;
     unit_.blocks.push_back(std::move(block_));
     return;

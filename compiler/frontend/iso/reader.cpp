@@ -398,7 +398,8 @@ void Reader::read(const Piece& piece) {
   SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
   if (!block_fits(piece.end - piece.begin, whole, diags_)) {
     corner_.reset();
-    new_block(whole).has_errors = true;
+    ir::Block& refused = new_block(whole);
+    refused.has_errors = refused.unread = true;
     return;
   }
   load(piece);
@@ -481,7 +482,7 @@ void Reader::read(const Piece& piece) {
   const size_t index = unit_.blocks.size() - 1;
   block.comments = std::move(comments);
   if (bad) {
-    block.has_errors = true;
+    block.has_errors = block.unread = true;
     return;
   }
   block_ = ir::Block{};

@@ -238,7 +238,7 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   block_.range = {file_, line_no, 1, line_no, static_cast<uint32_t>(line.size() + 1)};
   // A line far beyond the 128 characters of a block is not read at all.
   if (!block_fits(line.size(), block_.range, diags_)) {
-    block_.has_errors = true;
+    block_.has_errors = block_.unread = true;
     return keep_block();
   }
   // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
@@ -294,7 +294,7 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
                                          Nc110Lexer::RPAREN, Nc110Lexer::DIGITS}};
   tokens_.fill();
   if (!expression_fits(tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_)) {
-    block_.has_errors = true;
+    block_.has_errors = block_.unread = true;
     return keep_block();
   }
   parser_.setTokenStream(&tokens_);

@@ -246,7 +246,7 @@ void Reader::read_block(const Piece& piece) {
   // Most blocks are address words only: the hand-written scanner reads them, ANTLR the
   // rest (both give the same IR: tests/fastpath). A block beyond the limit is not read.
   if (!block_fits(piece.end - piece.begin, block_.range, diags_)) {
-    block_.has_errors = true;
+    block_.has_errors = block_.unread = true;
   } else if (!fast_path_ || !scan_plain(piece)) {
     load(piece);
     PpParser::BlockContext* ctx = parser_.block();
