@@ -45,6 +45,7 @@ class SourceFile {
 // stay where they are as more are added (a front end reads the programs a program calls).
 class SourceManager {
  public:
+  // `text` holds at most kProgramFile.bytes (read_file's limit): positions are 32-bit.
   uint32_t add(std::string path, std::string text);
   const SourceFile& file(uint32_t index) const { return files_[index]; }
   size_t size() const { return files_.size(); }
