@@ -186,7 +186,7 @@ struct Block {
   bool main_block = false;         // ':' (GOST 20999 §2.6)
   bool skippable = false;          // '/' before the block: skipped when block skip is on
   bool has_errors = false;
-  bool unread = false;  // refused whole (beyond a limit, or iso's syntax error): its label too is unknown
+  bool unread = false;  // refused whole, beyond a limit: its label too is unknown
   char sync = 0;                   // NC-110 '#': wait for the motion before; '&': do not
   bool waits_motion = false;       // evaluated once the motion before it has ended ('#', NC-110 SA/SK blocks)
   std::string label;

@@ -482,7 +482,7 @@ void Reader::read(const Piece& piece) {
   const size_t index = unit_.blocks.size() - 1;
   block.comments = std::move(comments);
   if (bad) {
-    block.has_errors = block.unread = true;
+    block.has_errors = true;
     return;
   }
   block_ = ir::Block{};

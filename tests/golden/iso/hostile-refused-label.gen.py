@@ -1,6 +1,6 @@
-# Jumps to blocks that were refused whole: one beyond the block limit, one with a
-# syntax error. Each block's own error is the one message: the jumps to their numbers
-# (which were not read) add none (NC3010 would only repeat the cause).
+# Jumps to blocks that were not read: one beyond the block limit, one with a syntax
+# error. Each block's own error is the one message: a unit with a block refused whole
+# reports no jump to a number it lacks (the refused block may hold it).
 import pathlib
 import sys
 
