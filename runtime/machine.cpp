@@ -40,6 +40,25 @@ void Machine::power_on() {
   block_skip_ = config_.block_skip;
   optional_stop_ = config_.optional_stop;
   reset_state();
+  // A trace to compare with another dialect's starts with the modes the power-on
+  // state gives: one dialect's power-on G94 is another's written G94.
+  if (config_.trace_machine_frame && events_wanted_) {
+    auto state = [&](EventKind kind, int n) {
+      Event e{kind};
+      e.n = n;
+      e.plane = modal_.plane;
+      trace_.event(e);
+    };
+    state(EventKind::Units, modal_.inch);
+    state(EventKind::Plane, 0);
+    state(EventKind::FeedMode, modal_.feed_mode);
+    state(EventKind::SpindleMode, modal_.constant_surface);
+    if (feed_) {
+      Event e{EventKind::FeedRate};
+      e.a = *feed_;
+      trace_.event(e);
+    }
+  }
 }
 
 void Machine::reset_state() {
@@ -217,6 +236,7 @@ FnCall Machine::current(FnGroup group) const {
 
 void Machine::tool_length_event() {
   Event e{EventKind::ToolLengthOffset};
+  e.n = offset_number_;  // the entry it comes from (translation writes it again)
   e.pos = in_program_units(compensation().length);
   emit(e);
 }

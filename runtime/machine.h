@@ -338,6 +338,7 @@ class Machine {
   double offset_value(int offset, int axis) const;  // machine units
   double origin(int axis) const;                    // of the active frame
   AxisValues origins() const;
+  AxisValues shown_origins() const;                 // what the trace's positions are from
   AxisValues frame_offset(int work_offset) const;   // GOST: work offset + position offset
   AxisValues target_frame() const;                  // the frame this block's words are in
   AxisValues to_machine(const AxisValues& program) const;  // apply the frame

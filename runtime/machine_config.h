@@ -110,6 +110,10 @@ struct MachineConfig {
   // Bytes a process's runtime may hold back for later moves (Machine::held_bytes) before
   // the run stops (limits.run_memory_mib): a real program holds a few events.
   uint64_t run_memory = uint64_t{256} << 20;
+  // The trace shows positions in machine coordinates (in program units), not from
+  // the active origin: runs of programs that reach the same points through different
+  // origins (a translation) compare move for move (`ncc run --trace-frame machine`).
+  bool trace_machine_frame = false;
 
   static std::array<AxisConfig, kAxisCount> default_axes() {
     std::array<AxisConfig, kAxisCount> a{};

@@ -51,6 +51,8 @@ AxisValues Machine::origins() const {
   return o;
 }
 
+AxisValues Machine::shown_origins() const { return config_.trace_machine_frame ? AxisValues{} : origins(); }
+
 AxisValues Machine::frame_offset(int work_offset) const {
   AxisValues off{};
   for (int i = 0; i < kAxisCount; ++i) off[i] = offset_value(work_offset, i) + frame_.shift[i] + frame_.local[i];

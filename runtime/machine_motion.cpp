@@ -45,7 +45,7 @@ void Machine::move_to(const AxisValues& t) {
 Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
   // The trace shows positions from the active origin (docs/trace.md).
   Event e{kind};
-  AxisValues off = origins();
+  AxisValues off = shown_origins();
   for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
   e.pos = in_program_units(e.pos);
   // An endless rotary axis shows 0..359.9999 however far it has turned (NC-110 §2.8.4).
@@ -361,7 +361,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   if (wanted(EventKind::Arc)) {
     Event e = motion_event(EventKind::Arc, t);
     e.plane = modal_.plane;
-    AxisValues off = origins();
+    AxisValues off = shown_origins();
     e.centre[0] = program_axis(u, centre.x() - off[u]);
     e.centre[1] = program_axis(v, centre.y() - off[v]);
     e.a = to_program(r0);
@@ -410,7 +410,7 @@ void Machine::parabola(const AxisValues& t) {
     parabola_middle_.reset();
   }
   Event e = motion_event(EventKind::Parabola, t);
-  AxisValues shown = origins();
+  AxisValues shown = shown_origins();
   for (int i = 0; i < 3; ++i) e.control[i] = to_program(control[i] - shown[i]);
   emit(e);
   move_to(t);
@@ -590,7 +590,7 @@ void Machine::spline_finish(const AxisValues& lead_out_end) {
     end.clamped = false;
   }
   const std::vector<BezierSpan> spans = cubic_spline(points, start, end);
-  const AxisValues off = origins();
+  const AxisValues off = shown_origins();
   const BlockRequest* lead_out = block_.request;
   for (size_t i = 0; i < spans.size(); ++i) {
     const AxisValues& from = spline_.points[i];

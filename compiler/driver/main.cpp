@@ -16,6 +16,7 @@
 #include "files.h"
 #include "frontend/frontend.h"
 #include "pipeline.h"
+#include "translate/translate.h"
 
 namespace ncc {
 namespace {
@@ -64,6 +65,8 @@ constexpr Command kCommands[] = {
     {"run", "run a program (source or .ncb) and write its trace", "ncc run [options] FILE",
      R"(  --trace FILE              write the trace to FILE ('-' = stdout, the default; 'none' = no trace)
   --trace-format F          text | jsonl | canon (default text; docs/trace.md)
+  --trace-frame F           work | machine: positions from the active origin (default), or in machine
+                            coordinates, offsets and shifts included (to compare runs through other origins)
   --trace-blocks            a 'block' event as each block starts (which blocks ran, how often)
   --max-steps N             stop after N steps: the blocks run, and the moves a block makes beyond its
                             first, a cycle's holes and pecks (default: the program's blocks + 100000000)
@@ -76,6 +79,20 @@ constexpr Command kCommands[] = {
   --input FILE              the operator's answers to NC-110 INP, a line each: a number, or ENTER;
                             and the PLC's signals a WAI waits for: SA12=1
   --screen                  after the trace, the NC-110 user screen as the run left it
+)"},
+    {"translate", "write a program in another dialect", "ncc translate [options] --to DIALECT --flatten FILE [-o OUT]",
+     R"(  --to DIALECT              the target: gost, nc110, pp, iso or linuxcnc (RS274NGC as LinuxCNC 2.9 reads it)
+  --flatten                 run the program and write the plain motion blocks it makes (docs/translate.md)
+  -o FILE                   the program to write ('-' = stdout, the default); nothing is written when
+                            the program has errors or the target cannot say what it does
+  --target-machine FILE     the machine profile of the target (default: the source's, --machine)
+  --block-skip              the block-skip switch is on while flattening: '/' parts are skipped
+  --optional-stop           the optional-stop switch is on while flattening
+  --max-steps N             stop flattening after N steps (default: the program's blocks + 100000000)
+  --max-memory MIB          stop flattening when the runtime holds more for later moves (default: the
+                            profile's limits.run_memory_mib, 256)
+  --files DIR               NC-110: the ASSET sandbox the run reads
+  --input FILE              NC-110: the operator's answers to INP
 )"},
     {"disasm", "print the bytecode of a program (source or .ncb)", "ncc disasm [options] FILE", ""},
     {"ir", "print the intermediate representation of a program", "ncc ir [options] FILE", ""},
@@ -111,6 +128,9 @@ struct Options {
   uint32_t error_limit = 100;
   std::string color = "auto";
   RunSettings run;
+  std::string to;              // translate
+  bool flatten = false;
+  std::string target_machine;
 };
 
 bool parse_number(const std::string& text, uint64_t& out) {
@@ -174,6 +194,15 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       else if (text == "jsonl") o.trace_format = TraceFormat::Jsonl;
       else if (text == "canon") o.trace_format = TraceFormat::Canon;
       else return "--trace-format must be text, jsonl or canon";
+    } else if (a == "--to" && allowed("--to DIALECT")) {
+      if (!value(o.to) || !translate::is_target(o.to)) return "--to needs a dialect: gost, nc110, pp, iso or linuxcnc";
+    } else if (a == "--flatten" && allowed("--flatten")) {
+      o.flatten = true;
+    } else if (a == "--target-machine" && allowed("--target-machine")) {
+      if (!value(o.target_machine)) return "--target-machine needs a file";
+    } else if (a == "--trace-frame" && allowed("--trace-frame")) {
+      if (!value(text) || (text != "work" && text != "machine")) return "--trace-frame must be work or machine";
+      o.run.trace_machine_frame = text == "machine";
     } else if (a == "--max-steps" && allowed("--max-steps")) {
       if (!number(n)) return "--max-steps needs a number";
       o.run.max_steps = n;
@@ -205,6 +234,9 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
   }
   if (o.input.empty()) return "no input file";
   if (o.command == "compile" && o.output.empty()) return "compile needs -o FILE";
+  if (o.command == "translate" && o.to.empty()) return "translate needs --to DIALECT";
+  if (o.command == "translate" && !o.flatten)
+    return "structured translation is not built yet: give --flatten (the program's motion as plain blocks)";
   return {};
 }
 
@@ -229,6 +261,7 @@ class Cli {
     if (o_.command == "compile") return compile(kind, file);
     if (o_.command == "run") return run(kind, file);
     if (o_.command == "disasm") return disasm(kind, file);
+    if (o_.command == "translate") return translate(kind, file);
     return ir(kind, file);
   }
 
@@ -343,6 +376,51 @@ class Cli {
     }
     if (close && std::fclose(out) != 0) s_.diags.report(DiagId::FileUnwritable, {}, o_.trace, std::strerror(errno));
     return finish(result.usage_error ? kUsage : result.ok ? kOk : kProgramErrors, stderr);
+  }
+
+  int translate(FileKind kind, uint32_t file) {
+    int status = kOk;
+    auto m = module(kind, file, status);
+    if (!m) return finish(status, stderr);
+    translate::Request request;
+    request.to = o_.to;
+    request.header = {o_.input, kind == FileKind::Source ? o_.dialect : m->semantics.dialect, {}, o_.flatten};
+    request.run = o_.run;
+    std::optional<stdlib::Profile> target_profile;
+    if (!o_.target_machine.empty()) {
+      target_profile = stdlib::Profile::load(s_.sources, o_.target_machine, s_.diags);
+      if (!target_profile) return finish(kUsage, stderr);
+      request.target_profile = &*target_profile;
+    } else {
+      request.target_profile = module_profile(s_, *m);
+      if (!request.target_profile) return finish(kUsage, stderr);
+    }
+    // The whole program or nothing: a temporary file renamed into place.
+    const bool to_stdout = o_.output.empty() || o_.output == "-";
+    std::string temp = o_.output + ".tmp";
+    std::FILE* out = to_stdout ? std::tmpfile() : std::fopen(temp.c_str(), "wb");
+    if (!out) {
+      s_.diags.report(DiagId::FileUnwritable, {}, to_stdout ? std::string("a temporary file") : temp, std::strerror(errno));
+      return finish(kUsage, stderr);
+    }
+    bool ok = translate::flatten(s_, *m, request, out);
+    if (to_stdout) {
+      if (ok) {
+        std::rewind(out);
+        char buffer[1 << 16];
+        for (size_t n; (n = std::fread(buffer, 1, sizeof buffer, out)) > 0;) std::fwrite(buffer, 1, n, stdout);
+      }
+      std::fclose(out);
+    } else {
+      const bool written = std::fclose(out) == 0;
+      if (ok && (!written || std::rename(temp.c_str(), o_.output.c_str()) != 0)) {
+        s_.diags.report(DiagId::FileUnwritable, {}, o_.output, std::strerror(errno));
+        std::remove(temp.c_str());
+        return finish(kUsage, stderr);
+      }
+      if (!ok) std::remove(temp.c_str());
+    }
+    return finish(ok ? kOk : s_.diags.has_errors() ? kProgramErrors : kUsage, stderr);
   }
 
   int disasm(FileKind kind, uint32_t file) {

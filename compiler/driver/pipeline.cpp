@@ -210,6 +210,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   if (s.diags.error_count() != errors) return cannot_start();
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
+  config.trace_machine_frame = settings.trace_machine_frame;
   vm::VmOptions options;
   const uint64_t blocks = m.source_map.size();
   options.max_steps = settings.max_steps.value_or(blocks + (dry ? kDryRunExtraSteps : kDefaultExtraSteps));
@@ -419,6 +420,12 @@ std::optional<vm::Module> load_module(Session& s, uint32_t file) {
   if (fd >= 0) ::close(fd);
   return m;
 }
+
+void report_at_block(Session& s, const vm::Module& module, uint32_t source, DiagId id, std::string message) {
+  IssueReporter(s, module, false, {}).issue({id, std::move(message), source, -1, -1});
+}
+
+const stdlib::Profile* module_profile(Session& s, const vm::Module& module) { return run_profile(s, module); }
 
 RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace) {
   return execute(s, module, settings, trace, false);

@@ -36,6 +36,7 @@ struct RunSettings {
   bool block_skip = false;
   bool optional_stop = false;
   bool trace_blocks = false;
+  bool trace_machine_frame = false;  // --trace-frame machine: positions in machine coordinates
   std::optional<uint32_t> start_block;  // a main block ':N' to start at
   std::string files;  // the ASSET sandbox ("": none, every ASSET statement answers code 18)
   std::string input;  // the operator's answers to INP, a line each ("": none)
@@ -66,6 +67,10 @@ struct RunResult {
   uint64_t steps = 0;
   std::optional<std::vector<std::string>> screen;  // the NC-110 user screen at the end, a line a row (none: off)
 };
+// Reports a problem at a block of a module's source map (what a run finds).
+void report_at_block(Session& s, const vm::Module& module, uint32_t source, DiagId id, std::string message);
+// The profile a module runs with: --machine if given, else the one it was compiled with.
+const stdlib::Profile* module_profile(Session& s, const vm::Module& module);
 RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace);
 
 }  // namespace ncc

@@ -45,6 +45,8 @@ class Frontend {
   virtual ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) = 0;
   // What the dialect-independent checks need to know about this dialect.
   virtual const CheckRules& rules() const = 0;
+  // How the dialect's words are read (a translation writes them so).
+  virtual const Conventions& conventions() const = 0;
 };
 
 // A front end over its dialect's validated settings, whose tables the checks read.
@@ -55,6 +57,7 @@ class DialectFrontend : public Frontend {
   DialectFrontend(const DialectFrontend&) = delete;  // rules_ points into s_
   DialectFrontend& operator=(const DialectFrontend&) = delete;
   const CheckRules& rules() const override { return rules_; }
+  const Conventions& conventions() const override { return s_.conventions; }
 
  protected:
   // A program of `dialect` whose main file is `file`, with the settings' conventions

@@ -1,0 +1,73 @@
+#include "translate.h"
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include "flatten.h"
+#include "stdlib/profile.h"
+
+namespace ncc::translate {
+namespace {
+
+// The flattener's trace sink, writing the target text out as it grows: a long
+// program translates in bounded memory.
+class Streaming final : public TraceSink {
+ public:
+  Streaming(Flattener& f, Writer& w, std::FILE* out) : f_(f), w_(w), out_(out) {}
+  void event(const Event& e) override {
+    f_.event(e);
+    if (w_.pending() > (1 << 16)) write();
+  }
+  void write() {
+    std::string text = w_.take();
+    if (std::fwrite(text.data(), 1, text.size(), out_) != text.size()) failed = true;
+  }
+  bool failed = false;
+
+ private:
+  Flattener& f_;
+  Writer& w_;
+  std::FILE* out_;
+};
+
+}  // namespace
+
+bool flatten(Session& s, const vm::Module& module, const Request& request, std::FILE* out) {
+  const uint32_t errors = s.diags.error_count();
+  auto writer = make_writer(request.to, *request.target_profile, s.diags);
+  if (!writer) return false;
+  MachineConfig target = stdlib::load_machine_config(*request.target_profile, s.diags);
+  if (s.diags.error_count() != errors) return false;
+  // Each construct once, at its first block, with the count of the others.
+  struct Seen {
+    uint32_t source;
+    bool dropped;
+    size_t more = 0;
+  };
+  std::map<std::string, Seen> seen;
+  std::vector<std::string> order;
+  Flattener flattener(*writer, module.semantics, target, [&](const Refusal& r) {
+    auto [it, fresh] = seen.try_emplace(r.what, Seen{r.source, r.dropped});
+    if (fresh) order.push_back(r.what);
+    else if (it->second.source != r.source) ++it->second.more;
+  });
+  writer->begin(request.header);
+  Streaming sink(flattener, *writer, out);
+  RunSettings run = request.run;
+  run.trace_machine_frame = true;
+  RunResult result = run_module(s, module, run, sink);
+  flattener.finish();
+  sink.write();
+  bool refused = false;
+  for (const std::string& what : order) {
+    const Seen& r = seen.at(what);
+    const std::string text = what + (r.more ? fmt::format(" (and in {} more blocks)", r.more) : "");
+    const DiagId id = r.dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused;
+    report_at_block(s, module, r.source, id, diag_message(id, writer->dialect(), text));
+    refused |= !r.dropped;
+  }
+  return result.ok && !result.usage_error && !refused && !sink.failed && s.diags.error_count() == errors;
+}
+
+}  // namespace ncc::translate

@@ -1,0 +1,61 @@
+#include "writer.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace ncc::translate {
+
+std::string Writer::decimal(double v, int decimals, bool point) {
+  const double scale = std::pow(10.0, decimals);
+  double r = std::round(v * scale) / scale;
+  if (r == 0) r = 0;  // never "-0"
+  std::string s = fmt::format("{:.{}f}", r, decimals);
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.' && !point) s.pop_back();
+  } else if (point) {
+    s += '.';
+  }
+  return s;
+}
+
+std::optional<std::string> Writer::unwritable(const OutWord& w) const {
+  if (w.kind == Value::Code) return std::nullopt;
+  const auto it = tables().addresses.find(w.letter);
+  if (it == tables().addresses.end() || !it->second.ranged) return std::nullopt;
+  const stdlib::AddressEntry& a = it->second;
+  // A length is rounded to the step the target writes (resolution); any other value
+  // must be written as it is: a speed, a feed or a dwell rounded is another one.
+  const int decimals = a.word_class == stdlib::WordClass::NonDimension && a.decimals == 0 ? 0 : a.decimals;
+  const double scale = std::pow(10.0, decimals);
+  const double v = std::round(w.value * scale) / scale;
+  if (w.kind != Value::Length && w.kind != Value::Angle && std::fabs(v - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
+    return fmt::format("{}{}: {} writes {} with {} decimals", w.letter, decimal(w.value, 6, false), dialect(), w.letter,
+                       decimals);
+  if (v >= a.min && v <= a.max) return std::nullopt;
+  return fmt::format("{}{}: {} writes {} from {} to {}", w.letter, decimal(w.value, 4, false), dialect(), w.letter,
+                     decimal(a.min, 4, false), decimal(a.max, 4, false));
+}
+
+bool is_target(std::string_view dialect) {
+  return dialect == "gost" || dialect == "nc110" || dialect == "pp" || dialect == "iso" || dialect == "linuxcnc";
+}
+
+std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Profile& profile, Diagnostics& diags) {
+  // LinuxCNC's codes are the ISO dialect's, for everything a translation writes.
+  auto target = make_frontend(dialect == "linuxcnc" ? "iso" : dialect, profile, diags);
+  if (!target) return nullptr;
+  if (dialect == "linuxcnc") {
+    const uint32_t errors = diags.error_count();
+    auto writer = make_iso_writer(std::move(target), true);
+    writer->set_tables(stdlib::load_dialect_tables("linuxcnc", diags));
+    return diags.error_count() == errors ? std::move(writer) : nullptr;
+  }
+  if (dialect == "iso") return make_iso_writer(std::move(target), false);
+  if (dialect == "gost") return make_gost_writer(std::move(target), profile);
+  if (dialect == "pp") return make_pp_writer(std::move(target));
+  return make_nc110_writer(std::move(target));
+}
+
+}  // namespace ncc::translate

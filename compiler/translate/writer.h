@@ -1,0 +1,96 @@
+// How a program is written in a target dialect: its start and end, block numbers,
+// comments, number formats and line length. A translation says what each block
+// holds (words by their meaning); the target's Writer says how the block reads.
+// One Writer per target dialect (writer_<dialect>.cpp).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "frontend/frontend.h"
+#include "stdlib/profile.h"
+
+namespace ncc::translate {
+
+// What a word's value is: it decides how the value is written.
+enum class Value : uint8_t {
+  Code,     // a G or M number: G00, M30
+  Length,   // a position, an arc centre, a pitch: mm or inch
+  Angle,    // a rotary axis: degrees
+  Feed,     // F
+  Speed,    // S
+  Count,    // a whole number: T, D, H, a repeat count
+  Seconds,  // a dwell, in the target's dwell unit already
+};
+
+struct OutWord {
+  char letter = 0;
+  double value = 0;
+  Value kind = Value::Length;
+};
+
+// The program being written: what its leading comment says.
+struct Header {
+  std::string source;   // the source file, as named on the command line
+  std::string dialect;  // the source's dialect
+  std::string title;    // the source program's title, if it has one
+  bool flattened = false;
+};
+
+class Writer {
+ public:
+  virtual ~Writer() = default;
+  // The dialect written ("linuxcnc" writes RS274NGC as LinuxCNC 2.9 reads it).
+  virtual std::string_view dialect() const = 0;
+  // The program start: the target's program number and a comment naming the source.
+  virtual void begin(const Header& header) = 0;
+  // One block: the words in the target's usual order, then the comment (if any).
+  virtual void block(const std::vector<OutWord>& words, std::string_view comment = {}) = 0;
+  // A block of operator text only.
+  void comment(std::string_view text) { block({}, text); }
+  // The program end (after the block that ends it, if any).
+  virtual void end() = 0;
+  // The smallest length step the target's numbers write (mm): a position it writes
+  // is exact to half of it.
+  virtual double resolution() const = 0;
+  // Why `w` cannot be written in the target (a value beyond the range of its
+  // address, docs/dialects: addresses.tsv), or nothing.
+  virtual std::optional<std::string> unwritable(const OutWord& w) const;
+  // The target's code tables and conventions, with its machine profile.
+  const stdlib::DialectTables& tables() const { return own_tables_ ? *own_tables_ : *target_->rules().tables; }
+  // A target ncc does not read yet (LinuxCNC) has code tables of its own.
+  void set_tables(stdlib::DialectTables tables) { own_tables_ = std::move(tables); }
+  const Conventions& conventions() const { return target_->conventions(); }
+
+  // The text written so far, taken (a caller writes it out as it goes).
+  std::string take() { return std::exchange(out_, {}); }
+  size_t pending() const { return out_.size(); }
+
+ protected:
+  explicit Writer(std::unique_ptr<Frontend> target) : target_(std::move(target)) {}
+  // A number with at most `decimals` decimals, trailing zeros dropped; "-0" never.
+  static std::string decimal(double v, int decimals, bool point = true);
+  std::string out_;
+
+ private:
+  std::unique_ptr<Frontend> target_;
+  std::optional<stdlib::DialectTables> own_tables_;
+};
+
+// The dialects a program can be translated to.
+bool is_target(std::string_view dialect);
+// The writer of `dialect` (is_target) with the target's profile; nothing when the
+// profile's settings for it are invalid (reported).
+std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Profile& profile, Diagnostics& diags);
+
+// The writers (writer_<dialect>.cpp).
+std::unique_ptr<Writer> make_iso_writer(std::unique_ptr<Frontend> target, bool linuxcnc);
+std::unique_ptr<Writer> make_gost_writer(std::unique_ptr<Frontend> target, const stdlib::Profile& profile);
+std::unique_ptr<Writer> make_pp_writer(std::unique_ptr<Frontend> target);
+std::unique_ptr<Writer> make_nc110_writer(std::unique_ptr<Frontend> target);
+
+}  // namespace ncc::translate

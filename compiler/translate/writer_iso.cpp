@@ -1,0 +1,73 @@
+// ISO/Fanuc programs, and RS274NGC as LinuxCNC 2.9 reads it: the same words, but
+// LinuxCNC reads `O` as an o-word and acts on comments that start with MSG.
+#include <fmt/format.h>
+
+#include "writer.h"
+
+namespace ncc::translate {
+namespace {
+
+class IsoWriter final : public Writer {
+ public:
+  IsoWriter(std::unique_ptr<Frontend> target, bool linuxcnc) : Writer(std::move(target)), linuxcnc_(linuxcnc) {}
+
+  std::string_view dialect() const override { return linuxcnc_ ? "linuxcnc" : "iso"; }
+  double resolution() const override { return 1e-4; }
+
+  void begin(const Header& h) override {
+    if (!linuxcnc_) out_ += "%\nO0001\n";
+    comment(fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated", h.source, h.dialect,
+                        h.title.empty() ? "" : ": " + h.title));
+  }
+
+  void block(const std::vector<OutWord>& words, std::string_view comment) override {
+    std::string line;
+    for (const OutWord& w : words) {
+      if (!line.empty()) line += ' ';
+      line += w.letter;
+      line += number(w);
+    }
+    if (!comment.empty() || words.empty()) {  // an empty message is "()", not an empty line
+      if (!line.empty()) line += ' ';
+      line += '(';
+      // A comment that starts with MSG, DEBUG or PRINT is an instruction to LinuxCNC.
+      if (linuxcnc_ && starts_command(comment)) line += "- ";
+      for (char c : comment) line += c == '(' ? '[' : c == ')' ? ']' : c == ';' ? ',' : c;
+      line += ')';
+    }
+    out_ += line;
+    out_ += '\n';
+  }
+
+  void end() override {
+    if (!linuxcnc_) out_ += "%\n";
+  }
+
+ private:
+  // Fanuc reads a length without a decimal point in thousandths: every length has one.
+  std::string number(const OutWord& w) const {
+    switch (w.kind) {
+      case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
+      case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
+      case Value::Speed: return decimal(w.value, 4, false);
+      default: return decimal(w.value, 4, true);
+    }
+  }
+
+  static bool starts_command(std::string_view text) {
+    std::string head;
+    for (char c : text.substr(0, 5)) head += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return head.starts_with("MSG") || head.starts_with("DEBUG") || head.starts_with("PRINT") ||
+           head.starts_with("LOG") || head.starts_with("PROBE");
+  }
+
+  bool linuxcnc_;
+};
+
+}  // namespace
+
+std::unique_ptr<Writer> make_iso_writer(std::unique_ptr<Frontend> target, bool linuxcnc) {
+  return std::make_unique<IsoWriter>(std::move(target), linuxcnc);
+}
+
+}  // namespace ncc::translate

@@ -1,0 +1,214 @@
+// Partprogram (pp) programs, as docs/dialects/pp.md reads them: `%n` and its title,
+// blocks N10, N20... each beginning with its number, `*` at the physical end.
+// Lines hold at most 80 characters: a block runs on to the next N, so a long block
+// or comment goes on over the next lines (§2.2.1 d, f).
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <fmt/format.h>
+
+#include "frontend/limits.h"
+#include "support/utf8.h"
+#include "writer.h"
+
+namespace ncc::translate {
+namespace {
+
+constexpr size_t kLine = 80;              // §2.2.1 f: characters a line
+constexpr int kStep = 10;                 // N10, N20...: the manual's examples
+constexpr std::string_view kIndent = "  ";  // a line that goes on with the block above
+
+// The characters of UTF-8 text (a byte that is not UTF-8 counts as one).
+size_t chars(std::string_view s) {
+  size_t n = 0;
+  for (char c : s) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return n;
+}
+
+// The first `n` characters of `s` (bytes of whole characters).
+size_t prefix_bytes(std::string_view s, size_t n) {
+  size_t i = 0;
+  while (i < s.size() && n > 0) {
+    ++i;
+    while (i < s.size() && (static_cast<unsigned char>(s[i]) & 0xC0) == 0x80) ++i;
+    --n;
+  }
+  return i;
+}
+
+class PpWriter final : public Writer {
+ public:
+  explicit PpWriter(std::unique_ptr<Frontend> target) : Writer(std::move(target)) {}
+
+  std::string_view dialect() const override { return "pp"; }
+  // §2.2, the maximum block format: lengths ±5.3.
+  double resolution() const override { return 1e-3; }
+
+  void begin(const Header& h) override {
+    // §2.3.1: the program number, 1..999999; the comment after it is the title.
+    comment_lines("%1", text(fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated",
+                                         h.source, h.dialect, h.title.empty() ? "" : ": " + h.title)));
+  }
+
+  void block(const std::vector<OutWord>& words, std::string_view comment) override {
+    // Operator text alone is a comment line of the block before it (§2.2.1 c, the
+    // manual's %35), or of the program start: no block without words.
+    if (words.empty()) {
+      comment_lines({}, text(comment));
+      return;
+    }
+    std::string line = next_number();
+    // §2.2: the standard order of the maximum block format (the order is free).
+    std::vector<OutWord> sorted = words;
+    std::stable_sort(sorted.begin(), sorted.end(),
+                     [&](const OutWord& a, const OutWord& b) { return order(a.letter) < order(b.letter); });
+    for (const OutWord& w : sorted) {
+      add(line, w.letter + number(w));
+      if (w.kind == Value::Code && ends_program(w)) main_ended_ = true;
+    }
+    comment_lines(std::move(line), text(comment), kIndent);
+  }
+
+  void end() override {
+    if (ended_) return;
+    ended_ = true;
+    // §2.3.2: the main part ends with M02 or M30, also when the source's run made no
+    // end (a program that stops at its last block); `*` is the physical end.
+    if (!main_ended_) {
+      const auto& m = tables().m_codes;
+      auto it = std::find_if(m.begin(), m.end(), [](const auto& code) {
+        const std::vector<FnCall>& calls = code.second.desc.calls;
+        return calls.size() == 1 && calls[0].fn == Fn::ProgramEnd;
+      });
+      if (it != m.end()) block({{'M', static_cast<double>(it->first), Value::Code}}, {});
+    }
+    out_ += "*\n";
+  }
+
+ private:
+  // A word without dimension takes digits only: no sign, no decimal point (§2.1.3).
+  // A length without a point is whole millimetres (§2.1.2 b), so none is needed.
+  std::string number(const OutWord& w) const {
+    switch (w.kind) {
+      case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
+      case Value::Count: case Value::Speed: case Value::Seconds: return decimal(w.value, 0, false);
+      default: return decimal(w.value, 3, false);
+    }
+  }
+
+  bool ends_program(const OutWord& w) const {
+    const auto& table = w.letter == 'M' ? tables().m_codes : tables().g_codes;
+    auto it = table.find(static_cast<int>(w.value));
+    if (it == table.end()) return false;
+    for (const FnCall& c : it->second.desc.calls)
+      if (c.fn == Fn::ProgramEnd || c.fn == Fn::ProgramEndInformation) return true;
+    return false;
+  }
+
+  int order(char letter) const {
+    const auto& addresses = tables().addresses;
+    auto it = addresses.find(letter);
+    return it == addresses.end() ? 100 : it->second.order;
+  }
+
+  // §2.2.1 d: every block begins with N (8), each number once in the file.
+  std::string next_number() {
+    std::string n = fmt::format("N{}", block_number_);
+    block_number_ += kStep;  // past 99999999 the program is no longer pp
+    return n;
+  }
+
+  // One line. A block is read up to kMaxBlockBytes from its N to the next, comment
+  // lines included (frontend/limits.h): more of them go to a block of their own,
+  // a number alone (legal, "of no practical meaning", §2.2.1 e).
+  void put(std::string_view line) {
+    if (line.starts_with('N')) {
+      open_ = 0;
+    } else if (open_ && *open_ + line.size() + 1 > kMaxBlockBytes) {
+      const std::string n = next_number();
+      out_ += n + '\n';
+      open_ = n.size() + 1;
+    }
+    out_ += line;
+    out_ += '\n';
+    if (open_) *open_ += line.size() + 1;
+  }
+
+  // A word after the others, on the next line when this one is full.
+  void add(std::string& line, const std::string& word) {
+    if (chars(line) + 1 + chars(word) > kLine) {
+      put(line);
+      line = std::string(kIndent) + word;
+    } else {
+      line += ' ';
+      line += word;
+    }
+  }
+
+  // `line` (a block, the program start, or nothing) and the comment, in closed pieces
+  // that fill it and the lines after it; `indent` begins each line after it.
+  void comment_lines(std::string line, std::string_view comment, std::string_view indent = {}) {
+    constexpr size_t kLeast = 12;  // a shorter piece starts a line of its own
+    auto has_text = [&] { return line.find_first_not_of(' ') != std::string::npos; };
+    auto next_line = [&] {
+      put(line);
+      line = indent;
+    };
+    while (!comment.empty()) {
+      const size_t used = chars(line) + (has_text() ? 1 : 0) + 2;  // a space, the quotes
+      if (has_text() && (used >= kLine || kLine - used < kLeast)) {
+        next_line();
+        continue;
+      }
+      size_t take = prefix_bytes(comment, kLine - used);
+      if (take < comment.size()) {
+        // At the last space that fits, when there is one.
+        const size_t space = comment.substr(0, take + 1).rfind(' ');
+        if (space != std::string_view::npos && space > 0) take = space;
+      }
+      if (has_text()) line += ' ';
+      line += '"';
+      line += comment.substr(0, take);
+      line += '"';
+      next_line();
+      comment.remove_prefix(take);
+      while (!comment.empty() && comment.front() == ' ') comment.remove_prefix(1);
+    }
+    if (has_text()) put(line);
+  }
+
+  // §2.2.1 c: a comment holds any character but '"' and the end of a line. Others
+  // that would end a line or fail the UTF-8 check are replaced too.
+  static std::string text(std::string_view s) {
+    std::string t;
+    for (size_t i = 0; i < s.size();) {
+      const Utf8Char c = decode_utf8(s, i);
+      if (!c.length) {
+        t += '?';
+        ++i;
+        continue;
+      }
+      const uint32_t cp = c.code_point;
+      if (cp == '"') t += '\'';
+      else if (cp < 0x20 || (cp >= 0x7F && cp < 0xA0) || cp == 0x2028 || cp == 0x2029) t += ' ';
+      else t.append(s.substr(i, c.length));
+      i += c.length;
+    }
+    while (!t.empty() && t.back() == ' ') t.pop_back();
+    return t;
+  }
+
+  uint32_t block_number_ = kStep;
+  std::optional<size_t> open_;  // the bytes of the block being written (none before the first)
+  bool main_ended_ = false;  // a block with M02 or M30 is written
+  bool ended_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Writer> make_pp_writer(std::unique_ptr<Frontend> target) {
+  return std::make_unique<PpWriter>(std::move(target));
+}
+
+}  // namespace ncc::translate
