@@ -27,7 +27,10 @@ std::optional<std::string> Writer::unwritable(const OutWord& w) const {
   const stdlib::AddressEntry& a = it->second;
   // A length is rounded to the step the target writes (resolution); any other value
   // must be written as it is: a speed, a feed or a dwell rounded is another one.
-  const int decimals = a.word_class == stdlib::WordClass::NonDimension && a.decimals == 0 ? 0 : a.decimals;
+  // The decimals the range writes, at either end (pp's F 0.001..24000 takes 3).
+  int decimals = a.decimals;
+  while (decimals < 6 && std::fabs(a.min * std::pow(10.0, decimals) - std::round(a.min * std::pow(10.0, decimals))) > 1e-9)
+    ++decimals;
   const double scale = std::pow(10.0, decimals);
   const double v = std::round(w.value * scale) / scale;
   if (w.kind != Value::Length && w.kind != Value::Angle && std::fabs(v - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))

@@ -12,7 +12,9 @@ class IsoWriter final : public Writer {
   IsoWriter(std::unique_ptr<Frontend> target, bool linuxcnc) : Writer(std::move(target)), linuxcnc_(linuxcnc) {}
 
   std::string_view dialect() const override { return linuxcnc_ ? "linuxcnc" : "iso"; }
-  double resolution() const override { return 1e-4; }
+  // Fanuc's finest increment (IS-C) is 0.0001 mm; LinuxCNC reads any number, and a
+  // CAM program's fifth decimal matters on a 0.3 mm arc.
+  double resolution() const override { return linuxcnc_ ? 1e-6 : 1e-4; }
 
   void begin(const Header& h) override {
     if (!linuxcnc_) out_ += "%\nO0001\n";
@@ -50,7 +52,8 @@ class IsoWriter final : public Writer {
       case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
       case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
       case Value::Speed: return decimal(w.value, 4, false);
-      default: return decimal(w.value, 4, true);
+      case Value::Feed: return decimal(w.value, 6, true);  // a computed feed as it is (inverse time, G95)
+      default: return decimal(w.value, linuxcnc_ ? 6 : 4, true);
     }
   }
 

@@ -339,7 +339,9 @@ def field_differences(x, y, tolerance):
             if not (close(a, b, tolerance) or abs(a - b) * math.pi / 180 * r <= tolerance):
                 out.append(f"sweep {number(a)} / {number(b)}{by(a, b)}")
         elif name in TOLERANCE_FIELDS and a is not None and b is not None:
-            if not close(a, b, tolerance):
+            # An arc's radius comes from two points each within the tolerance: it may
+            # move by twice as much (a 0.5 mm arc rounded to 0.0001 mm).
+            if not close(a, b, 2 * tolerance if name == "radius" else tolerance):
                 out.append(f"{name} {number(a)} / {number(b)}{by(a, b)}")
         elif name in RELATIVE_FIELDS:
             if not relatively_close(a, b):
