@@ -1,5 +1,6 @@
 #include "flatten.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -28,8 +29,8 @@ Fn feed_mode_fn(int mode) { return mode == 0 ? Fn::FeedInverseTime : mode == 2 ?
 }  // namespace
 
 Flattener::Flattener(Writer& writer, const ProgramSemantics& source, const MachineConfig& target_machine,
-                     std::function<void(const Refusal&)> refuse)
-    : w_(writer), conv_(writer.conventions()), target_(target_machine), refuse_(std::move(refuse)), axes_(conv_.axes) {
+                     std::function<void(const Refusal&)> report)
+    : w_(writer), conv_(writer.conventions()), target_(target_machine), report_(std::move(report)), axes_(conv_.axes) {
   for (uint16_t i : source.power_on)
     for (const FnCall& c : source.codes[i].calls)
       if (c.fn == Fn::WorkOffset) want_.work_offset = c.arg;
@@ -39,7 +40,7 @@ Flattener::Flattener(Writer& writer, const ProgramSemantics& source, const Machi
 
 std::optional<Flattener::Code> Flattener::code_for(FnCall call, const std::function<bool(FnCall)>& fits) const {
   std::optional<Code> best;
-  size_t best_calls = SIZE_MAX;  // the rank of the best
+  size_t best_rank = SIZE_MAX;
   const bool modal = fn_group(call.fn) != FnGroup::None;
   for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})
     for (const auto& [number, entry] : *table) {
@@ -52,16 +53,16 @@ std::optional<Flattener::Code> Flattener::code_for(FnCall call, const std::funct
       // Fewest functions first; of equals, not one the table calls another's alias
       // (ISO M07 "Coolant on (as M08)": M08 is what a reader expects).
       const size_t rank = calls.size() * 2 + (entry.meaning.find("(as ") != std::string::npos);
-      if (ok && rank < best_calls) {
+      if (ok && rank < best_rank) {
         best = Code{entry.letter, number, &entry.desc};
-        best_calls = rank;
+        best_rank = rank;
       }
     }
   return best;
 }
 
-void Flattener::refuse(uint32_t source, std::string what) { refuse_({source, std::move(what)}); }
-void Flattener::drop(uint32_t source, std::string what) { refuse_({source, std::move(what), true}); }
+void Flattener::refuse(uint32_t source, std::string what) { report_({source, std::move(what)}); }
+void Flattener::drop(uint32_t source, std::string what) { report_({source, std::move(what), true}); }
 
 bool Flattener::write_code(FnCall call, std::vector<OutWord>& words, uint32_t source, const char* what) {
   auto fits = [&](FnCall c) {
@@ -297,6 +298,8 @@ void Flattener::move(const Event& e) {
     want_.plane = plane;
   }
   sync_state(e.source);
+  if (!told_.position)  // where the target machine starts, in the frame now selected
+    for (int i = 0; i < kAxisCount; ++i) start_[i] = target_.initial_position[i] - offset_mm(i);
   const AxisValues end = target_point(e.pos);
   if (e.kind == EventKind::Arc) return arc_to(e, end);
   std::vector<OutWord> words;
@@ -312,13 +315,11 @@ void Flattener::move(const Event& e) {
   }
   // The first move names the axes beyond X Y Z only when they leave where the
   // machine starts (NC-110 takes 8 axis words a block).
-  if (!told_.position) {
-    for (int i = 0; i < kAxisCount; ++i) start_[i] = target_.initial_position[i] - offset_mm(i);
+  if (!told_.position)
     std::erase_if(axes, [&](const OutWord& a) {
       const int i = axis_index(a.letter);
       return i >= 3 && std::fabs(a.value - written_length(start_[i])) < kSame;
     });
-  }
   if (axes.empty()) return;  // no motion: nothing to write
   if (!told_.motion || *told_.motion != static_cast<int>(motion)) {
     std::vector<OutWord> code;
@@ -340,7 +341,7 @@ void Flattener::move(const Event& e) {
 void Flattener::arc_to(const Event& e, const AxisValues& end) {
   const int u = e.plane.u, v = e.plane.v, w = e.plane.w;
   const bool clockwise = e.rotation < 0;
-  const AxisValues start = told_.position.value_or(AxisValues{});
+  const AxisValues start = told_.position.value_or(start_);
   // The centre in the target's frame: moved as the end point was.
   const double cu = mm(e.centre[0], u) - (mm(e.pos[u], u) - end[u]), cv = mm(e.centre[1], v) - (mm(e.pos[v], v) - end[v]);
   const double sweep = e.b * kPi / 180;  // radians, positive
@@ -379,7 +380,7 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
       to[v] = cv + radius * std::sin(a);
       if (w >= 0) to[w] = start[w] + dw * cuts[k] / sweep;
     }
-    const AxisValues from = told_.position.value_or(AxisValues{});
+    const AxisValues from = told_.position.value_or(start_);
     std::vector<OutWord> b;
     if (!told_.plane || *told_.plane != want_.plane) {
       std::vector<OutWord> pc;

@@ -33,9 +33,10 @@ class Flattener final : public TraceSink {
   // `source` is the source program's semantics (its power-on work offset),
   // `target_machine` the machine the target program runs on (its work offsets).
   Flattener(Writer& writer, const ProgramSemantics& source, const MachineConfig& target_machine,
-            std::function<void(const Refusal&)> refuse);
+            std::function<void(const Refusal&)> report);
   void event(const Event& e) override;
-  // After the run: the program's end is written if the run made none.
+  // After the run: the start if no block was written, and the writer's end (a
+  // target that must end with M02 adds it when the run made no end).
   void finish();
 
  private:
@@ -65,7 +66,7 @@ class Flattener final : public TraceSink {
   Writer& w_;
   const Conventions& conv_;
   const MachineConfig& target_;
-  std::function<void(const Refusal&)> refuse_;
+  std::function<void(const Refusal&)> report_;  // a refusal or a drop
   std::string axes_;       // the target's axis letters
   bool inch_ = false;      // the source's unit
   std::optional<double> feed_programmed_;  // F as the source wrote it

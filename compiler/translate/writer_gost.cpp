@@ -114,7 +114,8 @@ class GostWriter final : public Writer {
     const int b = f->dimension ? f->frac_digits : 0;
     const double scale = std::pow(10.0, b);
     const double r = std::round(w.value * scale) / scale;
-    if (std::fabs(r - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
+    // Lengths are the flattener's to round (to resolution()); a feed, a speed or a dwell is not.
+    if (w.kind != Value::Length && w.kind != Value::Angle && std::fabs(r - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
       return fmt::format("{}{}: {} writes {} decimals", w.letter, decimal(w.value, 6, false), f->text, b);
     if (w.letter == 'T' && s_.tool_digits > 0) return std::nullopt;  // tool and offset digits: the reader's rule
     const int digits = static_cast<int>(fmt::format("{:.0f}", std::floor(std::fabs(r))).size());
