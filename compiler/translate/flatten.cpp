@@ -192,6 +192,26 @@ void Flattener::start() {
   emit_codes(b);
 }
 
+// The spindle and the coolants as the source has them: before a move, and before a
+// tool change (a change while the spindle turns is not the same change).
+void Flattener::sync_spindle(uint32_t source) {
+  auto alone = [&](FnCall call, const char* what) {
+    std::vector<OutWord> b;
+    if (write_code(call, b, source, what)) emit_block(std::move(b));
+  };
+  if (!told_.spindle || *told_.spindle != want_.spindle)
+    alone({want_.spindle == 1 ? Fn::SpindleCw : want_.spindle == -1 ? Fn::SpindleCcw : Fn::SpindleStop}, "the spindle");
+  const bool extra = (told_.mist.value_or(true) && !want_.mist) || (told_.flood.value_or(true) && !want_.flood);
+  if (extra) alone({Fn::CoolantOff}, "coolant off");
+  if (want_.mist && !told_.mist.value_or(false)) alone({Fn::CoolantMist}, "mist coolant");
+  if (want_.flood && !told_.flood.value_or(false)) alone({Fn::CoolantFlood}, "flood coolant");
+  if (want_.coolant3 != told_.coolant3.value_or(false) || want_.coolant4 != told_.coolant4.value_or(false)) {
+    if (told_.coolant3.value_or(false) || told_.coolant4.value_or(false)) alone({Fn::CoolantOff34}, "coolants 3 and 4 off");
+    if (want_.coolant3) alone({Fn::Coolant3}, "coolant 3");
+    if (want_.coolant4) alone({Fn::Coolant4}, "coolant 4");
+  }
+}
+
 // The state the next move needs, in blocks of their own before it: an M code acts
 // before or after the motion of its block, and some call several functions.
 void Flattener::sync_state(uint32_t source) {
@@ -236,17 +256,7 @@ void Flattener::sync_state(uint32_t source) {
     emit_block({{'S', want_.speed, Value::Speed}});
     told_.speed = want_.speed;
   }
-  if (!told_.spindle || *told_.spindle != want_.spindle)
-    alone({want_.spindle == 1 ? Fn::SpindleCw : want_.spindle == -1 ? Fn::SpindleCcw : Fn::SpindleStop}, "the spindle");
-  const bool extra = (told_.mist.value_or(true) && !want_.mist) || (told_.flood.value_or(true) && !want_.flood);
-  if (extra) alone({Fn::CoolantOff}, "coolant off");
-  if (want_.mist && !told_.mist.value_or(false)) alone({Fn::CoolantMist}, "mist coolant");
-  if (want_.flood && !told_.flood.value_or(false)) alone({Fn::CoolantFlood}, "flood coolant");
-  if (want_.coolant3 != told_.coolant3.value_or(false) || want_.coolant4 != told_.coolant4.value_or(false)) {
-    if (told_.coolant3.value_or(false) || told_.coolant4.value_or(false)) alone({Fn::CoolantOff34}, "coolants 3 and 4 off");
-    if (want_.coolant3) alone({Fn::Coolant3}, "coolant 3");
-    if (want_.coolant4) alone({Fn::Coolant4}, "coolant 4");
-  }
+  sync_spindle(source);
   if (!told_.length_entry || *told_.length_entry != want_.length_entry) {
     std::vector<OutWord> b;
     if (want_.length_entry == 0) {
@@ -478,6 +488,10 @@ void Flattener::event(const Event& e) {
                                               "false in --target-machine)",
                                               w_.dialect(), conv_.tool_offset_axes[0]));
       }
+      if ((conv_.tool_change_iso || conv_.m06_stops_spindle) && (want_.spindle != 0 || want_.mist || want_.flood))
+        return refuse(e.source, fmt::format("a tool change with the spindle or the coolant on: {}'s M06 stops them first",
+                                            w_.dialect()));
+      sync_spindle(e.source);
       std::vector<OutWord> words{{'T', static_cast<double>(e.n), Value::Count}};
       if (write_code({Fn::ToolChange}, words, e.source, "tool change")) emit_block(std::move(words));
       told_.tool = want_.tool = e.n;

@@ -51,6 +51,7 @@ class Flattener final : public TraceSink {
   void applied(const Code& code);  // the target state after a code
   void start();
   void sync_state(uint32_t source);
+  void sync_spindle(uint32_t source);
   void feed_word(std::vector<OutWord>& words);
   void move(const Event& e);
   void arc_to(const Event& e, const AxisValues& end);

@@ -133,7 +133,7 @@ class Reducer:
         ~0, a curve's controls there too (not the first move unless the start is
         known).
       probe: end, contact, and the state of a rapid. dwell: seconds, spindle, coolant.
-      tool_change: tool (a change to the tool loaded is none). stop, end: kind. aux: function. part_change.
+      tool_change: tool (a change to the tool loaded is none), spindle and coolants then. stop, end: kind. aux: function. part_change.
       Any other event not in STATE_ONLY: all its fields, compared exactly.
     """
 
@@ -238,7 +238,11 @@ class Reducer:
             # A change to the tool in the spindle changes nothing (ISO's M06 ignores it).
             if e.get("tool") != self.tool:
                 self.tool = e.get("tool")
-                self.add("tool_change", {"tool": self.tool}, e)
+                # With the spindle and coolants as they are then: a change while the
+                # spindle turns is not the same change.
+                state = self.machine_state(False)
+                self.add("tool_change", {"tool": self.tool, "spindle": state["spindle"],
+                                         "coolant": state["coolant"]}, e)
         elif name == "dwell":
             fields = {"seconds": value(e.get("seconds"))}
             fields.update(self.machine_state(False))
