@@ -23,6 +23,16 @@ bool harmless(FnCall c) {
   return c.fn == Fn::CompOff || c.fn == Fn::CycleCancel || c.fn == Fn::DistanceAbsolute;
 }
 
+// Whether the target has a code for a function at all, whatever else it calls.
+bool any_fits(FnCall) { return true; }
+
+// The index in kPlanes of an arc's plane; -1 for another pair of axes (NC-110 DPI).
+int plane_index(const Plane& plane) {
+  for (int p = 0; p < 3; ++p)
+    if (kPlanes[p] == plane) return p;
+  return -1;
+}
+
 Fn plane_fn(int plane) { return plane == 0 ? Fn::PlaneXY : plane == 1 ? Fn::PlaneZX : Fn::PlaneYZ; }
 Fn feed_mode_fn(int mode) { return mode == 0 ? Fn::FeedInverseTime : mode == 2 ? Fn::FeedPerRevolution : Fn::FeedPerMinute; }
 
@@ -89,6 +99,12 @@ bool Flattener::write_code(FnCall call, std::vector<OutWord>& words, uint32_t so
   words.push_back({code->letter, static_cast<double>(code->number), Value::Code});
   applied(*code);
   return true;
+}
+
+// A code in a block of its own.
+void Flattener::write_alone(uint32_t source, FnCall call, const char* what) {
+  std::vector<OutWord> b;
+  if (write_code(call, b, source, what)) emit_block(std::move(b));
 }
 
 void Flattener::applied(const Code& code) {
@@ -195,47 +211,39 @@ void Flattener::start() {
 // The spindle and the coolants as the source has them: before a move, and before a
 // tool change (a change while the spindle turns is not the same change).
 void Flattener::sync_spindle(uint32_t source) {
-  auto alone = [&](FnCall call, const char* what) {
-    std::vector<OutWord> b;
-    if (write_code(call, b, source, what)) emit_block(std::move(b));
-  };
   if (!told_.spindle || *told_.spindle != want_.spindle)
-    alone({want_.spindle == 1 ? Fn::SpindleCw : want_.spindle == -1 ? Fn::SpindleCcw : Fn::SpindleStop}, "the spindle");
+    write_alone(source, {want_.spindle == 1 ? Fn::SpindleCw : want_.spindle == -1 ? Fn::SpindleCcw : Fn::SpindleStop}, "the spindle");
   const bool extra = (told_.mist.value_or(true) && !want_.mist) || (told_.flood.value_or(true) && !want_.flood);
-  if (extra) alone({Fn::CoolantOff}, "coolant off");
-  if (want_.mist && !told_.mist.value_or(false)) alone({Fn::CoolantMist}, "mist coolant");
-  if (want_.flood && !told_.flood.value_or(false)) alone({Fn::CoolantFlood}, "flood coolant");
+  if (extra) write_alone(source, {Fn::CoolantOff}, "coolant off");
+  if (want_.mist && !told_.mist.value_or(false)) write_alone(source, {Fn::CoolantMist}, "mist coolant");
+  if (want_.flood && !told_.flood.value_or(false)) write_alone(source, {Fn::CoolantFlood}, "flood coolant");
   if (want_.coolant3 != told_.coolant3.value_or(false) || want_.coolant4 != told_.coolant4.value_or(false)) {
-    if (told_.coolant3.value_or(false) || told_.coolant4.value_or(false)) alone({Fn::CoolantOff34}, "coolants 3 and 4 off");
-    if (want_.coolant3) alone({Fn::Coolant3}, "coolant 3");
-    if (want_.coolant4) alone({Fn::Coolant4}, "coolant 4");
+    if (told_.coolant3.value_or(false) || told_.coolant4.value_or(false)) write_alone(source, {Fn::CoolantOff34}, "coolants 3 and 4 off");
+    if (want_.coolant3) write_alone(source, {Fn::Coolant3}, "coolant 3");
+    if (want_.coolant4) write_alone(source, {Fn::Coolant4}, "coolant 4");
   }
 }
 
 // The state the next move needs, in blocks of their own before it: an M code acts
 // before or after the motion of its block, and some call several functions.
 void Flattener::sync_state(uint32_t source) {
-  auto alone = [&](FnCall call, const char* what) {
-    std::vector<OutWord> b;
-    if (write_code(call, b, source, what)) emit_block(std::move(b));
-  };
   if (!started_) start();  // first: it sets modes this compares with
   // The work offset: the source's where the target has it, else the target's first
   // (or none); its values are taken off the positions all the same.
   if (want_.work_offset != target_offset_) {
     if (code_for({Fn::WorkOffset, static_cast<uint16_t>(want_.work_offset)}) &&
         (want_.work_offset == 0 || target_.work_offsets.count(want_.work_offset))) {
-      alone({Fn::WorkOffset, static_cast<uint16_t>(want_.work_offset)}, "work offset");
+      write_alone(source, {Fn::WorkOffset, static_cast<uint16_t>(want_.work_offset)}, "work offset");
     } else if (target_offset_ < 0) {
       for (const auto& [n, entry] : w_.tables().g_codes)
         if (target_offset_ < 0 && entry.desc.scope == Scope::Modal && entry.desc.calls.size() == 1 &&
             entry.desc.calls[0].fn == Fn::WorkOffset && target_.work_offsets.count(entry.desc.calls[0].arg))
-          alone(entry.desc.calls[0], "work offset");
+          write_alone(source, entry.desc.calls[0], "work offset");
       if (target_offset_ < 0) target_offset_ = 0;
     }
   }
   if (want_.dynamics && told_.dynamics != want_.dynamics) {
-    if (code_for({*want_.dynamics}, [](FnCall) { return true; })) alone({*want_.dynamics}, "the path mode");
+    if (code_for({*want_.dynamics}, any_fits)) write_alone(source, {*want_.dynamics}, "the path mode");
     else drop(source, fmt::format("the path mode {}", fn_name(*want_.dynamics)));
     told_.dynamics = want_.dynamics;
   }
@@ -245,12 +253,12 @@ void Flattener::sync_state(uint32_t source) {
   }
   // A target without codes for feed per minute or spindle rpm knows no other mode.
   if (!told_.feed_mode || *told_.feed_mode != want_.feed_mode) {
-    if (want_.feed_mode == 1 && !code_for({Fn::FeedPerMinute}, [](FnCall) { return true; })) told_.feed_mode = 1;
-    else alone({feed_mode_fn(want_.feed_mode)}, "the feed mode");
+    if (want_.feed_mode == 1 && !code_for({Fn::FeedPerMinute}, any_fits)) told_.feed_mode = 1;
+    else write_alone(source, {feed_mode_fn(want_.feed_mode)}, "the feed mode");
   }
   if (!told_.constant_surface || *told_.constant_surface != want_.constant_surface) {
-    if (!want_.constant_surface && !code_for({Fn::SpindleRpm}, [](FnCall) { return true; })) told_.constant_surface = false;
-    else alone({want_.constant_surface ? Fn::SpindleConstantSurface : Fn::SpindleRpm}, "the spindle speed mode");
+    if (!want_.constant_surface && !code_for({Fn::SpindleRpm}, any_fits)) told_.constant_surface = false;
+    else write_alone(source, {want_.constant_surface ? Fn::SpindleConstantSurface : Fn::SpindleRpm}, "the spindle speed mode");
   }
   if (want_.speed >= 0 && (!told_.speed || *told_.speed != want_.speed)) {
     emit_block({{'S', want_.speed, Value::Speed}});
@@ -301,9 +309,7 @@ AxisValues Flattener::target_point(const AxisValues& pos) const {
 
 void Flattener::move(const Event& e) {
   if (e.kind == EventKind::Arc) {
-    int plane = -1;
-    for (int p = 0; p < 3; ++p)
-      if (kPlanes[p] == e.plane) plane = p;
+    const int plane = plane_index(e.plane);
     if (plane < 0) return refuse(e.source, "an arc in the " + plane_name(e.plane) + " plane");
     want_.plane = plane;
   }
@@ -449,9 +455,7 @@ void Flattener::event(const Event& e) {
   switch (e.kind) {
     case EventKind::Units: inch_ = e.n == 1; break;
     case EventKind::Plane: {
-      int plane = -1;
-      for (int p = 0; p < 3; ++p)
-        if (kPlanes[p] == e.plane) plane = p;
+      const int plane = plane_index(e.plane);
       if (plane >= 0) want_.plane = plane;  // an arc in another plane is refused when it comes
       break;
     }
@@ -558,7 +562,7 @@ void Flattener::event(const Event& e) {
       }
       // A function of one block (G09, NC-110 G35) goes with the next move.
       std::vector<OutWord> words;
-      if (!code_for({kModes[e.n]}, [](FnCall) { return true; }))
+      if (!code_for({kModes[e.n]}, any_fits))
         drop(e.source, fmt::format("the path mode {}", fn_name(kModes[e.n])));
       else if (write_code({kModes[e.n]}, words, e.source, "the path mode"))
         block_codes_.insert(block_codes_.end(), words.begin(), words.end());
@@ -580,7 +584,7 @@ void Flattener::event(const Event& e) {
       // A clamp already so (NC-110 M11 unclamps both kinds: two events) is not written again.
       auto& told = fn == Fn::ClampOn || fn == Fn::ClampOff ? told_.clamp : told_.rotary_clamp;
       if (e.kind == EventKind::Clamp && told == (fn == Fn::ClampOn || fn == Fn::ClampRotaryOn)) break;
-      if (e.kind != EventKind::Clamp && !code_for({fn}, [](FnCall) { return true; })) {
+      if (e.kind != EventKind::Clamp && !code_for({fn}, any_fits)) {
         drop(e.source, fmt::format("the machine function {}", fn_name(fn)));
         break;
       }
