@@ -16,6 +16,7 @@
 #include "files.h"
 #include "frontend/frontend.h"
 #include "pipeline.h"
+#include "translate/structured.h"
 #include "translate/translate.h"
 
 namespace ncc {
@@ -80,9 +81,10 @@ constexpr Command kCommands[] = {
                             and the PLC's signals a WAI waits for: SA12=1
   --screen                  after the trace, the NC-110 user screen as the run left it
 )"},
-    {"translate", "write a program in another dialect", "ncc translate [options] --to DIALECT --flatten FILE [-o OUT]",
+    {"translate", "write a program in another dialect", "ncc translate [options] --to DIALECT [--flatten] FILE [-o OUT]",
      R"(  --to DIALECT              the target: gost, nc110, pp, iso or linuxcnc (RS274NGC as LinuxCNC 2.9 reads it)
-  --flatten                 run the program and write the plain motion blocks it makes (docs/translate.md)
+  --flatten                 run the program and write the plain motion blocks it makes (docs/translate.md);
+                            without it, the program's parameters, loops and subprograms are kept (iso)
   -o FILE                   the program to write ('-' = stdout, the default); nothing is written when
                             the program has errors or the target cannot say what it does
   --target-machine FILE     the machine profile of the target (default: the source's, --machine)
@@ -235,8 +237,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
   if (o.input.empty()) return "no input file";
   if (o.command == "compile" && o.output.empty()) return "compile needs -o FILE";
   if (o.command == "translate" && o.to.empty()) return "translate needs --to DIALECT";
-  if (o.command == "translate" && !o.flatten)
-    return "structured translation is not built yet: give --flatten (the program's motion as plain blocks)";
+  if (o.command == "translate" && !o.flatten && !translate::writes_structured(o.to))
+    return fmt::format("structured translation to {} is not built yet: give --flatten (the program's motion as plain blocks)", o.to);
   return {};
 }
 
@@ -380,7 +382,21 @@ class Cli {
 
   int translate(FileKind kind, uint32_t file) {
     int status = kOk;
-    auto m = module(kind, file, status);
+    // Structured translation writes the IR; the module is what the checks run.
+    std::optional<ir::Program> program;
+    std::optional<vm::Module> m;
+    if (!o_.flatten) {
+      if (int st = source_only(kind)) return finish(st, stderr);
+      program = analyse(s_, file, o_.dialect);
+      if (!program) return finish(kUsage, stderr);
+      if (!s_.diags.has_errors()) {
+        m = lower_program(s_, *program);
+        if (!s_.diags.limit_reached()) dry_run(s_, *m, o_.run);
+      }
+      if (s_.diags.has_errors()) return finish(kProgramErrors, stderr);
+    } else {
+      m = module(kind, file, status);
+    }
     if (!m) return finish(status, stderr);
     translate::Request request;
     request.to = o_.to;
@@ -403,7 +419,7 @@ class Cli {
       s_.diags.report(DiagId::FileUnwritable, {}, to_stdout ? std::string("a temporary file") : temp, std::strerror(errno));
       return finish(kUsage, stderr);
     }
-    bool ok = translate::flatten(s_, *m, request, out);
+    bool ok = o_.flatten ? translate::flatten(s_, *m, request, out) : translate::structured(s_, *program, request, out);
     if (to_stdout) {
       if (ok) {
         std::rewind(out);

@@ -52,6 +52,13 @@ class Writer {
   virtual void block(const std::vector<OutWord>& words, std::string_view comment = {}) = 0;
   // A block of operator text only.
   void comment(std::string_view text) { block({}, text); }
+  // A line the caller wrote in the target's syntax (a structured translation's
+  // statements), and text of several lines.
+  void line(std::string_view text) {
+    out_ += text;
+    out_ += '\n';
+  }
+  void append(std::string_view text) { out_ += text; }
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
   // The smallest length step the target's numbers write (mm): a position it writes

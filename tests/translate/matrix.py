@@ -1,16 +1,17 @@
 #!/usr/bin/env python3
-"""The equivalence matrix of `ncc translate --flatten` (docs/translate.md).
+"""The equivalence matrix of `ncc translate` (docs/translate.md).
 
     matrix.py --ncc PATH/TO/ncc [--targets gost,nc110,pp,iso,linuxcnc] [--jobs N]
-              [--table] SOURCE-DIALECT ...
+              [--structured] [--table] SOURCE-DIALECT ...
 
 Every golden program of each source dialect that `ncc run` runs cleanly
 (tests/golden/<dialect>/*.out whose command is `ncc run`) is translated to each
 target. A translation is
   equivalent  it passes `ncc check` in the target with no error and no warning, runs,
               makes the source's motion (equivalent.py, within half the target's
-              length resolution), and translating it again to its own dialect gives
-              the same blocks, comments aside (a flattened program is a fixed point);
+              length resolution; a structured translation writes numbers exactly:
+              1e-6 mm), and translating it again to its own dialect gives the same
+              blocks, comments aside (a translation is a fixed point);
   refused     ncc named what the target cannot say (NC4096), and wrote nothing;
   differing   anything else: the test fails.
 Python 3 standard library only.
@@ -98,7 +99,7 @@ def body(text):
     from, and the ISO dialect shows the operator no comment (its run has no comment
     events), so a comment does not come through a second translation from ISO."""
     return [line for line in text.splitlines()
-            if "flattened from" not in line and not re.fullmatch(r'\s*(\(.*\)|".*"|N\d+\s*".*"|;.*)\s*', line)]
+            if "flattened from" not in line and "translated from" not in line and not re.fullmatch(r'\s*(\(.*\)|".*"|N\d+\s*".*"|;.*)\s*', line)]
 
 
 def drop_limits(options):
@@ -110,6 +111,12 @@ def drop_limits(options):
             out.append(options[i])
             i += 1
     return out
+
+
+def more_steps(options):
+    """A structured translation takes more steps than its source (a repeat loop counts
+    in a statement of its own): ten times the golden's limit."""
+    return [str(int(o) * 10) if i > 0 and options[i - 1] == "--max-steps" else o for i, o in enumerate(options)]
 
 
 def with_dialect(options, dialect):
@@ -140,7 +147,10 @@ def machine_fits(ncc, options, reader, cwd, scratch):
     return _machine_fits[key]
 
 
-def one(ncc, name, cwd, program, options, targets, scratch):
+STRUCTURED_TOLERANCE = 1e-6
+
+
+def one(ncc, name, cwd, program, options, targets, scratch, structured=False):
     """The outcome of each target for one source program: (target, kind, detail)."""
     source_events, _ = trace(ncc, options, program, cwd)
     if source_events is None:
@@ -154,20 +164,21 @@ def one(ncc, name, cwd, program, options, targets, scratch):
             results.append((target, "no machine", ""))
             continue
         out = os.path.join(scratch, f"{name}.{target}")
-        rc, _, err = run(ncc, ["translate"] + options + ["--to", target, "--flatten", program, "-o", out], cwd)
+        mode = [] if structured else ["--flatten"]
+        rc, _, err = run(ncc, ["translate"] + options + ["--to", target] + mode + [program, "-o", out], cwd)
         text = err.decode("utf-8", "replace")
         if rc == 1 and "[NC4096]" in text:
             if os.path.exists(out):
                 results.append((target, "differing", "refused, but wrote " + out))
                 continue
-            reasons = re.findall(r"cannot translate to \S+: (.*?)(?: \(and in \d+ more blocks?\))? \[NC4096\]", text)
+            reasons = re.findall(r"cannot translate to \S+: (.*?)(?: \(and in \d+ more (?:blocks?|places?)\))? \[NC4096\]", text)
             results.append((target, "refused", reasons[0] if reasons else text.strip()))
             continue
         if rc != 0:
             results.append((target, "differing", f"translate exit {rc}: {text.strip()[:300]}"))
             continue
         # The source's machine; no step limit: a flattened program has no loop to stop.
-        target_options = drop_limits(with_dialect(options, reader))
+        target_options = more_steps(with_dialect(options, reader)) if structured else drop_limits(with_dialect(options, reader))
         rc, report, _ = run(ncc, ["check"] + target_options + [out], cwd)
         # No error, and no warning the source has not (an unknown tool stays unknown).
         found = set(re.findall(r"(error|warning): .*\[(NC\d+)\]", report.decode("utf-8", "replace")))
@@ -182,12 +193,13 @@ def one(ncc, name, cwd, program, options, targets, scratch):
         if not any(e.get("event") == "end" for e in source_events):
             # The source ran off its end (an ISO tape's '%'); the target needs M02.
             target_events = [e for e in target_events if e.get("event") != "end"]
-        differences = equivalent.compare(source_events, target_events, TOLERANCE[target])
+        differences = equivalent.compare(source_events, target_events,
+                                         STRUCTURED_TOLERANCE if structured else TOLERANCE[target])
         if differences:
             results.append((target, "differing", "motion: " + " | ".join(differences[:3])[:400]))
             continue
         again = out + ".again"
-        rc, _, err = run(ncc, ["translate"] + target_options + ["--to", target, "--flatten", out, "-o", again], cwd)
+        rc, _, err = run(ncc, ["translate"] + target_options + ["--to", target] + mode + [out, "-o", again], cwd)
         if rc != 0 or body(Path(again).read_text()) != body(Path(out).read_text()):
             results.append((target, "differing", "not a fixed point: translating the translation again changes it"))
             continue
@@ -202,6 +214,7 @@ def main(argv=None):
     ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     ap.add_argument("--table", action="store_true", help="print the totals as a Markdown table")
     ap.add_argument("--verbose", action="store_true", help="print every outcome")
+    ap.add_argument("--structured", action="store_true", help="structured translation (the default of ncc translate)")
     ap.add_argument("dialects", nargs="+")
     args = ap.parse_args(argv)
     ncc = str(Path(args.ncc).resolve())
@@ -214,7 +227,8 @@ def main(argv=None):
         jobs = []
         for dialect in args.dialects:
             for name, cwd, program, options in golden_runs(dialect):
-                jobs.append((dialect, pool.submit(one, ncc, f"{dialect}-{name}", cwd, program, options, targets, scratch)))
+                jobs.append((dialect, pool.submit(one, ncc, f"{dialect}-{name}", cwd, program, options, targets, scratch,
+                                                   args.structured)))
         for dialect, job in jobs:
             name, results = job.result()
             if results is None:
