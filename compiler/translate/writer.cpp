@@ -41,6 +41,12 @@ std::optional<std::string> Writer::unwritable(const OutWord& w) const {
                      decimal(a.min, 4, false), decimal(a.max, 4, false));
 }
 
+std::string Writer::inline_comment(std::string_view text) const {
+  std::string out = "(";
+  for (char c : text) out += c == '(' ? '[' : c == ')' ? ']' : c;  // a comment does not nest
+  return out + ")";
+}
+
 bool is_target(std::string_view dialect) {
   return dialect == "gost" || dialect == "nc110" || dialect == "pp" || dialect == "iso" || dialect == "linuxcnc";
 }

@@ -59,6 +59,8 @@ class Writer {
     out_ += '\n';
   }
   void append(std::string_view text) { out_ += text; }
+  // A comment after a block's words, as the target reads it: "(text)".
+  virtual std::string inline_comment(std::string_view text) const;
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
   // The smallest length step the target's numbers write (mm): a position it writes

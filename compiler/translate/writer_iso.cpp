@@ -31,14 +31,18 @@ class IsoWriter final : public Writer {
     }
     if (!comment.empty() || words.empty()) {  // an empty message is "()", not an empty line
       if (!line.empty()) line += ' ';
-      line += '(';
-      // A comment that starts with MSG, DEBUG or PRINT is an instruction to LinuxCNC.
-      if (linuxcnc_ && starts_command(comment)) line += "- ";
-      for (char c : comment) line += c == '(' ? '[' : c == ')' ? ']' : c == ';' ? ',' : c;
-      line += ')';
+      line += inline_comment(comment);
     }
     out_ += line;
     out_ += '\n';
+  }
+
+  std::string inline_comment(std::string_view text) const override {
+    std::string out = "(";
+    // A comment that starts with MSG, DEBUG or PRINT is an instruction to LinuxCNC.
+    if (linuxcnc_ && starts_command(text)) out += "- ";
+    for (char c : text) out += c == '(' ? '[' : c == ')' ? ']' : c == ';' ? ',' : c;
+    return out + ")";
   }
 
   void end() override {

@@ -1,0 +1,143 @@
+// The structured translator's common part (structured.cpp): it walks the IR unit by
+// unit and block by block and writes each block's machine words, assignments and
+// expressions; a target's subclass says how its programs are laid out and how they
+// jump, repeat and call (structured_iso.cpp: block numbers and GOTO;
+// structured_ngc.cpp: LinuxCNC's o-words).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "ir/ir.h"
+#include "runtime/machine_config.h"
+#include "writer.h"
+
+namespace ncc::translate {
+
+// What the target cannot say (refused), or says otherwise than the source without
+// changing the path (dropped: a warning).
+struct Problem {
+  SourceRange at;
+  std::string what;
+  bool dropped = false;
+};
+
+// A number as a double reads it back, in fixed notation (neither ISO nor LinuxCNC
+// reads an exponent); with a point when `point`.
+std::string exact(double v, bool point);
+
+class Structured {
+ public:
+  Structured(const ir::Program& program, Writer& writer, const MachineConfig& target_machine);
+  virtual ~Structured() = default;
+
+  // The whole program: the body first, so that the start can set what it uses.
+  void write(const Header& header);
+
+  std::vector<Problem> problems;
+
+ protected:
+  // Expression levels, loosest first (iso decision 6; LinuxCNC puts AND with OR).
+  enum Level : int { kOr = 1, kAnd, kCompare, kSum, kTerm, kSign, kPrimary };
+
+  // --- what a target says its own way ---
+  virtual void body() = 0;  // every unit, in the target's order (unit())
+  virtual void open_unit(const ir::Unit& u, bool main) = 0;
+  virtual void close_unit(const ir::Unit& u, bool main, bool returned) = 0;
+  virtual void before_block(size_t) {}
+  virtual void after_block(size_t) {}
+  virtual void jump(const ir::Stmt& s) = 0;
+  virtual void repeat_begin(const ir::Stmt& s) = 0;
+  virtual void repeat_end(const ir::Stmt& s) = 0;
+  virtual void call(const ir::Stmt& s) = 0;
+  virtual void ret(const ir::Stmt& s) = 0;
+  virtual void conditional(const ir::Stmt& s) = 0;  // a statement that runs only if s.cond holds
+  virtual std::string assignment(const std::string& var, ir::ExprId value, std::string text) = 0;
+  virtual void zero_all(uint32_t first, uint32_t count) = 0;  // #first.. at 0, when a program computes indexes
+  // The target reads the source's parameter words as the source does (ISO and
+  // LinuxCNC); its codes are still mapped by function unless it is the same dialect.
+  virtual bool reads_source_words() const { return same_; }
+  virtual int and_level() const { return kAnd; }
+  virtual bool motion_code_moves() const { return false; }  // a motion code without axis words moves
+  virtual std::string builtin(const ir::Expr& e);
+  virtual std::string modulo(const ir::Expr& e, int min);
+  virtual void check_variable(const ir::Expr&, uint32_t) {}
+
+  // --- the common part ---
+  void unit(const ir::Unit& u, bool main);
+  bool block(const ir::Block& b);  // true when its last statement returns
+  void statement(const ir::Stmt& s);
+  void line(std::string text);  // after the block number and the comments still to be written
+  void comment(std::string_view text) { comments_.emplace_back(text); }
+  void machine();
+  void write_words(const std::vector<std::string>& words);
+  std::string value(ir::ExprId id, char letter);
+  std::string expr(ir::ExprId id, int min);
+  std::string var(const ir::Expr& e);
+  std::string operand(ir::ExprId a);  // a function's operand
+  std::string negation(ir::ExprId id, int min);  // not id
+  void forget();  // the state the text says is not known any more (a label, a call)
+  bool ends_program(const ir::Unit& u) const;
+  void fail(SourceRange at, std::string what) { problems.push_back({at, std::move(what)}); }
+  void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), true}); }
+
+  struct Code {
+    char letter;
+    int number;
+    const stdlib::CodeEntry* entry;
+    std::string text() const;
+  };
+  std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
+
+  const ir::Program& p_;
+  Writer& w_;
+  const MachineConfig& target_;
+  const Conventions& src_;
+  const Conventions& dst_;
+  const bool same_;  // the target is the source's dialect
+  const ir::Block* block_ = nullptr;
+  std::optional<int> pending_number_;  // the block number the next line starts with
+  std::string then_;                   // what the next line starts with after it (IF [c] THEN)
+
+ private:
+  struct Mapped;
+  void start();
+  void start_offset();
+  void translated_machine();
+  void code(const ir::Word& w, std::vector<Mapped>& out);
+  void parameter(const ir::Word& w, std::vector<std::string>& words);
+  std::string as_written(const ir::Word& w);
+  std::optional<Code> exact_code(const std::vector<FnCall>& calls, Scope scope) const;
+  void state(const std::vector<FnCall>& calls);
+  void corrector(const ir::Word& w);
+  std::string length_offset(SourceRange at);
+  void assign(const ir::Stmt& s);
+  void display(const ir::Stmt& s);
+  std::string builtin_of_scaled(ir::ExprId value, SourceRange at);
+  bool is_whole(ir::ExprId id) const;
+  bool is_thousandths(ir::ExprId id) const;
+
+  int mapped_space_ = -1;  // the source's space of numbered parameters
+  std::map<uint16_t, uint32_t> space_base_;  // a space's first target variable
+  bool in_main_ = false;
+  std::string deferred_motion_;  // the power-on motion code, for the main program's first move
+  ir::ExprId scaled_ = ir::kNoExpr;  // an operand written times 1000 (rounding to pp's R)
+  bool skip_ = false;
+  bool words_written_ = false;
+  std::vector<std::string> comments_;  // for the block's first line
+  std::set<uint32_t> used_;  // target variables the program reads or writes
+  bool indirect_ = false;    // ... and one computed
+  // What the text says the spindle, the coolant and the plane are (nothing: not known).
+  std::optional<bool> spindle_on_ = false, coolant_on_ = false;
+  std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
+  std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
+};
+
+std::unique_ptr<Structured> make_iso_structured(const ir::Program& program, Writer& writer, const MachineConfig& target);
+std::unique_ptr<Structured> make_ngc_structured(const ir::Program& program, Writer& writer, const MachineConfig& target);
+
+}  // namespace ncc::translate
