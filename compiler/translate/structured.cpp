@@ -149,7 +149,7 @@ bool Structured::block(const ir::Block& b) {
     if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) conditional(s);
     else statement(s);
   }
-  if (pending_number_ || !comments_.empty()) line("");  // a block with nothing else
+  flush();  // a block with nothing else
   return returned;
 }
 

@@ -73,6 +73,9 @@ class Structured {
   void statement(const ir::Stmt& s);
   void line(std::string text);  // after the block number and the comments still to be written
   void comment(std::string_view text) { comments_.emplace_back(text); }
+  void flush() {  // the block number and comments still to be written, on a line of their own
+    if (pending_number_ || !comments_.empty()) line("");
+  }
   void machine();
   void write_words(const std::vector<std::string>& words);
   std::string value(ir::ExprId id, char letter);
@@ -102,6 +105,7 @@ class Structured {
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
+  ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
 
  private:
   struct Mapped;
@@ -125,7 +129,6 @@ class Structured {
   std::map<uint16_t, uint32_t> space_base_;  // a space's first target variable
   bool in_main_ = false;
   std::string deferred_motion_;  // the power-on motion code, for the main program's first move
-  ir::ExprId scaled_ = ir::kNoExpr;  // an operand written times 1000 (rounding to pp's R)
   bool skip_ = false;
   bool words_written_ = false;
   std::vector<std::string> comments_;  // for the block's first line

@@ -203,11 +203,11 @@ class NgcStructured final : public Structured {
     auto it = breaks_.find(&s);
     if (it == breaks_.end()) return;  // the regions' o-words
     const int loop = regions_[it->second].number;
-    if (s.cond == ir::kNoExpr) return w_.line(fmt::format("o{} break", loop));
+    if (s.cond == ir::kNoExpr) return oword(fmt::format("o{} break", loop));
     const int n = ++next_number_;
-    w_.line(fmt::format("o{} if [{}]", n, expr(s.cond, kOr)));
-    w_.line(fmt::format("o{} break", loop));
-    w_.line(fmt::format("o{} endif", n));
+    oword(fmt::format("o{} if [{}]", n, expr(s.cond, kOr)));
+    oword(fmt::format("o{} break", loop));
+    oword(fmt::format("o{} endif", n));
   }
   void repeat_begin(const ir::Stmt&) override {}
   void repeat_end(const ir::Stmt&) override {}
@@ -227,11 +227,11 @@ class NgcStructured final : public Structured {
       auto a = std::find_if(s.args.begin(), s.args.end(), [&](const ir::CallArg& x) { return x.index == i; });
       text += a == s.args.end() ? " [0]" : " [" + expr(a->value, kOr) + "]";
     }
-    if (s.value == ir::kNoExpr || (p_.is_constant(s.value) && p_.exprs[s.value].number == 1)) return line(text);
+    if (s.value == ir::kNoExpr || (p_.is_constant(s.value) && p_.exprs[s.value].number == 1)) return oword(text);
     const int n = ++next_number_;
-    w_.line(fmt::format("o{} repeat [{}]", n, expr(s.value, kOr)));
-    line(text);
-    w_.line(fmt::format("o{} endrepeat", n));
+    oword(fmt::format("o{} repeat [{}]", n, expr(s.value, kOr)));
+    oword(text);
+    oword(fmt::format("o{} endrepeat", n));
   }
 
   bool uses_locals(const std::string& unit) const {
@@ -247,15 +247,22 @@ class NgcStructured final : public Structured {
 
   void ret(const ir::Stmt&) override {
     if (main_) return line("M2");  // M99 with no call open ends the run
-    line(fmt::format("o<{}> return", subs_.at(unit_->name)));
+    if (block_ == &unit_->blocks.back()) return;  // endsub returns
+    oword(fmt::format("o<{}> return", subs_.at(unit_->name)));
   }
 
   void conditional(const ir::Stmt& s) override {
     const int n = ++next_number_;
-    w_.line(fmt::format("o{} if [{}]", n, expr(s.cond, kOr)));
+    oword(fmt::format("o{} if [{}]", n, expr(s.cond, kOr)));
     statement(s);
-    w_.line(fmt::format("o{} endif", n));
+    oword(fmt::format("o{} endif", n));
     forget();
+  }
+
+  // An o-word line: the block's number and comments go on a line before it.
+  void oword(const std::string& text) {
+    flush();
+    w_.line(text);
   }
 
   std::string assignment(const std::string& var, ir::ExprId, std::string text) override {
@@ -284,6 +291,11 @@ class NgcStructured final : public Structured {
   // LinuxCNC's FIX rounds down, FUP up and ROUND halves up: the IR's towards zero,
   // away from zero and halves away from zero are written out of them.
   std::string builtin(const ir::Expr& e) override {
+    double v = 0;
+    std::string_view why;
+    const bool emulated = e.builtin == Builtin::Trunc || e.builtin == Builtin::Away || e.builtin == Builtin::Round;
+    if (auto a = constant(e.a); emulated && a && e.a != scaled_ && eval_builtin(e.builtin, &*a, v, why))
+      return exact(v, false);  // FIX[-2.5]: -2, as ISO has it
     const std::string x = "[" + operand(e.a) + "]";
     switch (e.builtin) {
       case Builtin::Trunc: return fmt::format("[[{0} GE 0]*FIX{0}+[{0} LT 0]*FUP{0}]", x);
@@ -293,6 +305,27 @@ class NgcStructured final : public Structured {
       case Builtin::Ceil: return "FUP" + x;
       case Builtin::RoundTo: fail(e.range, "ROUND of an address value (to the increment of its units)"); return "0";
       default: return Structured::builtin(e);
+    }
+  }
+
+  // The value of an expression of numbers alone (7/2, -2.5).
+  std::optional<double> constant(ir::ExprId id) const {
+    const ir::Expr& e = p_.exprs[id];
+    if (e.op == ir::ExprOp::Number) return e.number;
+    if (e.op == ir::ExprOp::Neg || e.op == ir::ExprOp::ZeroIfVacant || e.op == ir::ExprOp::Check) {
+      auto a = constant(e.a);
+      return a && e.op == ir::ExprOp::Neg ? std::optional<double>(-*a) : a;
+    }
+    if (e.a == ir::kNoExpr || e.b == ir::kNoExpr) return std::nullopt;
+    const std::optional<double> a = constant(e.a), b = constant(e.b);
+    if (!a || !b) return std::nullopt;
+    const double x = *a, y = *b;
+    switch (e.op) {
+      case ir::ExprOp::Add: return x + y;
+      case ir::ExprOp::Sub: return x - y;
+      case ir::ExprOp::Mul: return x * y;
+      case ir::ExprOp::Div: return y != 0 ? std::optional<double>(x / y) : std::nullopt;
+      default: return std::nullopt;
     }
   }
 

@@ -32,10 +32,10 @@ import compare  # noqa: E402
 import equivalent  # noqa: E402
 
 # Programs in judge/ by extension: their dialect.
-DIALECTS = {".nc": "nc110", ".pp": "pp", ".gost": "gost"}
+DIALECTS = {".nc": "nc110", ".pp": "pp", ".gost": "gost", ".iso": "iso"}
 # Structured translations that must come through (all but the suite's G74, which
 # LinuxCNC 2.9 lacks, and the M98 that shares #1-#33 with its subprogram).
-EXPECTED_STRUCTURED = 79
+EXPECTED_STRUCTURED = 80
 
 
 def flattened(ncc, rs274, scratch, failed):
