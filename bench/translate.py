@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""The speed and memory of `ncc translate --flatten` on large generated programs.
+"""The speed and memory of `ncc translate` on large generated programs.
 
     bench/translate.py [--ncc build/compiler/ncc] [--plain N] [--targets iso,linuxcnc,pp,nc110,gost]
+                       [--structured]
 
 For each source dialect, a program of N plain blocks (bench/gen.py, default 10^6) is
-compiled (`ncc compile`, the reference) and flattened to each target; the table gives
+compiled (`ncc compile`, the reference) and flattened to each target (with
+--structured: translated structured, to iso and linuxcnc); the table gives
 wall time, blocks per second and peak RSS of each, and the translation's RSS over the
 compile's (the issue's bound: no more than compiling it). Python 3 standard library.
 """
@@ -26,6 +28,7 @@ def main():
     ap.add_argument("--dialects", default="gost,nc110,pp,iso")
     ap.add_argument("--targets", default="iso,linuxcnc,pp,nc110,gost")
     ap.add_argument("--repeat", type=int, default=1)
+    ap.add_argument("--structured", action="store_true")
     args = ap.parse_args()
     rows = []
     with tempfile.TemporaryDirectory() as d:
@@ -41,7 +44,10 @@ def main():
             rows.append([f"{dialect} compile", compare.fmt_s(ref), compare.fmt_rate(args.plain / ref.wall),
                          f"{compare.mb(ref.rss):.1f} MB", "1.00"])
             for target in args.targets.split(","):
-                r = compare.measure([args.ncc, "translate"] + opts + ["--to", target, "--flatten", str(program),
+                if args.structured and target not in ("iso", "linuxcnc"):
+                    continue
+                mode = [] if args.structured else ["--flatten"]
+                r = compare.measure([args.ncc, "translate"] + opts + ["--to", target] + mode + [str(program),
                                                                      "-o", str(out / f"t.{target}")], args.repeat)
                 if r.rc != 0:
                     rows.append([f"{dialect} -> {target}", "failed: " + r.first_error(), "", "", ""])
