@@ -190,6 +190,8 @@ void Structured::line(std::string text) {
 
 void Structured::forget() {
   spindle_on_ = coolant_on_ = std::nullopt;
+  position_ = {};
+  incremental_.reset();
   corrector_.reset();
   plane_.reset();
 }
@@ -236,11 +238,19 @@ void Structured::translated_machine() {
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Code) code(w, codes);
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
+  const auto start = position_;  // where the block's arc starts
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
       moves |= w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
-      if (!(src_.corrector_in_tool_word && w.address == "T'")) parameter(w, params);
+      if (src_.corrector_in_tool_word && w.address == "T'") continue;
+      if (!reads_source_words() && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K' &&
+          (src_.arc_centre != dst_.arc_centre || src_.centre_words != dst_.centre_words))
+        centre(w, start, params);
+      else
+        parameter(w, params);
+      track(w);
     }
+  arc_on_circle(start);
   auto conflict = [&](const Mapped& a) {
     return std::any_of(codes.begin(), codes.end(), [&](const Mapped& b) {
       if (&a == &b) return false;
@@ -290,6 +300,71 @@ void Structured::translated_machine() {
   write_words(later);
 }
 
+// An arc's centre where the dialects give it otherwise: NC-110's I and J are the
+// plane's abscissa and ordinate, measured from the origin; ISO's and LinuxCNC's I J
+// K go along X Y Z from the arc's start. The start must be known from the text: a
+// constant position since the last label, call or computed value.
+void Structured::centre(const ir::Word& w, const Position& start, std::vector<std::string>& words) {
+  const char letter = w.address[0];
+  int axis = letter - 'I';
+  if (src_.centre_words == CentreWords::Plane) {
+    if (!plane_) return fail(w.range, fmt::format("the arc centre {} where the plane is not known", letter));
+    if (letter == 'K') return fail(w.range, fmt::format("a helix pitch K: {} gives a helix by its end point alone", w_.dialect()));
+    const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
+    axis = letter == 'I' ? kPlanes[plane].u : kPlanes[plane].v;
+  }
+  auto v = constant_of(w.value);
+  if (src_.arc_centre == ArcCentre::Absolute && dst_.arc_centre == ArcCentre::Incremental) {
+    if (!incremental_) return fail(w.range, fmt::format("the arc centre {} where G90 or G91 is not known", letter));
+    if (!*incremental_) {  // under G91 the centre is from the start already
+      if (!v) return fail(w.range, fmt::format("the arc centre {} given by a parameter, from the origin", letter));
+      if (!start[static_cast<size_t>(axis)])
+        return fail(w.range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
+                                         "a label, a call or a computed move)", letter));
+      centre_[static_cast<size_t>(axis)] = *v;
+      *v -= *start[static_cast<size_t>(axis)];
+    }
+  }
+  const char to = static_cast<char>('I' + axis);
+  words.push_back(to + (v ? exact(*v, true) : value(w.value, to)));
+}
+
+// An arc whose centre this translation computed: its end must lie on its circle as
+// closely as the target asks (the source's machine may take more).
+void Structured::arc_on_circle(const Position& start) {
+  const auto centre = std::exchange(centre_, {});
+  if (!plane_) return;
+  const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;
+  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
+  const double r0 = std::hypot(*start[u] - *centre[u], *start[v] - *centre[v]);
+  const double r1 = std::hypot(*position_[u] - *centre[u], *position_[v] - *centre[v]);
+  if (std::fabs(r1 - r0) > dst_.arc_tolerance)
+    fail(block_->range, fmt::format("an arc whose end is {} off its circle: {} takes {}",
+                                    exact(std::round(std::fabs(r1 - r0) * 1e4) / 1e4, false),
+                                    w_.dialect(), exact(dst_.arc_tolerance, false)));
+}
+
+// Where the text leaves the tool on X, Y and Z, in the program's coordinates.
+void Structured::track(const ir::Word& w) {
+  if (w.address.size() != 1 || w.address[0] < 'X' || w.address[0] > 'Z') return;
+  auto& axis = position_[static_cast<size_t>(w.address[0] - 'X')];
+  const auto v = constant_of(w.value);
+  if (!v || !incremental_) axis.reset();
+  else if (!*incremental_) axis = *v;
+  else if (axis) *axis += *v;
+}
+
+std::optional<double> Structured::constant_of(ir::ExprId id) const {
+  const ir::Expr& e = p_.exprs[id];
+  if (e.op == ir::ExprOp::Number) return e.number;
+  if (e.op == ir::ExprOp::Neg) {
+    auto a = constant_of(e.a);
+    return a ? std::optional<double>(-*a) : std::nullopt;
+  }
+  return std::nullopt;
+}
+
 // NC-110's T tool.corrector: the corrector takes effect at M06 (nc110 decision 11).
 // The target's M06 ends the length offset: G43 H<corrector> after it, G49 for none.
 void Structured::corrector(const ir::Word& w) {
@@ -322,6 +397,8 @@ std::string Structured::length_offset(SourceRange at) {
 void Structured::state(const std::vector<FnCall>& calls) {
   for (const FnCall& f : calls) {
     switch (f.fn) {
+      case Fn::DistanceAbsolute: incremental_ = false; break;
+      case Fn::DistanceIncremental: incremental_ = true; break;
       case Fn::PlaneXY: plane_ = 'K'; break;  // the plane by its normal's centre word
       case Fn::PlaneZX: plane_ = 'J'; break;
       case Fn::PlaneYZ: plane_ = 'I'; break;

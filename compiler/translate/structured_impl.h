@@ -5,6 +5,7 @@
 // structured_ngc.cpp: LinuxCNC's o-words).
 #pragma once
 
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
@@ -117,6 +118,11 @@ class Structured {
   std::string as_written(const ir::Word& w);
   std::optional<Code> exact_code(const std::vector<FnCall>& calls, Scope scope) const;
   void state(const std::vector<FnCall>& calls);
+  using Position = std::array<std::optional<double>, 3>;
+  void centre(const ir::Word& w, const Position& start, std::vector<std::string>& words);
+  void track(const ir::Word& w);
+  void arc_on_circle(const Position& start);
+  std::optional<double> constant_of(ir::ExprId id) const;
   void corrector(const ir::Word& w);
   std::string length_offset(SourceRange at);
   void assign(const ir::Stmt& s);
@@ -138,6 +144,9 @@ class Structured {
   std::optional<bool> spindle_on_ = false, coolant_on_ = false;
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
+  Position position_;                  // X Y Z where the text leaves them
+  std::optional<bool> incremental_;    // G91
+  Position centre_;                    // of the block's arc, where this translation computed it
 };
 
 std::unique_ptr<Structured> make_iso_structured(const ir::Program& program, Writer& writer, const MachineConfig& target);
