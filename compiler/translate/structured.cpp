@@ -34,22 +34,6 @@ bool path_manner(Fn fn) {
 
 }  // namespace
 
-std::string exact(double v, bool point) {
-  if (v == 0) v = 0;  // never "-0"
-  std::string s;
-  for (int decimals = 0; decimals <= 24; ++decimals) {
-    s = fmt::format("{:.{}f}", v, decimals);
-    if (std::strtod(s.c_str(), nullptr) == v) break;
-  }
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') s.pop_back();
-    if (s.back() == '.' && !point) s.pop_back();
-  } else if (point) {
-    s += '.';
-  }
-  return s;
-}
-
 std::string Structured::Code::text() const { return fmt::format("{}{:02}", letter, number); }
 
 // A target code for a source code: when it acts, and when the source's acts.
@@ -177,8 +161,7 @@ void Structured::statement(const ir::Stmt& s) {
 void Structured::line(std::string text) {
   std::string head = skip_ ? "/" : "";
   if (pending_number_) head += fmt::format("N{}", *pending_number_) + (text.empty() ? "" : " ");
-  pending_number_.reset();
-  skip_ = false;
+  pending_number_.reset();  // a skipped block's lines all start with '/'
   text = head + std::exchange(then_, {}) + text;
   for (const std::string& c : comments_) {
     if (!text.empty()) text += ' ';

@@ -27,10 +27,6 @@ struct Problem {
   bool dropped = false;
 };
 
-// A number as a double reads it back, in fixed notation (neither ISO nor LinuxCNC
-// reads an exponent); with a point when `point`.
-std::string exact(double v, bool point);
-
 class Structured {
  public:
   Structured(const ir::Program& program, Writer& writer, const MachineConfig& target_machine);
@@ -107,6 +103,7 @@ class Structured {
   std::optional<int> pending_number_;  // the block number the next line starts with
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
+  bool in_main_ = false;               // the unit being written is the main program
 
  private:
   struct Mapped;
@@ -133,7 +130,6 @@ class Structured {
 
   int mapped_space_ = -1;  // the source's space of numbered parameters
   std::map<uint16_t, uint32_t> space_base_;  // a space's first target variable
-  bool in_main_ = false;
   std::string deferred_motion_;  // the power-on motion code, for the main program's first move
   bool skip_ = false;
   bool words_written_ = false;

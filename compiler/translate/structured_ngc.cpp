@@ -52,7 +52,6 @@ class NgcStructured final : public Structured {
 
   void open_unit(const ir::Unit& u, bool main) override {
     unit_ = &u;
-    main_ = main;
     analyse(u);
     if (main) return;
     w_.append("\n");
@@ -108,6 +107,8 @@ class NgcStructured final : public Structured {
       const ir::Block& b = u.blocks[i];
       for (const ir::Stmt& s : b.stmts) {
         if (consumed.count(&s)) continue;
+        if (b.skippable && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::RepeatBegin))
+          return fail(s.range, "a jump or a repeat in a block '/' skips: LinuxCNC skips no o-word");
         if (s.kind == ir::StmtKind::Jump) {
           if (s.label.empty()) return fail(s.range, "a jump to a computed block number: LinuxCNC has no GOTO");
           if (!last(b, s)) return fail(s.range, "a jump before other statements of its block");
@@ -246,7 +247,7 @@ class NgcStructured final : public Structured {
   }
 
   void ret(const ir::Stmt&) override {
-    if (main_) return line("M2");  // M99 with no call open ends the run
+    if (in_main_) return line("M2");  // M99 with no call open ends the run
     if (block_ == &unit_->blocks.back()) return;  // endsub returns
     oword(fmt::format("o<{}> return", subs_.at(unit_->name)));
   }
@@ -261,6 +262,7 @@ class NgcStructured final : public Structured {
 
   // An o-word line: the block's number and comments go on a line before it.
   void oword(const std::string& text) {
+    if (block_ && block_->skippable) fail(block_->range, "a call or a condition in a block '/' skips: LinuxCNC skips no o-word");
     flush();
     w_.line(text);
   }
@@ -348,7 +350,6 @@ class NgcStructured final : public Structured {
   std::vector<Region> regions_;              // of the unit being written
   std::map<const ir::Stmt*, size_t> breaks_;  // a jump that leaves a loop: the loop's region
   const ir::Unit* unit_ = nullptr;
-  bool main_ = false;
   int next_number_ = 99;  // o-words of the file: o100 up
 };
 

@@ -5,12 +5,10 @@
 #include <fmt/format.h>
 
 namespace ncc::translate {
+namespace {
 
-std::string Writer::decimal(double v, int decimals, bool point) {
-  const double scale = std::pow(10.0, decimals);
-  double r = std::round(v * scale) / scale;
-  if (r == 0) r = 0;  // never "-0"
-  std::string s = fmt::format("{:.{}f}", r, decimals);
+// A number in fixed notation without trailing zeros, with a point when `point`.
+std::string trimmed(std::string s, bool point) {
   if (s.find('.') != std::string::npos) {
     while (s.back() == '0') s.pop_back();
     if (s.back() == '.' && !point) s.pop_back();
@@ -18,6 +16,25 @@ std::string Writer::decimal(double v, int decimals, bool point) {
     s += '.';
   }
   return s;
+}
+
+}  // namespace
+
+std::string Writer::decimal(double v, int decimals, bool point) {
+  const double scale = std::pow(10.0, decimals);
+  double r = std::round(v * scale) / scale;
+  if (r == 0) r = 0;  // never "-0"
+  return trimmed(fmt::format("{:.{}f}", r, decimals), point);
+}
+
+std::string exact(double v, bool point) {
+  if (v == 0) v = 0;  // never "-0"
+  std::string s;
+  for (int decimals = 0; decimals <= 24; ++decimals) {
+    s = fmt::format("{:.{}f}", v, decimals);
+    if (std::strtod(s.c_str(), nullptr) == v) break;
+  }
+  return trimmed(std::move(s), point);
 }
 
 std::optional<std::string> Writer::unwritable(const OutWord& w) const {

@@ -90,6 +90,10 @@ class Writer {
   std::optional<stdlib::DialectTables> own_tables_;
 };
 
+// A number as a double reads it back, in fixed notation (no dialect reads an
+// exponent), without trailing zeros; with a point when `point`.
+std::string exact(double v, bool point);
+
 // The dialects a program can be translated to.
 bool is_target(std::string_view dialect);
 // The writer of `dialect` (is_target) with the target's profile; nothing when the
