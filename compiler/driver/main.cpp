@@ -382,25 +382,17 @@ class Cli {
 
   int translate(FileKind kind, uint32_t file) {
     int status = kOk;
-    // Structured translation writes the IR; the module is what the checks run.
-    std::optional<ir::Program> program;
+    // Structured translation reads the source itself (its checks and dry run with it).
     std::optional<vm::Module> m;
     if (!o_.flatten) {
       if (int st = source_only(kind)) return finish(st, stderr);
-      program = analyse(s_, file, o_.dialect);
-      if (!program) return finish(kUsage, stderr);
-      if (!s_.diags.has_errors()) {
-        m = lower_program(s_, *program);
-        if (!s_.diags.limit_reached()) dry_run(s_, *m, o_.run);
-      }
-      if (s_.diags.has_errors()) return finish(kProgramErrors, stderr);
-    } else {
-      m = module(kind, file, status);
+      if (!s_.profile && !load_profile(s_, "")) return finish(kUsage, stderr);
+    } else if (!(m = module(kind, file, status))) {
+      return finish(status, stderr);
     }
-    if (!m) return finish(status, stderr);
     translate::Request request;
     request.to = o_.to;
-    request.header = {o_.input, kind == FileKind::Source ? o_.dialect : m->semantics.dialect, {}, o_.flatten};
+    request.header = {o_.input, m ? m->semantics.dialect : o_.dialect, {}, o_.flatten};
     request.run = o_.run;
     std::optional<stdlib::Profile> target_profile;
     if (!o_.target_machine.empty()) {
@@ -408,7 +400,7 @@ class Cli {
       if (!target_profile) return finish(kUsage, stderr);
       request.target_profile = &*target_profile;
     } else {
-      request.target_profile = module_profile(s_, *m);
+      request.target_profile = m ? module_profile(s_, *m) : &*s_.profile;
       if (!request.target_profile) return finish(kUsage, stderr);
     }
     // The whole program or nothing: a temporary file renamed into place.
@@ -419,7 +411,7 @@ class Cli {
       s_.diags.report(DiagId::FileUnwritable, {}, to_stdout ? std::string("a temporary file") : temp, std::strerror(errno));
       return finish(kUsage, stderr);
     }
-    bool ok = o_.flatten ? translate::flatten(s_, *m, request, out) : translate::structured(s_, *program, request, out);
+    bool ok = o_.flatten ? translate::flatten(s_, *m, request, out) : translate::structured(s_, file, o_.dialect, request, out);
     if (to_stdout) {
       if (ok) {
         std::rewind(out);

@@ -330,7 +330,8 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
 // would be; what its checks find is reported with the others (StreamChecks).
 class Stream final : public BlockSink {
  public:
-  Stream(Session& s, const CheckRules& rules) : checks(rules), lowering(s.sources), s_(s), rules_(rules) {}
+  Stream(Session& s, const CheckRules& rules, StreamObserver* observer = nullptr)
+      : checks(rules), lowering(s.sources), s_(s), rules_(rules), observer_(observer) {}
 
   void take(ir::Program& program, ir::Unit& unit) override {
     if (stopped_ || !program.units.empty()) return;
@@ -343,6 +344,7 @@ class Stream final : public BlockSink {
       }
       checks.block(program, b);
       lowering.block(program, unit, b);
+      if (observer_) observer_->streamed(program, b);
       if (!b.label.empty()) unit.streamed_labels.push_back({*b.number, b.range});
     }
     unit.blocks.erase(unit.blocks.begin(), unit.blocks.begin() + static_cast<std::ptrdiff_t>(n));
@@ -376,6 +378,7 @@ class Stream final : public BlockSink {
 
   Session& s_;
   const CheckRules& rules_;
+  StreamObserver* observer_;
   bool stopped_ = false;
   size_t expressions_ = SIZE_MAX;  // the program's expressions after the last blocks taken
 };
@@ -398,6 +401,36 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
   return stream.lowering.finish(program, *s.profile);
+}
+
+std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect, StreamObserver& observer,
+                                         ir::Program& rest) {
+  auto frontend = frontend_for(s, dialect);
+  if (!frontend) return std::nullopt;
+  Stream stream(s, frontend->rules(), &observer);
+  stream.lowering.expect(s.sources.file(file).text().size());
+  rest = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
+  if (!s.diags.limit_reached()) check(rest, frontend->rules(), s.diags, &stream.checks);
+  return stream.lowering.finish(rest, *s.profile);
+}
+
+std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect) {
+  Diagnostics quiet(0);
+  auto frontend = s.profile ? make_frontend(dialect, *s.profile, quiet) : nullptr;
+  if (!frontend) return std::nullopt;
+  return frontend->read(s.sources, file, quiet, {s.library, s.fast_path, nullptr, s.processes});
+}
+
+std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect) {
+  std::vector<FnCall> calls;
+  Diagnostics quiet(0);
+  auto frontend = s.profile ? make_frontend(dialect, *s.profile, quiet) : nullptr;
+  if (!frontend) return calls;
+  const uint32_t empty = s.sources.add("<power-on>", "");
+  const ir::Program program = frontend->read(s.sources, empty, quiet, {s.library, s.fast_path, nullptr, s.processes});
+  for (uint16_t i : program.semantics.power_on)
+    calls.insert(calls.end(), program.semantics.codes[i].calls.begin(), program.semantics.codes[i].calls.end());
+  return calls;
 }
 
 vm::Module lower_program(Session& s, const ir::Program& program) { return lower(program, s.sources, *s.profile); }

@@ -56,6 +56,21 @@ vm::Module lower_program(Session& s, const ir::Program& program);
 // module is the one analyse + lower_program make. Blocks with errors are lowered as
 // lower_program does; nothing if the program cannot be read at all.
 std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect);
+// Sees each block compile_source streams, after its checks and before it is dropped.
+class StreamObserver {
+ public:
+  virtual ~StreamObserver() = default;
+  virtual void streamed(const ir::Program& program, const ir::Block& block) = 0;
+};
+// compile_source, showing `observer` each block it streams, and leaving in `rest` the
+// program's IR without them (the units and blocks it holds at the end).
+std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect, StreamObserver& observer,
+                                         ir::Program& rest);
+// A source read whole again, with no sink and its diagnostics not reported (the
+// caller has read it once): for what needs every block at once.
+std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect);
+// The power-on functions of a dialect with the session's profile (an empty program's).
+std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect);
 // Runs the module with a null trace, reporting what the runtime finds.
 void dry_run(Session& s, const vm::Module& module, const RunSettings& settings);
 // Loads a bytecode file (and registers its source files for diagnostics).

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <memory>
 
 #include <fmt/format.h>
 
@@ -44,39 +47,89 @@ struct Structured::Mapped {
   std::string later;  // written after the block's other codes instead (G43 H after M06)
 };
 
-Structured::Structured(const ir::Program& program, Writer& writer, const MachineConfig& target_machine)
-    : p_(program), w_(writer), target_(target_machine), src_(program.semantics.conventions), dst_(writer.conventions()),
-      same_(program.dialect == writer.dialect()) {
-  // The dialect's parameters from #500 (ISO's own where they are); a space of its
-  // statements' own (pp G73's repeat count) from #100.
-  uint32_t extra = kExtraBase;
-  for (size_t i = 0; i < p_.spaces.size(); ++i) {
-    const VarSpace& space = p_.spaces[i];
-    if (space.memory || space.size == 0) continue;
-    if (mapped_space_ < 0) {
-      mapped_space_ = static_cast<int>(i);
-      space_base_[i] = p_.dialect == "iso" ? 0 : kMappedBase;
-    } else if (extra + space.size <= kExtraEnd) {
-      space_base_[i] = extra;
-      extra += space.size;
-    }
-  }
+Structured::Structured(std::string dialect, Writer& writer, const MachineConfig& target_machine)
+    : w_(writer), target_(target_machine), dst_(writer.conventions()), same_(dialect == writer.dialect()) {}
+
+void Structured::attach(const ir::Program& program) {
+  p_ = &program;
+  src_ = program.semantics.conventions;
 }
 
-void Structured::write(const Header& header) {
+// The power-on codes' functions: the program's, or those given before it was read.
+std::vector<FnCall> Structured::power_on() const {
+  if (power_on_) return *power_on_;
+  std::vector<FnCall> calls;
+  for (uint16_t i : p_->semantics.power_on)
+    calls.insert(calls.end(), p_->semantics.codes[i].calls.begin(), p_->semantics.codes[i].calls.end());
+  return calls;
+}
+
+// Where a space's variables go: the dialect's parameters from #500 (ISO's own
+// where they are); a space of its statements' own (pp G73's repeat count) from #100.
+// Decided when a program first names the space: a front end may add one late.
+std::optional<uint32_t> Structured::space_base(uint16_t index) {
+  if (auto it = space_base_.find(index); it != space_base_.end()) return it->second;
+  int first = -1;
+  for (size_t i = 0; i < p_->spaces.size() && first < 0; ++i)
+    if (!p_->spaces[i].memory && p_->spaces[i].size > 0) first = static_cast<int>(i);
+  const VarSpace& space = p_->spaces[index];
+  if (static_cast<int>(index) == first) {
+    mapped_space_ = first;
+    return space_base_[index] = p_->dialect == "iso" ? 0 : kMappedBase;
+  }
+  if (space.memory || extra_ + space.size > kExtraEnd) return std::nullopt;
+  space_base_[index] = extra_;
+  extra_ += space.size;
+  return space_base_[index];
+}
+
+void Structured::stream(const ir::Program& program, const ir::Block& b) {
+  attach(program);
+  if (!streamed_) {
+    streamed_ = true;
+    begin_main();
+  }
+  pending_number_ = b.number ? std::optional<int>(static_cast<int>(*b.number)) : std::nullopt;
+  block(b);
+}
+
+// The main program's state at power-on, as far as the text says.
+void Structured::begin_main() {
+  forget();
+  in_main_ = true;
+  spindle_on_ = coolant_on_ = false;
+  corrector_ = 0;
+  state(power_on());
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
   // power-on motion goes into the main program's first move instead of the start.
   if (motion_code_moves() && !same_)
-    for (uint16_t i : p_.semantics.power_on)
-      for (const FnCall& c : p_.semantics.codes[i].calls)
-        if (fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)
-          if (auto code = target_code({c}, Scope::Modal)) deferred_motion_ = code->text();
+    for (const FnCall& c : power_on())
+      if (fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)
+        if (auto code = target_code({c}, Scope::Modal)) deferred_motion_ = code->text();
+}
+
+void Structured::translate(const ir::Program& program, const Header& header) {
+  attach(program);
   body();
-  const std::string text = w_.take();
+  text_ = w_.take();
   w_.begin(header);
-  if (!same_) start();
-  w_.append(text);
+  if (!same_) start();  // last: it sets what the program uses
+  head_ = w_.take();
+}
+
+bool Structured::emit(std::FILE* streamed, std::FILE* out) {
+  // The streamed blocks stand where the main program's others begin.
+  const size_t at = std::min(main_at_, text_.size());
+  bool ok = std::fwrite(head_.data(), 1, head_.size(), out) == head_.size() && std::fwrite(text_.data(), 1, at, out) == at;
+  if (streamed) {
+    std::rewind(streamed);
+    char buffer[1 << 16];
+    for (size_t n; ok && (n = std::fread(buffer, 1, sizeof buffer, streamed)) > 0;) ok = std::fwrite(buffer, 1, n, out) == n;
+  }
+  ok = ok && std::fwrite(text_.data() + at, 1, text_.size() - at, out) == text_.size() - at;
   w_.end();
+  const std::string tail = w_.take();
+  return ok && std::fwrite(tail.data(), 1, tail.size(), out) == tail.size();
 }
 
 // --- units and blocks -----------------------------------------------------------------
@@ -85,14 +138,11 @@ void Structured::unit(const ir::Unit& u, bool main) {
   if (u.kind == ir::UnitKind::Process) return fail(u.range, "a process program (EXE)");
   if (!main && u.kind == ir::UnitKind::Program)  // GOST 20999 §1.8
     return fail(u.range, fmt::format("a second program on the medium, run after the first ends: {} runs one", w_.dialect()));
-  forget();
-  if (main) {
-    spindle_on_ = coolant_on_ = false;
-    corrector_ = 0;
-    for (uint16_t i : p_.semantics.power_on) state(p_.semantics.codes[i].calls);
-  }
-  open_unit(u, main);
+  if (main) main_at_ = w_.pending();
+  if (!main) forget();
+  else if (!streamed_) begin_main();  // else its leading blocks are written already
   in_main_ = main;
+  open_unit(u, main);
   bool returned = false;
   for (size_t i = 0; i < u.blocks.size(); ++i) {
     before_block(i);
@@ -109,7 +159,7 @@ bool Structured::ends_program(const ir::Unit& u) const {
     if (s.kind == ir::StmtKind::Return || (s.kind == ir::StmtKind::Jump && s.cond == ir::kNoExpr)) return true;
   for (const ir::Word& w : u.blocks.back().words)
     if (w.kind == ir::WordKind::Code && w.code >= 0)
-      for (const FnCall& c : p_.semantics.codes[static_cast<size_t>(w.code)].calls)
+      for (const FnCall& c : p_->semantics.codes[static_cast<size_t>(w.code)].calls)
         if (c.fn == Fn::ProgramEnd || c.fn == Fn::ProgramEndInformation) return true;
   return false;
 }
@@ -190,7 +240,7 @@ void Structured::machine() {
   for (const ir::Word& w : block_->words) {
     switch (w.kind) {
       case ir::WordKind::Code:
-        words.push_back(w.code < 0 ? as_written(w) : p_.semantics.codes[static_cast<size_t>(w.code)].name);
+        words.push_back(w.code < 0 ? as_written(w) : p_->semantics.codes[static_cast<size_t>(w.code)].name);
         break;
       case ir::WordKind::Parameter: case ir::WordKind::Argument: words.push_back(as_written(w)); break;
       case ir::WordKind::Control: words.push_back(w.address + value(w.value, 'N')); break;  // M98 P1000, not P1000.
@@ -339,7 +389,7 @@ void Structured::track(const ir::Word& w) {
 }
 
 std::optional<double> Structured::constant_of(ir::ExprId id) const {
-  const ir::Expr& e = p_.exprs[id];
+  const ir::Expr& e = p_->exprs[id];
   if (e.op == ir::ExprOp::Number) return e.number;
   if (e.op == ir::ExprOp::Neg) {
     auto a = constant_of(e.a);
@@ -355,11 +405,11 @@ void Structured::corrector(const ir::Word& w) {
     corrector_ = 0;  // T6 is corrector 0 unless T' follows
     return;
   }
-  if (!p_.is_constant(w.value)) {
+  if (!p_->is_constant(w.value)) {
     corrector_.reset();
     return fail(w.range, "a corrector given by a parameter");
   }
-  corrector_ = static_cast<int>(p_.exprs[w.value].number);
+  corrector_ = static_cast<int>(p_->exprs[w.value].number);
 }
 
 std::string Structured::length_offset(SourceRange at) {
@@ -404,13 +454,13 @@ void Structured::state(const std::vector<FnCall>& calls) {
 
 void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (w.code < 0) return fail(w.range, fmt::format("a code chosen at run time ({})", w.address.str()));
-  const CodeDesc& desc = p_.semantics.codes[static_cast<size_t>(w.code)];
+  const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
   if (desc.calls.empty()) return;  // a call, a return: the statements write them
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
       // A target that reads the source's words has its cycles too (LinuxCNC's are
       // ISO's, words and all): the cycle of the same name.
-      const std::string& name = p_.semantics.cycles[c.arg].name;
+      const std::string& name = p_->semantics.cycles[c.arg].name;
       if (!reads_source_words())
         return fail(w.range, fmt::format("canned cycle {}: cycles are translated between dialects by --flatten only", desc.name));
       for (const auto& [number, entry] : w_.tables().g_codes)
@@ -454,10 +504,10 @@ std::string Structured::as_written(const ir::Word& w) {
 // A word's value: a number (counts and numbers whole, any other whole number with
 // its point: ISO reads P2 in G04 as 2 ms), a variable, or an expression in brackets.
 std::string Structured::value(ir::ExprId id, char letter) {
-  const ir::Expr& e = p_.exprs[id];
+  const ir::Expr& e = p_->exprs[id];
   if (e.op == ir::ExprOp::Number) return exact(e.number, std::string_view("STHDLNOM").find(letter) == std::string_view::npos);
   // X-#5: a vacant #5 leaves the word out, as X#5 does; X[-#5] would be X0.
-  if (e.op == ir::ExprOp::Neg && p_.exprs[e.a].op == ir::ExprOp::Var) return "-" + expr(e.a, kSign);
+  if (e.op == ir::ExprOp::Neg && p_->exprs[e.a].op == ir::ExprOp::Var) return "-" + expr(e.a, kSign);
   if (e.op == ir::ExprOp::Var || e.op == ir::ExprOp::ZeroIfVacant) return expr(id, kSign);
   return "[" + expr(id, kOr) + "]";
 }
@@ -514,8 +564,8 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
       }
       if (src_.arc_centre != dst_.arc_centre)
         return fail(w.range, fmt::format("the arc centre {}: {} gives it from the origin, {} from the start point", letter,
-                                         src_.arc_centre == ArcCentre::Absolute ? p_.dialect : w_.dialect(),
-                                         src_.arc_centre == ArcCentre::Absolute ? w_.dialect() : p_.dialect));
+                                         src_.arc_centre == ArcCentre::Absolute ? p_->dialect : w_.dialect(),
+                                         src_.arc_centre == ArcCentre::Absolute ? w_.dialect() : p_->dialect));
       if (src_.centre_words != dst_.centre_words)
         return fail(w.range, fmt::format("the arc centre {}: the dialects give the centre by different words", letter));
       return write(letter);
@@ -524,30 +574,30 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   if (letter == src_.radius_word && letter == dst_.radius_word) return write(letter);
   if (letter == src_.dwell_word && dst_.dwell_word) {
     const double factor = src_.dwell_seconds_per_unit / dst_.dwell_seconds_per_unit;
-    const ir::Expr& e = p_.exprs[w.value];
+    const ir::Expr& e = p_->exprs[w.value];
     words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? exact(e.number * factor, true)
                                        : factor == 1              ? value(w.value, 'P')
                                                                   : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
     return;
   }
-  fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_.dialect, w_.dialect()));
+  fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
 }
 
 // --- parameters and expressions -----------------------------------------------------------
 
 void Structured::assign(const ir::Stmt& s) {
-  const ir::Expr& target = p_.exprs[s.target];
+  const ir::Expr& target = p_->exprs[s.target];
   std::string value = expr(s.value, kOr);
-  if (!same_ && target.op == ir::ExprOp::Var && p_.is_constant(target.a)) {
+  if (!same_ && target.op == ir::ExprOp::Var && p_->is_constant(target.a)) {
     // A store rounds as the parameter's class does (NC-110 decision 8; pp R: 0.001).
-    const VarType type = p_.spaces[target.space].type_of(static_cast<uint32_t>(p_.exprs[target.a].number));
+    const VarType type = p_->spaces[target.space].type_of(static_cast<uint32_t>(p_->exprs[target.a].number));
     const bool whole = type == VarType::Byte || type == VarType::Integer || type == VarType::Long;
     if (type == VarType::Real) fail(s.range, "a store into a single-precision parameter");
     if (whole || type == VarType::Thousandths) {
       if (whole ? is_whole(s.value) : is_thousandths(s.value)) {
         // nothing to round (a sum of thousandths is one to within 1e-15)
-      } else if (p_.is_constant(s.value)) {
-        double v = p_.exprs[s.value].number;
+      } else if (p_->is_constant(s.value)) {
+        double v = p_->exprs[s.value].number;
         if (convert_value(type, 0, v)) value = exact(v, false);
         else fail(s.range, "a value outside its parameter's class");
       } else {
@@ -564,12 +614,12 @@ void Structured::assign(const ir::Stmt& s) {
 // Whether a value is a whole number whatever the variables hold: whole constants,
 // parameters of a whole class, comparisons, and sums and products of them.
 bool Structured::is_whole(ir::ExprId id) const {
-  const ir::Expr& e = p_.exprs[id];
+  const ir::Expr& e = p_->exprs[id];
   switch (e.op) {
     case ir::ExprOp::Number: return e.number == std::trunc(e.number);
     case ir::ExprOp::Var: {
-      if (!p_.is_constant(e.a)) return false;
-      const VarType t = p_.spaces[e.space].type_of(static_cast<uint32_t>(p_.exprs[e.a].number));
+      if (!p_->is_constant(e.a)) return false;
+      const VarType t = p_->spaces[e.space].type_of(static_cast<uint32_t>(p_->exprs[e.a].number));
       return t == VarType::Byte || t == VarType::Integer || t == VarType::Long;
     }
     case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: case ir::ExprOp::Neg: return is_whole(e.a);
@@ -583,12 +633,12 @@ bool Structured::is_whole(ir::ExprId id) const {
 // Whether a value is a sum of thousandths: constants with at most three decimals,
 // parameters that hold thousandths (pp R), and sums of them.
 bool Structured::is_thousandths(ir::ExprId id) const {
-  const ir::Expr& e = p_.exprs[id];
+  const ir::Expr& e = p_->exprs[id];
   switch (e.op) {
     case ir::ExprOp::Number: return std::fabs(e.number * 1000 - std::round(e.number * 1000)) < 1e-6;
     case ir::ExprOp::Var:
-      return p_.is_constant(e.a) &&
-             p_.spaces[e.space].type_of(static_cast<uint32_t>(p_.exprs[e.a].number)) == VarType::Thousandths;
+      return p_->is_constant(e.a) &&
+             p_->spaces[e.space].type_of(static_cast<uint32_t>(p_->exprs[e.a].number)) == VarType::Thousandths;
     case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: case ir::ExprOp::Neg: return is_thousandths(e.a);
     case ir::ExprOp::Add: case ir::ExprOp::Sub: return is_thousandths(e.a) && is_thousandths(e.b);
     default: return is_whole(id);
@@ -609,15 +659,16 @@ std::string Structured::var(const ir::Expr& e) {
     fail(e.range, "a store into a memory or a system variable");
     return "#0";
   }
-  const VarSpace& space = p_.spaces[e.space];
-  if (!space_base_.count(e.space)) {
+  const VarSpace& space = p_->spaces[e.space];
+  const std::optional<uint32_t> at = space_base(e.space);
+  if (!at) {
     fail(e.range, fmt::format("the parameters {}: {} has no place for them", space.name, w_.dialect()));
     return "#0";
   }
-  const uint32_t base = space_base_.at(e.space);
-  if (p_.is_constant(e.a)) {
-    const uint32_t index = base + static_cast<uint32_t>(p_.exprs[e.a].number);
-    if (index >= kMappedEnd || (base == kExtraBase && index >= kExtraEnd))
+  const uint32_t base = *at;
+  if (p_->is_constant(e.a)) {
+    const uint32_t index = base + static_cast<uint32_t>(p_->exprs[e.a].number);
+    if (index >= kMappedEnd || (base >= kExtraBase && base < kExtraEnd && index >= kExtraEnd))
       fail(e.range, fmt::format("{}{}: mapped to #{}, beyond the variables kept", space.name, index - base, index));
     check_variable(e, index);
     used_.insert(index);
@@ -629,7 +680,7 @@ std::string Structured::var(const ir::Expr& e) {
 }
 
 std::string Structured::expr(ir::ExprId id, int min) {
-  const ir::Expr& e = p_.exprs[id];
+  const ir::Expr& e = p_->exprs[id];
   auto wrap = [&](int level, std::string s) { return level < min ? "[" + s + "]" : s; };
   auto binary = [&](int level, std::string_view op) {
     const int right = level == kCompare ? kSum : level + 1;
@@ -671,7 +722,7 @@ std::string Structured::modulo(const ir::Expr& e, int min) {
 // not a: the opposite comparison when a is one (operands never vacant there: the
 // order comparisons read vacant as 0, and EQ and NE are each other's opposite).
 std::string Structured::negation(ir::ExprId id, int min) {
-  const ir::Expr& a = p_.exprs[id];
+  const ir::Expr& a = p_->exprs[id];
   static const std::map<ir::ExprOp, std::string_view> kOpposite = {
       {ir::ExprOp::Eq, "NE"}, {ir::ExprOp::Ne, "EQ"}, {ir::ExprOp::Lt, "GE"},
       {ir::ExprOp::Le, "GT"}, {ir::ExprOp::Gt, "LE"}, {ir::ExprOp::Ge, "LT"}};
@@ -721,9 +772,9 @@ std::string Structured::operand(ir::ExprId a) {
 void Structured::display(const ir::Stmt& s) {
   std::string text = "DIS";
   for (const ir::DisplayItem& item : s.items) {
-    const ir::Expr& e = p_.exprs[item.value];
+    const ir::Expr& e = p_->exprs[item.value];
     text += ' ';
-    text += e.op == ir::ExprOp::String ? "\"" + p_.texts[e.text] + "\"" : expr(item.value, kOr);
+    text += e.op == ir::ExprOp::String ? "\"" + p_->texts[e.text] + "\"" : expr(item.value, kOr);
   }
   comment(text);
   drop(s.range, "a display to the operator (DIS), written as a comment");
@@ -735,13 +786,12 @@ void Structured::display(const ir::Stmt& s) {
 // parameters at 0: the target's may start vacant (Macro B) or as a file left them.
 void Structured::start() {
   std::vector<Code> g, m;
-  for (uint16_t i : p_.semantics.power_on)
-    for (const FnCall& c : p_.semantics.codes[i].calls)
-      if (auto code = target_code({c}, Scope::Modal); code && !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
-        auto& list = code->letter == 'G' ? g : m;
-        if (std::none_of(list.begin(), list.end(), [&](const Code& o) { return o.number == code->number; }))
-          list.push_back(*code);
-      }
+  for (const FnCall& c : power_on())
+    if (auto code = target_code({c}, Scope::Modal); code && !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
+      auto& list = code->letter == 'G' ? g : m;
+      if (std::none_of(list.begin(), list.end(), [&](const Code& o) { return o.number == code->number; }))
+        list.push_back(*code);
+    }
   // G codes that must not share a block (two of one group) in blocks of their own.
   auto apart = [&](const Code& a, const Code& b) {
     return stdlib::has_pair(w_.tables().incompatible, a.number, b.number) ||
@@ -762,8 +812,9 @@ void Structured::start() {
   }
   for (const Code& c : m) w_.line(c.text());
   start_offset();
-  if (mapped_space_ >= 0 && !p_.spaces[static_cast<size_t>(mapped_space_)].vacant && p_.dialect != "iso") {
-    if (indirect_) zero_all(kMappedBase, std::min(p_.spaces[static_cast<size_t>(mapped_space_)].size, kMappedEnd - kMappedBase));
+  if (p_->dialect != "iso") {  // ISO's variables start vacant in both
+    if (indirect_ && mapped_space_ >= 0)
+      zero_all(kMappedBase, std::min(p_->spaces[static_cast<size_t>(mapped_space_)].size, kMappedEnd - kMappedBase));
     for (uint32_t v : used_)
       if (!indirect_ || v < kMappedBase) w_.line(fmt::format("#{}=0", v));
   }
@@ -779,7 +830,7 @@ void Structured::start_offset() {
     return std::nullopt;
   };
   int source = 0, target = 0;
-  for (uint16_t i : p_.semantics.power_on) source = offset_of(p_.semantics.codes[i].calls).value_or(source);
+  source = offset_of(power_on()).value_or(source);
   if (auto it = w_.tables().power_on.find("default"); it != w_.tables().power_on.end())
     for (const std::string& token : it->second)
       if (auto code = w_.tables().g_codes.find(token.size() > 1 && token[0] == 'G' ? std::atoi(token.c_str() + 1) : -1);
@@ -790,7 +841,7 @@ void Structured::start_offset() {
   if (it == target_.work_offsets.end() ||
       std::all_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v == 0; }))
     return;
-  fail(p_.units.front().range,
+  fail(p_->units.front().range,
        fmt::format("the start without a work offset: {} starts in work offset {}, which the target machine sets, and "
                    "has no code for none (give --target-machine a profile whose offset {} is zero)",
                    w_.dialect(), target, target));
@@ -800,17 +851,66 @@ void Structured::start_offset() {
 
 bool writes_structured(std::string_view target) { return target == "iso" || target == "linuxcnc"; }
 
-bool structured(Session& s, const ir::Program& program, const Request& request, std::FILE* out) {
+namespace {
+
+// The streamed blocks' text, written to a scratch file as it grows.
+class Streamer final : public StreamObserver {
+ public:
+  Streamer(Structured& t, Writer& w, std::FILE* file) : t_(t), w_(w), file_(file) {}
+  void streamed(const ir::Program& program, const ir::Block& block) override {
+    t_.stream(program, block);
+    if (w_.pending() > (1 << 16)) flush();
+  }
+  void flush() {
+    const std::string text = w_.take();
+    if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) failed = true;
+  }
+  bool failed = false;
+
+ private:
+  Structured& t_;
+  Writer& w_;
+  std::FILE* file_;
+};
+
+}  // namespace
+
+bool structured(Session& s, uint32_t file, const std::string& dialect, const Request& request, std::FILE* out) {
   const uint32_t errors = s.diags.error_count();
   auto writer = make_writer(request.to, *request.target_profile, s.diags);
   if (!writer) return false;
   const MachineConfig target = stdlib::load_machine_config(*request.target_profile, s.diags);
   if (s.diags.error_count() != errors) return false;
-  auto translation = request.to == "linuxcnc" ? make_ngc_structured(program, *writer, target)
-                                              : make_iso_structured(program, *writer, target);
+  auto make = [&] {
+    return request.to == "linuxcnc" ? make_ngc_structured(dialect, *writer, target) : make_iso_structured(dialect, *writer, target);
+  };
+  auto translation = make();
+  translation->set_power_on(power_on_functions(s, dialect));
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> streamed(std::tmpfile(), &std::fclose);
+  if (!streamed) {
+    s.diags.report(DiagId::FileUnwritable, {}, std::string("a temporary file"), std::strerror(errno));
+    return false;
+  }
+  Streamer streamer(*translation, *writer, streamed.get());
+  ir::Program rest;
+  {
+    auto module = compile_source(s, file, dialect, streamer, rest);
+    if (!module || s.diags.error_count() != errors) return false;
+    if (!s.diags.limit_reached()) dry_run(s, *module, request.run);
+    if (s.diags.error_count() != errors) return false;
+  }
+  streamer.flush();
   Header header = request.header;
-  if (!program.units.empty()) header.title = program.units.front().title;
-  translation->write(header);
+  if (!rest.units.empty()) header.title = rest.units.front().title;
+  translation->translate(rest, header);
+  if (translation->needs_whole()) {  // LinuxCNC: a loop back into the streamed blocks
+    auto whole = read_whole(s, file, dialect);
+    if (!whole) return false;
+    writer->take();
+    translation = make();
+    translation->translate(*whole, header);
+    streamed.reset();
+  }
   // Each construct once, at its first place, with the count of the others.
   std::map<std::string, std::pair<const Problem*, size_t>> seen;
   std::vector<std::string> order;
@@ -826,9 +926,8 @@ bool structured(Session& s, const ir::Program& program, const Request& request, 
     s.diags.report(p->dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
     refused |= !p->dropped;
   }
-  if (refused) return false;
-  const std::string text = writer->take();
-  return std::fwrite(text.data(), 1, text.size(), out) == text.size() && s.diags.error_count() == errors;
+  if (refused || streamer.failed) return false;
+  return translation->emit(streamed.get(), out) && s.diags.error_count() == errors;
 }
 
 }  // namespace ncc::translate

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdio>
+#include <string>
 #include <string_view>
 
 #include "ir/ir.h"
@@ -17,9 +18,11 @@ namespace ncc::translate {
 // The targets structured translation writes; the others take --flatten.
 bool writes_structured(std::string_view target);
 
-// Writes `program` (read and checked, without errors) in the request's target to
-// `out`. False when something could not be written (reported); the caller then
-// keeps no output.
-bool structured(Session& s, const ir::Program& program, const Request& request, std::FILE* out);
+// Reads, checks and dry-runs the source `file` of `dialect` as `ncc compile` does,
+// translating the main program's leading plain blocks as they are streamed (a CAM
+// program translates in the memory compiling it takes), and writes it in the
+// request's target to `out`. False when the program has errors or something could
+// not be written (reported); the caller then keeps no output.
+bool structured(Session& s, uint32_t file, const std::string& dialect, const Request& request, std::FILE* out);
 
 }  // namespace ncc::translate

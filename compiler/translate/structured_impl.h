@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <cstdio>
 #include <map>
 #include <memory>
 #include <optional>
@@ -29,11 +30,25 @@ struct Problem {
 
 class Structured {
  public:
-  Structured(const ir::Program& program, Writer& writer, const MachineConfig& target_machine);
+  Structured(std::string dialect, Writer& writer, const MachineConfig& target_machine);
   virtual ~Structured() = default;
 
-  // The whole program: the body first, so that the start can set what it uses.
-  void write(const Header& header);
+  // The power-on functions of the source, when blocks are streamed before the
+  // program that names them is read whole.
+  void set_power_on(std::vector<FnCall> calls) { power_on_ = std::move(calls); }
+  // One of the main program's leading blocks, as the compiler streams it: written
+  // to the text taken from the writer (`take`) before it is dropped.
+  void stream(const ir::Program& program, const ir::Block& b);
+  // The rest of the program (what was not streamed), and the start, made last
+  // because it sets what the program uses; kept as text.
+  void translate(const ir::Program& program, const Header& header);
+  // The whole text to `out`: the start, the streamed blocks (`streamed`, a file, or
+  // none) where the main program's others begin, then the rest. False if it could
+  // not be written.
+  bool emit(std::FILE* streamed, std::FILE* out);
+  // LinuxCNC: a jump back to a streamed block, where an o-word must open: the
+  // program is to be read whole and translated again.
+  bool needs_whole() const { return needs_whole_; }
 
   std::vector<Problem> problems;
 
@@ -93,20 +108,26 @@ class Structured {
   };
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
 
-  const ir::Program& p_;
+  const ir::Program* p_ = nullptr;
   Writer& w_;
   const MachineConfig& target_;
-  const Conventions& src_;
+  Conventions src_;
   const Conventions& dst_;
   const bool same_;  // the target is the source's dialect
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
+  bool streamed_ = false;              // the main program's leading blocks are written
+  bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
   bool in_main_ = false;               // the unit being written is the main program
 
  private:
   struct Mapped;
+  void attach(const ir::Program& program);
+  std::vector<FnCall> power_on() const;
+  std::optional<uint32_t> space_base(uint16_t index);
+  void begin_main();
   void start();
   void start_offset();
   void translated_machine();
@@ -130,6 +151,10 @@ class Structured {
 
   int mapped_space_ = -1;  // the source's space of numbered parameters
   std::map<uint16_t, uint32_t> space_base_;  // a space's first target variable
+  uint32_t extra_ = 100;                     // the next one of #100..#149
+  std::optional<std::vector<FnCall>> power_on_;
+  size_t main_at_ = 0;  // where the main program's text begins in text_
+  std::string head_, text_;  // the start, and the rest, translated
   std::string deferred_motion_;  // the power-on motion code, for the main program's first move
   bool skip_ = false;
   bool words_written_ = false;
@@ -145,7 +170,7 @@ class Structured {
   Position centre_;                    // of the block's arc, where this translation computed it
 };
 
-std::unique_ptr<Structured> make_iso_structured(const ir::Program& program, Writer& writer, const MachineConfig& target);
-std::unique_ptr<Structured> make_ngc_structured(const ir::Program& program, Writer& writer, const MachineConfig& target);
+std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
+std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 
 }  // namespace ncc::translate

@@ -19,7 +19,7 @@ class IsoStructured final : public Structured {
  private:
   void body() override {
     name_programs();
-    for (size_t u = 0; u < p_.units.size(); ++u) unit(p_.units[u], u == 0);
+    for (size_t u = 0; u < p_->units.size(); ++u) unit(p_->units[u], u == 0);
   }
 
   // The O number of each unit the program calls: ISO keeps its own; a pp L number
@@ -27,14 +27,14 @@ class IsoStructured final : public Structured {
   void name_programs() {
     std::set<int> taken{1};  // the main program is O0001 (the writer's)
     std::vector<const ir::Unit*> unnamed;
-    for (size_t u = 1; u < p_.units.size(); ++u) {
-      const std::string& name = p_.units[u].name;
+    for (size_t u = 1; u < p_->units.size(); ++u) {
+      const std::string& name = p_->units[u].name;
       std::optional<int> n;
       if (name.size() > 1 && name.size() <= 5 && (name[0] == 'O' || name[0] == 'L') &&
           name.find_first_not_of("0123456789", 1) == std::string::npos)
         n = std::stoi(name.substr(1));
       if (n && *n > 0 && taken.insert(*n).second) programs_[name] = *n;
-      else unnamed.push_back(&p_.units[u]);
+      else unnamed.push_back(&p_->units[u]);
     }
     int next = kFresh;
     for (const ir::Unit* u : unnamed) {
@@ -56,7 +56,7 @@ class IsoStructured final : public Structured {
   void close_unit(const ir::Unit& u, bool main, bool returned) override {
     if (head_) line(fmt::format("N{}", *std::exchange(head_, std::nullopt)));  // a loop with an empty body
     // What stands after the main program's end is the subprograms' place.
-    if (main && p_.units.size() > 1 && !ends_program(u)) line("M30");
+    if (main && p_->units.size() > 1 && !ends_program(u)) line("M30");
     if (!main && !returned) line("M99");
   }
 
@@ -71,7 +71,7 @@ class IsoStructured final : public Structured {
     for (const ir::Block& b : unit.blocks)
       for (const ir::Stmt& s : b.stmts)
         if (s.kind == ir::StmtKind::Jump && !s.label.empty()) targets.insert(s.label);
-    for (const ir::Unit& u : p_.units)  // M97: a block of this unit
+    for (const ir::Unit& u : p_->units)  // M97: a block of this unit
       for (const ir::Block& b : u.blocks)
         for (const ir::Stmt& s : b.stmts)
           if (s.kind == ir::StmtKind::Call && s.label.starts_with(unit.name + "/"))
@@ -80,6 +80,12 @@ class IsoStructured final : public Structured {
     for (const ir::Block& b : unit.blocks)
       if (b.number) ++count[*b.number];
     for (const auto& [number, n] : count) taken_.insert(static_cast<int>(number));
+    // Blocks streamed and written already kept their numbers: a jump to one of
+    // them goes to the first block of the number, as it does in ISO.
+    for (const ir::Unit::StreamedLabel& l : unit.streamed_labels) {
+      taken_.insert(static_cast<int>(l.number));
+      if (targets.count(l.label())) labels_.emplace(l.label(), static_cast<int>(l.number));
+    }
     for (const ir::Block& b : unit.blocks) {
       if (b.label.empty() || !targets.count(b.label) || labels_.count(b.label)) continue;
       const bool own = b.number && count[*b.number] == 1 && b.label == fmt::format("N{}", *b.number);
@@ -126,7 +132,7 @@ class IsoStructured final : public Structured {
     if (counters_ > kFirstCounter - kLastCounter) return fail(s.range, "more than 100 repeat loops");
     Loop loop{kFirstCounter - counters_++, fresh(), 0};
     line(fmt::format("#{}={}", loop.counter, expr(s.value, kOr)));
-    if (!p_.is_constant(s.value) || p_.exprs[s.value].number < 1) {
+    if (!p_->is_constant(s.value) || p_->exprs[s.value].number < 1) {
       loop.exit = fresh();
       line(fmt::format("IF [#{} LE 0] GOTO {}", loop.counter, loop.exit));
     }
@@ -151,7 +157,7 @@ class IsoStructured final : public Structured {
       return fail(s.range, s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
     if (!s.args.empty()) return fail(s.range, "a call with arguments");
     std::string text = fmt::format("M98 P{}", programs_.at(s.label));
-    if (s.value != ir::kNoExpr && !(p_.is_constant(s.value) && p_.exprs[s.value].number == 1))
+    if (s.value != ir::kNoExpr && !(p_->is_constant(s.value) && p_->exprs[s.value].number == 1))
       text += " L" + value(s.value, 'L');
     line(text);
   }
@@ -193,8 +199,8 @@ class IsoStructured final : public Structured {
 
 }  // namespace
 
-std::unique_ptr<Structured> make_iso_structured(const ir::Program& program, Writer& writer, const MachineConfig& target) {
-  return std::make_unique<IsoStructured>(program, writer, target);
+std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target) {
+  return std::make_unique<IsoStructured>(std::move(dialect), writer, target);
 }
 
 }  // namespace ncc::translate

@@ -31,16 +31,16 @@ class NgcStructured final : public Structured {
 
   void body() override {
     name_subs();
-    for (size_t u = 1; u < p_.units.size(); ++u) unit(p_.units[u], false);
-    if (!p_.units.empty()) unit(p_.units.front(), true);
+    for (size_t u = 1; u < p_->units.size(); ++u) unit(p_->units[u], false);
+    if (!p_->units.empty()) unit(p_->units.front(), true);
   }
 
   // Each called unit is a named sub: o<o1000>, o<l100>, o<flowa>.
   void name_subs() {
     std::set<std::string> taken;
-    for (size_t u = 1; u < p_.units.size(); ++u) {
+    for (size_t u = 1; u < p_->units.size(); ++u) {
       std::string name;
-      const std::string& source = p_.units[u].name;
+      const std::string& source = p_->units[u].name;
       for (char c : source.substr(source.rfind('/') + 1))
         if (std::isalnum(static_cast<unsigned char>(c))) name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (name.empty()) name = "sub";
@@ -112,13 +112,17 @@ class NgcStructured final : public Structured {
         if (s.kind == ir::StmtKind::Jump) {
           if (s.label.empty()) return fail(s.range, "a jump to a computed block number: LinuxCNC has no GOTO");
           if (!last(b, s)) return fail(s.range, "a jump before other statements of its block");
+          if (!labels.count(s.label)) {  // a block streamed and written already
+            needs_whole_ = true;
+            return;
+          }
           const size_t t = labels.at(s.label);
           if (t > i) {
             // Macro B's WHILE: a jump over the body to a block that jumps back.
             const ir::Block& end = u.blocks[t];
             const ir::Stmt* back = end.stmts.size() == 1 && end.stmts[0].kind == ir::StmtKind::Jump ? &end.stmts[0] : nullptr;
-            if (back && !back->label.empty() && labels.at(back->label) == i + 1 && s.cond != ir::kNoExpr &&
-                p_.exprs[s.cond].op == ir::ExprOp::Not && p_.exprs[s.cond].a == back->cond) {
+            if (back && !back->label.empty() && labels.count(back->label) && labels.at(back->label) == i + 1 && s.cond != ir::kNoExpr &&
+                p_->exprs[s.cond].op == ir::ExprOp::Not && p_->exprs[s.cond].a == back->cond) {
               regions_.push_back({Region::While, 2 * i + 1, 2 * t, expr(back->cond, kOr)});
               consumed.insert(back);
             } else {
@@ -228,7 +232,7 @@ class NgcStructured final : public Structured {
       auto a = std::find_if(s.args.begin(), s.args.end(), [&](const ir::CallArg& x) { return x.index == i; });
       text += a == s.args.end() ? " [0]" : " [" + expr(a->value, kOr) + "]";
     }
-    if (s.value == ir::kNoExpr || (p_.is_constant(s.value) && p_.exprs[s.value].number == 1)) return oword(text);
+    if (s.value == ir::kNoExpr || (p_->is_constant(s.value) && p_->exprs[s.value].number == 1)) return oword(text);
     const int n = ++next_number_;
     oword(fmt::format("o{} repeat [{}]", n, expr(s.value, kOr)));
     oword(text);
@@ -236,12 +240,12 @@ class NgcStructured final : public Structured {
   }
 
   bool uses_locals(const std::string& unit) const {
-    for (const ir::Unit& u : p_.units)
+    for (const ir::Unit& u : p_->units)
       if (u.name == unit)
         for (const ir::Block& b : u.blocks)
           for (const ir::Stmt& s : b.stmts)
-            if (s.target != ir::kNoExpr && p_.exprs[s.target].op == ir::ExprOp::Var && p_.is_constant(p_.exprs[s.target].a) &&
-                p_.exprs[p_.exprs[s.target].a].number <= 33)
+            if (s.target != ir::kNoExpr && p_->exprs[s.target].op == ir::ExprOp::Var && p_->is_constant(p_->exprs[s.target].a) &&
+                p_->exprs[p_->exprs[s.target].a].number <= 33)
               return true;
     return false;
   }
@@ -282,7 +286,7 @@ class NgcStructured final : public Structured {
   }
 
   // LinuxCNC reads ISO's words as ISO does (its codes differ: M07 is mist).
-  bool reads_source_words() const override { return p_.dialect == "iso"; }
+  bool reads_source_words() const override { return p_->dialect == "iso"; }
 
   // rs274 makes a G0 or G1 without axis words a move to where the tool is.
   bool motion_code_moves() const override { return true; }
@@ -312,7 +316,7 @@ class NgcStructured final : public Structured {
 
   // The value of an expression of numbers alone (7/2, -2.5).
   std::optional<double> constant(ir::ExprId id) const {
-    const ir::Expr& e = p_.exprs[id];
+    const ir::Expr& e = p_->exprs[id];
     if (e.op == ir::ExprOp::Number) return e.number;
     if (e.op == ir::ExprOp::Neg || e.op == ir::ExprOp::ZeroIfVacant || e.op == ir::ExprOp::Check) {
       auto a = constant(e.a);
@@ -341,7 +345,7 @@ class NgcStructured final : public Structured {
   // Macro B's vacant value has no LinuxCNC counterpart; #31-#33 are locals of a
   // Macro B call and globals in LinuxCNC.
   void check_variable(const ir::Expr& e, uint32_t index) override {
-    if (p_.dialect != "iso") return;
+    if (p_->dialect != "iso") return;
     if (index == 0) fail(e.range, "the vacant #0: LinuxCNC's parameters are never vacant");
     else if (index >= 31 && index <= 33) fail(e.range, fmt::format("#{}: a local of ISO, a global of LinuxCNC", index));
   }
@@ -355,8 +359,8 @@ class NgcStructured final : public Structured {
 
 }  // namespace
 
-std::unique_ptr<Structured> make_ngc_structured(const ir::Program& program, Writer& writer, const MachineConfig& target) {
-  return std::make_unique<NgcStructured>(program, writer, target);
+std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target) {
+  return std::make_unique<NgcStructured>(std::move(dialect), writer, target);
 }
 
 }  // namespace ncc::translate
