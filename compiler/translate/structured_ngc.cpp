@@ -187,10 +187,11 @@ class NgcStructured final : public Structured {
         if (l.kind != Region::If && l.open < r.open && r.open < l.close && l.close < r.close &&
             (!loop || l.open > loop->open))
           loop = &l;
+      // Between the loop's end and the jump's target, only what ends the loop: the
+      // jump back of a while, the end of a repeat.
       bool after = loop && r.kind == Region::If;
-      for (size_t b = loop ? loop->close / 2 : 0; after && b < r.close / 2; ++b)
-        for (const ir::Stmt& x : u.blocks[b].stmts)
-          after &= consumed.count(&x) || x.kind == ir::StmtKind::RepeatEnd || (b == loop->close / 2 && x.kind == ir::StmtKind::Jump);
+      for (size_t b = loop ? (loop->close + 1) / 2 : 0; after && b < r.close / 2; ++b)
+        for (const ir::Stmt& x : u.blocks[b].stmts) after &= consumed.count(&x) || x.kind == ir::StmtKind::RepeatEnd;
       if (!after) {
         ++k;
         continue;
