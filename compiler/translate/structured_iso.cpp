@@ -1,6 +1,8 @@
 // Structured translation into ISO with Macro B: the main program, then after its
 // M30 the subprograms as O programs; jumps as IF/GOTO to block numbers; a repeat
 // loop as a count in a common variable of its own (docs/translate.md).
+#include <algorithm>
+
 #include <fmt/format.h>
 
 #include "structured_impl.h"
@@ -164,10 +166,16 @@ class IsoStructured final : public Structured {
 
   void ret(const ir::Stmt&) override { line("M99"); }
 
+  // IF [c] THEN before the statement's one line; one that takes several (an M code
+  // apart from its motion) is refused.
   void conditional(const ir::Stmt& s) override {
     then_ = fmt::format("IF [{}] THEN ", expr(s.cond, kOr));
+    const size_t before = w_.pending();
     statement(s);
-    if (!then_.empty()) fail(s.range, "a statement under a condition");
+    const std::string written = w_.take();
+    if (!then_.empty() || std::count(written.begin() + static_cast<std::ptrdiff_t>(before), written.end(), '\n') > 1)
+      fail(s.range, "a statement under a condition that ISO writes in more than one block");
+    w_.append(written);
     then_.clear();
   }
 
