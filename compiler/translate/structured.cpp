@@ -222,7 +222,7 @@ void Structured::line(std::string text) {
 }
 
 void Structured::forget() {
-  spindle_on_ = coolant_on_ = std::nullopt;
+  spindle_on_ = coolant_on_ = cycle_on_ = std::nullopt;
   position_ = {};
   incremental_.reset();
   corrector_.reset();
@@ -430,6 +430,8 @@ std::string Structured::length_offset(SourceRange at) {
 void Structured::state(const std::vector<FnCall>& calls) {
   for (const FnCall& f : calls) {
     switch (f.fn) {
+      case Fn::Cycle: cycle_on_ = true; break;
+      case Fn::CycleCancel: cycle_on_ = false; break;
       case Fn::DistanceAbsolute: incremental_ = false; break;
       case Fn::DistanceIncremental: incremental_ = true; break;
       case Fn::PlaneXY: plane_ = 'K'; break;  // the plane by its normal's centre word
@@ -439,7 +441,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::SpindleStop: case Fn::SpindleOrient: spindle_on_ = false; break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
-      case Fn::ProgramEnd: case Fn::ProgramEndInformation: spindle_on_ = coolant_on_ = false; break;
+      case Fn::ProgramEnd: case Fn::ProgramEndInformation: spindle_on_ = coolant_on_ = cycle_on_ = false; break;
       case Fn::ToolChange:
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
@@ -460,15 +462,35 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     if (c.fn == Fn::Cycle) {
       // A target that reads the source's words has its cycles too (LinuxCNC's are
       // ISO's, words and all): the cycle of the same name.
-      const std::string& name = p_->semantics.cycles[c.arg].name;
-      if (!reads_source_words())
-        return fail(w.range, fmt::format("canned cycle {}: cycles are translated between dialects by --flatten only", desc.name));
-      for (const auto& [number, entry] : w_.tables().g_codes)
-        if (entry.desc.calls.size() == 1 && entry.desc.calls[0].fn == Fn::Cycle && w_.tables().cycles[entry.desc.calls[0].arg].name == name) {
+      // Another dialect's cycle whose words read alike (GOST 20999's R, Q, P and the
+      // depth on the plane's normal, as ISO's): the target's of the same pattern.
+      const CyclePattern& pattern = p_->semantics.cycles[c.arg];
+      const bool alike = src_.cycle_level_word == dst_.cycle_level_word && src_.peck_word == dst_.peck_word &&
+                         src_.dwell_word == dst_.dwell_word && src_.dwell_seconds_per_unit == dst_.dwell_seconds_per_unit &&
+                         !src_.cycle_two_levels && !src_.cycle_defines_only && !dst_.cycle_two_levels && !dst_.cycle_defines_only;
+      if (!reads_source_words() && !alike)
+        return fail(w.range, fmt::format("canned cycle {}: its words read otherwise in {}; --flatten writes its moves",
+                                         desc.name, w_.dialect()));
+      // ISO feeds out to R, then rapids to the initial level; GOST feeds out all the way.
+      if (!reads_source_words() && pattern.out == CyclePattern::Out::Feed && src_.fanuc_cycles != dst_.fanuc_cycles)
+        return fail(w.range, fmt::format("canned cycle {}: {} feeds out of the hole otherwise; --flatten writes its moves",
+                                         desc.name, w_.dialect()));
+      for (const auto& [number, entry] : w_.tables().g_codes) {
+        if (entry.desc.calls.size() != 1 || entry.desc.calls[0].fn != Fn::Cycle) continue;
+        const CyclePattern& has = w_.tables().cycles[entry.desc.calls[0].arg];
+        const bool same = reads_source_words() ? has.name == pattern.name
+                                               : has.in == pattern.in && has.dwell == pattern.dwell &&
+                                                     has.bottom == pattern.bottom && has.out == pattern.out;
+        if (same) {
+          // GOST's cycles return to the level the tool came from: the target's G98.
+          if (!reads_source_words() && !src_.fanuc_cycles)
+            if (auto back = target_code({{Fn::CycleReturnInitial}}, Scope::Modal))
+              out.push_back({*back, desc.timing, back->entry->desc.timing, {}, {}});
           out.push_back({{'G', number, &entry}, desc.timing, entry.desc.timing, {}, {}});
           return;
         }
-      return fail(w.range, fmt::format("canned cycle {}: {} has no such cycle", desc.name, w_.dialect()));
+      }
+      return fail(w.range, fmt::format("canned cycle {}: {} has no cycle of its pattern", desc.name, w_.dialect()));
     }
   auto add = [&](const Code& c) {
     out.push_back({c, desc.timing, c.entry->desc.timing, c.entry->conflict_sets, {}});
@@ -572,6 +594,11 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
     default: break;
   }
   if (letter == src_.radius_word && letter == dst_.radius_word) return write(letter);
+  // A cycle's level and peck, in a block where a cycle is on (ISO's R is a radius
+  // elsewhere).
+  if (cycle_on_ == true && ((letter == src_.cycle_level_word && letter == dst_.cycle_level_word) ||
+                            (letter == src_.peck_word && letter == dst_.peck_word)))
+    return write(letter);
   if (letter == src_.dwell_word && dst_.dwell_word) {
     const double factor = src_.dwell_seconds_per_unit / dst_.dwell_seconds_per_unit;
     const ir::Expr& e = p_->exprs[w.value];

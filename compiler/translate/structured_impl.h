@@ -162,7 +162,7 @@ class Structured {
   std::set<uint32_t> used_;  // target variables the program reads or writes
   bool indirect_ = false;    // ... and one computed
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
-  std::optional<bool> spindle_on_ = false, coolant_on_ = false;
+  std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false;
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   Position position_;                  // X Y Z where the text leaves them
