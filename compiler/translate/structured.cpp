@@ -883,21 +883,16 @@ namespace {
 // The streamed blocks' text, written to a scratch file as it grows.
 class Streamer final : public StreamObserver {
  public:
-  Streamer(Structured& t, Writer& w, std::FILE* file) : t_(t), w_(w), file_(file) {}
+  Streamer(Structured& t, Writer& w, std::FILE* file) : spill(w, file), t_(t) {}
   void streamed(const ir::Program& program, const ir::Block& block) override {
     t_.stream(program, block);
-    if (w_.pending() > (1 << 16)) flush();
+    spill.grown();
   }
-  void flush() {
-    const std::string text = w_.take();
-    if (std::fwrite(text.data(), 1, text.size(), file_) != text.size()) failed = true;
-  }
-  bool failed = false;
+
+  Spill spill;
 
  private:
   Structured& t_;
-  Writer& w_;
-  std::FILE* file_;
 };
 
 }  // namespace
@@ -926,7 +921,7 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
     if (!s.diags.limit_reached()) dry_run(s, *module, request.run);
     if (s.diags.error_count() != errors) return false;
   }
-  streamer.flush();
+  streamer.spill.flush();
   Header header = request.header;
   if (!rest.units.empty()) header.title = rest.units.front().title;
   translation->translate(rest, header);
@@ -953,7 +948,7 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
     s.diags.report(p->dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
     refused |= !p->dropped;
   }
-  if (refused || streamer.failed) return false;
+  if (refused || streamer.spill.failed) return false;
   return translation->emit(streamed.get(), out) && s.diags.error_count() == errors;
 }
 

@@ -10,25 +10,19 @@
 namespace ncc::translate {
 namespace {
 
-// The flattener's trace sink, writing the target text out as it grows: a long
-// program translates in bounded memory.
+// The flattener's trace sink, writing the target text out as it grows.
 class Streaming final : public TraceSink {
  public:
-  Streaming(Flattener& f, Writer& w, std::FILE* out) : f_(f), w_(w), out_(out) {}
+  Streaming(Flattener& f, Writer& w, std::FILE* out) : spill(w, out), f_(f) {}
   void event(const Event& e) override {
     f_.event(e);
-    if (w_.pending() > (1 << 16)) write();
+    spill.grown();
   }
-  void write() {
-    std::string text = w_.take();
-    if (std::fwrite(text.data(), 1, text.size(), out_) != text.size()) failed = true;
-  }
-  bool failed = false;
+
+  Spill spill;
 
  private:
   Flattener& f_;
-  Writer& w_;
-  std::FILE* out_;
 };
 
 }  // namespace
@@ -58,7 +52,7 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
   run.trace_machine_frame = true;
   RunResult result = run_module(s, module, run, sink);
   flattener.finish();
-  sink.write();
+  sink.spill.flush();
   bool refused = false;
   for (const std::string& what : order) {
     const Seen& r = seen.at(what);
@@ -67,7 +61,7 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
     report_at_block(s, module, r.source, id, diag_message(id, writer->dialect(), text));
     refused |= !r.dropped;
   }
-  return result.ok && !result.usage_error && !refused && !sink.failed && s.diags.error_count() == errors;
+  return result.ok && !result.usage_error && !refused && !sink.spill.failed && s.diags.error_count() == errors;
 }
 
 }  // namespace ncc::translate

@@ -4,6 +4,7 @@
 // One Writer per target dialect (writer_<dialect>.cpp).
 #pragma once
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -88,6 +89,25 @@ class Writer {
  private:
   std::unique_ptr<Frontend> target_;
   std::optional<stdlib::DialectTables> own_tables_;
+};
+
+// What a writer has written, spilled to a file as it grows: a long program
+// translates in bounded memory.
+class Spill {
+ public:
+  Spill(Writer& writer, std::FILE* out) : w_(writer), out_(out) {}
+  void grown() {
+    if (w_.pending() > (1 << 16)) flush();
+  }
+  void flush() {
+    const std::string text = w_.take();
+    if (std::fwrite(text.data(), 1, text.size(), out_) != text.size()) failed = true;
+  }
+  bool failed = false;
+
+ private:
+  Writer& w_;
+  std::FILE* out_;
 };
 
 // A number as a double reads it back, in fixed notation (no dialect reads an
