@@ -95,6 +95,7 @@ void Structured::stream(const ir::Program& program, const ir::Block& b) {
 
 // The main program's state at power-on, as far as the text says.
 void Structured::begin_main() {
+  in_main_ = false;  // nothing is forgotten before the program starts
   forget();
   in_main_ = true;
   spindle_on_ = coolant_on_ = false;
@@ -139,9 +140,9 @@ void Structured::unit(const ir::Unit& u, bool main) {
   if (!main && u.kind == ir::UnitKind::Program)  // GOST 20999 §1.8
     return fail(u.range, fmt::format("a second program on the medium, run after the first ends: {} runs one", w_.dialect()));
   if (main) main_at_ = w_.pending();
+  in_main_ = main;
   if (!main) forget();
   else if (!streamed_) begin_main();  // else its leading blocks are written already
-  in_main_ = main;
   open_unit(u, main);
   bool returned = false;
   for (size_t i = 0; i < u.blocks.size(); ++i) {
@@ -222,6 +223,7 @@ void Structured::line(std::string text) {
 }
 
 void Structured::forget() {
+  if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
   spindle_on_ = coolant_on_ = cycle_on_ = std::nullopt;
   position_ = {};
   incremental_.reset();
@@ -265,6 +267,7 @@ void Structured::translated_machine() {
   std::vector<Mapped> codes;
   std::vector<std::string> params;
   bool moves = false;
+  origin_words_ = false;
   if (src_.corrector_in_tool_word)  // before M06 of the same block
     for (const ir::Word& w : block_->words)
       if (w.kind == ir::WordKind::Parameter && w.address[0] == 'T') corrector(w);
@@ -276,6 +279,7 @@ void Structured::translated_machine() {
     if (w.kind == ir::WordKind::Parameter) {
       moves |= w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
       if (src_.corrector_in_tool_word && w.address == "T'") continue;
+      if (origin_words_) continue;  // UAO's operands: the work offset says them
       if (!reads_source_words() && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K' &&
           (src_.arc_centre != dst_.arc_centre || src_.centre_words != dst_.centre_words))
         centre(w, start, params);
@@ -283,6 +287,7 @@ void Structured::translated_machine() {
         parameter(w, params);
       track(w);
     }
+  if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
   arc_on_circle(start);
   auto conflict = [&](const Mapped& a) {
     return std::any_of(codes.begin(), codes.end(), [&](const Mapped& b) {
@@ -331,6 +336,39 @@ void Structured::translated_machine() {
   write_words(main);
   write_words(after);
   write_words(later);
+}
+
+// NC-110's (UAO,n): origin n on every axis it declares. It is the target's work
+// offset n (G54 for 1) where origin n declares every axis of the target machine and
+// no axis is listed: otherwise an axis would keep its origin in NC-110, not in ISO.
+void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out) {
+  std::optional<double> n;
+  bool listed = false;
+  for (const ir::Word& o : block_->words) {
+    if (o.kind != ir::WordKind::Parameter) continue;
+    if (o.slot == operand_slot(0)) n = constant_of(o.value);
+    else if (o.slot < 52) listed = true;
+  }
+  const auto record = n ? target_.work_offsets.find(static_cast<int>(*n)) : target_.work_offsets.end();
+  bool every = record != target_.work_offsets.end();
+  for (char axis : dst_.axes)
+    if (every && std::string_view(kAxisLetters).find(axis) != std::string_view::npos)
+      every = (record->second.axes >> std::string_view(kAxisLetters).find(axis)) & 1u;
+  auto code = n && *n >= 1 && *n <= 0xFFFF ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*n)}}, Scope::Modal) : std::nullopt;
+  origin_words_ = true;  // its operands are said by the work offset, or refused with it
+  if (!n) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name));
+  if (listed) return fail(w.range, fmt::format("{} on the axes it lists: {}'s work offset sets every axis", desc.name, w_.dialect()));
+  if (!code) return fail(w.range, fmt::format("{},{}: {} has no work offset {}", desc.name, *n, w_.dialect(), *n));
+  if (!every) {
+    std::string declared;
+    if (record != target_.work_offsets.end())
+      for (size_t i = 0; i < kAxisLetters.size(); ++i)
+        if ((record->second.axes >> i) & 1u) declared += kAxisLetters[i];
+    return fail(w.range, fmt::format("{},{}: origin {} declares {}, and {}'s work offset sets every axis ({}): the others "
+                                     "would not keep their origins", desc.name, *n, *n, declared.empty() ? "no axis" : declared,
+                                     w_.dialect(), dst_.axes));
+  }
+  out.push_back({*code, desc.timing, code->entry->desc.timing, {}, {}});
 }
 
 // An arc's centre where the dialects give it otherwise: NC-110's I and J are the
@@ -431,6 +469,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
   for (const FnCall& f : calls) {
     switch (f.fn) {
       case Fn::Cycle: cycle_on_ = true; break;
+      case Fn::WorkOffset: offset_selected_ = true; break;
       case Fn::CycleCancel: cycle_on_ = false; break;
       case Fn::DistanceAbsolute: incremental_ = false; break;
       case Fn::DistanceIncremental: incremental_ = true; break;
@@ -458,6 +497,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (w.code < 0) return fail(w.range, fmt::format("a code chosen at run time ({})", w.address.str()));
   const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
   if (desc.calls.empty()) return;  // a call, a return: the statements write them
+  if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
       // A target that reads the source's words has its cycles too (LinuxCNC's are
@@ -864,6 +904,7 @@ void Structured::start_offset() {
           code != w_.tables().g_codes.end())
         target = offset_of(code->second.desc.calls).value_or(target);
   if (source == target || target_code({{Fn::WorkOffset, static_cast<uint16_t>(source)}}, Scope::Modal)) return;
+  if (!moved_before_offset_) return;  // the program selects its offset before it moves
   const auto it = target_.work_offsets.find(target);
   if (it == target_.work_offsets.end() ||
       std::all_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v == 0; }))

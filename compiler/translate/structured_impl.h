@@ -139,6 +139,7 @@ class Structured {
   using Position = std::array<std::optional<double>, 3>;
   void centre(const ir::Word& w, const Position& start, std::vector<std::string>& words);
   void track(const ir::Word& w);
+  void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void arc_on_circle(const Position& start);
   std::optional<double> constant_of(ir::ExprId id) const;
   void corrector(const ir::Word& w);
@@ -168,6 +169,9 @@ class Structured {
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
   Position centre_;                    // of the block's arc, where this translation computed it
+  bool origin_words_ = false;          // the block's operands are UAO's
+  bool offset_selected_ = false;       // the main program has selected a work offset
+  bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
 };
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
