@@ -98,7 +98,7 @@ void Structured::begin_main() {
   in_main_ = false;  // nothing is forgotten before the program starts
   forget();
   in_main_ = true;
-  spindle_on_ = coolant_on_ = false;
+  spindle_on_ = coolant_on_ = length_on_ = false;
   corrector_ = 0;
   state(power_on());
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
@@ -196,9 +196,9 @@ void Structured::statement(const ir::Stmt& s) {
     case ir::StmtKind::Jump: return jump(s);
     case ir::StmtKind::RepeatBegin: return repeat_begin(s);
     case ir::StmtKind::RepeatEnd: return repeat_end(s);
-    case ir::StmtKind::Call: return same_ ? machine() : call(s);  // M98 P L: the words of the block
-    case ir::StmtKind::Return: return same_ ? machine() : ret(s);
-    case ir::StmtKind::CallRange: return fail(s.range, "a call of a range of blocks (EPP)");
+    case ir::StmtKind::Call: return verbatim() ? machine() : call(s);  // M98 P L: the words of the block
+    case ir::StmtKind::Return: return verbatim() ? machine() : ret(s);
+    case ir::StmtKind::CallRange: return call_range(s);
     case ir::StmtKind::Display: return display(s);
     case ir::StmtKind::Asset: return fail(s.range, "an ASSET file statement");
     case ir::StmtKind::Input: return fail(s.range, "operator input (INP)");
@@ -210,21 +210,27 @@ void Structured::statement(const ir::Stmt& s) {
 }
 
 void Structured::line(std::string text) {
-  std::string head = skip_ ? "/" : "";
-  if (pending_number_) head += fmt::format("N{}", *pending_number_) + (text.empty() ? "" : " ");
+  std::string head = std::exchange(label_, {});
+  if (pending_number_) head += (head.empty() ? "" : " ") + fmt::format("N{}", *pending_number_);
   pending_number_.reset();  // a skipped block's lines all start with '/'
-  text = head + std::exchange(then_, {}) + text;
+  text = std::exchange(then_, {}) + text;
+  if (!head.empty() && !text.empty()) head += ' ';
+  text = (skip_ ? "/" : "") + head + text;
   for (const std::string& c : comments_) {
+    if (w_.comments_apart()) {  // lines of their own, before the block's
+      w_.comment(c);
+      continue;
+    }
     if (!text.empty()) text += ' ';
     text += w_.inline_comment(c);
   }
   comments_.clear();
-  w_.line(text);
+  if (!text.empty()) w_.line(text);
 }
 
 void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
-  spindle_on_ = coolant_on_ = cycle_on_ = std::nullopt;
+  spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = std::nullopt;
   position_ = {};
   incremental_.reset();
   corrector_.reset();
@@ -237,7 +243,7 @@ void Structured::forget() {
 // words too (M98 P L, G65 A..Z), once for all the statements they make.
 void Structured::machine() {
   if (std::exchange(words_written_, true)) return;
-  if (!same_) return translated_machine();
+  if (!verbatim()) return translated_machine();
   std::vector<std::string> words;
   for (const ir::Word& w : block_->words) {
     switch (w.kind) {
@@ -275,10 +281,19 @@ void Structured::translated_machine() {
     if (w.kind == ir::WordKind::Code) code(w, codes);
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
   const auto start = position_;  // where the block's arc starts
+  // ISO's, GOST's and pp's centre along X Y Z, from the start: NC-110's two words of
+  // the plane (both needed), from the origin under G90.
+  const bool plane_words = !reads_source_words() && src_.centre_words == CentreWords::PerAxis &&
+                           dst_.centre_words == CentreWords::Plane;
+  std::array<const ir::Word*, 3> centre_words{};
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
+      if (plane_words && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K') {
+        centre_words[static_cast<size_t>(w.address[0] - 'I')] = &w;
+        continue;
+      }
       moves |= w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
-      if (src_.corrector_in_tool_word && w.address == "T'") continue;
+      if (src_.corrector_in_tool_word && !dst_.corrector_in_tool_word && w.address == "T'") continue;
       if (origin_words_) continue;  // UAO's operands: the work offset says them
       if (!reads_source_words() && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K' &&
           (src_.arc_centre != dst_.arc_centre || src_.centre_words != dst_.centre_words))
@@ -288,6 +303,8 @@ void Structured::translated_machine() {
       track(w);
     }
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
+  if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
+    plane_centre(centre_words, start, params);
   arc_on_circle(start);
   auto conflict = [&](const Mapped& a) {
     return std::any_of(codes.begin(), codes.end(), [&](const Mapped& b) {
@@ -306,11 +323,22 @@ void Structured::translated_machine() {
   // G codes, then the other words, then M codes (the usual order); M codes of one
   // time together, in the source's order.
   std::vector<std::string> before, main, m, after, later;
+  std::vector<Code> g;
   for (const Mapped& c : codes) {
     if (!c.later.empty()) later.push_back(c.later);
     else if (c.code.letter == 'M' && any_before && c.wants == Timing::Before) before.push_back(c.code.text());
     else if (c.code.letter == 'M' && any_after && c.wants == Timing::After) after.push_back(c.code.text());
-    else (c.code.letter == 'M' ? m : main).push_back(c.code.text());
+    else if (c.code.letter == 'M') m.push_back(c.code.text());
+    else g.push_back(c.code);
+  }
+  // G codes the target takes in no one block: the last block's with the motion,
+  // the others' before it.
+  const auto blocks = together(g);
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    std::vector<std::string> texts;
+    for (const Code& c : blocks[i]) texts.push_back(c.text());
+    if (i + 1 < blocks.size()) write_words(texts);
+    else main = texts;
   }
   if (!before.empty()) {  // the speed and the tool the codes before the motion act on
     for (auto it = params.begin(); it != params.end();) {
@@ -349,26 +377,32 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
     if (o.slot == operand_slot(0)) n = constant_of(o.value);
     else if (o.slot < 52) listed = true;
   }
-  const auto record = n ? target_.work_offsets.find(static_cast<int>(*n)) : target_.work_offsets.end();
-  bool every = record != target_.work_offsets.end();
-  for (char axis : dst_.axes)
-    if (every && std::string_view(kAxisLetters).find(axis) != std::string_view::npos)
-      every = (record->second.axes >> std::string_view(kAxisLetters).find(axis)) & 1u;
   auto code = n && *n >= 1 && *n <= 0xFFFF ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*n)}}, Scope::Modal) : std::nullopt;
   origin_words_ = true;  // its operands are said by the work offset, or refused with it
   if (!n) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name));
   if (listed) return fail(w.range, fmt::format("{} on the axes it lists: {}'s work offset sets every axis", desc.name, w_.dialect()));
   if (!code) return fail(w.range, fmt::format("{},{}: {} has no work offset {}", desc.name, *n, w_.dialect(), *n));
-  if (!every) {
-    std::string declared;
-    if (record != target_.work_offsets.end())
-      for (size_t i = 0; i < kAxisLetters.size(); ++i)
-        if ((record->second.axes >> i) & 1u) declared += kAxisLetters[i];
-    return fail(w.range, fmt::format("{},{}: origin {} declares {}, and {}'s work offset sets every axis ({}): the others "
-                                     "would not keep their origins", desc.name, *n, *n, declared.empty() ? "no axis" : declared,
-                                     w_.dialect(), dst_.axes));
-  }
+  if (auto why = partial_offset(static_cast<int>(*n), desc.name)) return fail(w.range, *why);
   out.push_back({*code, desc.timing, code->entry->desc.timing, {}, {}});
+}
+
+std::optional<std::string> Structured::partial_offset(int n, std::string_view name) const {
+  // The axes both dialects move: an axis the source cannot move keeps its origin unseen.
+  std::string axes;
+  for (char axis : dst_.axes)
+    if (src_.axes.find(axis) != std::string::npos && std::string_view(kAxisLetters).find(axis) != std::string_view::npos)
+      axes += axis;
+  const auto record = target_.work_offsets.find(n);
+  bool every = record != target_.work_offsets.end();
+  for (char axis : axes)
+    if (every) every = (record->second.axes >> std::string_view(kAxisLetters).find(axis)) & 1u;
+  if (every) return std::nullopt;
+  std::string declared;
+  if (record != target_.work_offsets.end())
+    for (size_t i = 0; i < kAxisLetters.size(); ++i)
+      if ((record->second.axes >> i) & 1u) declared += kAxisLetters[i];
+  return fmt::format("{},{}: origin {} declares {}, and {}'s work offset sets every axis ({}): the others would not "
+                     "keep their origins", name, n, n, declared.empty() ? "no axis" : declared, w_.dialect(), axes);
 }
 
 // An arc's centre where the dialects give it otherwise: NC-110's I and J are the
@@ -398,6 +432,33 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
   }
   const char to = static_cast<char>('I' + axis);
   words.push_back(to + (v ? exact(*v, true) : value(w.value, to)));
+}
+
+void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start,
+                              std::vector<std::string>& out) {
+  const ir::Word& first = **std::find_if(words.begin(), words.end(), [](const ir::Word* w) { return w; });
+  if (src_.arc_centre != ArcCentre::Incremental) return fail(first.range, "an arc centre from the origin, given by X Y Z");
+  if (!plane_) return fail(first.range, "an arc centre where the plane is not known");
+  if (!incremental_) return fail(first.range, "an arc centre where G90 or G91 is not known");
+  const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
+  if (const ir::Word* lead = words[static_cast<size_t>(kPlanes[plane].w)])
+    return fail(lead->range, fmt::format("a helix lead {}: the dialects give the lead in other units", lead->address.str()));
+  for (int k = 0; k < 2; ++k) {
+    const size_t axis = static_cast<size_t>(k == 0 ? kPlanes[plane].u : kPlanes[plane].v);
+    const char to = k == 0 ? 'I' : 'J';
+    const ir::Word* w = words[axis];
+    if (*incremental_) {  // from the start in both
+      out.push_back(to + (w ? value(w->value, to) : std::string("0")));
+      continue;
+    }
+    const std::optional<double> v = w ? constant_of(w->value) : std::optional<double>(0);
+    if (!v) return fail(w->range, fmt::format("the arc centre {} given by a parameter, from the start point", w->address.str()));
+    if (!start[axis])
+      return fail(first.range, "an arc centre from the start point, where the arc's start is not known (after a label, a "
+                               "call or a computed move)");
+    centre_[axis] = *start[axis] + *v;
+    out.push_back(to + w_.number({to, *centre_[axis], Value::Length}));
+  }
 }
 
 // An arc whose centre this translation computed: its end must lie on its circle as
@@ -480,8 +541,22 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::SpindleStop: case Fn::SpindleOrient: spindle_on_ = false; break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
+      case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = true; break;
+      case Fn::LengthOff: length_on_ = false; break;
       case Fn::ProgramEnd: case Fn::ProgramEndInformation: spindle_on_ = coolant_on_ = cycle_on_ = false; break;
       case Fn::ToolChange:
+        // ... and first takes the tool axis to the reference point: a move the
+        // target's M06 does not make.
+        if (src_.tool_change_iso && !dst_.tool_change_iso) {
+          if (src_.tool_change_retract)
+            fail(block_->range, fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, {}'s "
+                                            "does not (a machine that changes tools in place says iso.tool_change_retract "
+                                            "= false)", p_->dialect, w_.dialect()));
+          else if (spindle_on_ != false || coolant_on_ != false)
+            fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s "
+                                            "does not", spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on",
+                                            p_->dialect, w_.dialect()));
+        }
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
         if (dst_.tool_change_iso && !src_.tool_change_iso && (spindle_on_ != false || coolant_on_ != false))
@@ -497,6 +572,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (w.code < 0) return fail(w.range, fmt::format("a code chosen at run time ({})", w.address.str()));
   const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
   if (desc.calls.empty()) return;  // a call, a return: the statements write them
+  if (own_code(w, desc)) return;
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
@@ -535,15 +611,20 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   auto add = [&](const Code& c) {
     out.push_back({c, desc.timing, c.entry->desc.timing, c.entry->conflict_sets, {}});
     const auto& calls = c.entry->desc.calls;
-    if (src_.corrector_in_tool_word && std::find(calls.begin(), calls.end(), FnCall{Fn::LengthPlus}) != calls.end())
+    if (src_.corrector_in_tool_word && !dst_.corrector_in_tool_word &&
+        std::find(calls.begin(), calls.end(), FnCall{Fn::LengthPlus}) != calls.end())
       out.back().later = length_offset(w.range);
   };
   // One code of the same functions, else one code for each.
   if (auto one = target_code(desc.calls, desc.scope)) return add(*one);
+  // ISO's M06 ends the length offset: NC-110's M06 with the T word's corrector 0.
+  if (desc.calls == std::vector<FnCall>{{Fn::ToolChange}} && src_.tool_change_iso && dst_.corrector_in_tool_word)
+    if (auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal)) return add(*m06);
   std::vector<Code> each;
   for (const FnCall& c : desc.calls) {
     auto code = target_code({c}, desc.scope);
     if (code) each.push_back(*code);
+    else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
     else return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(c.fn), w_.dialect()));
   }
@@ -558,7 +639,8 @@ std::string Structured::as_written(const ir::Word& w) {
   if (address.size() == 2 && address[1] == '\'') {
     if ((address[0] == 'C' || address[0] == 'R') && !w_.tables().addresses.count(',') && !same_)
       fail(w.range, fmt::format(",{}: {} has no corners after a move", address[0], w_.dialect()));
-    address = address[0] == 'C' || address[0] == 'R' ? std::string{',', address[0]} : address.substr(0, 1);
+    const bool corner = (address[0] == 'C' || address[0] == 'R') && dst_.corners;
+    address = corner ? std::string{',', address[0]} : address.substr(0, 1);  // NC-110's R R: two levels
   }
   return address + value(w.value, w.address[0]);
 }
@@ -604,6 +686,11 @@ std::optional<Structured::Code> Structured::exact_code(const std::vector<FnCall>
 }
 
 void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
+  // NC-110's T tool.corrector: the corrector after the tool's word.
+  if (w.address == "T'" && dst_.corrector_in_tool_word && !words.empty() && words.back()[0] == 'T') {
+    if (!(p_->is_constant(w.value) && p_->exprs[w.value].number == 0)) words.back() += "." + value(w.value, 'T');
+    return;  // T6 is corrector 0
+  }
   if (reads_source_words()) return words.push_back(as_written(w));
   const std::string address = w.address.str();
   const char letter = address.size() == 1 ? address[0] : 0;
@@ -853,13 +940,38 @@ void Structured::display(const ir::Stmt& s) {
 // parameters at 0: the target's may start vacant (Macro B) or as a file left them.
 void Structured::start() {
   std::vector<Code> g, m;
-  for (const FnCall& c : power_on())
+  std::vector<FnCall> modes = power_on();
+  start_modes(modes);
+  for (const FnCall& c : modes)
     if (auto code = target_code({c}, Scope::Modal); code && !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
       auto& list = code->letter == 'G' ? g : m;
       if (std::none_of(list.begin(), list.end(), [&](const Code& o) { return o.number == code->number; }))
         list.push_back(*code);
     }
-  // G codes that must not share a block (two of one group) in blocks of their own.
+  for (const auto& b : together(g)) {
+    std::string text;
+    for (const Code& c : b) text += (text.empty() ? "" : " ") + c.text();
+    w_.line(text);
+  }
+  for (const Code& c : m) w_.line(c.text());
+  // A machine that starts with a feed (iso.initial_feed) where the target's starts
+  // with another.
+  if (src_.initial_feed > 0 && dst_.initial_feed != src_.initial_feed) w_.line("F" + w_.number({'F', src_.initial_feed, Value::Feed}));
+  start_offset();
+  start_parameters();
+}
+
+void Structured::start_parameters() {
+  if (p_->dialect == "iso") return;  // ISO's variables start vacant in both
+  if (indirect_ && mapped_space_ >= 0)
+    zero_all(kMappedBase, std::min(p_->spaces[static_cast<size_t>(mapped_space_)].size, kMappedEnd - kMappedBase));
+  for (uint32_t v : used_)
+    if (!indirect_ || v < kMappedBase) w_.line(fmt::format("#{}=0", v));
+}
+
+// G codes in as few blocks as the target takes them: two of one group, or a pair
+// its tables forbid (NC-110 Table 2.4), in blocks of their own.
+std::vector<std::vector<Structured::Code>> Structured::together(const std::vector<Code>& g) const {
   auto apart = [&](const Code& a, const Code& b) {
     return stdlib::has_pair(w_.tables().incompatible, a.number, b.number) ||
            (a.entry->group != "-" && a.entry->group == b.entry->group);
@@ -872,19 +984,7 @@ void Structured::start() {
     if (it == blocks.end()) blocks.push_back({c});
     else it->push_back(c);
   }
-  for (const auto& b : blocks) {
-    std::string text;
-    for (const Code& c : b) text += (text.empty() ? "" : " ") + c.text();
-    w_.line(text);
-  }
-  for (const Code& c : m) w_.line(c.text());
-  start_offset();
-  if (p_->dialect != "iso") {  // ISO's variables start vacant in both
-    if (indirect_ && mapped_space_ >= 0)
-      zero_all(kMappedBase, std::min(p_->spaces[static_cast<size_t>(mapped_space_)].size, kMappedEnd - kMappedBase));
-    for (uint32_t v : used_)
-      if (!indirect_ || v < kMappedBase) w_.line(fmt::format("#{}=0", v));
-  }
+  return blocks;
 }
 
 // A source that starts without a work offset (GOST, pp G53) on a target that starts
@@ -917,7 +1017,7 @@ void Structured::start_offset() {
 
 // --- the entry -----------------------------------------------------------------------------
 
-bool writes_structured(std::string_view target) { return target == "iso" || target == "linuxcnc"; }
+bool writes_structured(std::string_view target) { return target == "iso" || target == "linuxcnc" || target == "nc110"; }
 
 namespace {
 
@@ -944,8 +1044,13 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   if (!writer) return false;
   const MachineConfig target = stdlib::load_machine_config(*request.target_profile, s.diags);
   if (s.diags.error_count() != errors) return false;
-  auto make = [&] {
-    return request.to == "linuxcnc" ? make_ngc_structured(dialect, *writer, target) : make_iso_structured(dialect, *writer, target);
+  uint32_t e_count = 1000;  // NC-110's E parameters (nc110.e_count, checked by the target's reader)
+  if (auto n = request.target_profile->number("nc110.e_count", s.diags); n && *n >= 64 && *n <= 65536)
+    e_count = static_cast<uint32_t>(*n);
+  auto make = [&]() -> std::unique_ptr<Structured> {
+    if (request.to == "linuxcnc") return make_ngc_structured(dialect, *writer, target);
+    if (request.to == "nc110") return make_nc110_structured(dialect, *writer, target, e_count);
+    return make_iso_structured(dialect, *writer, target);
   };
   auto translation = make();
   translation->set_power_on(power_on_functions(s, dialect));

@@ -78,6 +78,22 @@ class Structured {
   virtual std::string builtin(const ir::Expr& e);
   virtual std::string modulo(const ir::Expr& e, int min);
   virtual void check_variable(const ir::Expr&, uint32_t) {}
+  // The block's words are the source's as written (a target of the source's dialect
+  // whose syntax the common part writes: ISO).
+  virtual bool verbatim() const { return same_; }
+  // A code the target says otherwise than by a code of its tables (NC-110's UAO):
+  // true when written.
+  virtual bool own_code(const ir::Word&, const CodeDesc&) { return false; }
+  // The start's parameters: set to 0 where the source's start at 0 and the target's
+  // may not.
+  virtual void start_parameters();
+  virtual void start_modes(std::vector<FnCall>&) const {}  // the target's modes the source's power-on needs
+  virtual void call_range(const ir::Stmt& s) { fail(s.range, "a call of a range of blocks (EPP)"); }
+  virtual void start_offset();
+  // Expressions, variables and word values in the target's syntax (ISO's here).
+  virtual std::string expr(ir::ExprId id, int min);
+  virtual std::string var(const ir::Expr& e);
+  virtual std::string value(ir::ExprId id, char letter);
 
   // --- the common part ---
   void unit(const ir::Unit& u, bool main);
@@ -86,13 +102,10 @@ class Structured {
   void line(std::string text);  // after the block number and the comments still to be written
   void comment(std::string_view text) { comments_.emplace_back(text); }
   void flush() {  // the block number and comments still to be written, on a line of their own
-    if (pending_number_ || !comments_.empty()) line("");
+    if (pending_number_ || !comments_.empty() || !label_.empty()) line("");
   }
   void machine();
   void write_words(const std::vector<std::string>& words);
-  std::string value(ir::ExprId id, char letter);
-  std::string expr(ir::ExprId id, int min);
-  std::string var(const ir::Expr& e);
   std::string operand(ir::ExprId a);  // a function's operand
   std::string negation(ir::ExprId id, int min);  // not id
   void forget();  // the state the text says is not known any more (a label, a call)
@@ -107,6 +120,12 @@ class Structured {
     std::string text() const;
   };
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
+  std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
+
+  std::vector<FnCall> power_on() const;
+  // Why work offset (origin) n is not the same on every axis of the target machine,
+  // or nothing.
+  std::optional<std::string> partial_offset(int n, std::string_view name) const;
 
   const ir::Program* p_ = nullptr;
   Writer& w_;
@@ -117,19 +136,21 @@ class Structured {
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
+  std::string label_;                  // ... and before it (NC-110's "LABEL")
   bool streamed_ = false;              // the main program's leading blocks are written
   bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
   bool in_main_ = false;               // the unit being written is the main program
+  bool origin_words_ = false;          // the block's operands are UAO's
+  bool offset_selected_ = false;       // the main program has selected a work offset
+  bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
 
  private:
   struct Mapped;
   void attach(const ir::Program& program);
-  std::vector<FnCall> power_on() const;
   std::optional<uint32_t> space_base(uint16_t index);
   void begin_main();
   void start();
-  void start_offset();
   void translated_machine();
   void code(const ir::Word& w, std::vector<Mapped>& out);
   void parameter(const ir::Word& w, std::vector<std::string>& words);
@@ -138,6 +159,7 @@ class Structured {
   void state(const std::vector<FnCall>& calls);
   using Position = std::array<std::optional<double>, 3>;
   void centre(const ir::Word& w, const Position& start, std::vector<std::string>& words);
+  void plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start, std::vector<std::string>& out);
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void arc_on_circle(const Position& start);
@@ -163,18 +185,17 @@ class Structured {
   std::set<uint32_t> used_;  // target variables the program reads or writes
   bool indirect_ = false;    // ... and one computed
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
-  std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false;
+  std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false;
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
   Position centre_;                    // of the block's arc, where this translation computed it
-  bool origin_words_ = false;          // the block's operands are UAO's
-  bool offset_selected_ = false;       // the main program has selected a work offset
-  bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
 };
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target);
+std::unique_ptr<Structured> make_nc110_structured(std::string dialect, Writer& writer, const MachineConfig& target,
+                                                  uint32_t e_count);
 
 }  // namespace ncc::translate

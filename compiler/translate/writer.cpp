@@ -64,6 +64,10 @@ std::string Writer::inline_comment(std::string_view text) const {
   return out + ")";
 }
 
+std::string Writer::number(const OutWord& w) const {
+  return exact(w.value, w.kind != Value::Code && w.kind != Value::Count);
+}
+
 bool is_target(std::string_view dialect) {
   return dialect == "gost" || dialect == "nc110" || dialect == "pp" || dialect == "iso" || dialect == "linuxcnc";
 }

@@ -62,6 +62,11 @@ class Writer {
   void append(std::string_view text) { out_ += text; }
   // A comment after a block's words, as the target reads it: "(text)".
   virtual std::string inline_comment(std::string_view text) const;
+  // The target takes no comment after a block's words (NC-110): a comment is a line
+  // of its own.
+  virtual bool comments_apart() const { return false; }
+  // A word's value as the target writes it (its address' format).
+  virtual std::string number(const OutWord& w) const;
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
   // The smallest length step the target's numbers write (mm): a position it writes

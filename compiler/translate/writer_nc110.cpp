@@ -52,6 +52,19 @@ class Nc110Writer final : public Writer {
 
   void end() override {}
 
+  bool comments_apart() const override { return true; }
+
+  // §2.4.3: a number is written as read, a decimal point only before decimals (X100 is
+  // 100 mm); G and M with two digits (§2.8, §2.7.8); T is tool.corrector (decision
+  // 11): a whole number is the tool with corrector 0.
+  std::string number(const OutWord& w) const override {
+    switch (w.kind) {
+      case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
+      case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
+      default: return decimal(w.value, decimals(w.letter), false);
+    }
+  }
+
  private:
   // The decimals of the address' format (§1.2.6: axes, I J K 5.4, F and S 5.2), from its
   // range in addresses.tsv; lengths get 4 where it has none.
@@ -62,17 +75,6 @@ class Nc110Writer final : public Writer {
   int order(char letter) const {
     auto a = tables().addresses.find(letter);
     return a != tables().addresses.end() ? a->second.order : 2;
-  }
-
-  // §2.4.3: a number is written as read, a decimal point only before decimals (X100 is
-  // 100 mm); G and M with two digits (§2.8, §2.7.8); T is tool.corrector (decision
-  // 11): a whole number is the tool with corrector 0.
-  std::string number(const OutWord& w) const {
-    switch (w.kind) {
-      case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
-      case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
-      default: return decimal(w.value, decimals(w.letter), false);
-    }
   }
 
   // Lines of "; text": a ';' first makes the whole line a comment (§2.5), so nothing in

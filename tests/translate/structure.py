@@ -3,9 +3,11 @@
 
     structure.py --ncc PATH/TO/ncc
 
-A loop of 10^5 iterations stays a loop: its translation to ISO and to LinuxCNC is at
-most a few times the source's size, and (into ISO, which ncc runs) makes the same
-motion. A subprogram called 50 times is written once, and called 50 times.
+A loop of 10^5 iterations stays a loop: its translation to ISO, LinuxCNC and NC-110
+is at most a few times the source's size, and (into ISO and NC-110, which ncc runs)
+makes the same motion. A subprogram called 50 times is written once, and called 50
+times (into NC-110: a range of blocks EPP runs; NC-110's own CLS program stays the
+library's file).
 Python 3 standard library only.
 """
 import argparse
@@ -29,8 +31,10 @@ CALLS = {  # (main program, the subprogram's file under lib/ or "", sub definiti
            "N1010 G91 G1 X1 F500\nN1020 G90 G70\n*\n", "", None),
     "nc110": ("".join("(CLS,SUB1)\n" for _ in range(50)) + "M30\n", "G91 G1 X1 F500\nG90\n", "MP0/SUB1.nc"),
 }
-SUB = {"iso": r"^O(?!0001$)\d+$", "linuxcnc": r"^o<\w+> sub$"}  # O0001: the main program
-CALL = {"iso": r"\bM98 P\d+", "linuxcnc": r"^o<\w+> call"}
+SUB = {"iso": r"^O(?!0001$)\d+$", "linuxcnc": r"^o<\w+> sub$", "nc110": r'^"L100"$'}  # O0001: the main program
+CALL = {"iso": r"\bM98 P\d+", "linuxcnc": r"^o<\w+> call", "nc110": r"\((EPP,L100,K1|CLS,SUB1/MP0)\)$"}
+TARGETS = ("iso", "linuxcnc", "nc110")
+RUNS = ("iso", "nc110")  # the targets ncc reads: their motion is compared
 SIZE_FACTOR = 5
 
 
@@ -57,7 +61,7 @@ def main():
         for dialect, text in LOOPS.items():
             source = d / f"loop-{dialect}.nc"
             source.write_text(text)
-            for target in ("iso", "linuxcnc"):
+            for target in TARGETS:
                 out = d / f"loop-{dialect}.{target}"
                 p = run(ncc, ["translate", "--dialect", dialect, "--to", target, str(source), "-o", str(out)])
                 if p.returncode != 0:
@@ -66,13 +70,13 @@ def main():
                 size, limit = out.stat().st_size, SIZE_FACTOR * source.stat().st_size + 400  # the start's codes
                 if size > limit:
                     failed.append(f"loop {dialect} -> {target}: {size} bytes from {source.stat().st_size}: not a loop")
-                if target == "iso":
-                    a, b = trace(ncc, dialect, source), trace(ncc, "iso", out)
+                if target in RUNS:
+                    a, b = trace(ncc, dialect, source), trace(ncc, target, out)
                     moves = sum(1 for e in a or [] if e.get("event") == "linear")
                     if a is None or b is None or moves != N + 1:
-                        failed.append(f"loop {dialect} -> iso: a run failed or made {moves} moves")
+                        failed.append(f"loop {dialect} -> {target}: a run failed or made {moves} moves")
                     elif equivalent.compare(a, b, 1e-6):
-                        failed.append(f"loop {dialect} -> iso: " + equivalent.compare(a, b, 1e-6)[0])
+                        failed.append(f"loop {dialect} -> {target}: " + equivalent.compare(a, b, 1e-6)[0])
         for dialect, (main_text, sub_text, sub_path) in CALLS.items():
             source = d / f"calls.{dialect}"
             source.write_text(main_text)
@@ -81,7 +85,7 @@ def main():
                 lib = str(d / "lib")
                 Path(lib, sub_path).parent.mkdir(parents=True, exist_ok=True)
                 Path(lib, sub_path).write_text(sub_text)
-            for target in ("iso", "linuxcnc"):
+            for target in TARGETS:
                 out = d / f"calls-{dialect}.{target}"
                 p = run(ncc, ["translate", "--dialect", dialect, "--to", target] + (["--lib", lib] if lib else [])
                         + [str(source), "-o", str(out)])
@@ -91,12 +95,13 @@ def main():
                 lines = out.read_text().splitlines()
                 subs = sum(1 for l in lines if re.search(SUB[target], l))
                 calls = sum(1 for l in lines if re.search(CALL[target], l))
-                if (subs, calls) != (1, 50):
-                    failed.append(f"calls {dialect} -> {target}: {subs} subprograms and {calls} calls, not 1 and 50")
-                if target == "iso":
-                    a, b = trace(ncc, dialect, source, lib), trace(ncc, "iso", out)
+                written = 0 if dialect == target else 1  # NC-110 calls its library's program
+                if (subs, calls) != (written, 50):
+                    failed.append(f"calls {dialect} -> {target}: {subs} subprograms and {calls} calls, not {written} and 50")
+                if target in RUNS:
+                    a, b = trace(ncc, dialect, source, lib), trace(ncc, target, out, lib)
                     if a is None or b is None or equivalent.compare(a, b, 1e-6):
-                        failed.append(f"calls {dialect} -> iso: not the same motion")
+                        failed.append(f"calls {dialect} -> {target}: not the same motion")
         # A program with errors is refused with its diagnostics, and nothing written.
         bad = d / "bad.nc"
         bad.write_text("#1=[2+\nG01 X#1\nM30\n")

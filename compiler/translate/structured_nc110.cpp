@@ -1,0 +1,564 @@
+// Structured translation into NC-110 (docs/translate.md): the main program, then
+// after its M30 each subprogram as a range of blocks between two labels that
+// (EPP,first,last) runs; jumps as labels and the branches BNC, BEQ, BGT, ...; a
+// repeat loop as (RPT,n)...(ERP) or, where the count is not a constant of 0..99, a
+// count in a parameter of its own. A block holds one instruction and a word one
+// constant or one E parameter (§2.5, Table 2.9): a computed value is stored in a
+// scratch E parameter of the class the word takes, in a block before.
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "structured_impl.h"
+
+namespace ncc::translate {
+namespace {
+
+// The E parameter classes of Table 2.8: BY E0-E9, IN E10-E19, LI E20-E24, RE E25-E29,
+// LR from E30.
+enum Class : int { BY, IN, LI, RE, LR };
+constexpr uint32_t kFirst[] = {0, 10, 20, 25, 30};
+constexpr uint32_t kEnd[] = {10, 20, 25, 30, 0};
+constexpr const char* kClassName[] = {"BY", "IN", "LI", "RE", "LR"};
+// At the top of the E parameters: scratch values of a block (LR), then the counts of
+// repeat loops that do not fit RPT.
+constexpr uint32_t kScratch = 16, kCounters = 8;
+constexpr int kMaxRpt = 3;  // RPT levels (§2.13.2.1)
+
+Class class_of(uint32_t e) {
+  for (int c = RE; c >= BY; --c)
+    if (e >= kFirst[c] && e < kEnd[c]) return static_cast<Class>(c);
+  return LR;
+}
+
+std::string quoted(const std::string& label) { return "\"" + label + "\""; }
+
+// 1 to 6 capital letters and digits (nc110 decision 3).
+bool valid_label(const std::string& s) {
+  return !s.empty() && s.size() <= 6 &&
+         std::all_of(s.begin(), s.end(), [](char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); });
+}
+
+class Nc110Structured final : public Structured {
+ public:
+  Nc110Structured(std::string dialect, Writer& writer, const MachineConfig& target, uint32_t e_count)
+      : Structured(std::move(dialect), writer, target), e_count_(e_count) {}
+
+ private:
+  // --- layout -----------------------------------------------------------------------
+
+  // Even NC-110's own blocks are written anew: a code of the tables, a three-letter
+  // code (UAO) or a call on a block of its own.
+  bool verbatim() const override { return false; }
+
+  void body() override {
+    scan();
+    // A program of another dialect brings its subprograms: ranges after the main
+    // program's end. NC-110's own CLS programs are files of the library.
+    for (size_t u = 0; u < p_->units.size(); ++u)
+      if (u == 0 || !same_) unit(p_->units[u], u == 0);
+  }
+
+  // The labels and E parameters the program has, before any is made up.
+  void scan() {
+    for (const ir::Unit& u : p_->units)
+      for (const ir::Block& b : u.blocks)
+        if (valid_label(b.label)) taken_.insert(b.label);
+    if (same_)
+      for (const ir::Expr& e : p_->exprs)
+        if (e.op == ir::ExprOp::Var && p_->is_constant(e.a)) source_e_.insert(static_cast<uint32_t>(p_->exprs[e.a].number));
+    if (same_) return;
+    for (size_t u = 1; u < p_->units.size(); ++u) {
+      const std::string& name = p_->units[u].name;
+      std::string label;
+      for (char c : name.substr(name.rfind('/') + 1))
+        if (std::isalnum(static_cast<unsigned char>(c))) label += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      ranges_[name] = {own(label), fresh()};
+    }
+  }
+
+  // A label of the output: the source's where it is NC-110's and free, else K1 up.
+  std::string own(const std::string& label) {
+    if (valid_label(label) && !made_.count(label) && !(label.size() > 1 && label[0] == 'K' && std::isdigit(label[1]))) {
+      made_.insert(label);
+      return label;
+    }
+    return fresh();
+  }
+  std::string fresh() {
+    std::string label;
+    do label = fmt::format("K{}", ++next_label_);
+    while (taken_.count(label) || made_.count(label));
+    made_.insert(label);
+    return label;
+  }
+
+  void open_unit(const ir::Unit& u, bool main) override {
+    unit_ = &u;
+    labels_.clear();
+    label_at_.clear();
+    std::set<std::string> targets;
+    for (const ir::Block& b : u.blocks)
+      for (const ir::Stmt& s : b.stmts) {
+        if (s.kind == ir::StmtKind::Jump && !s.label.empty()) targets.insert(s.label);
+        if (s.kind == ir::StmtKind::CallRange) targets.insert({s.label, s.end_label});
+      }
+    for (size_t i = 0; i < u.blocks.size(); ++i) {
+      const std::string& label = u.blocks[i].label;
+      if (label.empty() || !targets.count(label) || labels_.count(label)) continue;
+      labels_[label] = same_ && valid_label(label) ? label : own(label);
+      label_at_[i] = labels_[label];
+    }
+    if (main) return;
+    w_.comment(u.title.empty() ? u.name : u.name + ": " + u.title);
+    w_.line(quoted(ranges_.at(u.name).first));
+  }
+
+  void close_unit(const ir::Unit& u, bool main, bool) override {
+    if (!main) return w_.line(quoted(ranges_.at(u.name).second));
+    // What stands after the main program's end is the subprograms' place.
+    if (!same_ && p_->units.size() > 1 && !ends_program(u)) line("M30");
+  }
+
+  void before_block(size_t i) override {
+    scratch_used_ = 0;
+    for (int c = BY; c <= RE; ++c) class_used_[c] = 0;
+    const ir::Block& b = unit_->blocks[i];
+    if (label_at_.count(i)) {
+      label_ = quoted(label_at_.at(i));
+      forget();
+    }
+    if (b.number && *b.number <= 9999) pending_number_ = static_cast<int>(*b.number);  // N4 (§1.2.6)
+    if ((b.skippable) && std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
+          return s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::RepeatBegin || s.kind == ir::StmtKind::RepeatEnd ||
+                 s.kind == ir::StmtKind::Call || s.cond != ir::kNoExpr;
+        }))
+      fail(b.range, "a jump, a repeat, a call or a condition in a block '/' skips: the translation writes it in several blocks");
+  }
+
+  // --- flow -------------------------------------------------------------------------
+
+  void jump(const ir::Stmt& s) override {
+    if (s.label.empty()) return fail(s.range, "a jump to a computed block number: NC-110 jumps to labels");
+    auto it = labels_.find(s.label);
+    if (it == labels_.end()) {  // a block streamed and written already: read the program whole
+      needs_whole_ = true;
+      return;
+    }
+    if (s.cond == ir::kNoExpr) return line(fmt::format("(BNC,{})", it->second));
+    branch(s.cond, it->second, false);
+  }
+
+  // A jump to `label` when `cond` holds (when it does not: `negate`). A branch compares
+  // two operands; AND and OR become several branches.
+  void branch(ir::ExprId cond, const std::string& label, bool negate) {
+    const ir::Expr& c = p_->exprs[cond];
+    static const std::map<ir::ExprOp, std::pair<const char*, const char*>> kBranch = {
+        {ir::ExprOp::Eq, {"BEQ", "BNE"}}, {ir::ExprOp::Ne, {"BNE", "BEQ"}}, {ir::ExprOp::Lt, {"BLT", "BGE"}},
+        {ir::ExprOp::Le, {"BLE", "BGT"}}, {ir::ExprOp::Gt, {"BGT", "BLE"}}, {ir::ExprOp::Ge, {"BGE", "BLT"}}};
+    switch (c.op) {
+      case ir::ExprOp::Not: return branch(c.a, label, !negate);
+      case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return branch(c.a, label, negate);
+      case ir::ExprOp::And: case ir::ExprOp::Or:
+        if ((c.op == ir::ExprOp::And) != negate) {  // both must hold: past the second test if the first fails
+          const std::string skip = fresh();
+          branch(c.a, skip, !negate);
+          branch(c.b, label, negate);
+          label_line(skip);
+        } else {  // either will do
+          branch(c.a, label, negate);
+          branch(c.b, label, negate);
+        }
+        return;
+      default: break;
+    }
+    if (auto it = kBranch.find(c.op); it != kBranch.end()) {
+      const std::string a = operand_of(c.a), b = operand_of(c.b);
+      return line(fmt::format("({},{},{},{})", negate ? it->second.second : it->second.first, a, b, label));
+    }
+    line(fmt::format("({},{},0,{})", negate ? "BEQ" : "BNE", operand_of(cond), label));  // true when not 0
+  }
+
+  // A branch's operand: a constant or one E parameter (§2.13.2.4).
+  std::string operand_of(ir::ExprId id) {
+    const ir::Expr& e = p_->exprs[bare(id)];
+    if (auto v = constant(id)) return exact(*v, false);
+    if (e.op == ir::ExprOp::Var && p_->is_constant(e.a)) return var(e);
+    return scratch(LR, expr(id, kOr));
+  }
+
+  // A label on a block of its own (a block may have one label).
+  void label_line(const std::string& label) {
+    flush();
+    w_.line(quoted(label));
+  }
+
+  void repeat_begin(const ir::Stmt& s) override {
+    open_loop(s.value, s.range);
+    forget();
+  }
+  void repeat_end(const ir::Stmt&) override {
+    close_loop();
+    forget();
+  }
+
+  // RPT for a constant count of 0..99 within three levels; else a count in a
+  // parameter of its own, tested at the end (and first, when it may be 0).
+  void open_loop(ir::ExprId count, SourceRange at) {
+    Loop loop;
+    const auto n = constant(count);
+    if (n && *n >= 0 && *n <= 99 && *n == std::trunc(*n) && rpt_depth_ < kMaxRpt) {
+      line(fmt::format("(RPT,{})", static_cast<int>(*n)));
+      ++rpt_depth_;
+      loop.rpt = true;
+    } else {
+      if (counters_ == kCounters) return fail(at, fmt::format("more than {} repeat loops open at once", kCounters));
+      loop.counter = e_count_ - kScratch - 1 - counters_++;
+      line(fmt::format("E{}={}", loop.counter, expr(count, kOr)));
+      if (!n || *n < 1) {
+        loop.exit = fresh();
+        line(fmt::format("(BLE,E{},0,{})", loop.counter, loop.exit));
+      }
+      loop.head = fresh();
+      label_line(loop.head);
+    }
+    loops_.push_back(loop);
+  }
+
+  void close_loop() {
+    if (loops_.empty()) return;
+    const Loop loop = loops_.back();
+    loops_.pop_back();
+    if (loop.rpt) {
+      --rpt_depth_;
+      return line("(ERP)");
+    }
+    --counters_;
+    line(fmt::format("E{0}=E{0}-1", loop.counter));
+    line(fmt::format("(BGT,E{},0,{})", loop.counter, loop.head));
+    if (!loop.exit.empty()) label_line(loop.exit);
+  }
+
+  void call(const ir::Stmt& s) override {
+    forget();
+    if (!s.args.empty()) return fail(s.range, "a call with arguments: NC-110's subprograms take none (E parameters are global)");
+    std::string text;
+    if (same_) {  // the unit "MP0/FLOWA" is CLS's FLOWA/MP0
+      const size_t slash = s.label.find('/');
+      text = fmt::format("(CLS,{})", slash == std::string::npos ? s.label : s.label.substr(slash + 1) + "/" + s.label.substr(0, slash));
+    } else {
+      if (!ranges_.count(s.label))
+        return fail(s.range, s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
+      if (!in_main_)
+        return fail(s.range, "a call from a subprogram: the translation's subprograms are EPP ranges, which do not nest");
+      text = fmt::format("(EPP,{},{})", ranges_.at(s.label).first, ranges_.at(s.label).second);
+    }
+    if (s.value == ir::kNoExpr || (p_->is_constant(s.value) && p_->exprs[s.value].number == 1)) return line(text);
+    open_loop(s.value, s.range);
+    line(text);
+    close_loop();
+  }
+
+  // NC-110's own EPP, in NC-110: its labels are kept.
+  void call_range(const ir::Stmt& s) override {
+    if (!same_) return Structured::call_range(s);
+    forget();
+    if (!labels_.count(s.label) || !labels_.count(s.end_label)) {  // a block streamed already
+      needs_whole_ = true;
+      return;
+    }
+    line(fmt::format("(EPP,{},{})", labels_.at(s.label), labels_.at(s.end_label)));
+  }
+
+  void ret(const ir::Stmt& s) override {
+    if (in_main_) return fail(s.range, "M99 in the main program");
+    if (block_ == &unit_->blocks.back()) return;  // the range ends here
+    line(fmt::format("(BNC,{})", ranges_.at(unit_->name).second));
+  }
+
+  // NC-110 has no IF: a branch round the statement.
+  void conditional(const ir::Stmt& s) override {
+    const std::string skip = fresh();
+    branch(s.cond, skip, true);
+    statement(s);
+    label_line(skip);
+    forget();
+  }
+
+  // --- codes ------------------------------------------------------------------------
+
+  // A work offset (ISO's G54..., NC-110's own UAO): (UAO,n) in a block of its own,
+  // before the block's motion.
+  bool own_code(const ir::Word& w, const CodeDesc& desc) override {
+    if (desc.calls.size() != 1 || desc.scope != Scope::Modal) return false;  // G53's one block: no UAO for it
+    const Fn fn = desc.calls[0].fn;
+    if (fn != Fn::WorkOffset && fn != Fn::OriginSelect) return false;
+    int n = fn == Fn::WorkOffset ? desc.calls[0].arg : -1;
+    bool listed = false;
+    if (fn == Fn::OriginSelect) {
+      origin_words_ = true;
+      for (const ir::Word& o : block_->words) {
+        if (o.kind != ir::WordKind::Parameter) continue;
+        if (o.slot != operand_slot(0)) listed |= o.slot < 52;
+        else if (auto v = constant(o.value); v && *v >= 0 && *v <= 99) n = static_cast<int>(*v);
+      }
+    }
+    if (n < 0) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name)), true;
+    if (listed) return fail(w.range, fmt::format("{} on the axes it lists", desc.name)), true;
+    if (n != 0 && !same_)
+      if (auto why = partial_offset(n, desc.name)) return fail(w.range, *why), true;
+    line(fmt::format("(UAO,{})", n));
+    offset_selected_ = true;
+    return true;
+  }
+
+  // --- the start --------------------------------------------------------------------
+
+  // NC-110 starts in origin 0 with every E parameter 0 (nc110 decision 8): the
+  // source's work offset, and which E parameter holds what.
+  void start_offset() override {
+    int n = 0;
+    for (const FnCall& c : power_on())
+      if (c.fn == Fn::WorkOffset) n = c.arg;
+    if (n == 0) {
+      const auto it = target_.work_offsets.find(0);
+      if (moved_before_offset_ && it != target_.work_offsets.end() &&
+          std::any_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v != 0; }))
+        fail(p_->units.front().range, "the start without a work offset: the target machine's origin 0 is not zero");
+      return;
+    }
+    if (auto why = partial_offset(n, "the start's work offset")) {
+      if (moved_before_offset_) fail(p_->units.front().range, *why);
+      return;
+    }
+    w_.line(fmt::format("(UAO,{})", n));
+  }
+
+  // NC-110 powers on in G27, where M, S or T after a feed move is an error (nc110
+  // decision 44): a source without path modes NC-110 has runs point to point, each
+  // block alone.
+  void start_modes(std::vector<FnCall>& modes) const override {
+    if (std::none_of(modes.begin(), modes.end(),
+                     [&](const FnCall& c) { return fn_group(c.fn) == FnGroup::Dynamics && target_code({c}, Scope::Modal); }))
+      modes.push_back({Fn::DynamicsPointToPoint});
+  }
+
+  void start_parameters() override {
+    if (legend_.empty()) return;
+    std::string text = "E parameters:";
+    for (const auto& [e, name] : legend_) text += fmt::format(" E{} {},", e, name);
+    text.pop_back();
+    w_.comment(text);
+  }
+
+  // --- values -----------------------------------------------------------------------
+
+  // Each variable of the source in an LR parameter from E30 up, in the order the
+  // program first names them; NC-110's own keep their numbers.
+  std::string var(const ir::Expr& e) override {
+    const auto n = e_of(e);
+    return n ? fmt::format("E{}", *n) : "E0";
+  }
+
+  std::optional<uint32_t> e_of(const ir::Expr& e) {
+    if (e.op != ir::ExprOp::Var) {
+      fail(e.range, "a store into a memory or a system variable");
+      return std::nullopt;
+    }
+    if (!p_->is_constant(e.a)) {
+      fail(e.range, "a computed parameter number: NC-110 names each E parameter");
+      return std::nullopt;
+    }
+    const uint32_t index = static_cast<uint32_t>(p_->exprs[e.a].number);
+    if (same_) return index;
+    if (p_->dialect == "iso" && index == 0) fail(e.range, "the vacant #0: NC-110's parameters are never vacant");
+    const std::string name = fmt::format("{}{}", p_->spaces[e.space].name, index);
+    auto it = mapped_.find(name);
+    if (it == mapped_.end()) {
+      if (next_e_ >= e_count_ - kScratch - kCounters) {
+        fail(e.range, fmt::format("more variables than the E parameters E30-E{} hold", e_count_ - kScratch - kCounters - 1));
+        return std::nullopt;
+      }
+      it = mapped_.emplace(name, next_e_++).first;
+      legend_.emplace_back(it->second, name);
+    }
+    return it->second;
+  }
+
+  // A word's value: a constant in its address' format, an E parameter of a class
+  // the address takes, else a scratch parameter of such a class.
+  // Without the checks the source's reads make (a vacant value): NC-110's are never vacant.
+  ir::ExprId bare(ir::ExprId id) const {
+    while (p_->exprs[id].op == ir::ExprOp::ZeroIfVacant || p_->exprs[id].op == ir::ExprOp::Check) id = p_->exprs[id].a;
+    return id;
+  }
+
+  std::string value(ir::ExprId id, char letter) override {
+    const ir::Expr& e = p_->exprs[bare(id)];
+    if (letter == 'E') {  // G72-G74: where the results go
+      fail(e.range, "a measurement's results (E): not written yet");
+      return "0";
+    }
+    const auto address = w_.tables().addresses.find(letter);
+    if (auto v = constant(id)) {
+      OutWord word{letter, *v, kind_of(letter)};
+      if (auto why = w_.unwritable(word)) fail(e.range, *why);
+      return w_.number(word);
+    }
+    std::vector<Class> takes;
+    if (address != w_.tables().addresses.end())
+      for (const std::string& p : address->second.params)
+        for (int c = BY; c <= LR; ++c)
+          if (p == kClassName[c]) takes.push_back(static_cast<Class>(c));
+    if (takes.empty()) {
+      fail(e.range, fmt::format("{} given by a parameter: NC-110's {} takes a constant only", letter, letter));
+      return "0";
+    }
+    if (e.op == ir::ExprOp::Var && p_->is_constant(e.a)) {
+      const auto n = e_of(e);
+      if (!n || std::find(takes.begin(), takes.end(), class_of(*n)) != takes.end()) return fmt::format("E{}", n.value_or(0));
+      return scratch(takes.back(), fmt::format("E{}", *n));
+    }
+    return scratch(takes.back(), expr(id, kOr));
+  }
+
+  static Value kind_of(char letter) {
+    switch (letter) {
+      case 'F': return Value::Feed;
+      case 'S': return Value::Speed;
+      case 'T': case 'H': return Value::Count;
+      case 'G': case 'M': return Value::Code;
+      default: return Value::Length;
+    }
+  }
+
+  // `text` stored in a scratch parameter of class c, in a block of its own.
+  std::string scratch(Class c, const std::string& text) {
+    uint32_t e = 0;
+    do {
+      if (c == LR) {
+        if (scratch_used_ == kScratch) {
+          fail(block_->range, fmt::format("more than {} computed values in a block", kScratch));
+          return "E0";
+        }
+        e = e_count_ - 1 - scratch_used_++;
+      } else {
+        if (kFirst[c] + class_used_[c] == kEnd[c]) {
+          fail(block_->range, fmt::format("more computed {} values in a block than E{}-E{}", kClassName[c], kFirst[c], kEnd[c] - 1));
+          return "E0";
+        }
+        e = kFirst[c] + class_used_[c]++;
+      }
+    } while (source_e_.count(e));  // NC-110's own program uses it
+    line(assignment(fmt::format("E{}", e), ir::kNoExpr, text));
+    return fmt::format("E{}", e);
+  }
+
+  std::string assignment(const std::string& var, ir::ExprId, std::string text) override {
+    std::string line = var + "=" + text;
+    if (line.size() > 120) fail(block_->range, "an expression longer than an NC-110 line of 128 characters");
+    return line;
+  }
+
+  void zero_all(uint32_t, uint32_t) override {}  // never: var() refuses computed parameter numbers
+
+  // The value of an expression of numbers alone (7/2, -2.5).
+  std::optional<double> constant(ir::ExprId id) const {
+    const ir::Expr& e = p_->exprs[id];
+    switch (e.op) {
+      case ir::ExprOp::Number: return e.number;
+      case ir::ExprOp::Neg: {
+        auto a = constant(e.a);
+        return a ? std::optional<double>(-*a) : std::nullopt;
+      }
+      case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return constant(e.a);
+      default: return std::nullopt;
+    }
+  }
+
+  // NC-110's expressions (§2.12, nc110 decisions 9 and 10): ( ), + - * /, one sign
+  // before an operand, MOD(A,B), functions of degrees; no comparison outside a branch.
+  std::string expr(ir::ExprId id, int min) override {
+    const ir::Expr& e = p_->exprs[id];
+    auto wrap = [&](int level, std::string s) { return level < min ? "(" + s + ")" : s; };
+    auto binary = [&](int level, std::string_view op) { return wrap(level, expr(e.a, level) + std::string(op) + expr(e.b, level + 1)); };
+    switch (e.op) {
+      case ir::ExprOp::Number: return e.number < 0 ? wrap(kSign, exact(e.number, false)) : exact(e.number, false);
+      case ir::ExprOp::Var: return var(e);
+      case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return expr(e.a, min);
+      case ir::ExprOp::Neg:  // -(-2) reads back as 2: a constant is folded
+        if (auto v = constant(id)) return *v < 0 ? wrap(kSign, exact(*v, false)) : exact(*v, false);
+        return wrap(kSign, "-" + expr(e.a, kPrimary));
+      case ir::ExprOp::Add: return binary(kSum, "+");
+      case ir::ExprOp::Sub: return binary(kSum, "-");
+      case ir::ExprOp::Mul: return binary(kTerm, "*");
+      case ir::ExprOp::Div: return binary(kTerm, "/");
+      case ir::ExprOp::Mod: return fmt::format("MOD({},{})", expr(e.a, kOr), expr(e.b, kOr));  // the dividend's sign, as the IR
+      case ir::ExprOp::Call: return builtin(e);
+      case ir::ExprOp::Pow: fail(e.range, "a power: NC-110 has no power operator"); return "0";
+      case ir::ExprOp::Eq: case ir::ExprOp::Ne: case ir::ExprOp::Lt: case ir::ExprOp::Le: case ir::ExprOp::Gt:
+      case ir::ExprOp::Ge: case ir::ExprOp::And: case ir::ExprOp::Or: case ir::ExprOp::Not: {
+        // A truth as a value (pp G73's counter is armed by one): 1 or 0 by a branch.
+        const std::string truth = scratch(LR, "0"), skip = fresh();
+        branch(id, skip, true);
+        line(truth + "=1");
+        label_line(skip);
+        return truth;
+      }
+      default: fail(e.range, "a memory, a system variable or a text in an expression"); return "0";
+    }
+  }
+
+  // The IR's functions by NC-110's names; ROUND (halves away from zero) as a store
+  // into an LI parameter, which rounds so (nc110 decision 8).
+  std::string builtin(const ir::Expr& e) override {
+    auto one = [&](std::string_view name) { return fmt::format("{}({})", name, expr(e.a, kOr)); };
+    switch (e.builtin) {
+      case Builtin::Sin: return one("SIN");
+      case Builtin::Cos: return one("COS");
+      case Builtin::Tan: return one("TAN");
+      case Builtin::Asin: return one("ARS");
+      case Builtin::Acos: return one("ARC");
+      case Builtin::Atan: return one("ART");
+      case Builtin::Sqrt: return one("SQR");
+      case Builtin::Abs: return one("ABS");
+      case Builtin::Trunc: return one("INT");
+      case Builtin::Round: return scratch(LI, operand(e.a));
+      default:
+        fail(e.range, fmt::format("the function {}: NC-110 has none like it", builtin_info(e.builtin).name));
+        return "0";
+    }
+  }
+
+  const uint32_t e_count_;
+  const ir::Unit* unit_ = nullptr;
+  std::set<std::string> taken_, made_;  // the source's labels; the output's
+  int next_label_ = 0;
+  std::map<std::string, std::pair<std::string, std::string>> ranges_;  // unit -> its first and last label
+  std::map<std::string, std::string> labels_;  // of the unit being written: source label -> output label
+  std::map<size_t, std::string> label_at_;     // block index -> its label
+  std::map<std::string, uint32_t> mapped_;      // source variable -> E
+  std::vector<std::pair<uint32_t, std::string>> legend_;
+  uint32_t next_e_ = kFirst[LR];
+  std::set<uint32_t> source_e_;  // NC-110's own E parameters
+  uint32_t scratch_used_ = 0, class_used_[LR] = {};
+  struct Loop {
+    bool rpt = false;
+    uint32_t counter = 0;
+    std::string head, exit;
+  };
+  std::vector<Loop> loops_;
+  int rpt_depth_ = 0;
+  uint32_t counters_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<Structured> make_nc110_structured(std::string dialect, Writer& writer, const MachineConfig& target,
+                                                  uint32_t e_count) {
+  return std::make_unique<Nc110Structured>(std::move(dialect), writer, target, e_count);
+}
+
+}  // namespace ncc::translate
