@@ -83,13 +83,19 @@ std::optional<uint32_t> Structured::space_base(uint16_t index) {
   return space_base_[index];
 }
 
+// A block's number, where the target writes it (NC-110's N has four digits).
+std::optional<int> Structured::number_of(const ir::Block& b) const {
+  if (!b.number || w_.unwritable({'N', static_cast<double>(*b.number), Value::Count})) return std::nullopt;
+  return static_cast<int>(*b.number);
+}
+
 void Structured::stream(const ir::Program& program, const ir::Block& b) {
   attach(program);
   if (!streamed_) {
     streamed_ = true;
     begin_main();
   }
-  pending_number_ = b.number ? std::optional<int>(static_cast<int>(*b.number)) : std::nullopt;
+  pending_number_ = number_of(b);
   block(b);
 }
 

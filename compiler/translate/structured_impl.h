@@ -121,6 +121,7 @@ class Structured {
   };
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
   std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
+  std::optional<int> number_of(const ir::Block& b) const;
 
   std::vector<FnCall> power_on() const;
   // Why work offset (origin) n is not the same on every axis of the target machine,

@@ -130,7 +130,7 @@ class Nc110Structured final : public Structured {
       label_ = quoted(label_at_.at(i));
       forget();
     }
-    if (b.number && *b.number <= 9999) pending_number_ = static_cast<int>(*b.number);  // N4 (§1.2.6)
+    pending_number_ = number_of(b);
     if ((b.skippable) && std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
           return s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::RepeatBegin || s.kind == ir::StmtKind::RepeatEnd ||
                  s.kind == ir::StmtKind::Call || s.cond != ir::kNoExpr;
