@@ -83,8 +83,7 @@ std::optional<uint32_t> Structured::space_base(uint16_t index) {
   return space_base_[index];
 }
 
-// A block's number, where the target writes it (NC-110's N has four digits).
-std::optional<int> Structured::number_of(const ir::Block& b) const {
+std::optional<int> Structured::number_of(const ir::Block& b) {
   if (!b.number || w_.unwritable({'N', static_cast<double>(*b.number), Value::Count})) return std::nullopt;
   return static_cast<int>(*b.number);
 }
@@ -104,7 +103,7 @@ void Structured::begin_main() {
   in_main_ = false;  // nothing is forgotten before the program starts
   forget();
   in_main_ = true;
-  spindle_on_ = coolant_on_ = length_on_ = false;
+  spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
   corrector_ = 0;
   state(power_on());
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
@@ -174,6 +173,7 @@ bool Structured::ends_program(const ir::Unit& u) const {
 // One source block: its lines, the first with the block number (set by the target
 // before it) and the block's comments.
 bool Structured::block(const ir::Block& b) {
+  if (program_ended_ && !reads_after_end()) return false;
   block_ = &b;
   words_written_ = false;
   skip_ = b.skippable;
@@ -217,7 +217,7 @@ void Structured::statement(const ir::Stmt& s) {
 
 void Structured::line(std::string text) {
   std::string head = std::exchange(label_, {});
-  if (pending_number_) head += (head.empty() ? "" : " ") + fmt::format("N{}", *pending_number_);
+  if (pending_number_) head += (head.empty() ? "" : " ") + fmt::format("{}{}", main_number_ ? ':' : 'N', *pending_number_);
   pending_number_.reset();  // a skipped block's lines all start with '/'
   text = std::exchange(then_, {}) + text;
   if (!head.empty() && !text.empty()) head += ' ';
@@ -227,8 +227,10 @@ void Structured::line(std::string text) {
       w_.comment(c);
       continue;
     }
+    const std::string written = w_.inline_comment(c);
+    if (written.empty()) continue;  // no text: nothing to keep
     if (!text.empty()) text += ' ';
-    text += w_.inline_comment(c);
+    text += written;
   }
   comments_.clear();
   if (!text.empty()) w_.line(text);
@@ -236,7 +238,7 @@ void Structured::line(std::string text) {
 
 void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
-  spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = std::nullopt;
+  spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
   position_ = {};
   incremental_.reset();
   corrector_.reset();
@@ -437,7 +439,7 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
     }
   }
   const char to = static_cast<char>('I' + axis);
-  words.push_back(to + (v ? exact(*v, true) : value(w.value, to)));
+  words.push_back(to + (v ? w_.number({to, *v, Value::Length}) : value(w.value, to)));
 }
 
 void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start,
@@ -549,7 +551,12 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::CoolantOff: coolant_on_ = false; break;
       case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = true; break;
       case Fn::LengthOff: length_on_ = false; break;
-      case Fn::ProgramEnd: case Fn::ProgramEndInformation: spindle_on_ = coolant_on_ = cycle_on_ = false; break;
+      case Fn::CompLeft: case Fn::CompRight: comp_on_ = true; break;
+      case Fn::CompOff: comp_on_ = false; break;
+      case Fn::ProgramEnd: case Fn::ProgramEndInformation:
+        spindle_on_ = coolant_on_ = cycle_on_ = false;
+        program_ended_ |= in_main_;
+        break;
       case Fn::ToolChange:
         // ... and first takes the tool axis to the reference point: a move the
         // target's M06 does not make.
@@ -623,6 +630,9 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   };
   // One code of the same functions, else one code for each.
   if (auto one = target_code(desc.calls, desc.scope)) return add(*one);
+  // A code that does more, where what it does more changes nothing here (GOST's G40
+  // also ends a length offset that is not on; its M05 stops a coolant that is off).
+  if (auto more = code_doing_more(desc.calls, desc.scope)) return add(*more);
   // ISO's M06 ends the length offset: NC-110's M06 with the T word's corrector 0.
   if (desc.calls == std::vector<FnCall>{{Fn::ToolChange}} && src_.tool_change_iso && dst_.corrector_in_tool_word)
     if (auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal)) return add(*m06);
@@ -631,10 +641,38 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     auto code = target_code({c}, desc.scope);
     if (code) each.push_back(*code);
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
+    else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
     else return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(c.fn), w_.dialect()));
   }
   for (const Code& c : each) add(c);
+}
+
+std::optional<Structured::Code> Structured::code_doing_more(const std::vector<FnCall>& calls, Scope scope) const {
+  auto idle = [&](const FnCall& f) {  // a function that changes nothing in the state the text says
+    switch (f.fn) {
+      case Fn::LengthOff: return length_on_ == false;
+      case Fn::CoolantOff: return coolant_on_ == false;
+      case Fn::CompOff: return comp_on_ == false;
+      default: return false;
+    }
+  };
+  std::optional<Code> best;
+  size_t fewest = SIZE_MAX;
+  for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})
+    for (const auto& [number, entry] : *table) {
+      const std::vector<FnCall>& has = entry.desc.calls;
+      if (entry.desc.scope != scope || has.size() <= calls.size() || has.size() - calls.size() >= fewest) continue;
+      const bool all = std::all_of(calls.begin(), calls.end(), [&](const FnCall& c) { return std::find(has.begin(), has.end(), c) != has.end(); });
+      const bool rest_idle = std::all_of(has.begin(), has.end(), [&](const FnCall& c) {
+        return std::find(calls.begin(), calls.end(), c) != calls.end() || idle(c);
+      });
+      if (all && rest_idle) {
+        best = Code{entry.letter, number, &entry};
+        fewest = has.size() - calls.size();
+      }
+    }
+  return best;
 }
 
 // A word of a dialect the target reads as it is written. ISO's second C or R (a
@@ -735,7 +773,7 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   if (letter == src_.dwell_word && dst_.dwell_word) {
     const double factor = src_.dwell_seconds_per_unit / dst_.dwell_seconds_per_unit;
     const ir::Expr& e = p_->exprs[w.value];
-    words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? exact(e.number * factor, true)
+    words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? w_.number({dst_.dwell_word, e.number * factor, Value::Seconds})
                                        : factor == 1              ? value(w.value, 'P')
                                                                   : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
     return;
@@ -1023,7 +1061,7 @@ void Structured::start_offset() {
 
 // --- the entry -----------------------------------------------------------------------------
 
-bool writes_structured(std::string_view target) { return target == "iso" || target == "linuxcnc" || target == "nc110"; }
+bool writes_structured(std::string_view target) { return target != "pp"; }
 
 namespace {
 
@@ -1056,6 +1094,7 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   auto make = [&]() -> std::unique_ptr<Structured> {
     if (request.to == "linuxcnc") return make_ngc_structured(dialect, *writer, target);
     if (request.to == "nc110") return make_nc110_structured(dialect, *writer, target, e_count);
+    if (request.to == "gost") return make_gost_structured(dialect, *writer, target);
     return make_iso_structured(dialect, *writer, target);
   };
   auto translation = make();

@@ -81,6 +81,9 @@ class Structured {
   // The block's words are the source's as written (a target of the source's dialect
   // whose syntax the common part writes: ISO).
   virtual bool verbatim() const { return same_; }
+  // The target reads the main program's blocks after its end (GOST 20999 §1.9 does
+  // not: they are not written).
+  virtual bool reads_after_end() const { return true; }
   // A code the target says otherwise than by a code of its tables (NC-110's UAO):
   // true when written.
   virtual bool own_code(const ir::Word&, const CodeDesc&) { return false; }
@@ -121,7 +124,10 @@ class Structured {
   };
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
   std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
-  std::optional<int> number_of(const ir::Block& b) const;
+  std::optional<Code> code_doing_more(const std::vector<FnCall>& calls, Scope scope) const;
+  // A block's number, where the target writes it (NC-110's N has four digits; GOST's
+  // rise).
+  virtual std::optional<int> number_of(const ir::Block& b);
 
   std::vector<FnCall> power_on() const;
   // Why work offset (origin) n is not the same on every axis of the target machine,
@@ -136,6 +142,7 @@ class Structured {
   const bool same_;  // the target is the source's dialect
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
+  bool main_number_ = false;           // ... written ':' (a GOST main block)
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
   std::string label_;                  // ... and before it (NC-110's "LABEL")
   bool streamed_ = false;              // the main program's leading blocks are written
@@ -145,6 +152,7 @@ class Structured {
   bool origin_words_ = false;          // the block's operands are UAO's
   bool offset_selected_ = false;       // the main program has selected a work offset
   bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
+  bool program_ended_ = false;         // the main program's end is written
 
  private:
   struct Mapped;
@@ -186,7 +194,7 @@ class Structured {
   std::set<uint32_t> used_;  // target variables the program reads or writes
   bool indirect_ = false;    // ... and one computed
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
-  std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false;
+  std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   Position position_;                  // X Y Z where the text leaves them
@@ -196,6 +204,7 @@ class Structured {
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target);
+std::unique_ptr<Structured> make_gost_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_nc110_structured(std::string dialect, Writer& writer, const MachineConfig& target,
                                                   uint32_t e_count);
 

@@ -55,7 +55,7 @@ class Writer {
   void comment(std::string_view text) { block({}, text); }
   // A line the caller wrote in the target's syntax (a structured translation's
   // statements), and text of several lines.
-  void line(std::string_view text) {
+  virtual void line(std::string_view text) {
     out_ += text;
     out_ += '\n';
   }

@@ -2,6 +2,7 @@
 // '%' with the title, numbered blocks, and every word as the §9 format descriptor of
 // the target's profile describes it.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <optional>
 
@@ -37,6 +38,7 @@ class GostWriter final : public Writer {
     // §1.4, §1.6: '%' starts the program; a comment on its line is the program's title.
     // Without '%' the program has no title: a comment block would be shown to the
     // operator, and translated again as one.
+    begun_ = true;
     if (!s_.format.program_start) return;
     std::string line = "%";
     append_comment(line, fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated", h.source,
@@ -71,9 +73,47 @@ class GostWriter final : public Writer {
     }
   }
 
+  // A structured translation's line: the first after the start carries N1 (§1.4);
+  // with '.' in the format a tab stands before each word (§2.1).
+  void line(std::string_view text) override {
+    std::string head, body;
+    if (begun_ && !numbered_) {
+      numbered_ = true;
+      if (text.empty() || text[0] != 'N') head = number_word();
+    }
+    int depth = 0;
+    for (char c : text) {
+      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+      body += c == ' ' && depth == 0 && s_.format.tab ? '\t' : c;
+    }
+    if (!head.empty() && !body.empty()) head += s_.format.tab ? '\t' : ' ';
+    out_ += head + body + '\n';
+    // A number the line has: the end's M02 comes after it.
+    const size_t at = text.find_first_of("N:");
+    if (at != std::string_view::npos && text.find_first_not_of("/ ") == at) {
+      size_t end = at + 1;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+      if (end > at + 1) highest_ = std::max(highest_, std::stoll(std::string(text.substr(at + 1, end - at - 1))));
+    }
+    // The end of the program: no M02 after it.
+    for (size_t m = 0; (m = text.find('M', m)) != std::string_view::npos; ++m) {
+      if (m > 0 && text[m - 1] != ' ' && text[m - 1] != '\t') continue;
+      size_t end = m + 1;
+      while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
+      if (end > m + 1) note({'M', static_cast<double>(std::stoi(std::string(text.substr(m + 1, end - m - 1)))), Value::Code});
+    }
+  }
+
+  std::string inline_comment(std::string_view text) const override {
+    std::string out;
+    append_comment(out, text);
+    return out;
+  }
+
   void end() override {
     // §1.9: a program ends with M02 or M30; a run that stopped without either gets M02.
     if (ended_) return;
+    next_number_ = std::max(next_number_, highest_ + 1);
     for (const auto& [number, entry] : tables().m_codes)
       if (std::find(entry.desc.calls.begin(), entry.desc.calls.end(), FnCall{Fn::ProgramEnd}) != entry.desc.calls.end())
         return block({{'M', static_cast<double>(number), Value::Code}}, {});
@@ -126,7 +166,7 @@ class GostWriter final : public Writer {
   }
 
   // §3.1, §9.2: each word as its format says (unwritable says what it cannot hold).
-  std::string number(const OutWord& w) const {
+  std::string number(const OutWord& w) const override {
     const gost::WordFormat* f = s_.format.word(w.letter);
     if (!f) return w.kind == Value::Code || w.kind == Value::Count ? whole(w.value) : decimal(w.value, 3, true);
     if (!f->dimension) {
@@ -201,6 +241,8 @@ class GostWriter final : public Writer {
   long long last_number_ = -1;  // no N in the format: no numbers
   long long offset_ = 0;
   bool ended_ = false;
+  bool begun_ = false, numbered_ = false;  // the program start written; its first block numbered
+  long long highest_ = 0;                  // the highest number of a structured translation's lines
 };
 
 }  // namespace
