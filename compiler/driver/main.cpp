@@ -237,8 +237,6 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
   if (o.input.empty()) return "no input file";
   if (o.command == "compile" && o.output.empty()) return "compile needs -o FILE";
   if (o.command == "translate" && o.to.empty()) return "translate needs --to DIALECT";
-  if (o.command == "translate" && !o.flatten && !translate::writes_structured(o.to))
-    return fmt::format("structured translation to {} is not built yet: give --flatten (the program's motion as plain blocks)", o.to);
   return {};
 }
 

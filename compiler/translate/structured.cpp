@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <memory>
 
 #include <fmt/format.h>
@@ -104,6 +105,7 @@ void Structured::begin_main() {
   forget();
   in_main_ = true;
   spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
+  rpm_ = true;  // a cutting speed needs its code (G96)
   corrector_ = 0;
   state(power_on());
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
@@ -173,7 +175,7 @@ bool Structured::ends_program(const ir::Unit& u) const {
 // One source block: its lines, the first with the block number (set by the target
 // before it) and the block's comments.
 bool Structured::block(const ir::Block& b) {
-  if (program_ended_ && !reads_after_end()) return false;
+  if (program_ended_ && in_main_ && !reads_after_end()) return false;
   block_ = &b;
   words_written_ = false;
   skip_ = b.skippable;
@@ -190,6 +192,7 @@ bool Structured::block(const ir::Block& b) {
     if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) conditional(s);
     else statement(s);
   }
+  if (!extra_words_.empty()) write_words(std::exchange(extra_words_, {}));  // with no machine words to join
   flush();  // a block with nothing else
   return returned;
 }
@@ -243,6 +246,7 @@ void Structured::forget() {
   incremental_.reset();
   corrector_.reset();
   plane_.reset();
+  rpm_.reset();
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -367,10 +371,26 @@ void Structured::translated_machine() {
     deferred_motion_.clear();
   }
   main.insert(main.end(), params.begin(), params.end());
+  main.insert(main.end(), extra_words_.begin(), extra_words_.end());
+  extra_words_.clear();
   main.insert(main.end(), m.begin(), m.end());
-  write_words(before);
+  // M codes apart that conflict with each other (two coolants) in blocks of their own.
+  auto apart_blocks = [&](const std::vector<std::string>& words) {
+    std::vector<std::string> line;
+    for (const std::string& word : words) {
+      const bool is_m = word[0] == 'M';
+      if (is_m && std::any_of(line.begin(), line.end(), [](const std::string& x) { return x[0] == 'M'; }) &&
+          std::any_of(codes.begin(), codes.end(), [&](const Mapped& c) { return c.code.text() == word && conflict(c); })) {
+        write_words(line);
+        line.clear();
+      }
+      line.push_back(word);
+    }
+    write_words(line);
+  };
+  apart_blocks(before);
   write_words(main);
-  write_words(after);
+  apart_blocks(after);
   write_words(later);
 }
 
@@ -447,7 +467,7 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
   const ir::Word& first = **std::find_if(words.begin(), words.end(), [](const ir::Word* w) { return w; });
   if (src_.arc_centre != ArcCentre::Incremental) return fail(first.range, "an arc centre from the origin, given by X Y Z");
   if (!plane_) return fail(first.range, "an arc centre where the plane is not known");
-  if (!incremental_) return fail(first.range, "an arc centre where G90 or G91 is not known");
+  if (!incremental_ && dst_.arc_centre == ArcCentre::Absolute) return fail(first.range, "an arc centre where G90 or G91 is not known");
   const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
   if (const ir::Word* lead = words[static_cast<size_t>(kPlanes[plane].w)])
     return fail(lead->range, fmt::format("a helix lead {}: the dialects give the lead in other units", lead->address.str()));
@@ -455,7 +475,7 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
     const size_t axis = static_cast<size_t>(k == 0 ? kPlanes[plane].u : kPlanes[plane].v);
     const char to = k == 0 ? 'I' : 'J';
     const ir::Word* w = words[axis];
-    if (*incremental_) {  // from the start in both
+    if (dst_.arc_centre == ArcCentre::Incremental || *incremental_) {  // from the start in both (pp's I J)
       out.push_back(to + (w ? value(w->value, to) : std::string("0")));
       continue;
     }
@@ -552,6 +572,8 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = true; break;
       case Fn::LengthOff: length_on_ = false; break;
       case Fn::CompLeft: case Fn::CompRight: comp_on_ = true; break;
+      case Fn::SpindleRpm: rpm_ = true; break;
+      case Fn::SpindleConstantSurface: rpm_ = false; break;
       case Fn::CompOff: comp_on_ = false; break;
       case Fn::ProgramEnd: case Fn::ProgramEndInformation:
         spindle_on_ = coolant_on_ = cycle_on_ = false;
@@ -560,6 +582,9 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::ToolChange:
         // ... and first takes the tool axis to the reference point: a move the
         // target's M06 does not make.
+        if (src_.m06_stops_spindle && !dst_.m06_stops_spindle && !dst_.tool_change_iso && (spindle_on_ != false || coolant_on_ != false))
+          fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s does not",
+                                          spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect, w_.dialect()));
         if (src_.tool_change_iso && !dst_.tool_change_iso) {
           if (src_.tool_change_retract)
             fail(block_->range, fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, {}'s "
@@ -586,6 +611,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
   if (desc.calls.empty()) return;  // a call, a return: the statements write them
   if (own_code(w, desc)) return;
+  if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
+    return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
@@ -642,6 +669,9 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     if (code) each.push_back(*code);
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
     else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
+    else if (c.fn == Fn::UnitsMm && !target_code({{Fn::UnitsInch}}, Scope::Modal)) continue;  // pp: mm always
+    // NC-110's M06 applies the T word's corrector: corrector 0 is no length offset.
+    else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false) continue;
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
     else return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(c.fn), w_.dialect()));
   }
@@ -654,6 +684,7 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
       case Fn::LengthOff: return length_on_ == false;
       case Fn::CoolantOff: return coolant_on_ == false;
       case Fn::CompOff: return comp_on_ == false;
+      case Fn::SpindleRpm: return rpm_ == true;  // pp's G94 also says rpm
       default: return false;
     }
   };
@@ -673,6 +704,57 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
       }
     }
   return best;
+}
+
+// The number of each unit the program calls: ISO's O number and pp's L number are
+// kept when free, anything else gets one from 9001 up; `unnamed` gets the units
+// without one of their own.
+std::map<std::string, int> Structured::unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed) const {
+  std::map<std::string, int> numbers;
+  std::vector<const ir::Unit*> rest;
+  for (size_t u = 1; u < p_->units.size(); ++u) {
+    const std::string& name = p_->units[u].name;
+    std::optional<int> n;
+    if (name.size() > 1 && name.size() <= 5 && (name[0] == 'O' || name[0] == 'L') &&
+        name.find_first_not_of("0123456789", 1) == std::string::npos)
+      n = std::stoi(name.substr(1));
+    if (n && *n > 0 && taken.insert(*n).second) numbers[name] = *n;
+    else rest.push_back(&p_->units[u]);
+  }
+  int next = 9000;
+  for (const ir::Unit* u : rest) {
+    while (taken.count(++next)) {}
+    taken.insert(next);
+    numbers[u->name] = next;
+  }
+  if (unnamed) *unnamed = std::move(rest);
+  return numbers;
+}
+
+// Whether a unit, or one it calls sharing its locals, names Macro B's locals #1-#33.
+bool Structured::uses_locals(const std::string& unit) const {
+  std::set<std::string> seen;
+  std::function<bool(const std::string&)> in_unit = [&](const std::string& name) {
+    if (!seen.insert(name).second) return false;
+    std::function<bool(ir::ExprId)> local = [&](ir::ExprId id) {
+      if (id == ir::kNoExpr) return false;
+      const ir::Expr& e = p_->exprs[id];
+      if (e.op == ir::ExprOp::Var && e.space == 0 && (!p_->is_constant(e.a) || p_->exprs[e.a].number <= 33)) return true;
+      if (e.op == ir::ExprOp::Number || e.op == ir::ExprOp::String) return false;
+      return local(e.a) || local(e.b);
+    };
+    for (const ir::Unit& u : p_->units)
+      if (u.name == name)
+        for (const ir::Block& b : u.blocks) {
+          for (const ir::Word& w : b.words)
+            if (local(w.value)) return true;
+          for (const ir::Stmt& s : b.stmts)
+            if (local(s.target) || local(s.value) || local(s.cond) || (s.kind == ir::StmtKind::Call && s.shares_locals && in_unit(s.label)))
+              return true;
+        }
+    return false;
+  };
+  return in_unit(unit);
 }
 
 // A word of a dialect the target reads as it is written. ISO's second C or R (a
@@ -735,6 +817,8 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
     if (!(p_->is_constant(w.value) && p_->exprs[w.value].number == 0)) words.back() += "." + value(w.value, 'T');
     return;  // T6 is corrector 0
   }
+  // A code's operand (pp G14's plane axes, from the block's axis words): the code says it.
+  if (w.address.str()[0] == '#') return;
   if (reads_source_words()) return words.push_back(as_written(w));
   const std::string address = w.address.str();
   const char letter = address.size() == 1 ? address[0] : 0;
@@ -773,6 +857,8 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   if (letter == src_.dwell_word && dst_.dwell_word) {
     const double factor = src_.dwell_seconds_per_unit / dst_.dwell_seconds_per_unit;
     const ir::Expr& e = p_->exprs[w.value];
+    if (e.op == ir::ExprOp::Number)
+      if (auto why = w_.unwritable({dst_.dwell_word, e.number * factor, Value::Seconds})) return fail(w.range, *why);
     words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? w_.number({dst_.dwell_word, e.number * factor, Value::Seconds})
                                        : factor == 1              ? value(w.value, 'P')
                                                                   : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
@@ -806,7 +892,8 @@ void Structured::assign(const ir::Stmt& s) {
       }
     }
   }
-  line(assignment(var(target), s.value, value));
+  // A target may write the store itself, in the block's words or lines of its own (pp).
+  if (std::string text = assignment(var(target), s.value, value); !text.empty()) line(std::move(text));
 }
 
 // Whether a value is a whole number whatever the variables hold: whole constants,
@@ -1061,8 +1148,6 @@ void Structured::start_offset() {
 
 // --- the entry -----------------------------------------------------------------------------
 
-bool writes_structured(std::string_view target) { return target != "pp"; }
-
 namespace {
 
 // The streamed blocks' text, written to a scratch file as it grows.
@@ -1095,6 +1180,7 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
     if (request.to == "linuxcnc") return make_ngc_structured(dialect, *writer, target);
     if (request.to == "nc110") return make_nc110_structured(dialect, *writer, target, e_count);
     if (request.to == "gost") return make_gost_structured(dialect, *writer, target);
+    if (request.to == "pp") return make_pp_structured(dialect, *writer, target);
     return make_iso_structured(dialect, *writer, target);
   };
   auto translation = make();

@@ -15,9 +15,6 @@
 
 namespace ncc::translate {
 
-// The targets structured translation writes; the others take --flatten.
-bool writes_structured(std::string_view target);
-
 // Reads, checks and dry-runs the source `file` of `dialect` as `ncc compile` does,
 // translating the main program's leading plain blocks as they are streamed (a CAM
 // program translates in the memory compiling it takes), and writes it in the

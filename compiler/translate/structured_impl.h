@@ -81,8 +81,8 @@ class Structured {
   // The block's words are the source's as written (a target of the source's dialect
   // whose syntax the common part writes: ISO).
   virtual bool verbatim() const { return same_; }
-  // The target reads the main program's blocks after its end (GOST 20999 §1.9 does
-  // not: they are not written).
+  // The target reads the main program's blocks after its end (GOST 20999 §1.9 and
+  // pp §2.3.2 do not: they are not written).
   virtual bool reads_after_end() const { return true; }
   // A code the target says otherwise than by a code of its tables (NC-110's UAO):
   // true when written.
@@ -125,6 +125,9 @@ class Structured {
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
   std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
   std::optional<Code> code_doing_more(const std::vector<FnCall>& calls, Scope scope) const;
+  bool is_whole(ir::ExprId id) const;
+  bool uses_locals(const std::string& unit) const;
+  std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's
   // rise).
   virtual std::optional<int> number_of(const ir::Block& b);
@@ -145,6 +148,7 @@ class Structured {
   bool main_number_ = false;           // ... written ':' (a GOST main block)
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
   std::string label_;                  // ... and before it (NC-110's "LABEL")
+  std::vector<std::string> extra_words_;  // the block's words the target adds (pp's G70 of a subprogram's end)
   bool streamed_ = false;              // the main program's leading blocks are written
   bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
@@ -178,7 +182,6 @@ class Structured {
   void assign(const ir::Stmt& s);
   void display(const ir::Stmt& s);
   std::string builtin_of_scaled(ir::ExprId value, SourceRange at);
-  bool is_whole(ir::ExprId id) const;
   bool is_thousandths(ir::ExprId id) const;
 
   int mapped_space_ = -1;  // the source's space of numbered parameters
@@ -195,6 +198,7 @@ class Structured {
   bool indirect_ = false;    // ... and one computed
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
   std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
+  std::optional<bool> rpm_;           // the spindle speed is in rpm (not a cutting speed)
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   Position position_;                  // X Y Z where the text leaves them
@@ -204,6 +208,7 @@ class Structured {
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target);
+std::unique_ptr<Structured> make_pp_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_gost_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_nc110_structured(std::string dialect, Writer& writer, const MachineConfig& target,
                                                   uint32_t e_count);

@@ -10,7 +10,7 @@
 namespace ncc::translate {
 namespace {
 
-constexpr int kFresh = 9000;  // block and program numbers the translation adds: 9001 up
+constexpr int kFresh = 9000;  // block numbers the translation adds: 9001 up
 // A repeat loop counts down #199 (the first of the program), #198, ... #100.
 constexpr uint32_t kFirstCounter = 199, kLastCounter = 100;
 
@@ -24,27 +24,13 @@ class IsoStructured final : public Structured {
     for (size_t u = 0; u < p_->units.size(); ++u) unit(p_->units[u], u == 0);
   }
 
-  // The O number of each unit the program calls: ISO keeps its own; a pp L number
-  // is kept when it is free; anything else gets a number from 9001 up.
+  // The O number of each unit the program calls (unit_numbers); the main program is
+  // O0001 (the writer's).
   void name_programs() {
-    std::set<int> taken{1};  // the main program is O0001 (the writer's)
     std::vector<const ir::Unit*> unnamed;
-    for (size_t u = 1; u < p_->units.size(); ++u) {
-      const std::string& name = p_->units[u].name;
-      std::optional<int> n;
-      if (name.size() > 1 && name.size() <= 5 && (name[0] == 'O' || name[0] == 'L') &&
-          name.find_first_not_of("0123456789", 1) == std::string::npos)
-        n = std::stoi(name.substr(1));
-      if (n && *n > 0 && taken.insert(*n).second) programs_[name] = *n;
-      else unnamed.push_back(&p_->units[u]);
-    }
-    int next = kFresh;
-    for (const ir::Unit* u : unnamed) {
-      while (taken.count(++next)) {}
-      taken.insert(next);
-      programs_[u->name] = next;
-      if (same_) fail(u->range, fmt::format("program {}: O0001 is the translation's main program", u->name));
-    }
+    programs_ = unit_numbers({1}, &unnamed);
+    if (same_)
+      for (const ir::Unit* u : unnamed) fail(u->range, fmt::format("program {}: O0001 is the translation's main program", u->name));
   }
 
   void open_unit(const ir::Unit& u, bool main) override {

@@ -243,6 +243,9 @@ class Nc110Structured final : public Structured {
 
   void call(const ir::Stmt& s) override {
     forget();
+    // G65 gives the called program locals of its own: the target's parameters are global.
+    if (p_->dialect == "iso" && !s.shares_locals && uses_locals(s.label))
+      return fail(s.range, "G65 of a program that uses #1-#33: ISO gives it locals of its own, NC-110's parameters are global");
     if (!s.args.empty()) return fail(s.range, "a call with arguments: NC-110's subprograms take none (E parameters are global)");
     std::string text;
     if (same_) {  // the unit "MP0/FLOWA" is CLS's FLOWA/MP0

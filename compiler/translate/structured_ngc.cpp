@@ -240,17 +240,6 @@ class NgcStructured final : public Structured {
     oword(fmt::format("o{} endrepeat", n));
   }
 
-  bool uses_locals(const std::string& unit) const {
-    for (const ir::Unit& u : p_->units)
-      if (u.name == unit)
-        for (const ir::Block& b : u.blocks)
-          for (const ir::Stmt& s : b.stmts)
-            if (s.target != ir::kNoExpr && p_->exprs[s.target].op == ir::ExprOp::Var && p_->is_constant(p_->exprs[s.target].a) &&
-                p_->exprs[p_->exprs[s.target].a].number <= 33)
-              return true;
-    return false;
-  }
-
   void ret(const ir::Stmt&) override {
     if (in_main_) return line("M2");  // M99 with no call open ends the run
     if (block_ == &unit_->blocks.back()) return;  // endsub returns

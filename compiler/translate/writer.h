@@ -67,6 +67,10 @@ class Writer {
   virtual bool comments_apart() const { return false; }
   // A word's value as the target writes it (its address' format).
   virtual std::string number(const OutWord& w) const;
+  // A block number of its own for a structured translation's line (pp: jumps go to
+  // block numbers), or 0 where the target numbers no blocks.
+  virtual long fresh_number() { return 0; }
+  virtual void reserve_number(long) {}  // a number a line will give itself
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
   // The smallest length step the target's numbers write (mm): a position it writes

@@ -3,8 +3,10 @@
 // Lines hold at most 80 characters: a block runs on to the next N, so a long block
 // or comment goes on over the next lines (§2.2.1 d, f).
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 
@@ -70,6 +72,55 @@ class PpWriter final : public Writer {
     comment_lines(std::move(line), text(comment), kIndent);
   }
 
+  // A structured translation's line: its own number or the next, words over lines
+  // of 80 characters, its comments ("...") after them.
+  void line(std::string_view text) override {
+    const size_t quote = text.find('"');
+    std::string_view words = text.substr(0, quote);
+    while (!words.empty() && words.back() == ' ') words.remove_suffix(1);
+    std::string comment;
+    for (size_t at = quote; at != std::string_view::npos && at < text.size();) {
+      const size_t close = text.find('"', at + 1);
+      if (!comment.empty()) comment += ' ';
+      comment += text.substr(at + 1, (close == std::string_view::npos ? text.size() : close) - at - 1);
+      at = close == std::string_view::npos ? close : text.find('"', close + 1);
+    }
+    // The skip mark after the number (§2.2.1 i): "/N20 X2" is "N20 /X2".
+    std::string moved;
+    if (words.starts_with("/N") && words.size() > 2 && std::isdigit(static_cast<unsigned char>(words[2]))) {
+      const size_t space = words.find(' ');
+      moved = std::string(words.substr(1, space == std::string_view::npos ? words.size() : space - 1)) + " /" +
+              std::string(space == std::string_view::npos ? "" : words.substr(space + 1));
+      words = moved;
+    }
+    std::string line;
+    size_t at = 0;
+    if (words.starts_with('N') && words.size() > 1 && std::isdigit(static_cast<unsigned char>(words[1]))) {
+      at = words.find(' ');
+      line = std::string(words.substr(0, at));
+      taken_.insert(std::stoul(line.substr(1)));
+    } else {
+      line = next_number();
+    }
+    for (at = at == std::string_view::npos ? words.size() : at; at < words.size();) {
+      while (at < words.size() && words[at] == ' ') ++at;
+      const size_t end = std::min(words.find(' ', at), words.size());
+      if (end > at) {
+        const std::string word(words.substr(at, end - at));
+        add(line, word);
+        main_ended_ |= word[0] == 'M' && word.size() > 1 && std::isdigit(static_cast<unsigned char>(word[1])) &&
+                       ends_program({'M', static_cast<double>(std::stoi(word.substr(1))), Value::Code});
+      }
+      at = end;
+    }
+    comment_lines(std::move(line), comment, kIndent);
+  }
+
+  std::string inline_comment(std::string_view t) const override { return '"' + text(t) + '"'; }
+
+  long fresh_number() override { return std::stol(next_number().substr(1)); }
+  void reserve_number(long n) override { taken_.insert(static_cast<unsigned long>(n)); }
+
   void end() override {
     if (ended_) return;
     ended_ = true;
@@ -89,7 +140,7 @@ class PpWriter final : public Writer {
  private:
   // A word without dimension takes digits only: no sign, no decimal point (§2.1.3).
   // A length without a point is whole millimetres (§2.1.2 b), so none is needed.
-  std::string number(const OutWord& w) const {
+  std::string number(const OutWord& w) const override {
     switch (w.kind) {
       case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
       case Value::Count: case Value::Speed: case Value::Seconds: return decimal(w.value, 0, false);
@@ -114,6 +165,7 @@ class PpWriter final : public Writer {
 
   // §2.2.1 d: every block begins with N (8), each number once in the file.
   std::string next_number() {
+    while (taken_.count(block_number_)) block_number_ += kStep;  // a structured translation's own numbers
     std::string n = fmt::format("N{}", block_number_);
     block_number_ += kStep;  // past 99999999 the program is no longer pp
     return n;
@@ -200,6 +252,7 @@ class PpWriter final : public Writer {
   }
 
   uint32_t block_number_ = kStep;
+  std::set<unsigned long> taken_;  // numbers the lines gave themselves
   std::optional<size_t> open_;  // the bytes of the block being written (none before the first)
   bool main_ended_ = false;  // a block with M02 or M30 is written
   bool ended_ = false;

@@ -95,10 +95,11 @@ def trace(ncc, options, program, cwd):
 
 
 def body(text):
-    """A program's blocks without its comment lines: the first names the file it came
+    """A program's blocks without its comments: the first names the file it came
     from, and the ISO dialect shows the operator no comment (its run has no comment
-    events), so a comment does not come through a second translation from ISO."""
-    return [line for line in text.splitlines()
+    events), so a comment does not come through a second translation from ISO; pp
+    reads a comment line as the block's before it. NC-110's (RPT,3) is a code."""
+    return [re.sub(r'\s*("[^"]*"|\((?![A-Z]{3}[,)])[^()]*\))', "", line).rstrip() for line in text.splitlines()
             if "flattened from" not in line and "translated from" not in line and not re.fullmatch(r'\s*(\(.*\)|".*"|N\d+\s*".*"|;.*)\s*', line)]
 
 

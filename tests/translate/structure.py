@@ -3,9 +3,9 @@
 
     structure.py --ncc PATH/TO/ncc
 
-A loop of 10^5 iterations stays a loop: its translation to ISO, LinuxCNC and NC-110
-is at most a few times the source's size, and (into ISO and NC-110, which ncc runs)
-makes the same motion. A subprogram called 50 times is written once, and called 50
+A loop of 10^5 iterations stays a loop: its translation to ISO, LinuxCNC, NC-110 and
+(counted repeats) pp is at most a few times the source's size, and (into the
+dialects ncc runs) makes the same motion. A subprogram called 50 times is written once, and called 50
 times (into NC-110: a range of blocks EPP runs; NC-110's own CLS program stays the
 library's file).
 Python 3 standard library only.
@@ -25,16 +25,23 @@ N = 100000
 LOOPS = {
     "iso": f"#1=0\nG01 X0 Y0 F1000\nWHILE [#1 LT {N}] DO1\n#1=#1+1\nG91 X0.001\nG90\nEND1\nM30\n",
     "nc110": f'E30=0\nG1 X0 Y0 F1000\n"TOP" E30=E30+1\nG91 X0.001\nG90\n(BLT,E30,{N},TOP)\nM30\n',
+    # 50 x 50 x 40 = 10^5 repeats: the loops pp's counted G73 can say
+    "nc110-rpt": "G1 X0 Y0 F1000\n(RPT,50)\n(RPT,50)\n(RPT,40)\nG91 X0.001\nG90\n(ERP)\n(ERP)\n(ERP)\nM30\n",
 }
+# The targets each loop is translated to: pp has no condition, only counted jumps.
+LOOP_TARGETS = {"iso": ("iso", "linuxcnc", "nc110"), "nc110": ("iso", "linuxcnc", "nc110"),
+                "nc110-rpt": ("iso", "linuxcnc", "nc110", "pp")}
 CALLS = {  # (main program, the subprogram's file under lib/ or "", sub definition, call) in each target
     "pp": ("%1\n" + "".join(f"N{10 * i} G71 L100\n" for i in range(1, 51)) + "N990 M30\nN1000 G79 L100\n"
            "N1010 G91 G1 X1 F500\nN1020 G90 G70\n*\n", "", None),
     "nc110": ("".join("(CLS,SUB1)\n" for _ in range(50)) + "M30\n", "G91 G1 X1 F500\nG90\n", "MP0/SUB1.nc"),
 }
-SUB = {"iso": r"^O(?!0001$)\d+$", "linuxcnc": r"^o<\w+> sub$", "nc110": r'^"L100"$'}  # O0001: the main program
-CALL = {"iso": r"\bM98 P\d+", "linuxcnc": r"^o<\w+> call", "nc110": r"\((EPP,L100,K1|CLS,SUB1/MP0)\)$"}
-TARGETS = ("iso", "linuxcnc", "nc110")
-RUNS = ("iso", "nc110")  # the targets ncc reads: their motion is compared
+SUB = {"iso": r"^O(?!0001$)\d+$", "linuxcnc": r"^o<\w+> sub$", "nc110": r'^"L100"$',  # O0001: the main program
+       "pp": r"\bG79 L\d+"}
+CALL = {"iso": r"\bM98 P\d+", "linuxcnc": r"^o<\w+> call", "nc110": r"\((EPP,L100,K1|CLS,SUB1/MP0)\)$",
+        "pp": r"\bG71 L\d+"}
+TARGETS = ("iso", "linuxcnc", "nc110", "pp")
+RUNS = ("iso", "nc110", "pp")  # the targets ncc reads: their motion is compared
 SIZE_FACTOR = 5
 
 
@@ -58,25 +65,26 @@ def main():
     failed = []
     with tempfile.TemporaryDirectory() as d:
         d = Path(d)
-        for dialect, text in LOOPS.items():
-            source = d / f"loop-{dialect}.nc"
+        for name, text in LOOPS.items():
+            dialect = name.split("-")[0]
+            source = d / f"loop-{name}.nc"
             source.write_text(text)
-            for target in TARGETS:
-                out = d / f"loop-{dialect}.{target}"
+            for target in LOOP_TARGETS[name]:
+                out = d / f"loop-{name}.{target}"
                 p = run(ncc, ["translate", "--dialect", dialect, "--to", target, str(source), "-o", str(out)])
                 if p.returncode != 0:
-                    failed.append(f"loop {dialect} -> {target}: {p.stderr.strip()}")
+                    failed.append(f"loop {name} -> {target}: {p.stderr.strip()}")
                     continue
                 size, limit = out.stat().st_size, SIZE_FACTOR * source.stat().st_size + 400  # the start's codes
                 if size > limit:
-                    failed.append(f"loop {dialect} -> {target}: {size} bytes from {source.stat().st_size}: not a loop")
+                    failed.append(f"loop {name} -> {target}: {size} bytes from {source.stat().st_size}: not a loop")
                 if target in RUNS:
                     a, b = trace(ncc, dialect, source), trace(ncc, target, out)
                     moves = sum(1 for e in a or [] if e.get("event") == "linear")
                     if a is None or b is None or moves != N + 1:
-                        failed.append(f"loop {dialect} -> {target}: a run failed or made {moves} moves")
+                        failed.append(f"loop {name} -> {target}: a run failed or made {moves} moves")
                     elif equivalent.compare(a, b, 1e-6):
-                        failed.append(f"loop {dialect} -> {target}: " + equivalent.compare(a, b, 1e-6)[0])
+                        failed.append(f"loop {name} -> {target}: " + equivalent.compare(a, b, 1e-6)[0])
         for dialect, (main_text, sub_text, sub_path) in CALLS.items():
             source = d / f"calls.{dialect}"
             source.write_text(main_text)
@@ -95,7 +103,7 @@ def main():
                 lines = out.read_text().splitlines()
                 subs = sum(1 for l in lines if re.search(SUB[target], l))
                 calls = sum(1 for l in lines if re.search(CALL[target], l))
-                written = 0 if dialect == target else 1  # NC-110 calls its library's program
+                written = 0 if dialect == target == "nc110" else 1  # NC-110 calls its library's program
                 if (subs, calls) != (written, 50):
                     failed.append(f"calls {dialect} -> {target}: {subs} subprograms and {calls} calls, not {written} and 50")
                 if target in RUNS:
