@@ -1,8 +1,12 @@
 // Structured translation into GOST 20999-83: the program's blocks with their codes,
 // canned cycles, arcs and comments, every value a constant in the words of the
 // target's format descriptor. GOST 20999 has no parameters, jumps, loops or
-// subprograms: a program that uses them is refused, and --flatten writes the blocks
-// it runs (docs/translate.md).
+// subprograms: a loop of a constant count and a call are written out block by
+// block; a program with parameters or jumps is refused, and --flatten writes the
+// blocks it runs (docs/translate.md).
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "structured_impl.h"
@@ -18,11 +22,64 @@ class GostStructured final : public Structured {
       : Structured(std::move(dialect), writer, target), last_number_(same_ ? 0 : 1) {}
 
  private:
-  // The main program; a second program on the medium is refused (unit()), a
-  // subprogram with its calls.
+  // The main program with its repeat loops and calls written out (a loop of a
+  // constant count runs the same blocks each time: the program needs no loop); a
+  // second program on the medium is refused (unit()).
   void body() override {
-    for (size_t u = 0; u < p_->units.size(); ++u)
-      if (u == 0 || p_->units[u].kind == ir::UnitKind::Program) unit(p_->units[u], u == 0);
+    ir::Unit main = p_->units.front();
+    main.blocks.clear();
+    if (unroll(p_->units.front().blocks, 0, p_->units.front().blocks.size(), main.blocks, 0)) unit(main, true);
+    for (size_t u = 1; u < p_->units.size(); ++u)
+      if (p_->units[u].kind == ir::UnitKind::Program) unit(p_->units[u], false);
+  }
+
+  // Blocks [from, to) with each repeat loop's body `count` times and each call's
+  // program in its place; false (and refused) where a count is not a constant or
+  // the blocks would be too many.
+  bool unroll(const std::vector<ir::Block>& blocks, size_t from, size_t to, std::vector<ir::Block>& out, int depth) {
+    constexpr size_t kMost = 200000;
+    for (size_t i = from; i < to; ++i) {
+      ir::Block b = blocks[i];
+      auto flow = std::find_if(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
+        return s.kind == ir::StmtKind::RepeatBegin || s.kind == ir::StmtKind::Call;
+      });
+      if (flow == b.stmts.end()) {
+        // The end of a repeat written out, and a return at a program's end: nothing left.
+        std::erase_if(b.stmts, [&](const ir::Stmt& s) {
+          return s.kind == ir::StmtKind::RepeatEnd || (s.kind == ir::StmtKind::Return && depth > 0 && i + 1 == to);
+        });
+        out.push_back(std::move(b));
+        if (out.size() > kMost) return fail(blocks[i].range, fmt::format("a program of more than {} blocks written out{}", kMost, kFlatten)), false;
+        continue;
+      }
+      const ir::Stmt s = *flow;
+      if (std::next(flow) != b.stmts.end()) return fail(s.range, std::string("a call or a repeat before other statements of its block") + kFlatten), false;
+      b.stmts.erase(flow);
+      const ir::Expr& n = p_->exprs[s.value == ir::kNoExpr ? 0 : s.value];
+      const int count = s.value == ir::kNoExpr ? 1 : n.op == ir::ExprOp::Number && n.number >= 0 && n.number == std::trunc(n.number) ? static_cast<int>(n.number) : -1;
+      if (count < 0) return fail(s.range, std::string("a count computed when the program runs") + kFlatten), false;
+      out.push_back(std::move(b));  // its words run first
+      if (s.kind == ir::StmtKind::Call) {
+        auto unit = std::find_if(p_->units.begin(), p_->units.end(), [&](const ir::Unit& u) { return u.name == s.label; });
+        if (unit == p_->units.end() || !s.args.empty() || depth > 8)
+          return fail(s.range, std::string("a call of ") + s.label + ", with arguments or nested deeper than 8" + kFlatten), false;
+        for (int k = 0; k < count; ++k)
+          if (!unroll(unit->blocks, 0, unit->blocks.size(), out, depth + 1)) return false;
+        continue;
+      }
+      // The repeat's end: the block whose first statement closes it.
+      size_t end = i + 1;
+      for (int open = 0; end < to; ++end) {
+        const auto& stmts = blocks[end].stmts;
+        if (!stmts.empty() && stmts.front().kind == ir::StmtKind::RepeatEnd && open == 0) break;
+        for (const ir::Stmt& x : stmts) open += x.kind == ir::StmtKind::RepeatBegin ? 1 : x.kind == ir::StmtKind::RepeatEnd ? -1 : 0;
+      }
+      if (end == to) return fail(s.range, std::string("a repeat without its end") + kFlatten), false;
+      for (int k = 0; k < count; ++k)
+        if (!unroll(blocks, i + 1, end, out, depth)) return false;
+      i = end - 1;  // the end's block goes on as any other, without its end
+    }
+    return true;
   }
   void open_unit(const ir::Unit& u, bool) override { unit_ = &u; }
   void close_unit(const ir::Unit&, bool, bool) override {}
@@ -41,9 +98,10 @@ class GostStructured final : public Structured {
   }
 
   void jump(const ir::Stmt& s) override { fail(s.range, std::string("a jump: GOST 20999 has none") + kFlatten); }
-  void repeat_begin(const ir::Stmt& s) override { fail(s.range, std::string("a repeat loop: GOST 20999 has none") + kFlatten); }
+  // Repeats and calls are written out (unroll()); what is left could not be.
+  void repeat_begin(const ir::Stmt&) override {}
   void repeat_end(const ir::Stmt&) override {}
-  void call(const ir::Stmt& s) override { fail(s.range, std::string("a subprogram call: GOST 20999 has none") + kFlatten); }
+  void call(const ir::Stmt&) override {}
   void ret(const ir::Stmt& s) override { fail(s.range, std::string("a return from a subprogram: GOST 20999 has none") + kFlatten); }
   void conditional(const ir::Stmt& s) override { fail(s.range, std::string("a condition: GOST 20999 has none") + kFlatten); }
   std::string assignment(const std::string&, ir::ExprId, std::string) override { return {}; }

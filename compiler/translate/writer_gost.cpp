@@ -97,6 +97,9 @@ class GostWriter final : public Writer {
     }
     // The end of the program: no M02 after it.
     for (size_t m = 0; (m = text.find('M', m)) != std::string_view::npos; ++m) {
+      if (std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(m), '(') >
+          std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(m), ')'))
+        continue;  // in a comment
       if (m > 0 && text[m - 1] != ' ' && text[m - 1] != '\t') continue;
       size_t end = m + 1;
       while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
