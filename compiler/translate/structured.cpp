@@ -515,14 +515,20 @@ void Structured::track(const ir::Word& w) {
   else if (axis) *axis += *v;
 }
 
+// A word's or an operand's value where it is a number, signed or not (a read's
+// vacancy check aside).
 std::optional<double> Structured::constant_of(ir::ExprId id) const {
-  const ir::Expr& e = p_->exprs[id];
+  const ir::Expr& e = p_->exprs[bare(id)];
   if (e.op == ir::ExprOp::Number) return e.number;
-  if (e.op == ir::ExprOp::Neg) {
-    auto a = constant_of(e.a);
-    return a ? std::optional<double>(-*a) : std::nullopt;
-  }
+  if (e.op == ir::ExprOp::Neg)
+    if (auto a = constant_of(e.a)) return -*a;
   return std::nullopt;
+}
+
+// Without the checks the source's reads make (a vacant value, a range).
+ir::ExprId Structured::bare(ir::ExprId id) const {
+  while (p_->exprs[id].op == ir::ExprOp::ZeroIfVacant || p_->exprs[id].op == ir::ExprOp::Check) id = p_->exprs[id].a;
+  return id;
 }
 
 // NC-110's T tool.corrector: the corrector takes effect at M06 (nc110 decision 11).
@@ -893,7 +899,7 @@ void Structured::assign(const ir::Stmt& s) {
     }
   }
   // A target may write the store itself, in the block's words or lines of its own (pp).
-  if (std::string text = assignment(var(target), s.value, value); !text.empty()) line(std::move(text));
+  if (std::string text = assignment(s, var(target), value); !text.empty()) line(std::move(text));
 }
 
 // Whether a value is a whole number whatever the variables hold: whole constants,

@@ -55,8 +55,11 @@ class GostStructured final : public Structured {
       const ir::Stmt s = *flow;
       if (std::next(flow) != b.stmts.end()) return fail(s.range, std::string("a call or a repeat before other statements of its block") + kFlatten), false;
       b.stmts.erase(flow);
-      const ir::Expr& n = p_->exprs[s.value == ir::kNoExpr ? 0 : s.value];
-      const int count = s.value == ir::kNoExpr ? 1 : n.op == ir::ExprOp::Number && n.number >= 0 && n.number == std::trunc(n.number) ? static_cast<int>(n.number) : -1;
+      int count = 1;
+      if (s.value != ir::kNoExpr) {
+        const ir::Expr& n = p_->exprs[s.value];
+        count = n.op == ir::ExprOp::Number && n.number >= 0 && n.number == std::trunc(n.number) ? static_cast<int>(n.number) : -1;
+      }
       if (count < 0) return fail(s.range, std::string("a count computed when the program runs") + kFlatten), false;
       out.push_back(std::move(b));  // its words run first
       if (s.kind == ir::StmtKind::Call) {
@@ -104,7 +107,7 @@ class GostStructured final : public Structured {
   void call(const ir::Stmt&) override {}
   void ret(const ir::Stmt& s) override { fail(s.range, std::string("a return from a subprogram: GOST 20999 has none") + kFlatten); }
   void conditional(const ir::Stmt& s) override { fail(s.range, std::string("a condition: GOST 20999 has none") + kFlatten); }
-  std::string assignment(const std::string&, ir::ExprId, std::string) override { return {}; }
+  std::string assignment(const ir::Stmt&, const std::string&, std::string) override { return {}; }
   void zero_all(uint32_t, uint32_t) override {}
   void start_parameters() override {}
 

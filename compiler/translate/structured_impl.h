@@ -68,7 +68,8 @@ class Structured {
   virtual void call(const ir::Stmt& s) = 0;
   virtual void ret(const ir::Stmt& s) = 0;
   virtual void conditional(const ir::Stmt& s) = 0;  // a statement that runs only if s.cond holds
-  virtual std::string assignment(const std::string& var, ir::ExprId value, std::string text) = 0;
+  // The store of statement s into `var` (written), the value's expression `text`.
+  virtual std::string assignment(const ir::Stmt& s, const std::string& var, std::string text) = 0;
   virtual void zero_all(uint32_t first, uint32_t count) = 0;  // #first.. at 0, when a program computes indexes
   // The target reads the source's parameter words as the source does (ISO and
   // LinuxCNC); its codes are still mapped by function unless it is the same dialect.
@@ -126,6 +127,8 @@ class Structured {
   std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
   std::optional<Code> code_doing_more(const std::vector<FnCall>& calls, Scope scope) const;
   bool is_whole(ir::ExprId id) const;
+  std::optional<double> constant_of(ir::ExprId id) const;
+  ir::ExprId bare(ir::ExprId id) const;
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's
@@ -176,7 +179,6 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void arc_on_circle(const Position& start);
-  std::optional<double> constant_of(ir::ExprId id) const;
   void corrector(const ir::Word& w);
   std::string length_offset(SourceRange at);
   void assign(const ir::Stmt& s);

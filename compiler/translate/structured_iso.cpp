@@ -165,7 +165,7 @@ class IsoStructured final : public Structured {
     then_.clear();
   }
 
-  std::string assignment(const std::string& var, ir::ExprId, std::string text) override { return var + "=" + text; }
+  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override { return var + "=" + text; }
 
   void zero_all(uint32_t first, uint32_t count) override {
     w_.line("#1=0");

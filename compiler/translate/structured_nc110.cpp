@@ -184,7 +184,7 @@ class Nc110Structured final : public Structured {
   // A branch's operand: a constant or one E parameter (§2.13.2.4).
   std::string operand_of(ir::ExprId id) {
     const ir::Expr& e = p_->exprs[bare(id)];
-    if (auto v = constant(id)) return exact(*v, false);
+    if (auto v = constant_of(id)) return exact(*v, false);
     if (e.op == ir::ExprOp::Var && p_->is_constant(e.a)) return var(e);
     return scratch(LR, expr(id, kOr));
   }
@@ -208,7 +208,7 @@ class Nc110Structured final : public Structured {
   // parameter of its own, tested at the end (and first, when it may be 0).
   void open_loop(ir::ExprId count, SourceRange at) {
     Loop loop;
-    const auto n = constant(count);
+    const auto n = constant_of(count);
     if (n && *n >= 0 && *n <= 99 && *n == std::trunc(*n) && rpt_depth_ < kMaxRpt) {
       line(fmt::format("(RPT,{})", static_cast<int>(*n)));
       ++rpt_depth_;
@@ -305,7 +305,7 @@ class Nc110Structured final : public Structured {
       for (const ir::Word& o : block_->words) {
         if (o.kind != ir::WordKind::Parameter) continue;
         if (o.slot != operand_slot(0)) listed |= o.slot < 52;
-        else if (auto v = constant(o.value); v && *v >= 0 && *v <= 99) n = static_cast<int>(*v);
+        else if (auto v = constant_of(o.value); v && *v >= 0 && *v <= 99) n = static_cast<int>(*v);
       }
     }
     if (n < 0) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name)), true;
@@ -392,11 +392,6 @@ class Nc110Structured final : public Structured {
 
   // A word's value: a constant in its address' format, an E parameter of a class
   // the address takes, else a scratch parameter of such a class.
-  // Without the checks the source's reads make (a vacant value): NC-110's are never vacant.
-  ir::ExprId bare(ir::ExprId id) const {
-    while (p_->exprs[id].op == ir::ExprOp::ZeroIfVacant || p_->exprs[id].op == ir::ExprOp::Check) id = p_->exprs[id].a;
-    return id;
-  }
 
   std::string value(ir::ExprId id, char letter) override {
     const ir::Expr& e = p_->exprs[bare(id)];
@@ -405,7 +400,7 @@ class Nc110Structured final : public Structured {
       return "0";
     }
     const auto address = w_.tables().addresses.find(letter);
-    if (auto v = constant(id)) {
+    if (auto v = constant_of(id)) {
       OutWord word{letter, *v, kind_of(letter)};
       if (auto why = w_.unwritable(word)) fail(e.range, *why);
       return w_.number(word);
@@ -455,11 +450,12 @@ class Nc110Structured final : public Structured {
         e = kFirst[c] + class_used_[c]++;
       }
     } while (source_e_.count(e));  // NC-110's own program uses it
-    line(assignment(fmt::format("E{}", e), ir::kNoExpr, text));
+    line(stored(fmt::format("E{}", e), text));
     return fmt::format("E{}", e);
   }
 
-  std::string assignment(const std::string& var, ir::ExprId, std::string text) override {
+  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override { return stored(var, text); }
+  std::string stored(const std::string& var, const std::string& text) {
     std::string line = var + "=" + text;
     if (line.size() > 120) fail(block_->range, "an expression longer than an NC-110 line of 128 characters");
     return line;
@@ -467,19 +463,6 @@ class Nc110Structured final : public Structured {
 
   void zero_all(uint32_t, uint32_t) override {}  // never: var() refuses computed parameter numbers
 
-  // The value of an expression of numbers alone (7/2, -2.5).
-  std::optional<double> constant(ir::ExprId id) const {
-    const ir::Expr& e = p_->exprs[id];
-    switch (e.op) {
-      case ir::ExprOp::Number: return e.number;
-      case ir::ExprOp::Neg: {
-        auto a = constant(e.a);
-        return a ? std::optional<double>(-*a) : std::nullopt;
-      }
-      case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return constant(e.a);
-      default: return std::nullopt;
-    }
-  }
 
   // NC-110's expressions (§2.12, nc110 decisions 9 and 10): ( ), + - * /, one sign
   // before an operand, MOD(A,B), functions of degrees; no comparison outside a branch.
@@ -492,7 +475,7 @@ class Nc110Structured final : public Structured {
       case ir::ExprOp::Var: return var(e);
       case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return expr(e.a, min);
       case ir::ExprOp::Neg:  // -(-2) reads back as 2: a constant is folded
-        if (auto v = constant(id)) return *v < 0 ? wrap(kSign, exact(*v, false)) : exact(*v, false);
+        if (auto v = constant_of(id)) return *v < 0 ? wrap(kSign, exact(*v, false)) : exact(*v, false);
         return wrap(kSign, "-" + expr(e.a, kPrimary));
       case ir::ExprOp::Add: return binary(kSum, "+");
       case ir::ExprOp::Sub: return binary(kSum, "-");

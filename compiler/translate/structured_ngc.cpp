@@ -261,7 +261,7 @@ class NgcStructured final : public Structured {
     w_.line(text);
   }
 
-  std::string assignment(const std::string& var, ir::ExprId, std::string text) override {
+  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override {
     const bool simple = text.find_first_of("+-*/[ ") == std::string::npos || (text[0] == '-' && text.find_first_of("+*/[ ", 1) == std::string::npos);
     return var + "=" + (simple ? text : "[" + text + "]");
   }

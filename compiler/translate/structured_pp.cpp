@@ -29,16 +29,13 @@ class PpStructured final : public Structured {
   bool reads_after_end() const override { return false; }
 
   void body() override {
-    name_subprograms();
+    numbers_ = unit_numbers({});
     for (const ir::Unit& u : p_->units)
       for (const ir::Block& b : u.blocks)
         if (same_ && b.number) w_.reserve_number(static_cast<long>(*b.number));
     for (size_t u = 0; u < p_->units.size(); ++u)
       if (u == 0 || !(same_ && p_->units[u].kind == ir::UnitKind::Macro)) unit(p_->units[u], u == 0);
   }
-
-  // The L number of each subprogram (unit_numbers).
-  void name_subprograms() { numbers_ = unit_numbers({}); }
 
   void open_unit(const ir::Unit& u, bool main) override {
     unit_ = &u;
@@ -89,17 +86,18 @@ class PpStructured final : public Structured {
   // pp's own G73 L Q, which the front end writes as its counter's statements; any
   // other jump tests a condition or goes on for ever.
   void jump(const ir::Stmt& s) override {
-    const ir::Expr& c = p_->exprs[s.cond == ir::kNoExpr ? 0 : s.cond];
-    const bool counted = same_ && s.cond != ir::kNoExpr && c.op == ir::ExprOp::Gt && p_->exprs[c.a].op == ir::ExprOp::Var &&
-                         p_->spaces[p_->exprs[c.a].space].name == "G73";
+    const ir::Expr* c = s.cond == ir::kNoExpr ? nullptr : &p_->exprs[s.cond];
+    const bool counted = same_ && c && c->op == ir::ExprOp::Gt && p_->exprs[c->a].op == ir::ExprOp::Var &&
+                         p_->spaces[p_->exprs[c->a].space].name == "G73";
     if (!counted) return fail(s.range, "a jump: pp's G73 jumps a number of times, it tests no condition");
     if (s.label.size() < 2 || s.label[0] != 'N') return fail(s.range, "a jump to a block without a number");
     line(fmt::format("G73 L{} Q{}", s.label.substr(1), count_));
   }
 
   // The counter's arming (its count, Q) and its step: in the G73 word.
-  std::string assignment(const std::string& var, ir::ExprId value, std::string) override {
-    const ir::Expr& target = p_->exprs[last_target_];
+  std::string assignment(const ir::Stmt& s, const std::string& var, std::string) override {
+    const ir::Expr& target = p_->exprs[s.target];
+    const ir::ExprId value = s.value;
     if (same_ && target.op == ir::ExprOp::Var && p_->spaces[target.space].name == "G73") {
       // counter = [counter EQ 0]*[Q+1] + counter: Q is the Add's first operand.
       const ir::Expr& e = p_->exprs[value];
@@ -193,7 +191,6 @@ class PpStructured final : public Structured {
   // Each variable of the source in an R parameter from R0 up, in the order the
   // program first names them; pp's own keep their numbers.
   std::string var(const ir::Expr& e) override {
-    last_target_ = static_cast<ir::ExprId>(&e - p_->exprs.data());
     if (e.op != ir::ExprOp::Var) {
       fail(e.range, "a store into a memory or a system variable");
       return "R0";
@@ -226,7 +223,7 @@ class PpStructured final : public Structured {
   // A word's value (P-9.3): a constant, R<m> or -R<m>, else a scratch parameter.
   std::string word_value(ir::ExprId id, char letter) {
     const ir::Expr& e = p_->exprs[bare(id)];
-    if (auto v = constant(id)) {
+    if (auto v = constant_of(id)) {
       const OutWord word{letter, *v, kind_of(letter)};
       if (auto why = w_.unwritable(word)) fail(e.range, *why);
       return w_.number(word);
@@ -247,18 +244,7 @@ class PpStructured final : public Structured {
     }
   }
 
-  ir::ExprId bare(ir::ExprId id) const {
-    while (p_->exprs[id].op == ir::ExprOp::ZeroIfVacant || p_->exprs[id].op == ir::ExprOp::Check) id = p_->exprs[id].a;
-    return id;
-  }
 
-  std::optional<double> constant(ir::ExprId id) const {
-    const ir::Expr& e = p_->exprs[bare(id)];
-    if (e.op == ir::ExprOp::Number) return e.number;
-    if (e.op == ir::ExprOp::Neg)
-      if (auto a = constant(e.a)) return -*a;
-    return std::nullopt;
-  }
 
   // R<m> or -R<m>: what a word or an R word takes as its value.
   std::optional<std::string> plain(ir::ExprId id) {
@@ -284,7 +270,7 @@ class PpStructured final : public Structured {
     const ir::Expr& e = p_->exprs[bare(id)];
     // An R word takes a constant or ±R<m> (P-9.3): it goes into the block's words,
     // which pp evaluates first (P-9.5).
-    if (auto v = constant(id)) {
+    if (auto v = constant_of(id)) {
       if (std::fabs(*v) > kLimit || std::fabs(*v * 1000 - std::round(*v * 1000)) > 1e-6)
         return fail(e.range, fmt::format("{}: pp's R holds thousandths within ±69999.999", exact(*v, false)));
       return r_word(fmt::format("{} {}", r, exact(*v, false)), in_block);
@@ -295,7 +281,7 @@ class PpStructured final : public Structured {
     }
     flush_r_words();  // a formula reads the values set before it
     auto operand = [&](ir::ExprId x) -> std::string {
-      if (auto v = constant(x)) return exact(*v, false);
+      if (auto v = constant_of(x)) return exact(*v, false);
       if (auto p = plain(x)) return *p;
       const std::string t = scratch(e.range);
       store(t, x);
@@ -309,7 +295,7 @@ class PpStructured final : public Structured {
       flush_r_words();
       line(fmt::format("{} {} {}", code, r, second));
     };
-    auto whole = [&](ir::ExprId x) { auto v = constant(x); return v && *v == std::trunc(*v); };
+    auto whole = [&](ir::ExprId x) { auto v = constant_of(x); return v && *v == std::trunc(*v); };
     switch (e.op) {
       case ir::ExprOp::Add: return formula("G26", e.a, e.b);
       case ir::ExprOp::Sub: return formula("G27", e.a, e.b);
@@ -352,7 +338,6 @@ class PpStructured final : public Structured {
   std::map<std::string, uint32_t> mapped_;
   std::vector<std::pair<uint32_t, std::string>> legend_;
   uint32_t next_r_ = 0, scratch_used_ = 0;
-  ir::ExprId last_target_ = 0;
   std::string count_ = "1";  // the Q of pp's own G73 being written
   struct Loop {
     int count;
