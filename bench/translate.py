@@ -6,7 +6,7 @@
 
 For each source dialect, a program of N plain blocks (bench/gen.py, default 10^6) is
 compiled (`ncc compile`, the reference) and flattened to each target (with
---structured: translated structured, to iso and linuxcnc); the table gives
+--structured: translated structured); the table gives
 wall time, blocks per second and peak RSS of each, and the translation's RSS over the
 compile's (the issue's bound: no more than compiling it). Python 3 standard library.
 """
@@ -44,8 +44,6 @@ def main():
             rows.append([f"{dialect} compile", compare.fmt_s(ref), compare.fmt_rate(args.plain / ref.wall),
                          f"{compare.mb(ref.rss):.1f} MB", "1.00"])
             for target in args.targets.split(","):
-                if args.structured and target not in ("iso", "linuxcnc"):
-                    continue
                 mode = [] if args.structured else ["--flatten"]
                 r = compare.measure([args.ncc, "translate"] + opts + ["--to", target] + mode + [str(program),
                                                                      "-o", str(out / f"t.{target}")], args.repeat)

@@ -6,7 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
-#include <set>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -98,7 +98,7 @@ class PpWriter final : public Writer {
     if (words.starts_with('N') && words.size() > 1 && std::isdigit(static_cast<unsigned char>(words[1]))) {
       at = words.find(' ');
       line = std::string(words.substr(0, at));
-      taken_.insert(std::stoul(line.substr(1)));
+      take(std::stoul(line.substr(1)));
     } else {
       line = next_number();
     }
@@ -119,7 +119,7 @@ class PpWriter final : public Writer {
   std::string inline_comment(std::string_view t) const override { return '"' + text(t) + '"'; }
 
   long fresh_number() override { return std::stol(next_number().substr(1)); }
-  void reserve_number(long n) override { taken_.insert(static_cast<unsigned long>(n)); }
+  void reserve_number(long n) override { take(static_cast<unsigned long>(n)); }
 
   void end() override {
     if (ended_) return;
@@ -165,7 +165,7 @@ class PpWriter final : public Writer {
 
   // §2.2.1 d: every block begins with N (8), each number once in the file.
   std::string next_number() {
-    while (taken_.count(block_number_)) block_number_ += kStep;  // a structured translation's own numbers
+    while (block_number_ < taken_.size() && taken_[block_number_]) block_number_ += kStep;  // a structured translation's own
     std::string n = fmt::format("N{}", block_number_);
     block_number_ += kStep;  // past 99999999 the program is no longer pp
     return n;
@@ -252,7 +252,12 @@ class PpWriter final : public Writer {
   }
 
   uint32_t block_number_ = kStep;
-  std::set<unsigned long> taken_;  // numbers the lines gave themselves
+  // Numbers the lines gave themselves: a bit each, up to the highest (1 MB for N10^7).
+  std::vector<bool> taken_;
+  void take(unsigned long n) {
+    if (n >= taken_.size()) taken_.resize(n + 1);
+    taken_[n] = true;
+  }
   std::optional<size_t> open_;  // the bytes of the block being written (none before the first)
   bool main_ended_ = false;  // a block with M02 or M30 is written
   bool ended_ = false;
