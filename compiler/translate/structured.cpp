@@ -459,7 +459,7 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
     }
   }
   const char to = static_cast<char>('I' + axis);
-  words.push_back(to + (v ? w_.number({to, *v, Value::Length}) : value(w.value, to)));
+  words.push_back(to + (v ? number({to, *v, Value::Length}, w.range) : value(w.value, to)));
 }
 
 void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start,
@@ -485,7 +485,7 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
       return fail(first.range, "an arc centre from the start point, where the arc's start is not known (after a label, a "
                                "call or a computed move)");
     centre_[axis] = *start[axis] + *v;
-    out.push_back(to + w_.number({to, *centre_[axis], Value::Length}));
+    out.push_back(to + number({to, *centre_[axis], Value::Length}, first.range));
   }
 }
 
@@ -523,6 +523,17 @@ std::optional<double> Structured::constant_of(ir::ExprId id) const {
   if (e.op == ir::ExprOp::Neg)
     if (auto a = constant_of(e.a)) return -*a;
   return std::nullopt;
+}
+
+// A constant as the target writes it. A length with more decimals than the target
+// writes is rounded to its step, with a warning (once): CAM output's fourth decimal
+// into GOST or pp.
+std::string Structured::number(const OutWord& w, SourceRange at) {
+  const double step = w_.resolution();
+  if ((w.kind == Value::Length || w.kind == Value::Angle) && step > 0 &&
+      std::fabs(std::round(w.value / step) * step - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
+    problems.push_back({at, "rounded", Problem::Rounded});
+  return w_.number(w);
 }
 
 // Without the checks the source's reads make (a vacant value, a range).
@@ -1228,8 +1239,12 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   for (const std::string& what : order) {
     const auto& [p, more] = seen.at(what);
     const std::string text = what + (more ? fmt::format(" (and in {} more places)", more) : "");
-    s.diags.report(p->dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
-    refused |= !p->dropped;
+    if (p->kind == Problem::Rounded)
+      s.diags.report(DiagId::TranslateRounded, p->at, writer->dialect(), static_cast<int>(std::lround(-std::log10(writer->resolution()))),
+                     more ? fmt::format("this length and {} more are", more) : std::string("this length is"));
+    else
+      s.diags.report(p->kind == Problem::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
+    refused |= p->kind == Problem::Refused;
   }
   if (refused || streamer.spill.failed) return false;
   return translation->emit(streamed.get(), out) && s.diags.error_count() == errors;

@@ -134,7 +134,7 @@ class GostStructured final : public Structured {
     }
     const OutWord word{letter, *v, kind_of(letter)};
     if (auto why = w_.unwritable(word)) fail(e.range, *why);
-    return w_.number(word);
+    return number(word, e.range);
   }
 
   Value kind_of(char letter) const {

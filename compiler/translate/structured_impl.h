@@ -20,12 +20,13 @@
 
 namespace ncc::translate {
 
-// What the target cannot say (refused), or says otherwise than the source without
-// changing the path (dropped: a warning).
+// What the target cannot say (refused), says otherwise than the source without
+// changing the path (dropped: a warning), or writes to its step (rounded: a warning).
 struct Problem {
+  enum Kind : uint8_t { Refused, Dropped, Rounded };
   SourceRange at;
   std::string what;
-  bool dropped = false;
+  Kind kind = Refused;
 };
 
 class Structured {
@@ -115,7 +116,7 @@ class Structured {
   void forget();  // the state the text says is not known any more (a label, a call)
   bool ends_program(const ir::Unit& u) const;
   void fail(SourceRange at, std::string what) { problems.push_back({at, std::move(what)}); }
-  void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), true}); }
+  void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), Problem::Dropped}); }
 
   struct Code {
     char letter;
@@ -129,6 +130,7 @@ class Structured {
   bool is_whole(ir::ExprId id) const;
   std::optional<double> constant_of(ir::ExprId id) const;
   ir::ExprId bare(ir::ExprId id) const;
+  std::string number(const OutWord& w, SourceRange at);
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's

@@ -403,7 +403,7 @@ class Nc110Structured final : public Structured {
     if (auto v = constant_of(id)) {
       OutWord word{letter, *v, kind_of(letter)};
       if (auto why = w_.unwritable(word)) fail(e.range, *why);
-      return w_.number(word);
+      return number(word, e.range);
     }
     std::vector<Class> takes;
     if (address != w_.tables().addresses.end())

@@ -226,7 +226,7 @@ class PpStructured final : public Structured {
     if (auto v = constant_of(id)) {
       const OutWord word{letter, *v, kind_of(letter)};
       if (auto why = w_.unwritable(word)) fail(e.range, *why);
-      return w_.number(word);
+      return number(word, e.range);
     }
     if (auto r = plain(id)) return *r;
     const std::string r = scratch(e.range);
