@@ -106,6 +106,7 @@ void Structured::begin_main() {
   in_main_ = true;
   spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
   rpm_ = true;  // a cutting speed needs its code (G96)
+  tool_selected_ = tool_loaded_ = 0;  // no tool in the spindle
   corrector_ = 0;
   state(power_on());
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
@@ -242,6 +243,8 @@ void Structured::line(std::string text) {
 void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
   spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
+  tool_selected_.reset();
+  tool_loaded_.reset();
   position_ = {};
   incremental_.reset();
   corrector_.reset();
@@ -289,6 +292,11 @@ void Structured::translated_machine() {
   if (src_.corrector_in_tool_word)  // before M06 of the same block
     for (const ir::Word& w : block_->words)
       if (w.kind == ir::WordKind::Parameter && w.address[0] == 'T') corrector(w);
+  for (const ir::Word& w : block_->words)
+    if (w.kind == ir::WordKind::Parameter && w.address == "T") {
+      const auto t = constant_of(w.value);
+      tool_selected_ = t ? std::optional<int>(static_cast<int>(*t)) : std::nullopt;
+    }
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Code) code(w, codes);
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
@@ -569,6 +577,42 @@ std::string Structured::length_offset(SourceRange at) {
   return *corrector_ ? fmt::format("{} H{}", code->text(), *corrector_) : code->text();
 }
 
+// ISO's M06 as the target's blocks (pp: M05, M09, G30 Z0, then its M06): what ISO's
+// does first when it changes the tool (§8.31), said where the text knows that it
+// does (another tool than the one in the spindle, the spindle, the coolant and the
+// plane known) and the block does not move. True when written.
+bool Structured::iso_tool_change() {
+  const auto reference = target_code({{Fn::MotionReference}}, Scope::Block);
+  // A block of M06 alone (and T): another code would act before or after the change
+  // as the target orders them, not as ISO does.
+  const bool moves = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+    return (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos) ||
+           (w.kind == ir::WordKind::Code && (w.code < 0 || p_->semantics.codes[static_cast<size_t>(w.code)].calls !=
+                                                                std::vector<FnCall>{{Fn::ToolChange}}));
+  });
+  if (!reference || moves || !plane_ || !tool_selected_ || !tool_loaded_ || *tool_selected_ == *tool_loaded_ ||
+      !spindle_on_ || !coolant_on_)
+    return false;
+  std::vector<std::string> before;
+  if (*spindle_on_) {
+    auto stop = target_code({{Fn::SpindleStop}}, Scope::Modal);
+    if (!stop) stop = code_doing_more({{Fn::SpindleStop}}, Scope::Modal);
+    if (!stop) return false;
+    before.push_back(stop->text());
+  }
+  if (*coolant_on_) {
+    auto off = target_code({{Fn::CoolantOff}}, Scope::Modal);
+    if (!off) return false;
+    before.push_back(off->text());
+  }
+  for (const std::string& code : before) write_words({code});
+  const char axis = *plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X';  // the plane's normal
+  write_words({reference->text(), std::string(1, axis) + "0"});
+  spindle_on_ = coolant_on_ = false;
+  position_[static_cast<size_t>(axis - 'X')].reset();
+  return true;
+}
+
 // What the blocks so far leave the spindle, the coolant and the plane in, where the
 // text alone says: not after a label a jump goes to, nor after a call.
 void Structured::state(const std::vector<FnCall>& calls) {
@@ -603,15 +647,16 @@ void Structured::state(const std::vector<FnCall>& calls) {
           fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s does not",
                                           spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect, w_.dialect()));
         if (src_.tool_change_iso && !dst_.tool_change_iso) {
-          if (src_.tool_change_retract)
+          if (src_.tool_change_retract && !iso_tool_change())
             fail(block_->range, fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, {}'s "
                                             "does not (a machine that changes tools in place says iso.tool_change_retract "
                                             "= false)", p_->dialect, w_.dialect()));
-          else if (spindle_on_ != false || coolant_on_ != false)
+          else if (!src_.tool_change_retract && (spindle_on_ != false || coolant_on_ != false))
             fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s "
                                             "does not", spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on",
                                             p_->dialect, w_.dialect()));
         }
+        tool_loaded_ = tool_selected_;
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
         if (dst_.tool_change_iso && !src_.tool_change_iso && (spindle_on_ != false || coolant_on_ != false))

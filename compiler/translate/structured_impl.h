@@ -131,6 +131,7 @@ class Structured {
   std::optional<double> constant_of(ir::ExprId id) const;
   ir::ExprId bare(ir::ExprId id) const;
   std::string number(const OutWord& w, SourceRange at);
+  bool iso_tool_change();
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's
@@ -203,6 +204,7 @@ class Structured {
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
   std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
   std::optional<bool> rpm_;           // the spindle speed is in rpm (not a cutting speed)
+  std::optional<int> tool_selected_, tool_loaded_;  // by T, and in the spindle
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   Position position_;                  // X Y Z where the text leaves them
