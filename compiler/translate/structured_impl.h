@@ -2,7 +2,9 @@
 // unit and block by block and writes each block's machine words, assignments and
 // expressions; a target's subclass says how its programs are laid out and how they
 // jump, repeat and call (structured_iso.cpp: block numbers and GOTO;
-// structured_ngc.cpp: LinuxCNC's o-words).
+// structured_ngc.cpp: LinuxCNC's o-words; structured_nc110.cpp: labels, branches,
+// RPT and EPP; structured_pp.cpp: R words, G26-G29, G73 and G71;
+// structured_gost.cpp: loops and calls written out).
 #pragma once
 
 #include <array>
