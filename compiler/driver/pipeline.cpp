@@ -422,9 +422,13 @@ std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::stri
 }
 
 std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect) {
+  return s.profile ? power_on_functions(s, dialect, *s.profile) : std::vector<FnCall>{};
+}
+
+std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect, const stdlib::Profile& profile) {
   std::vector<FnCall> calls;
   Diagnostics quiet(0);
-  auto frontend = s.profile ? make_frontend(dialect, *s.profile, quiet) : nullptr;
+  auto frontend = make_frontend(dialect, profile, quiet);
   if (!frontend) return calls;
   const uint32_t empty = s.sources.add("<power-on>", "");
   const ir::Program program = frontend->read(s.sources, empty, quiet, {s.library, s.fast_path, nullptr, s.processes});

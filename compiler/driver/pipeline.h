@@ -71,6 +71,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
 std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect);
 // The power-on functions of a dialect with the session's profile (an empty program's).
 std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect);
+std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect, const stdlib::Profile& profile);
 // Runs the module with a null trace, reporting what the runtime finds.
 void dry_run(Session& s, const vm::Module& module, const RunSettings& settings);
 // Loads a bytecode file (and registers its source files for diagnostics).

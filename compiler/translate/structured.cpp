@@ -13,6 +13,7 @@
 #include "stdlib/profile.h"
 #include "structured_impl.h"
 #include "support/numbers.h"
+#include "support/text.h"
 
 namespace ncc::translate {
 namespace {
@@ -99,6 +100,77 @@ void Structured::stream(const ir::Program& program, const ir::Block& b) {
   block(b);
 }
 
+// The functions of the main program's leading blocks, up to the first that moves,
+// computes, jumps or calls, or may be skipped: the start need not set their groups.
+void Structured::lead(const ir::Block& b) {
+  in_lead_ = false;
+  if (!lead_open_) return;
+  const bool plain = !b.skippable && std::all_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
+    return s.cond == ir::kNoExpr && (s.kind == ir::StmtKind::Machine || s.kind == ir::StmtKind::Comment);
+  });
+  const bool moves = std::any_of(b.words.begin(), b.words.end(), [&](const ir::Word& w) {
+    return (w.kind == ir::WordKind::Code && w.code < 0) ||
+           (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos);
+  });
+  lead_before_ = lead_.size();
+  if (!plain) {
+    lead_open_ = false;
+    return;
+  }
+  in_lead_ = true;
+  for (const ir::Word& w : b.words)
+    lead_feed_ |= w.kind == ir::WordKind::Parameter && w.address == "F";
+  for (const ir::Word& w : b.words)
+    if (w.kind == ir::WordKind::Code && w.code >= 0) {
+      const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
+      if (!moves || desc.timing != Timing::After)  // a code acting after the first move is too late
+        lead_.insert(lead_.end(), desc.calls.begin(), desc.calls.end());
+    }
+  lead_open_ = !moves;
+}
+
+// Whether the target machine is in c's state when the program starts: its power-on
+// has c, or c is where every machine starts (the spindle stopped, the coolants off,
+// the overrides on, no spindle range forced: the range follows S; its clamps as the
+// machine has them, which a target without a clamp state at power-on does not claim
+// otherwise).
+bool Structured::at_power_on(const FnCall& c) const {
+  if (!target_power_on_) return false;
+  switch (c.fn) {
+    case Fn::SpindleStop: case Fn::CoolantOff: case Fn::OverrideEnable: case Fn::SpindleRangeCancel:
+    case Fn::SpindleRangeAuto:
+      return true;
+    case Fn::ClampOff: case Fn::ClampRotaryOff:
+      return std::none_of(target_power_on_->begin(), target_power_on_->end(), [&](const FnCall& o) { return fn_group(o.fn) == fn_group(c.fn); });
+    default: break;
+  }
+  if (std::find(target_power_on_->begin(), target_power_on_->end(), c) != target_power_on_->end()) return true;
+  // A work offset of zero where the target starts in another of zero, or in none.
+  if (c.fn != Fn::WorkOffset) return false;
+  auto zero = [&](int n) {
+    const auto it = target_.work_offsets.find(n);
+    return it == target_.work_offsets.end() || std::all_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v == 0; });
+  };
+  int start = 0;
+  for (const FnCall& o : *target_power_on_)
+    if (o.fn == Fn::WorkOffset) start = o.arg;
+  return zero(c.arg) && zero(start);
+}
+
+// Whether the start writes c: the target does not start so, and the program's
+// leading blocks do not set it before it matters.
+bool Structured::start_needs(const FnCall& c) const {
+  auto sets = [&](const FnCall& o) { return o == c || (fn_group(c.fn) != FnGroup::None && fn_group(o.fn) == fn_group(c.fn)); };
+  return !at_power_on(c) && std::none_of(lead_.begin(), lead_.end(), sets);
+}
+
+// ... and the program's leading blocks before this one have not changed it.
+bool Structured::still_at_power_on(const FnCall& c) const {
+  if (!in_lead_ || !in_main_) return false;
+  auto sets = [&](const FnCall& o) { return o == c || (fn_group(c.fn) != FnGroup::None && fn_group(o.fn) == fn_group(c.fn)); };
+  return at_power_on(c) && std::none_of(lead_.begin(), lead_.begin() + static_cast<long>(lead_before_), sets);
+}
+
 // The main program's state at power-on, as far as the text says.
 void Structured::begin_main() {
   in_main_ = false;  // nothing is forgotten before the program starts
@@ -121,21 +193,38 @@ void Structured::translate(const ir::Program& program, const Header& header) {
   attach(program);
   body();
   text_ = w_.take();
-  w_.begin(header);
+  Header h = header;
+  for (const std::string& c : title_comments_) h.title += (h.title.empty() ? "" : " ") + c;
+  h.title = own_title(h.title);
+  w_.begin(h);
+  const size_t begun = w_.pending();
   if (!same_) start();  // last: it sets what the program uses
+  start_empty_ = w_.pending() == begun;
   head_ = w_.take();
 }
 
 bool Structured::emit(std::FILE* streamed, std::FILE* out) {
+  bool ok = std::fwrite(head_.data(), 1, head_.size(), out) == head_.size();
+  // The first block the program writes, where the start wrote none: what the target
+  // puts before it (GOST's N1).
+  bool first = start_empty_;
+  auto put = [&](const char* data, size_t n) {
+    if (first && n > 0) {
+      first = false;
+      const std::string before = first_block_prefix(data[0]);
+      ok = ok && std::fwrite(before.data(), 1, before.size(), out) == before.size();
+    }
+    ok = ok && std::fwrite(data, 1, n, out) == n;
+  };
   // The streamed blocks stand where the main program's others begin.
   const size_t at = std::min(main_at_, text_.size());
-  bool ok = std::fwrite(head_.data(), 1, head_.size(), out) == head_.size() && std::fwrite(text_.data(), 1, at, out) == at;
+  put(text_.data(), at);
   if (streamed) {
     std::rewind(streamed);
     char buffer[1 << 16];
-    for (size_t n; ok && (n = std::fread(buffer, 1, sizeof buffer, streamed)) > 0;) ok = std::fwrite(buffer, 1, n, out) == n;
+    for (size_t n; ok && (n = std::fread(buffer, 1, sizeof buffer, streamed)) > 0;) put(buffer, n);
   }
-  ok = ok && std::fwrite(text_.data() + at, 1, text_.size() - at, out) == text_.size() - at;
+  put(text_.data() + at, text_.size() - at);
   w_.end();
   const std::string tail = w_.take();
   return ok && std::fwrite(tail.data(), 1, tail.size(), out) == tail.size();
@@ -177,9 +266,17 @@ bool Structured::ends_program(const ir::Unit& u) const {
 // before it) and the block's comments.
 bool Structured::block(const ir::Block& b) {
   if (program_ended_ && in_main_ && !reads_after_end()) return false;
+  // Comment blocks before the main program's first block: its title, on the line
+  // that starts the target's program (an NC-110 comment block takes a block cycle).
+  if (in_main_ && !main_begun_ && b.words.empty() && b.stmts.empty() && !b.number && !b.comments.empty() && title_line()) {
+    for (const std::string& c : b.comments)
+      if (auto text = trim(c); !text.empty()) title_comments_.emplace_back(text);
+    return false;
+  }
   block_ = &b;
   words_written_ = false;
   skip_ = b.skippable;
+  if (in_main_) lead(b);
   if (std::any_of(b.words.begin(), b.words.end(), [](const ir::Word& w) { return w.optional; }))
     fail(b.range, "a '/' in the middle of a block");
   // Operator text (GOST's comments) or the block's comments, on its first line.
@@ -220,6 +317,7 @@ void Structured::statement(const ir::Stmt& s) {
 }
 
 void Structured::line(std::string text) {
+  main_begun_ |= in_main_;
   std::string head = std::exchange(label_, {});
   if (pending_number_) head += (head.empty() ? "" : " ") + fmt::format("{}{}", main_number_ ? ':' : 'N', *pending_number_);
   pending_number_.reset();  // a skipped block's lines all start with '/'
@@ -297,8 +395,18 @@ void Structured::translated_machine() {
       const auto t = constant_of(w.value);
       tool_selected_ = t ? std::optional<int>(static_cast<int>(*t)) : std::nullopt;
     }
-  for (const ir::Word& w : block_->words)
-    if (w.kind == ir::WordKind::Code) code(w, codes);
+  const std::vector<std::optional<Mapped>> merged = merge_codes();
+  for (size_t i = 0; i < block_->words.size(); ++i)
+    if (block_->words[i].kind == ir::WordKind::Code && merged[i]) {
+      if (merged[i]->code.entry) codes.push_back(*merged[i]);
+    } else if (block_->words[i].kind == ir::WordKind::Code) {
+      code(block_->words[i], codes);
+    }
+  // A code two words map to (GOST's M05 M09: pp's M05 M09, and M09 again), once.
+  for (size_t i = 0; i < codes.size(); ++i)
+    for (size_t j = codes.size() - 1; j > i; --j)
+      if (codes[j].code.letter == codes[i].code.letter && codes[j].code.number == codes[i].code.number && codes[j].later.empty())
+        codes.erase(codes.begin() + static_cast<long>(j));
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
   const auto start = position_;  // where the block's arc starts
   // ISO's, GOST's and pp's centre along X Y Z, from the start: NC-110's two words of
@@ -316,7 +424,7 @@ void Structured::translated_machine() {
       if (src_.corrector_in_tool_word && !dst_.corrector_in_tool_word && w.address == "T'") continue;
       if (origin_words_) continue;  // UAO's operands: the work offset says them
       if (!reads_source_words() && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K' &&
-          (src_.arc_centre != dst_.arc_centre || src_.centre_words != dst_.centre_words))
+          !cycle_word(w.address[0]) && (src_.arc_centre != dst_.arc_centre || src_.centre_words != dst_.centre_words))
         centre(w, start, params);
       else
         parameter(w, params);
@@ -325,6 +433,7 @@ void Structured::translated_machine() {
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
   if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
     plane_centre(centre_words, start, params);
+  absolute_centre(start, params);
   arc_on_circle(start);
   auto conflict = [&](const Mapped& a) {
     return std::any_of(codes.begin(), codes.end(), [&](const Mapped& b) {
@@ -402,6 +511,37 @@ void Structured::translated_machine() {
   write_words(later);
 }
 
+// Two codes of the block whose functions together are one code of the target, which
+// has no code for one of them alone: that code (pp's M05 M09: GOST's M05, which also
+// ends the coolants), at the first word's place; the second's place holds no code.
+std::vector<std::optional<Structured::Mapped>> Structured::merge_codes() {
+  std::vector<std::optional<Mapped>> merged(block_->words.size());
+  if (reads_source_words()) return merged;
+  auto desc_of = [&](size_t i) -> const CodeDesc* {
+    const ir::Word& w = block_->words[i];
+    if (w.kind != ir::WordKind::Code || w.code < 0 || merged[i]) return nullptr;
+    const CodeDesc& d = p_->semantics.codes[static_cast<size_t>(w.code)];
+    const bool plain = !d.calls.empty() && std::none_of(d.calls.begin(), d.calls.end(), [](const FnCall& c) {
+      return c.fn == Fn::Cycle || c.fn == Fn::OriginSelect;
+    });
+    return plain ? &d : nullptr;
+  };
+  for (size_t i = 0; i < merged.size(); ++i)
+    for (size_t j = i + 1; j < merged.size(); ++j) {
+      const CodeDesc* a = desc_of(i);
+      const CodeDesc* b = desc_of(j);
+      if (!a || !b || a->scope != b->scope || a->timing != b->timing) continue;
+      if (exact_code(a->calls, a->scope) && exact_code(b->calls, b->scope)) continue;
+      std::vector<FnCall> both = a->calls;
+      both.insert(both.end(), b->calls.begin(), b->calls.end());
+      if (auto one = exact_code(both, a->scope)) {
+        merged[i] = Mapped{*one, a->timing, one->entry->desc.timing, one->entry->conflict_sets, {}};
+        merged[j] = Mapped{{0, 0, nullptr}, {}, {}, {}, {}};
+      }
+    }
+  return merged;
+}
+
 // NC-110's (UAO,n): origin n on every axis it declares. It is the target's work
 // offset n (G54 for 1) where origin n declares every axis of the target machine and
 // no axis is listed: otherwise an axis would keep its origin in NC-110, not in ISO.
@@ -466,8 +606,44 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
       *v -= *start[static_cast<size_t>(axis)];
     }
   }
+  if (src_.arc_centre == ArcCentre::Incremental && dst_.arc_centre == ArcCentre::Absolute && src_.centre_words == dst_.centre_words) {
+    if (!incremental_) return fail(w.range, fmt::format("the arc centre {} where G90 or G91 is not known", letter));
+    if (!*incremental_) {  // from the origin in the target
+      if (!v) return fail(w.range, fmt::format("the arc centre {} given by a parameter, from the origin", letter));
+      if (!start[static_cast<size_t>(axis)])
+        return fail(w.range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
+                                         "a label, a call or a computed move)", letter));
+      *v += *start[static_cast<size_t>(axis)];
+    }
+  }
   const char to = static_cast<char>('I' + axis);
   words.push_back(to + (v ? number({to, *v, Value::Length}, w.range) : value(w.value, to)));
+}
+
+// An arc's centre word the source leaves out (0 from the start) where the target
+// reads the centre from the origin (GOST's arc_center = "absolute" under G90): the
+// start's coordinate.
+void Structured::absolute_centre(const Position& start, std::vector<std::string>& words) {
+  if (reads_source_words() || src_.arc_centre != ArcCentre::Incremental || dst_.arc_centre != ArcCentre::Absolute ||
+      src_.centre_words != CentreWords::PerAxis || dst_.centre_words != CentreWords::PerAxis || incremental_ != false || !plane_)
+    return;
+  std::array<bool, 3> given{};
+  const ir::Word* any = nullptr;
+  for (const ir::Word& w : block_->words)
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K') {
+      given[static_cast<size_t>(w.address[0] - 'I')] = true;
+      any = &w;
+    }
+  if (!any) return;  // a block without a centre word: no arc, or an R arc
+  const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
+  for (const int axis : {kPlanes[plane].u, kPlanes[plane].v}) {
+    if (given[static_cast<size_t>(axis)]) continue;
+    const char to = static_cast<char>('I' + axis);
+    if (!start[static_cast<size_t>(axis)])
+      return fail(any->range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
+                                          "a label, a call or a computed move)", to));
+    words.push_back(to + number({to, *start[static_cast<size_t>(axis)], Value::Length}, any->range));
+  }
 }
 
 void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start,
@@ -518,7 +694,9 @@ void Structured::track(const ir::Word& w) {
   if (w.address.size() != 1 || w.address[0] < 'X' || w.address[0] > 'Z') return;
   auto& axis = position_[static_cast<size_t>(w.address[0] - 'X')];
   const auto v = constant_of(w.value);
-  if (!v || !incremental_) axis.reset();
+  // A cycle's depth is no position: the tool comes back to a level the text may not say.
+  const bool depth = cycle_on_ != false && (!plane_ || w.address[0] == (*plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X'));
+  if (!v || !incremental_ || depth) axis.reset();
   else if (!*incremental_) axis = *v;
   else if (axis) *axis += *v;
 }
@@ -682,10 +860,13 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
       // ISO's, words and all): the cycle of the same name.
       // Another dialect's cycle whose words read alike (GOST 20999's R, Q, P and the
       // depth on the plane's normal, as ISO's): the target's of the same pattern.
+      // Another dialect's cycle of one level, whose block drills (ISO's, GOST 20999's,
+      // pp's): the target's of the same pattern, the level, peck and dwell words
+      // renamed (parameter()): ISO's R Q P are pp's K I and Q in 10 ms.
       const CyclePattern& pattern = p_->semantics.cycles[c.arg];
-      const bool alike = src_.cycle_level_word == dst_.cycle_level_word && src_.peck_word == dst_.peck_word &&
-                         src_.dwell_word == dst_.dwell_word && src_.dwell_seconds_per_unit == dst_.dwell_seconds_per_unit &&
-                         !src_.cycle_two_levels && !src_.cycle_defines_only && !dst_.cycle_two_levels && !dst_.cycle_defines_only;
+      const bool alike = !src_.cycle_two_levels && !src_.cycle_defines_only && !dst_.cycle_two_levels &&
+                         !dst_.cycle_defines_only && dst_.cycle_level_word && (!src_.peck_word || dst_.peck_word) &&
+                         (!src_.dwell_word || dst_.dwell_word);
       if (!reads_source_words() && !alike)
         return fail(w.range, fmt::format("canned cycle {}: its words read otherwise in {}; --flatten writes its moves",
                                          desc.name, w_.dialect()));
@@ -732,6 +913,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
     else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
     else if (c.fn == Fn::UnitsMm && !target_code({{Fn::UnitsInch}}, Scope::Modal)) continue;  // pp: mm always
+    else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal)) continue;  // ISO: rpm always
+    else if (still_at_power_on(c)) continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)
     // NC-110's M06 applies the T word's corrector: corrector 0 is no length offset.
     else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false) continue;
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
@@ -891,6 +1074,11 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
       return fail(w.range, fmt::format("axis {}: the target machine has axes {}", letter, dst_.axes));
     return write(letter);
   }
+  if (const char to = cycle_word(letter)) {
+    if (letter == src_.dwell_word) return dwell(w, words);
+    if (to == '-') return fail(w.range, fmt::format("a repeat count {} of a canned cycle: {} makes one hole a block", letter, w_.dialect()));
+    return write(to);
+  }
   switch (letter) {
     case 'F': case 'S': case 'T': return write(letter);
     case 'I': case 'J': case 'K':
@@ -911,22 +1099,31 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
     default: break;
   }
   if (letter == src_.radius_word && letter == dst_.radius_word) return write(letter);
-  // A cycle's level and peck, in a block where a cycle is on (ISO's R is a radius
-  // elsewhere).
-  if (cycle_on_ == true && ((letter == src_.cycle_level_word && letter == dst_.cycle_level_word) ||
-                            (letter == src_.peck_word && letter == dst_.peck_word)))
-    return write(letter);
-  if (letter == src_.dwell_word && dst_.dwell_word) {
-    const double factor = src_.dwell_seconds_per_unit / dst_.dwell_seconds_per_unit;
-    const ir::Expr& e = p_->exprs[w.value];
-    if (e.op == ir::ExprOp::Number)
-      if (auto why = w_.unwritable({dst_.dwell_word, e.number * factor, Value::Seconds})) return fail(w.range, *why);
-    words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? w_.number({dst_.dwell_word, e.number * factor, Value::Seconds})
-                                       : factor == 1              ? value(w.value, 'P')
-                                                                  : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
-    return;
-  }
+  if (letter == src_.dwell_word && dst_.dwell_word) return dwell(w, words);
   fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
+}
+
+// The target's letter of a canned cycle's level, peck or dwell word, in a block where a
+// cycle is on (ISO's R is a radius elsewhere, pp's K a centre); '-' for ISO's
+// repeat count, which the target has not; 0 for another word.
+char Structured::cycle_word(char letter) const {
+  if (cycle_on_ != true || !letter) return 0;
+  if (letter == src_.cycle_level_word) return dst_.cycle_level_word;
+  if (letter == src_.peck_word) return dst_.peck_word;
+  if (letter == src_.dwell_word) return dst_.dwell_word;
+  if (src_.cycle_repeat_words.find(letter) != std::string::npos && dst_.cycle_repeat_words.empty()) return '-';
+  return 0;
+}
+
+// A dwell's time in the target's unit (pp's 10 ms).
+void Structured::dwell(const ir::Word& w, std::vector<std::string>& words) {
+  const double factor = src_.dwell_seconds_per_unit / dst_.dwell_seconds_per_unit;
+  const ir::Expr& e = p_->exprs[w.value];
+  if (e.op == ir::ExprOp::Number)
+    if (auto why = w_.unwritable({dst_.dwell_word, e.number * factor, Value::Seconds})) return fail(w.range, *why);
+  words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? w_.number({dst_.dwell_word, e.number * factor, Value::Seconds})
+                                     : factor == 1              ? value(w.value, dst_.dwell_word)
+                                                                : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
 }
 
 // --- parameters and expressions -----------------------------------------------------------
@@ -1135,8 +1332,10 @@ void Structured::start() {
   std::vector<Code> g, m;
   std::vector<FnCall> modes = power_on();
   start_modes(modes);
+  // A mode the target machine starts in, or one the program's leading blocks set
+  // before it matters, is not written: a second translation adds nothing.
   for (const FnCall& c : modes)
-    if (auto code = target_code({c}, Scope::Modal); code && !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
+    if (auto code = target_code({c}, Scope::Modal); code && start_needs(c) && !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
       auto& list = code->letter == 'G' ? g : m;
       if (std::none_of(list.begin(), list.end(), [&](const Code& o) { return o.number == code->number; }))
         list.push_back(*code);
@@ -1149,7 +1348,7 @@ void Structured::start() {
   for (const Code& c : m) w_.line(c.text());
   // A machine that starts with a feed (iso.initial_feed) where the target's starts
   // with another.
-  if (src_.initial_feed > 0 && dst_.initial_feed != src_.initial_feed) w_.line("F" + w_.number({'F', src_.initial_feed, Value::Feed}));
+  if (src_.initial_feed > 0 && dst_.initial_feed != src_.initial_feed && !lead_feed_) w_.line("F" + w_.number({'F', src_.initial_feed, Value::Feed}));
   start_offset();
   start_parameters();
 }
@@ -1247,6 +1446,7 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   };
   auto translation = make();
   translation->set_power_on(power_on_functions(s, dialect));
+  if (request.to != "linuxcnc") translation->set_target_power_on(power_on_functions(s, request.to, *request.target_profile));
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> streamed(std::tmpfile(), &std::fclose);
   if (!streamed) {
     s.diags.report(DiagId::FileUnwritable, {}, std::string("a temporary file"), std::strerror(errno));

@@ -88,6 +88,13 @@ class GostStructured final : public Structured {
   void close_unit(const ir::Unit&, bool, bool) override {}
   void before_block(size_t i) override { pending_number_ = number_of(unit_->blocks[i]); }
 
+  // §1.4: the first block carries its number; N1 is the start's (last_number_).
+  std::string first_block_prefix(char first) override {
+    if (first == 'N' || first == ':' || same_ || w_.unwritable({'N', 1, Value::Count})) return {};
+    w_.reserve_number(1);  // the end's M02 comes after it
+    return "N" + w_.number({'N', 1, Value::Count}) + " ";
+  }
+
   bool verbatim() const override { return false; }
   bool reads_after_end() const override { return false; }
 

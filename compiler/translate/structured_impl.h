@@ -39,6 +39,9 @@ class Structured {
   // The power-on functions of the source, when blocks are streamed before the
   // program that names them is read whole.
   void set_power_on(std::vector<FnCall> calls) { power_on_ = std::move(calls); }
+  // The target machine's power-on functions, where ncc reads the target: the start
+  // sets only where the source's differ.
+  void set_target_power_on(std::vector<FnCall> calls) { target_power_on_ = std::move(calls); }
   // One of the main program's leading blocks, as the compiler streams it: written
   // to the text taken from the writer (`take`) before it is dropped.
   void stream(const ir::Program& program, const ir::Block& b);
@@ -97,6 +100,11 @@ class Structured {
   virtual void start_modes(std::vector<FnCall>&) const {}  // the target's modes the source's power-on needs
   virtual void call_range(const ir::Stmt& s) { fail(s.range, "a call of a range of blocks (EPP)"); }
   virtual void start_offset();
+  // What the program's first line starts with (`first`, its first character) where
+  // the start wrote nothing before it.
+  virtual std::string first_block_prefix(char /*first*/) { return {}; }
+  // The target's program starts with a line that holds its title (not NC-110).
+  virtual bool title_line() const { return true; }
   // Expressions, variables and word values in the target's syntax (ISO's here).
   virtual std::string expr(ir::ExprId id, int min);
   virtual std::string var(const ir::Expr& e);
@@ -165,26 +173,41 @@ class Structured {
   bool offset_selected_ = false;       // the main program has selected a work offset
   bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
   bool program_ended_ = false;         // the main program's end is written
+  bool start_empty_ = false;           // the start wrote no line
+  bool main_begun_ = false;            // a line of the main program is written
+  std::vector<std::string> title_comments_;  // the comment blocks before it
 
  private:
   struct Mapped;
   void attach(const ir::Program& program);
   std::optional<uint32_t> space_base(uint16_t index);
   void begin_main();
+  void lead(const ir::Block& b);
+  bool at_power_on(const FnCall& c) const;
+  bool still_at_power_on(const FnCall& c) const;
+
+ protected:
+  bool start_needs(const FnCall& c) const;
+
+ private:
   void start();
   void translated_machine();
   void code(const ir::Word& w, std::vector<Mapped>& out);
+  std::vector<std::optional<Mapped>> merge_codes();
   void parameter(const ir::Word& w, std::vector<std::string>& words);
   std::string as_written(const ir::Word& w);
   std::optional<Code> exact_code(const std::vector<FnCall>& calls, Scope scope) const;
   void state(const std::vector<FnCall>& calls);
   using Position = std::array<std::optional<double>, 3>;
   void centre(const ir::Word& w, const Position& start, std::vector<std::string>& words);
+  void absolute_centre(const Position& start, std::vector<std::string>& out);
   void plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start, std::vector<std::string>& out);
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
+  char cycle_word(char letter) const;
+  void dwell(const ir::Word& w, std::vector<std::string>& words);
   std::string length_offset(SourceRange at);
   void assign(const ir::Stmt& s);
   void display(const ir::Stmt& s);
@@ -194,7 +217,12 @@ class Structured {
   int mapped_space_ = -1;  // the source's space of numbered parameters
   std::map<uint16_t, uint32_t> space_base_;  // a space's first target variable
   uint32_t extra_ = 100;                     // the next one of #100..#149
-  std::optional<std::vector<FnCall>> power_on_;
+  std::optional<std::vector<FnCall>> power_on_, target_power_on_;
+  std::vector<FnCall> lead_;  // the functions of the main program's leading blocks (lead())
+  bool lead_open_ = true;
+  bool in_lead_ = false;    // the block being written is one of them
+  bool lead_feed_ = false;  // ... and one of them has an F word
+  size_t lead_before_ = 0;  // ... of the blocks before the one being written
   size_t main_at_ = 0;  // where the main program's text begins in text_
   std::string head_, text_;  // the start, and the rest, translated
   std::string deferred_motion_;  // the power-on motion code, for the main program's first move

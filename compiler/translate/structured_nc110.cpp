@@ -52,6 +52,7 @@ class Nc110Structured final : public Structured {
   // Even NC-110's own blocks are written anew: a code of the tables, a three-letter
   // code (UAO) or a call on a block of its own.
   bool verbatim() const override { return false; }
+  bool title_line() const override { return false; }
 
   void body() override {
     scan();
@@ -332,6 +333,7 @@ class Nc110Structured final : public Structured {
         fail(p_->units.front().range, "the start without a work offset: the target machine's origin 0 is not zero");
       return;
     }
+    if (!start_needs({Fn::WorkOffset, static_cast<uint16_t>(n)})) return;
     if (auto why = partial_offset(n, "the start's work offset")) {
       if (moved_before_offset_) fail(p_->units.front().range, *why);
       return;

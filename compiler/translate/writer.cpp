@@ -88,4 +88,20 @@ std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Prof
   return make_nc110_writer(std::move(target));
 }
 
+std::string own_title(std::string_view title) {
+  for (std::string_view kind : {"translated from ", "flattened from "}) {
+    if (!title.starts_with(kind)) continue;
+    for (std::string_view dialect : {"gost", "nc110", "pp", "iso", "linuxcnc"}) {
+      const std::string mark = fmt::format(", dialect {}", dialect);
+      const size_t at = title.find(mark);
+      if (at == std::string_view::npos) continue;
+      std::string_view rest = title.substr(at + mark.size());
+      if (rest.empty()) return {};
+      for (std::string_view separator : {": ", " - "})
+        if (rest.starts_with(separator)) return std::string(rest.substr(separator.size()));
+    }
+  }
+  return std::string(title);
+}
+
 }  // namespace ncc::translate

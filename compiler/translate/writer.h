@@ -42,6 +42,10 @@ struct Header {
   bool flattened = false;
 };
 
+// A program's own title, without the "translated from F, dialect D" that a
+// translation put before it: a round trip names only the file it comes from.
+std::string own_title(std::string_view title);
+
 class Writer {
  public:
   virtual ~Writer() = default;

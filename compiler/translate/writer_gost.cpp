@@ -107,6 +107,8 @@ class GostWriter final : public Writer {
     }
   }
 
+  void reserve_number(long n) override { highest_ = std::max(highest_, static_cast<long long>(n)); }
+
   std::string inline_comment(std::string_view text) const override {
     std::string out;
     append_comment(out, text);

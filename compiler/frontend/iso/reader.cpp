@@ -504,6 +504,9 @@ void Reader::read(const Piece& piece) {
     SourceRange r = range(prog->getSymbol(), prog->getSymbol());
     uint32_t n = 0;
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
+    // The program's title is the comment of its O block ("O1003 (BRACKET)").
+    std::string title;
+    for (const std::string& c : unit_.blocks.back().comments) title += (title.empty() ? "" : " ") + c;
     unit_.blocks.pop_back();
     if (ec != std::errc() || n > 9999) {
       diags_.report(DiagId::ValueRange, r, "O" + digits, "O", 0, 9999);
@@ -522,10 +525,12 @@ void Reader::read(const Piece& piece) {
     if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && !unit_.streamed && in_unit_ && unit_.name == "%") {
       unit_.name = name;  // the main program's own number
       unit_.range = r;
+      unit_.title = std::move(title);
       return;
     }
     if (!in_unit_) {
       start_unit(ir::UnitKind::Program, name, r);
+      unit_.title = std::move(title);
       return;
     }
     if (unit_.kind == ir::UnitKind::Program && !main_done_)
@@ -535,6 +540,7 @@ void Reader::read(const Piece& piece) {
       if (u.name == name) diags_.report(DiagId::ProgramStructure, r, fmt::format("{} is defined twice", name));
     if (unit_.name == name) diags_.report(DiagId::ProgramStructure, r, fmt::format("{} is defined twice", name));
     start_unit(ir::UnitKind::Subprogram, name, r);
+    unit_.title = std::move(title);
     return;
   }
 

@@ -128,14 +128,24 @@ void Reader::read_tape() {
     if (line_no == start_line) continue;  // the program-start line
     bool comment = false;
     size_t junk = std::string_view::npos;  // text before the first block, on this line
+    size_t from = 0;                        // where a comment's text begins
+    // A comment line before the first block continues the program start's (§2.2.1 c):
+    // the title.
+    auto title = [&](size_t end) {
+      if (open) return;
+      std::string_view more = trim(line.substr(from, end - from));
+      if (!more.empty()) main_.title += (main_.title.empty() ? "" : " ") + std::string(more);
+    };
     for (size_t i = 0; i < line.size(); ++i) {
       char c = line[i];
       if (comment) {
         comment = c != '"';
+        if (!comment) title(i);
         continue;
       }
       if (c == '"') {
         comment = true;
+        from = i + 1;
       } else if (c == '*') {
         // §2.3.2: the physical end; nothing after it is read.
         close(base + i);
@@ -148,6 +158,7 @@ void Reader::read_tape() {
         junk = i;
       }
     }
+    if (comment) title(line.size());
     if (junk != std::string_view::npos) {
       size_t end = junk;
       while (end < line.size() && !is_space(line[end]) && line[end] != '"' && line[end] != 'N') ++end;
