@@ -795,6 +795,9 @@ bool Structured::iso_tool_change() {
 // text alone says: not after a label a jump goes to, nor after a call.
 void Structured::state(const std::vector<FnCall>& calls) {
   for (const FnCall& f : calls) {
+    // ISO: a code of the motion group ends the canned cycle (the runtime's rule), and
+    // its R is a radius again.
+    if (src_.fanuc_cycles && fn_group(f.fn) == FnGroup::Motion) cycle_on_ = false;
     switch (f.fn) {
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset: offset_selected_ = true; break;
@@ -858,8 +861,6 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     if (c.fn == Fn::Cycle) {
       // A target that reads the source's words has its cycles too (LinuxCNC's are
       // ISO's, words and all): the cycle of the same name.
-      // Another dialect's cycle whose words read alike (GOST 20999's R, Q, P and the
-      // depth on the plane's normal, as ISO's): the target's of the same pattern.
       // Another dialect's cycle of one level, whose block drills (ISO's, GOST 20999's,
       // pp's): the target's of the same pattern, the level, peck and dwell words
       // renamed (parameter()): ISO's R Q P are pp's K I and Q in 10 ms.
