@@ -176,6 +176,7 @@ void Structured::begin_main() {
   in_main_ = false;  // nothing is forgotten before the program starts
   forget();
   in_main_ = true;
+  moved_ = false;  // the tool is where the machine starts
   spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
   rpm_ = true;  // a cutting speed needs its code (G96)
   tool_selected_ = tool_loaded_ = 0;  // no tool in the spindle
@@ -340,6 +341,7 @@ void Structured::line(std::string text) {
 
 void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
+  moved_ = true;
   spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
   tool_selected_.reset();
   tool_loaded_.reset();
@@ -348,6 +350,8 @@ void Structured::forget() {
   corrector_.reset();
   plane_.reset();
   rpm_.reset();
+  motion_.reset();
+  inch_.reset();
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -431,6 +435,7 @@ void Structured::translated_machine() {
       track(w);
     }
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
+  moved_ |= moves;
   if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
     plane_centre(centre_words, start, params);
   absolute_centre(start, params);
@@ -758,9 +763,25 @@ std::string Structured::length_offset(SourceRange at) {
 // ISO's M06 as the target's blocks (pp: M05, M09, G30 Z0, then its M06): what ISO's
 // does first when it changes the tool (§8.31), said where the text knows that it
 // does (another tool than the one in the spindle, the spindle, the coolant and the
-// plane known) and the block does not move. True when written.
-bool Structured::iso_tool_change() {
+// plane known) and the block does not move. A target without a reference-point code
+// goes there at rapid in machine coordinates (NC-110's G79, GOST's G53), to the target
+// machine's reference point in the program's unit, and takes the motion code in
+// force again; machine coordinates take no length offset or cutter compensation.
+// Nothing when written, else why not.
+std::string Structured::iso_tool_change() {
   const auto reference = target_code({{Fn::MotionReference}}, Scope::Block);
+  std::optional<Code> machine_zero, rapid, restore;
+  if (!reference) {
+    machine_zero = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block);
+    if (!machine_zero) machine_zero = target_code({{Fn::WorkOffset, 0}}, Scope::Block);
+    rapid = target_code({{Fn::MotionRapid}}, Scope::Modal);
+    if (motion_ && *motion_ != Fn::MotionRapid) restore = target_code({{*motion_}}, Scope::Modal);
+    if (!machine_zero || !rapid) return "it has no code for the reference point nor for machine coordinates";
+    if (!motion_ || (*motion_ != Fn::MotionRapid && !restore)) return "the motion code in force is not known here";
+    if (length_on_ != false || comp_on_ != false)
+      return "a length offset or cutter compensation is (perhaps) on, which its machine coordinates do not take";
+    if (!inch_) return "the unit is not known here";
+  }
   // A block of M06 alone (and T): another code would act before or after the change
   // as the target orders them, not as ISO does.
   const bool moves = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
@@ -768,37 +789,57 @@ bool Structured::iso_tool_change() {
            (w.kind == ir::WordKind::Code && (w.code < 0 || p_->semantics.codes[static_cast<size_t>(w.code)].calls !=
                                                                 std::vector<FnCall>{{Fn::ToolChange}}));
   });
-  if (!reference || moves || !plane_ || !tool_selected_ || !tool_loaded_ || *tool_selected_ == *tool_loaded_ ||
-      !spindle_on_ || !coolant_on_)
-    return false;
+  if (moves) return "its block has other codes or moves";
+  if (!plane_ || !spindle_on_ || !coolant_on_) return "the plane, the spindle or the coolant is not known here";
+  if (!tool_selected_ || !tool_loaded_ || *tool_selected_ == *tool_loaded_)
+    return "the tool selected and the one in the spindle are not known to differ";
   std::vector<std::string> before;
-  if (*spindle_on_) {
+  const auto both = *spindle_on_ && *coolant_on_ ? target_code({{Fn::SpindleStop}, {Fn::CoolantOff}}, Scope::Modal) : std::nullopt;
+  if (both) before.push_back(both->text());  // one code for both (GOST's M05)
+  if (*spindle_on_ && !both) {
     auto stop = target_code({{Fn::SpindleStop}}, Scope::Modal);
     if (!stop) stop = code_doing_more({{Fn::SpindleStop}}, Scope::Modal);
-    if (!stop) return false;
+    if (!stop) return "it has no code that stops the spindle alone";
     before.push_back(stop->text());
   }
-  if (*coolant_on_) {
+  if (*coolant_on_ && !both) {
     auto off = target_code({{Fn::CoolantOff}}, Scope::Modal);
-    if (!off) return false;
+    if (!off) return "it has no code that ends the coolant";
     before.push_back(off->text());
   }
   for (const std::string& code : before) write_words({code});
   const char axis = *plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X';  // the plane's normal
-  write_words({reference->text(), std::string(1, axis) + "0"});
+  const size_t i = static_cast<size_t>(axis - 'X');
+  // Before the program's first move the tool is where the machine starts: no move
+  // where that is the reference point.
+  if (!moved_ && target_.initial_position[i] == target_.reference_position[i]) {
+  } else if (reference) {
+    write_words({reference->text(), std::string(1, axis) + "0"});
+  } else {
+    const double at = target_.reference_position[i] / (*inch_ ? 25.4 : 1.0);
+    write_words({machine_zero->text(), rapid->text(), axis + number({axis, at, Value::Length}, block_->range)});
+    if (restore) write_words({restore->text()});
+  }
   spindle_on_ = coolant_on_ = false;
-  position_[static_cast<size_t>(axis - 'X')].reset();
-  return true;
+  position_[i].reset();
+  return {};
 }
 
 // What the blocks so far leave the spindle, the coolant and the plane in, where the
 // text alone says: not after a label a jump goes to, nor after a call.
 void Structured::state(const std::vector<FnCall>& calls) {
+  // ISO's M06 ends the length offset: NC-110's M06 it becomes applies corrector 0.
+  const bool iso_change = src_.tool_change_iso && std::find(calls.begin(), calls.end(), FnCall{Fn::ToolChange}) != calls.end();
   for (const FnCall& f : calls) {
-    // ISO: a code of the motion group ends the canned cycle (the runtime's rule), and
-    // its R is a radius again.
-    if (src_.fanuc_cycles && fn_group(f.fn) == FnGroup::Motion) cycle_on_ = false;
+    if (fn_group(f.fn) == FnGroup::Motion) {
+      motion_ = f.fn;
+      // ISO: a code of the motion group ends the canned cycle (the runtime's rule),
+      // and its R is a radius again.
+      if (src_.fanuc_cycles) cycle_on_ = false;
+    }
     switch (f.fn) {
+      case Fn::UnitsMm: inch_ = false; break;
+      case Fn::UnitsInch: inch_ = true; break;
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset: offset_selected_ = true; break;
       case Fn::CycleCancel: cycle_on_ = false; break;
@@ -811,7 +852,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::SpindleStop: case Fn::SpindleOrient: spindle_on_ = false; break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
-      case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = true; break;
+      case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = !iso_change; break;
       case Fn::LengthOff: length_on_ = false; break;
       case Fn::CompLeft: case Fn::CompRight: comp_on_ = true; break;
       case Fn::SpindleRpm: rpm_ = true; break;
@@ -828,14 +869,17 @@ void Structured::state(const std::vector<FnCall>& calls) {
           fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s does not",
                                           spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect, w_.dialect()));
         if (src_.tool_change_iso && !dst_.tool_change_iso) {
-          if (src_.tool_change_retract && !iso_tool_change())
-            fail(block_->range, fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, {}'s "
-                                            "does not (a machine that changes tools in place says iso.tool_change_retract "
-                                            "= false)", p_->dialect, w_.dialect()));
-          else if (!src_.tool_change_retract && (spindle_on_ != false || coolant_on_ != false))
+          if (src_.tool_change_retract) {
+            if (const std::string why = iso_tool_change(); !why.empty())
+              fail(block_->range, fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, "
+                                              "{}'s does not, and it cannot be written before it here: {} (a machine "
+                                              "that changes tools in place says iso.tool_change_retract = false)",
+                                              p_->dialect, w_.dialect(), why));
+          } else if (spindle_on_ != false || coolant_on_ != false) {
             fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s "
                                             "does not", spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on",
                                             p_->dialect, w_.dialect()));
+          }
         }
         tool_loaded_ = tool_selected_;
         // ISO's M06 stops the spindle and the coolant: a change while they run is
@@ -857,6 +901,13 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
     return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
+  // ISO's G41/G42 move the tool's centre off the path (cutter_path.cpp); the others'
+  // runs keep to the programmed path.
+  if (src_.comp_path != dst_.comp_path && std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) {
+        return c.fn == Fn::CompLeft || c.fn == Fn::CompRight;
+      }))
+    return fail(w.range, fmt::format("{}: cutter compensation moves the tool's centre off the path in {}, not in {}", desc.name,
+                                     src_.comp_path ? p_->dialect : w_.dialect(), src_.comp_path ? w_.dialect() : p_->dialect));
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
       // A target that reads the source's words has its cycles too (LinuxCNC's are
@@ -1080,6 +1131,17 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
     if (to == '-') return fail(w.range, fmt::format("a repeat count {} of a canned cycle: {} makes one hole a block", letter, w_.dialect()));
     return write(to);
   }
+  if ((letter == 'D' || letter == 'H') && reads_offset_number(src_, letter)) {
+    // ISO's D and H, GOST's D: the one register of the offset in force (the runtime's),
+    // the target's D; once where a block has both.
+    if (!reads_offset_number(dst_, 'D') || !w_.tables().addresses.count('D') || src_.tool_offset_axes != dst_.tool_offset_axes)
+      return fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
+    const std::string word = "D" + value(w.value, 'D');
+    if (std::find(words.begin(), words.end(), word) != words.end()) return;
+    if (std::any_of(words.begin(), words.end(), [](const std::string& o) { return o[0] == 'D'; }))
+      return fail(w.range, "a D and an H of different offsets in one block: the target has one offset word");
+    return words.push_back(word);
+  }
   switch (letter) {
     case 'F': case 'S': case 'T': return write(letter);
     case 'I': case 'J': case 'K':
@@ -1102,6 +1164,14 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   if (letter == src_.radius_word && letter == dst_.radius_word) return write(letter);
   if (letter == src_.dwell_word && dst_.dwell_word) return dwell(w, words);
   fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
+}
+
+// Whether a dialect reads `letter` as the number of the tool offset in force (not
+// NC-110, whose D is an axis and whose corrector is in T; not pp's H, an auxiliary
+// function).
+bool Structured::reads_offset_number(const Conventions& c, char letter) {
+  return !c.corrector_in_tool_word && c.aux_words.find(letter) == std::string::npos && c.comp_length_word != letter &&
+         c.axes.find(letter) == std::string::npos;
 }
 
 // The target's letter of a canned cycle's level, peck or dwell word, in a block where a

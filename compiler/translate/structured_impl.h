@@ -141,7 +141,7 @@ class Structured {
   std::optional<double> constant_of(ir::ExprId id) const;
   ir::ExprId bare(ir::ExprId id) const;
   std::string number(const OutWord& w, SourceRange at);
-  bool iso_tool_change();
+  std::string iso_tool_change();
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's
@@ -172,6 +172,7 @@ class Structured {
   bool origin_words_ = false;          // the block's operands are UAO's
   bool offset_selected_ = false;       // the main program has selected a work offset
   bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
+  bool moved_ = false;                 // a block has moved (or a label or call come)
   bool program_ended_ = false;         // the main program's end is written
   bool start_empty_ = false;           // the start wrote no line
   bool main_begun_ = false;            // a line of the main program is written
@@ -207,6 +208,7 @@ class Structured {
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
   char cycle_word(char letter) const;
+  static bool reads_offset_number(const Conventions& c, char letter);
   void dwell(const ir::Word& w, std::vector<std::string>& words);
   std::string length_offset(SourceRange at);
   void assign(const ir::Stmt& s);
@@ -239,6 +241,8 @@ class Structured {
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
+  std::optional<bool> inch_;           // G20
+  std::optional<Fn> motion_;           // the motion code in force
   Position centre_;                    // of the block's arc, where this translation computed it
 };
 
