@@ -274,6 +274,11 @@ bool Structured::block(const ir::Block& b) {
       if (auto text = trim(c); !text.empty()) title_comments_.emplace_back(text);
     return false;
   }
+  // (A block that writes no line yet begins the program where it does more than its
+  // words: a loop's head, a label.)
+  main_begun_ |= in_main_ && (!b.label.empty() || std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
+                                return s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Comment;
+                              }));
   block_ = &b;
   words_written_ = false;
   skip_ = b.skippable;

@@ -71,6 +71,7 @@ class PpStructured final : public Structured {
     const ir::Block& b = unit_->blocks[i];
     if (same_ && b.number) pending_number_ = static_cast<int>(*b.number);  // a jump's target
     else if (head_) pending_number_ = static_cast<int>(*std::exchange(head_, std::nullopt));
+    else pending_number_ = number_of(b);
     if (!p_->units.empty() && unit_ != &p_->units.front()) {
       if (i + 1 == unit_->blocks.size()) extra_words_.push_back("G70");  // P-8.2: the end block
       for (const ir::Word& w : b.words)
@@ -117,9 +118,13 @@ class PpStructured final : public Structured {
     return {};
   }
 
-  // The source's numbers in pp's own programs (jumps go to them); the writer's in others.
+  // The source's numbers (pp's own: jumps go to them); another dialect's where pp
+  // writes them and no line has the number yet (§2.2.1 d), else the writer's: a
+  // translation back keeps them.
   std::optional<int> number_of(const ir::Block& b) override {
-    return same_ ? Structured::number_of(b) : std::nullopt;
+    auto n = Structured::number_of(b);
+    if (same_ || !n) return n;
+    return *n >= 1 && w_.claim_number(*n) ? n : std::nullopt;
   }
 
   void repeat_begin(const ir::Stmt& s) override {

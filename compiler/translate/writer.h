@@ -75,6 +75,9 @@ class Writer {
   // block numbers), or 0 where the target numbers no blocks.
   virtual long fresh_number() { return 0; }
   virtual void reserve_number(long) {}  // a number a line will give itself
+  // The source's block number n for a line, where no line has it yet (pp: each number
+  // once in the file): reserved, true.
+  virtual bool claim_number(long) { return true; }
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
   // The smallest length step the target's numbers write (mm): a position it writes

@@ -120,6 +120,12 @@ class PpWriter final : public Writer {
 
   long fresh_number() override { return std::stol(next_number().substr(1)); }
   void reserve_number(long n) override { take(static_cast<unsigned long>(n)); }
+  bool claim_number(long n) override {
+    const auto u = static_cast<unsigned long>(n);
+    if (u < taken_.size() && taken_[u]) return false;
+    take(u);
+    return true;
+  }
 
   void end() override {
     if (ended_) return;
@@ -167,6 +173,7 @@ class PpWriter final : public Writer {
   std::string next_number() {
     while (block_number_ < taken_.size() && taken_[block_number_]) block_number_ += kStep;  // a structured translation's own
     std::string n = fmt::format("N{}", block_number_);
+    take(block_number_);     // a source's number claimed later is not this one
     block_number_ += kStep;  // past 99999999 the program is no longer pp
     return n;
   }
