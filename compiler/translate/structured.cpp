@@ -799,6 +799,12 @@ std::string Structured::iso_tool_change() {
   if (!tool_selected_ || !tool_loaded_ || *tool_selected_ == *tool_loaded_)
     return "the tool selected and the one in the spindle are not known to differ";
   std::vector<std::string> before;
+  // ISO's M06 ends the length offset: pp's link with it (its M06 keeps the link).
+  if (length_on_ != false) {
+    const std::string off = link_word(Fn::LengthOff);
+    if (off.empty()) return "a length offset is (perhaps) on, which its M06 keeps";
+    before.push_back(off);
+  }
   const auto both = *spindle_on_ && *coolant_on_ ? target_code({{Fn::SpindleStop}, {Fn::CoolantOff}}, Scope::Modal) : std::nullopt;
   if (both) before.push_back(both->text());  // one code for both (GOST's M05)
   if (*spindle_on_ && !both) {
@@ -826,6 +832,7 @@ std::string Structured::iso_tool_change() {
     if (restore) write_words({restore->text()});
   }
   spindle_on_ = coolant_on_ = false;
+  if (!before.empty() && before.front()[0] == '&') length_on_ = false;
   position_[i].reset();
   return {};
 }
@@ -972,6 +979,11 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     else if (c.fn == Fn::UnitsMm && !target_code({{Fn::UnitsInch}}, Scope::Modal)) continue;  // pp: mm always
     else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal)) continue;  // ISO: rpm always
     else if (still_at_power_on(c)) continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)
+    // pp has no G43: its length link adds the offset's length on the axes it names.
+    else if (const std::string link = link_word(c.fn); !link.empty()) {
+      extra_words_.push_back(link);
+      length_on_ = c.fn != Fn::LengthOff;
+    }
     // NC-110's M06 applies the T word's corrector: corrector 0 is no length offset.
     else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false) continue;
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
@@ -1169,6 +1181,22 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   if (letter == src_.radius_word && letter == dst_.radius_word) return write(letter);
   if (letter == src_.dwell_word && dst_.dwell_word) return dwell(w, words);
   fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
+}
+
+// The target's length link (pp's &, decision 12) that does what `fn` does to the
+// source's length offset: plus (1) or minus (2) on the source's offset axes, or off;
+// nothing where the target has none or lacks one of the axes.
+std::string Structured::link_word(Fn fn) const {
+  // (NC-110's corrector names its own axis: not known from the text.)
+  if (dst_.link_axes.empty() || src_.corrector_in_tool_word || (fn != Fn::LengthPlus && fn != Fn::LengthMinus && fn != Fn::LengthOff))
+    return {};
+  std::string digits;
+  for (char axis : dst_.link_axes)
+    digits += src_.tool_offset_axes.find(axis) == std::string::npos || fn == Fn::LengthOff ? '0' : fn == Fn::LengthPlus ? '1' : '2';
+  if (std::any_of(src_.tool_offset_axes.begin(), src_.tool_offset_axes.end(), [&](char a) { return dst_.link_axes.find(a) == std::string::npos; }))
+    return {};
+  const size_t first = digits.find_first_not_of('0');
+  return "&" + (first == std::string::npos ? std::string("0") : digits.substr(first));
 }
 
 // Whether a dialect reads `letter` as the number of the tool offset in force (not

@@ -209,6 +209,7 @@ class Structured {
   void corrector(const ir::Word& w);
   char cycle_word(char letter) const;
   static bool reads_offset_number(const Conventions& c, char letter);
+  std::string link_word(Fn fn) const;
   void dwell(const ir::Word& w, std::vector<std::string>& words);
   std::string length_offset(SourceRange at);
   void assign(const ir::Stmt& s);
