@@ -552,6 +552,33 @@ std::vector<std::optional<Structured::Mapped>> Structured::merge_codes() {
   return merged;
 }
 
+// ISO's G28 through a point no way off (G91 Z0: where the tool is) to the reference
+// point, on the axes it names: the target's code that takes them there (pp's G30).
+// With a length offset on, ISO's goes there without it and the target's not.
+void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out) {
+  const auto to = target_code({{Fn::MotionReference}}, Scope::Block);
+  std::optional<bool> incremental = incremental_;
+  bool axes = false, zero = true;
+  for (const ir::Word& o : block_->words) {
+    if (o.kind == ir::WordKind::Code && o.code >= 0)
+      for (const FnCall& c : p_->semantics.codes[static_cast<size_t>(o.code)].calls)
+        if (c.fn == Fn::DistanceIncremental || c.fn == Fn::DistanceAbsolute) incremental = c.fn == Fn::DistanceIncremental;
+    if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && src_.axes.find(o.address[0]) != std::string::npos) {
+      axes = true;
+      const auto v = constant_of(o.value);
+      zero &= v && *v == 0;
+    }
+  }
+  if (!to) return fail(w.range, fmt::format("{} (reference.return): {} has no code for it", desc.name, w_.dialect()));
+  if (!axes || incremental != true || !zero)
+    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, as {}'s {} goes "
+                                     "there directly)", desc.name, w_.dialect(), to->text()));
+  if (length_on_ != false)
+    return fail(w.range, fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} not", desc.name,
+                                     p_->dialect, w_.dialect(), to->text()));
+  out.push_back({*to, desc.timing, to->entry->desc.timing, {}, {}});
+}
+
 // NC-110's (UAO,n): origin n on every axis it declares. It is the target's work
 // offset n (G54 for 1) where origin n declares every axis of the target machine and
 // no axis is listed: otherwise an axis would keep its origin in NC-110, not in ISO.
@@ -913,6 +940,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
     return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
+  if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope)) return reference(w, desc, out);
   // ISO's G41/G42 move the tool's centre off the path (cutter_path.cpp); the others'
   // runs keep to the programmed path.
   if (src_.comp_path != dst_.comp_path && std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) {

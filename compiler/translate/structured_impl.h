@@ -205,6 +205,7 @@ class Structured {
   void plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start, std::vector<std::string>& out);
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
   char cycle_word(char letter) const;
