@@ -160,15 +160,19 @@ bool Structured::at_power_on(const FnCall& c) const {
 // Whether the start writes c: the target does not start so, and the program's
 // leading blocks do not set it before it matters.
 bool Structured::start_needs(const FnCall& c) const {
-  auto sets = [&](const FnCall& o) { return o == c || (fn_group(c.fn) != FnGroup::None && fn_group(o.fn) == fn_group(c.fn)); };
-  return !at_power_on(c) && std::none_of(lead_.begin(), lead_.end(), sets);
+  return !at_power_on(c) && std::none_of(lead_.begin(), lead_.end(), [&](const FnCall& o) { return sets_as(o, c); });
+}
+
+// Whether o sets what c sets: the same function, or one of its group.
+bool Structured::sets_as(const FnCall& o, const FnCall& c) {
+  return o == c || (fn_group(c.fn) != FnGroup::None && fn_group(o.fn) == fn_group(c.fn));
 }
 
 // ... and the program's leading blocks before this one have not changed it.
 bool Structured::still_at_power_on(const FnCall& c) const {
   if (!in_lead_ || !in_main_) return false;
-  auto sets = [&](const FnCall& o) { return o == c || (fn_group(c.fn) != FnGroup::None && fn_group(o.fn) == fn_group(c.fn)); };
-  return at_power_on(c) && std::none_of(lead_.begin(), lead_.begin() + static_cast<long>(lead_before_), sets);
+  return at_power_on(c) && std::none_of(lead_.begin(), lead_.begin() + static_cast<long>(lead_before_),
+                                        [&](const FnCall& o) { return sets_as(o, c); });
 }
 
 // The main program's state at power-on, as far as the text says.
@@ -628,7 +632,7 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
   if (src_.centre_words == CentreWords::Plane) {
     if (!plane_) return fail(w.range, fmt::format("the arc centre {} where the plane is not known", letter));
     if (letter == 'K') return fail(w.range, fmt::format("a helix pitch K: {} gives a helix by its end point alone", w_.dialect()));
-    const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
+    const int plane = plane_index();
     axis = letter == 'I' ? kPlanes[plane].u : kPlanes[plane].v;
   }
   auto v = constant_of(w.value);
@@ -672,7 +676,7 @@ void Structured::absolute_centre(const Position& start, std::vector<std::string>
       any = &w;
     }
   if (!any) return;  // a block without a centre word: no arc, or an R arc
-  const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
+  const int plane = plane_index();
   for (const int axis : {kPlanes[plane].u, kPlanes[plane].v}) {
     if (given[static_cast<size_t>(axis)]) continue;
     const char to = static_cast<char>('I' + axis);
@@ -689,7 +693,7 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
   if (src_.arc_centre != ArcCentre::Incremental) return fail(first.range, "an arc centre from the origin, given by X Y Z");
   if (!plane_) return fail(first.range, "an arc centre where the plane is not known");
   if (!incremental_ && dst_.arc_centre == ArcCentre::Absolute) return fail(first.range, "an arc centre where G90 or G91 is not known");
-  const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;  // XY, ZX, YZ (kPlanes)
+  const int plane = plane_index();
   if (const ir::Word* lead = words[static_cast<size_t>(kPlanes[plane].w)])
     return fail(lead->range, fmt::format("a helix lead {}: the dialects give the lead in other units", lead->address.str()));
   for (int k = 0; k < 2; ++k) {
@@ -715,7 +719,7 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
 void Structured::arc_on_circle(const Position& start) {
   const auto centre = std::exchange(centre_, {});
   if (!plane_) return;
-  const int plane = *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2;
+  const int plane = plane_index();
   const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
   if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
   const double r0 = std::hypot(*start[u] - *centre[u], *start[v] - *centre[v]);
@@ -732,7 +736,7 @@ void Structured::track(const ir::Word& w) {
   auto& axis = position_[static_cast<size_t>(w.address[0] - 'X')];
   const auto v = constant_of(w.value);
   // A cycle's depth is no position: the tool comes back to a level the text may not say.
-  const bool depth = cycle_on_ != false && (!plane_ || w.address[0] == (*plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X'));
+  const bool depth = cycle_on_ != false && (!plane_ || w.address[0] == normal_axis());
   if (!v || !incremental_ || depth) axis.reset();
   else if (!*incremental_) axis = *v;
   else if (axis) *axis += *v;
@@ -846,7 +850,7 @@ std::string Structured::iso_tool_change() {
     before.push_back(off->text());
   }
   for (const std::string& code : before) write_words({code});
-  const char axis = *plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X';  // the plane's normal
+  const char axis = normal_axis();
   const size_t i = static_cast<size_t>(axis - 'X');
   // Before the program's first move the tool is where the machine starts: no move
   // where that is the reference point.

@@ -186,6 +186,11 @@ class Structured {
   void lead(const ir::Block& b);
   bool at_power_on(const FnCall& c) const;
   bool still_at_power_on(const FnCall& c) const;
+  static bool sets_as(const FnCall& o, const FnCall& c);
+  // The plane (kPlanes' index: XY, ZX, YZ) and the letter of its normal, where plane_
+  // is known.
+  int plane_index() const { return *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2; }
+  char normal_axis() const { return *plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X'; }
 
  protected:
   bool start_needs(const FnCall& c) const;
