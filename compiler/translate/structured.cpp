@@ -540,12 +540,14 @@ std::vector<std::optional<Structured::Mapped>> Structured::merge_codes() {
     });
     return plain ? &d : nullptr;
   };
+  std::vector<char> alone(merged.size());  // the word's functions are a code of the target
+  for (size_t i = 0; i < merged.size(); ++i)
+    if (const CodeDesc* d = desc_of(i)) alone[i] = exact_code(d->calls, d->scope).has_value();
   for (size_t i = 0; i < merged.size(); ++i)
     for (size_t j = i + 1; j < merged.size(); ++j) {
       const CodeDesc* a = desc_of(i);
       const CodeDesc* b = desc_of(j);
-      if (!a || !b || a->scope != b->scope || a->timing != b->timing) continue;
-      if (exact_code(a->calls, a->scope) && exact_code(b->calls, b->scope)) continue;
+      if (!a || !b || a->scope != b->scope || a->timing != b->timing || (alone[i] && alone[j])) continue;
       std::vector<FnCall> both = a->calls;
       both.insert(both.end(), b->calls.begin(), b->calls.end());
       if (auto one = exact_code(both, a->scope)) {

@@ -88,6 +88,11 @@ std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Prof
   return make_nc110_writer(std::move(target));
 }
 
+std::string header_text(const Header& h, std::string_view separator) {
+  return fmt::format("{} from {}, dialect {}{}{}", h.flattened ? "flattened" : "translated", h.source, h.dialect,
+                     h.title.empty() ? "" : separator, h.title);
+}
+
 std::string own_title(std::string_view title) {
   for (std::string_view kind : {"translated from ", "flattened from "}) {
     if (!title.starts_with(kind)) continue;

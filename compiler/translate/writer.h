@@ -42,8 +42,11 @@ struct Header {
   bool flattened = false;
 };
 
-// A program's own title, without the "translated from F, dialect D" that a
-// translation put before it: a round trip names only the file it comes from.
+// The leading comment of a translation: "translated from F, dialect D: TITLE"
+// (`separator` before the title).
+std::string header_text(const Header& h, std::string_view separator = ": ");
+// A program's own title, without the header_text() a translation put before it: a
+// round trip names only the file it comes from.
 std::string own_title(std::string_view title);
 
 class Writer {

@@ -41,8 +41,7 @@ class GostWriter final : public Writer {
     begun_ = true;
     if (!s_.format.program_start) return;
     std::string line = "%";
-    append_comment(line, fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated", h.source,
-                                     h.dialect, h.title.empty() ? "" : " - " + h.title));
+    append_comment(line, header_text(h, " - "));  // GOST's comment takes no ':'
     out_ += line;
     out_ += '\n';
   }

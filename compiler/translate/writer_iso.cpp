@@ -17,8 +17,7 @@ class IsoWriter final : public Writer {
   double resolution() const override { return linuxcnc_ ? 1e-6 : 1e-4; }
 
   void begin(const Header& h) override {
-    const std::string text = fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated", h.source,
-                                         h.dialect, h.title.empty() ? "" : ": " + h.title);
+    const std::string text = header_text(h);
     if (linuxcnc_) return comment(text);
     out_ += "%\nO0001 " + inline_comment(text) + "\n";  // the O block's comment is the program's title
   }

@@ -25,8 +25,7 @@ class Nc110Writer final : public Writer {
   // The manual gives a program no header or name line (its name is the file's, §2.13.2.2);
   // a '%' tape mark would only be skipped.
   void begin(const Header& h) override {
-    comment(fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated", h.source, h.dialect,
-                        h.title.empty() ? "" : ": " + h.title));
+    comment(header_text(h));
   }
 
   void block(const std::vector<OutWord>& words, std::string_view comment) override {

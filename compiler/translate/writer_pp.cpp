@@ -49,8 +49,7 @@ class PpWriter final : public Writer {
 
   void begin(const Header& h) override {
     // §2.3.1: the program number, 1..999999; the comment after it is the title.
-    comment_lines("%1", text(fmt::format("{} from {}, dialect {}{}", h.flattened ? "flattened" : "translated",
-                                         h.source, h.dialect, h.title.empty() ? "" : ": " + h.title)));
+    comment_lines("%1", text(header_text(h)));
   }
 
   void block(const std::vector<OutWord>& words, std::string_view comment) override {
