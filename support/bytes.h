@@ -132,7 +132,10 @@ class ByteReader {
   }
   uint32_t delta32(uint32_t base, bool& ok) {
     int64_t d = svar();
-    if (d < -int64_t(base) || d > int64_t(UINT32_MAX - base)) ok = false;
+    if (d < -int64_t(base) || d > int64_t(UINT32_MAX - base)) {
+      ok = false;  // and no sum: base + d may not fit in 64 bits either
+      return 0;
+    }
     return static_cast<uint32_t>(base + d);
   }
   bool failed() const { return failed_; }
