@@ -421,16 +421,32 @@ void Structured::translated_machine() {
       if (codes[j].code.letter == codes[i].code.letter && codes[j].code.number == codes[i].code.number && codes[j].later.empty())
         codes.erase(codes.begin() + static_cast<long>(j));
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
+  // A block in machine coordinates (G53) leaves the program's coordinates unknown.
+  const bool machine_frame = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+    if (w.kind != ir::WordKind::Code || w.code < 0) return false;
+    const CodeDesc& d = p_->semantics.codes[static_cast<size_t>(w.code)];
+    return std::any_of(d.calls.begin(), d.calls.end(), [&](const FnCall& c) {
+      return c.fn == Fn::OriginMachine || (c.fn == Fn::WorkOffset && c.arg == 0 && d.scope == Scope::Block);
+    });
+  });
+  if (machine_frame) position_ = {};
   const auto start = position_;  // where the block's arc starts
   // ISO's, GOST's and pp's centre along X Y Z, from the start: NC-110's two words of
   // the plane (both needed), from the origin under G90.
   const bool plane_words = !reads_source_words() && src_.centre_words == CentreWords::PerAxis &&
                            dst_.centre_words == CentreWords::Plane;
   std::array<const ir::Word*, 3> centre_words{};
+  const ir::Word* radius = nullptr;  // an arc's R, where the target gives arcs by their centre
+  const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
       if (plane_words && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K') {
         centre_words[static_cast<size_t>(w.address[0] - 'I')] = &w;
+        continue;
+      }
+      if (arc && !reads_source_words() && w.address.size() == 1 && w.address[0] == src_.radius_word &&
+          dst_.radius_word != src_.radius_word && !cycle_word(w.address[0])) {
+        radius = &w;
         continue;
       }
       moves |= w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
@@ -443,10 +459,13 @@ void Structured::translated_machine() {
         parameter(w, params);
       track(w);
     }
+  if (machine_frame) position_ = {};
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
   moved_ |= moves;
   if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
     plane_centre(centre_words, start, params);
+  if (radius) radius_centre(*radius, start, params);
+  if (arc) helix_by_end(start);
   absolute_centre(start, params);
   arc_on_circle(start);
   auto conflict = [&](const Mapped& a) {
@@ -716,6 +735,49 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
   }
 }
 
+// An arc by its radius (ISO's and NC-110's R: up to 180 degrees, beyond where
+// negative) into a target that gives the centre: the centre the source's runtime
+// takes (machine_motion.cpp), written to the target's step. The start and the end
+// must be known from the text.
+void Structured::radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words) {
+  const auto radius = constant_of(r.value);
+  if (!radius) return fail(r.range, fmt::format("an arc by its radius {} given by a parameter: {} gives the centre", r.address.str(), w_.dialect()));
+  if (!plane_ || !incremental_) return fail(r.range, "an arc by its radius where the plane or G90/G91 is not known");
+  const int plane = plane_index();
+  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  if (!start[u] || !start[v] || !position_[u] || !position_[v])
+    return fail(r.range, "an arc by its radius, where its start or end is not known (after a label, a call or a computed move)");
+  const double du = *position_[u] - *start[u], dv = *position_[v] - *start[v];
+  const double chord = std::hypot(du, dv);
+  if (chord < 1e-9) return fail(r.range, "an arc by its radius that ends where it starts");
+  // The centre lies on the chord's normal, to its left for G03 R+ and G02 R-.
+  const double h = std::sqrt(std::max(0.0, *radius * *radius - chord * chord / 4));
+  const double side = (motion_ == Fn::MotionArcCw) == (*radius < 0) ? h / chord : -h / chord;
+  const double centre[2] = {*start[u] + du / 2 - side * dv, *start[v] + dv / 2 + side * du};
+  const double step = w_.resolution();
+  for (int k = 0; k < 2; ++k) {
+    const size_t axis = k == 0 ? u : v;
+    const double at = step > 0 ? std::round(centre[k] / step) * step : centre[k];
+    if (std::fabs(at - centre[k]) > 1e-9 * std::max(1.0, std::fabs(at))) problems.push_back({r.range, "rounded", Problem::Rounded});
+    centre_[axis] = at;  // arc_on_circle() checks the end against it
+    const char to = dst_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
+    const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
+    words.push_back(to + w_.number({to, from_start ? at - *start[axis] : at, Value::Length}));
+  }
+}
+
+// An arc that moves along the plane's normal too, where the source gives the helix
+// by its end point alone (ISO) and the target by a lead word: refused.
+void Structured::helix_by_end(const Position& start) {
+  if (reads_source_words() || !src_.helix_by_end || dst_.helix_by_end || !plane_) return;
+  const char normal = normal_axis();
+  const size_t n = static_cast<size_t>(normal - 'X');
+  for (const ir::Word& w : block_->words)
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == normal &&
+        !(start[n] && position_[n] && *start[n] == *position_[n]))
+      return fail(w.range, fmt::format("a helix by its end point {}: {} gives a helix by its lead", normal, w_.dialect()));
+}
+
 // An arc whose centre this translation computed: its end must lie on its circle as
 // closely as the target asks (the source's machine may take more).
 void Structured::arc_on_circle(const Position& start) {
@@ -724,12 +786,15 @@ void Structured::arc_on_circle(const Position& start) {
   const int plane = plane_index();
   const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
   if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
-  const double r0 = std::hypot(*start[u] - *centre[u], *start[v] - *centre[v]);
-  const double r1 = std::hypot(*position_[u] - *centre[u], *position_[v] - *centre[v]);
-  if (std::fabs(r1 - r0) > dst_.arc_tolerance)
-    fail(block_->range, fmt::format("an arc whose end is {} off its circle: {} takes {}",
-                                    exact(std::round(std::fabs(r1 - r0) * 1e4) / 1e4, false),
-                                    w_.dialect(), exact(dst_.arc_tolerance, false)));
+  const double step = w_.resolution();  // the points as the target reads them
+  auto at = [&](double x) { return step > 0 ? std::round(x / step) * step : x; };
+  const double r0 = std::hypot(at(*start[u]) - at(*centre[u]), at(*start[v]) - at(*centre[v]));
+  const double r1 = std::hypot(at(*position_[u]) - at(*centre[u]), at(*position_[v]) - at(*centre[v]));
+  const double mm = std::fabs(r1 - r0) * (inch_ != false ? 25.4 : 1.0);  // the tolerance is in mm
+  if (mm > dst_.arc_tolerance)
+    fail(block_->range, fmt::format("an arc whose end, written to {}'s step of {}, lies farther off its circle than the "
+                                    "{} mm {} takes", w_.dialect(), exact(step, false), exact(dst_.arc_tolerance, false),
+                                    w_.dialect()));
 }
 
 // Where the text leaves the tool on X, Y and Z, in the program's coordinates.

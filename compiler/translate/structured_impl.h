@@ -211,6 +211,8 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
+  void helix_by_end(const Position& start);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
   char cycle_word(char letter) const;
