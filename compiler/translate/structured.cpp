@@ -16,6 +16,8 @@
 #include "support/text.h"
 
 namespace ncc::translate {
+
+constexpr std::string_view kAngularAxes = "ABC";  // rotary axes: degrees, in every unit
 namespace {
 
 // The mapping of parameters (docs/translate.md, "Structured translation"): a
@@ -55,6 +57,16 @@ Structured::Structured(std::string dialect, Writer& writer, const MachineConfig&
 void Structured::attach(const ir::Program& program) {
   p_ = &program;
   src_ = program.semantics.conventions;
+  // A program that changes to inches, into a target without them: its lengths are
+  // written in mm, and after a label or a call the unit is not known.
+  if (!target_code({{Fn::UnitsInch}}, Scope::Modal))
+    for (const ir::Unit& u : program.units)
+      for (const ir::Block& b : u.blocks)
+        for (const ir::Word& w : b.words)
+          if (w.kind == ir::WordKind::Code && w.code >= 0) {
+            const auto& calls = program.semantics.codes[static_cast<size_t>(w.code)].calls;
+            lowers_inch_ |= std::find(calls.begin(), calls.end(), FnCall{Fn::UnitsInch}) != calls.end();
+          }
 }
 
 // The power-on codes' functions: the program's, or those given before it was read.
@@ -361,6 +373,7 @@ void Structured::forget() {
   rpm_.reset();
   motion_.reset();
   inch_.reset();
+  if (unit_ != 1.0 || lowers_inch_) unit_.reset();
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -679,7 +692,8 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
     }
   }
   const char to = static_cast<char>('I' + axis);
-  words.push_back(to + (v ? number({to, *v, Value::Length}, w.range) : value(w.value, to)));
+  if (!v && unit_ == 1.0) return words.push_back(to + value(w.value, to));
+  if (const auto text = length(w.range, to, v)) words.push_back(to + *text);
 }
 
 // An arc's centre word the source leaves out (0 from the start) where the target
@@ -704,7 +718,7 @@ void Structured::absolute_centre(const Position& start, std::vector<std::string>
     if (!start[static_cast<size_t>(axis)])
       return fail(any->range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
                                           "a label, a call or a computed move)", to));
-    words.push_back(to + number({to, *start[static_cast<size_t>(axis)], Value::Length}, any->range));
+    if (const auto text = length(any->range, to, *start[static_cast<size_t>(axis)])) words.push_back(to + *text);
   }
 }
 
@@ -722,7 +736,8 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
     const char to = k == 0 ? 'I' : 'J';
     const ir::Word* w = words[axis];
     if (dst_.arc_centre == ArcCentre::Incremental || *incremental_) {  // from the start in both (pp's I J)
-      out.push_back(to + (w ? value(w->value, to) : std::string("0")));
+      if (unit_ == 1.0) out.push_back(to + (w ? value(w->value, to) : std::string("0")));
+      else if (const auto text = length(w ? w->range : first.range, to, w ? constant_of(w->value) : 0.0)) out.push_back(to + *text);
       continue;
     }
     const std::optional<double> v = w ? constant_of(w->value) : std::optional<double>(0);
@@ -731,7 +746,7 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
       return fail(first.range, "an arc centre from the start point, where the arc's start is not known (after a label, a "
                                "call or a computed move)");
     centre_[axis] = *start[axis] + *v;
-    out.push_back(to + number({to, *centre_[axis], Value::Length}, first.range));
+    if (const auto text = length(first.range, to, *centre_[axis])) out.push_back(to + *text);
   }
 }
 
@@ -754,15 +769,16 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
   const double h = std::sqrt(std::max(0.0, *radius * *radius - chord * chord / 4));
   const double side = (motion_ == Fn::MotionArcCw) == (*radius < 0) ? h / chord : -h / chord;
   const double centre[2] = {*start[u] + du / 2 - side * dv, *start[v] + dv / 2 + side * du};
-  const double step = w_.resolution();
+  if (!unit_) return fail(r.range, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
+  const double step = w_.resolution(), unit = *unit_;  // in the target's unit
   for (int k = 0; k < 2; ++k) {
     const size_t axis = k == 0 ? u : v;
-    const double at = step > 0 ? std::round(centre[k] / step) * step : centre[k];
-    if (std::fabs(at - centre[k]) > 1e-9 * std::max(1.0, std::fabs(at))) problems.push_back({r.range, "rounded", Problem::Rounded});
-    centre_[axis] = at;  // arc_on_circle() checks the end against it
+    const double exact = centre[k] * unit, at = step > 0 ? std::round(exact / step) * step : exact;
+    if (std::fabs(at - exact) > 1e-9 * std::max(1.0, std::fabs(at))) problems.push_back({r.range, "rounded", Problem::Rounded});
+    centre_[axis] = at / unit;  // arc_on_circle() checks the end against it
     const char to = dst_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
     const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
-    words.push_back(to + w_.number({to, from_start ? at - *start[axis] : at, Value::Length}));
+    words.push_back(to + w_.number({to, from_start ? at - *start[axis] * unit : at, Value::Length}));
   }
 }
 
@@ -786,11 +802,11 @@ void Structured::arc_on_circle(const Position& start) {
   const int plane = plane_index();
   const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
   if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
-  const double step = w_.resolution();  // the points as the target reads them
-  auto at = [&](double x) { return step > 0 ? std::round(x / step) * step : x; };
+  const double step = w_.resolution(), unit = unit_.value_or(1.0);  // the points as the target reads them
+  auto at = [&](double x) { return step > 0 ? std::round(x * unit / step) * step : x * unit; };
   const double r0 = std::hypot(at(*start[u]) - at(*centre[u]), at(*start[v]) - at(*centre[v]));
   const double r1 = std::hypot(at(*position_[u]) - at(*centre[u]), at(*position_[v]) - at(*centre[v]));
-  const double mm = std::fabs(r1 - r0) * (inch_ != false ? 25.4 : 1.0);  // the tolerance is in mm
+  const double mm = std::fabs(r1 - r0) * (inch_ != false && unit == 1.0 ? 25.4 : 1.0);  // the tolerance is in mm
   if (mm > dst_.arc_tolerance)
     fail(block_->range, fmt::format("an arc whose end, written to {}'s step of {}, lies farther off its circle than the "
                                     "{} mm {} takes", w_.dialect(), exact(step, false), exact(dst_.arc_tolerance, false),
@@ -948,8 +964,8 @@ void Structured::state(const std::vector<FnCall>& calls) {
       if (src_.fanuc_cycles) cycle_on_ = false;
     }
     switch (f.fn) {
-      case Fn::UnitsMm: inch_ = false; break;
-      case Fn::UnitsInch: inch_ = true; break;
+      case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
+      case Fn::UnitsInch: inch_ = true, unit_ = target_code({{Fn::UnitsInch}}, Scope::Modal) ? 1.0 : 25.4; break;
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset: offset_selected_ = true; break;
       case Fn::CycleCancel: cycle_on_ = false; break;
@@ -1075,7 +1091,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     if (code) each.push_back(*code);
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
     else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
-    else if (c.fn == Fn::UnitsMm && !target_code({{Fn::UnitsInch}}, Scope::Modal)) continue;  // pp: mm always
+    else if ((c.fn == Fn::UnitsMm || c.fn == Fn::UnitsInch) && !target_code({{Fn::UnitsInch}}, Scope::Modal))
+      state({c});  // pp: mm always, inches written as mm (unit_)
     else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal)) continue;  // ISO: rpm always
     else if (still_at_power_on(c)) continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)
     // pp has no G43: its length link adds the offset's length on the axes it names.
@@ -1237,15 +1254,19 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   const char letter = address.size() == 1 ? address[0] : 0;
   if (letter < 'A' || letter > 'Z') return fail(w.range, fmt::format("the word {}", address));
   auto write = [&](char to) { words.push_back(to + value(w.value, to)); };
+  auto write_length = [&](char to) {  // in the target's unit (inches into mm)
+    if (unit_ == 1.0) return write(to);
+    if (const auto mm = length(w.range, to, constant_of(w.value))) words.push_back(to + *mm);
+  };
   if (src_.axes.find(letter) != std::string::npos) {
     if (dst_.axes.find(letter) == std::string::npos)
       return fail(w.range, fmt::format("axis {}: the target machine has axes {}", letter, dst_.axes));
-    return write(letter);
+    return kAngularAxes.find(letter) == std::string_view::npos ? write_length(letter) : write(letter);
   }
   if (const char to = cycle_word(letter)) {
     if (letter == src_.dwell_word) return dwell(w, words);
     if (to == '-') return fail(w.range, fmt::format("a repeat count {} of a canned cycle: {} makes one hole a block", letter, w_.dialect()));
-    return write(to);
+    return write_length(to);  // a level or a peck
   }
   if ((letter == 'D' || letter == 'H') && reads_offset_number(src_, letter)) {
     // ISO's D and H, GOST's D: the one register of the offset in force (the runtime's),
@@ -1259,7 +1280,12 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
     return words.push_back(word);
   }
   switch (letter) {
-    case 'F': case 'S': case 'T': return write(letter);
+    case 'F': return write_length(letter);  // inch/min (or per revolution) into mm
+    case 'S':
+      if (unit_ != 1.0 && rpm_ != true)
+        return fail(w.range, fmt::format("a cutting speed in feet a minute: {} has no inch mode", w_.dialect()));
+      return write(letter);
+    case 'T': return write(letter);
     case 'I': case 'J': case 'K':
       if (src_.centre_words == CentreWords::PerAxis && (src_.helix_lead != dst_.helix_lead || dst_.helix_by_end)) {
         if (!plane_) return fail(w.range, fmt::format("{} where the plane is not known: a centre or a helix lead", letter));
@@ -1274,12 +1300,22 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
                                          src_.arc_centre == ArcCentre::Absolute ? w_.dialect() : p_->dialect));
       if (src_.centre_words != dst_.centre_words)
         return fail(w.range, fmt::format("the arc centre {}: the dialects give the centre by different words", letter));
-      return write(letter);
+      return write_length(letter);
     default: break;
   }
-  if (letter == src_.radius_word && letter == dst_.radius_word) return write(letter);
+  if (letter == src_.radius_word && letter == dst_.radius_word) return write_length(letter);
   if (letter == src_.dwell_word && dst_.dwell_word) return dwell(w, words);
   fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
+}
+
+// A length word's constant in the target's unit, where the source's inches become
+// the target's mm (a target without an inch mode: pp); refused where it is not a
+// constant or the unit is not known.
+std::optional<std::string> Structured::length(SourceRange at, char to, std::optional<double> v) {
+  if (!unit_) fail(at, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
+  else if (!v) fail(at, fmt::format("a length in inches given by a parameter: {} has no inch mode", w_.dialect()));
+  if (!unit_ || !v) return std::nullopt;
+  return number({to, *v * *unit_, to == 'F' ? Value::Feed : Value::Length}, at);
 }
 
 // The target's length link (pp's &, decision 12) that does what `fn` does to the

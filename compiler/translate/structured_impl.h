@@ -213,6 +213,7 @@ class Structured {
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
   void helix_by_end(const Position& start);
+  std::optional<std::string> length(SourceRange at, char to, std::optional<double> v);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
   char cycle_word(char letter) const;
@@ -251,6 +252,8 @@ class Structured {
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
   std::optional<bool> inch_;           // G20
+  std::optional<double> unit_ = 1.0;   // the source's length unit in the target's (25.4: inches into pp's mm)
+  bool lowers_inch_ = false;           // ... and the program has inches where the target has none
   std::optional<Fn> motion_;           // the motion code in force
   Position centre_;                    // of the block's arc, where this translation computed it
 };
