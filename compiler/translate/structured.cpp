@@ -450,9 +450,15 @@ void Structured::translated_machine() {
                            dst_.centre_words == CentreWords::Plane;
   std::array<const ir::Word*, 3> centre_words{};
   const ir::Word* radius = nullptr;  // an arc's R, where the target gives arcs by their centre
+  const ir::Word* lead = nullptr;    // a helix's lead word
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
+      if (arc && !reads_source_words() && plane_ && !src_.helix_by_end && w.address.size() == 1 &&
+          w.address[0] == (src_.centre_words == CentreWords::Plane ? 'K' : *plane_)) {
+        lead = &w;  // a helix's lead, in the source's unit (helix())
+        continue;
+      }
       if (plane_words && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K') {
         centre_words[static_cast<size_t>(w.address[0] - 'I')] = &w;
         continue;
@@ -478,7 +484,7 @@ void Structured::translated_machine() {
   if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
     plane_centre(centre_words, start, params);
   if (radius) radius_centre(*radius, start, params);
-  if (arc) helix_by_end(start);
+  if (arc) helix(start, lead, params);
   absolute_centre(start, params);
   arc_on_circle(start);
   auto conflict = [&](const Mapped& a) {
@@ -754,26 +760,41 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
 // negative) into a target that gives the centre: the centre the source's runtime
 // takes (machine_motion.cpp), written to the target's step. The start and the end
 // must be known from the text.
-void Structured::radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words) {
+std::optional<std::array<double, 2>> Structured::centre_by_radius(const ir::Word& r, const Position& start) {
   const auto radius = constant_of(r.value);
-  if (!radius) return fail(r.range, fmt::format("an arc by its radius {} given by a parameter: {} gives the centre", r.address.str(), w_.dialect()));
-  if (!plane_ || !incremental_) return fail(r.range, "an arc by its radius where the plane or G90/G91 is not known");
+  if (!radius) {
+    fail(r.range, fmt::format("an arc by its radius {} given by a parameter: {} gives the centre", r.address.str(), w_.dialect()));
+    return std::nullopt;
+  }
   const int plane = plane_index();
   const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
-  if (!start[u] || !start[v] || !position_[u] || !position_[v])
-    return fail(r.range, "an arc by its radius, where its start or end is not known (after a label, a call or a computed move)");
+  if (!start[u] || !start[v] || !position_[u] || !position_[v]) {
+    fail(r.range, "an arc by its radius, where its start or end is not known (after a label, a call or a computed move)");
+    return std::nullopt;
+  }
   const double du = *position_[u] - *start[u], dv = *position_[v] - *start[v];
   const double chord = std::hypot(du, dv);
-  if (chord < 1e-9) return fail(r.range, "an arc by its radius that ends where it starts");
+  if (chord < 1e-9) {
+    fail(r.range, "an arc by its radius that ends where it starts");
+    return std::nullopt;
+  }
   // The centre lies on the chord's normal, to its left for G03 R+ and G02 R-.
   const double h = std::sqrt(std::max(0.0, *radius * *radius - chord * chord / 4));
   const double side = (motion_ == Fn::MotionArcCw) == (*radius < 0) ? h / chord : -h / chord;
-  const double centre[2] = {*start[u] + du / 2 - side * dv, *start[v] + dv / 2 + side * du};
+  return std::array<double, 2>{*start[u] + du / 2 - side * dv, *start[v] + dv / 2 + side * du};
+}
+
+void Structured::radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words) {
+  if (!plane_ || !incremental_) return fail(r.range, "an arc by its radius where the plane or G90/G91 is not known");
+  const auto centre = centre_by_radius(r, start);
+  if (!centre) return;
+  const int plane = plane_index();
+  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
   if (!unit_) return fail(r.range, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
   const double step = w_.resolution(), unit = *unit_;  // in the target's unit
   for (int k = 0; k < 2; ++k) {
     const size_t axis = k == 0 ? u : v;
-    const double exact = centre[k] * unit, at = step > 0 ? std::round(exact / step) * step : exact;
+    const double exact = (*centre)[static_cast<size_t>(k)] * unit, at = step > 0 ? std::round(exact / step) * step : exact;
     if (std::fabs(at - exact) > 1e-9 * std::max(1.0, std::fabs(at))) problems.push_back({r.range, "rounded", Problem::Rounded});
     centre_[axis] = at / unit;  // arc_on_circle() checks the end against it
     const char to = dst_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
@@ -782,16 +803,76 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
   }
 }
 
-// An arc that moves along the plane's normal too, where the source gives the helix
-// by its end point alone (ISO) and the target by a lead word: refused.
-void Structured::helix_by_end(const Position& start) {
-  if (reads_source_words() || !src_.helix_by_end || dst_.helix_by_end || !plane_) return;
-  const char normal = normal_axis();
-  const size_t n = static_cast<size_t>(normal - 'X');
+// An arc that moves along its plane's normal too: a helix. ISO gives it by its end
+// point alone (one turn at most), GOST 20999 by a lead per radian or per revolution
+// as well, NC-110 by a pitch (a lead per revolution, positive), each a lead that
+// selects the number of turns (machine_motion.cpp). The target's lead is the source's
+// converted, or the travel over the sweep where the source has none; a helix of
+// more turns than the end point says is refused where the target has no lead word.
+// The start, the end and the centre must be known from the text.
+void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words) {
+  if (reads_source_words() || !plane_) return;
+  const int plane = plane_index();
+  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t n = static_cast<size_t>(normal_axis() - 'X');
+  const ir::Word* travel = nullptr;
   for (const ir::Word& w : block_->words)
-    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == normal &&
-        !(start[n] && position_[n] && *start[n] == *position_[n]))
-      return fail(w.range, fmt::format("a helix by its end point {}: {} gives a helix by its lead", normal, w_.dialect()));
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == normal_axis()) travel = &w;
+  const SourceRange at = lead ? lead->range : travel ? travel->range : block_->range;
+  // A lead in an arc that does not move along the normal does nothing (the source's
+  // check warns of it, NC4025): not written.
+  if (!travel || (start[n] && position_[n] && *start[n] == *position_[n])) return;
+  const auto& g = w_.tables().g_codes;  // a target whose helix needs a mode (pp's G09)
+  const bool helix_mode = std::any_of(g.begin(), g.end(), [](const auto& entry) {
+    const auto& calls = entry.second.desc.calls;
+    return std::find(calls.begin(), calls.end(), FnCall{Fn::HelixOn}) != calls.end();
+  });
+  if (helix_mode) return fail(at, fmt::format("a helix: {} moves along {} in its helix mode only, which is not written yet", w_.dialect(), normal_axis()));
+  const bool writes_lead = !dst_.helix_by_end;
+  if (!lead && !writes_lead) return;
+  // The centre in the plane, from the words the source gives, or as computed here.
+  std::array<std::optional<double>, 2> centre{centre_[u], centre_[v]};
+  for (const ir::Word& w : block_->words)
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == src_.radius_word && !centre[0])
+      if (const auto by_radius = centre_by_radius(w, start)) centre = {(*by_radius)[0], (*by_radius)[1]};
+  for (int k = 0; k < 2 && (!centre[0] || !centre[1]); ++k) {
+    const size_t axis = k == 0 ? u : v;
+    const char letter = src_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
+    std::optional<double> word = 0.0;
+    for (const ir::Word& w : block_->words)
+      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter) word = constant_of(w.value);
+    const bool from_start = src_.arc_centre == ArcCentre::Incremental || incremental_ == true;
+    if (!word || !start[axis] || !incremental_) centre[static_cast<size_t>(k)].reset();
+    else centre[static_cast<size_t>(k)] = from_start ? *start[axis] + *word : *word;
+  }
+  const std::optional<double> source_lead = lead ? constant_of(lead->value) : std::nullopt;
+  if (!centre[0] || !centre[1] || !start[u] || !start[v] || !start[n] || !position_[u] || !position_[v] || !position_[n] ||
+      (lead && !source_lead))
+    return fail(at, "a helix whose start, end, centre or lead is not known here (after a label, a call or a computed value)");
+  constexpr double kTwoPi = 2 * 3.14159265358979323846;
+  const double a0 = std::atan2(*start[v] - *centre[1], *start[u] - *centre[0]);
+  const double a1 = std::atan2(*position_[v] - *centre[1], *position_[u] - *centre[0]);
+  double sweep = motion_ == Fn::MotionArcCw ? a0 - a1 : a1 - a0;
+  sweep = std::fmod(std::fmod(sweep, kTwoPi) + kTwoPi, kTwoPi);
+  if (sweep < 1e-12) sweep = kTwoPi;  // the end over the start: a full turn
+  const double dw = *position_[n] - *start[n];
+  if (source_lead) {  // the turns it selects, as the runtime takes them
+    const double per_radian = *source_lead / (src_.helix_lead == HelixLead::PerRevolution ? kTwoPi : 1.0);
+    if (per_radian != 0) {
+      const double candidate = sweep + kTwoPi * std::round((std::fabs(dw / per_radian) - sweep) / kTwoPi);
+      if (candidate > 0) sweep = candidate;
+    }
+  }
+  if (!writes_lead) {  // the source's lead dropped, where it selects the turns the end point does
+    if (sweep > kTwoPi + 1e-9)
+      fail(at, fmt::format("a helix of more than one turn: {} gives a helix by its end point alone", w_.dialect()));
+    return;
+  }
+  if (!unit_) return fail(at, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
+  double to = dw * *unit_ / sweep * (dst_.helix_lead == HelixLead::PerRevolution ? kTwoPi : 1.0);
+  if (dst_.centre_words == CentreWords::Plane) to = std::fabs(to);  // NC-110's pitch: the travel's sign is Z's
+  const char letter = dst_.centre_words == CentreWords::Plane ? 'K' : static_cast<char>('I' + n);
+  words.push_back(letter + w_.number({letter, to, Value::Length}));
 }
 
 // An arc whose centre this translation computed: its end must lie on its circle as
@@ -1287,6 +1368,7 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
       return write(letter);
     case 'T': return write(letter);
     case 'I': case 'J': case 'K':
+      if (src_.helix_by_end && plane_ && *plane_ == letter) return;  // ISO's K in G17 does nothing (NC4025)
       if (src_.centre_words == CentreWords::PerAxis && (src_.helix_lead != dst_.helix_lead || dst_.helix_by_end)) {
         if (!plane_) return fail(w.range, fmt::format("{} where the plane is not known: a centre or a helix lead", letter));
         if (*plane_ == letter)

@@ -211,8 +211,9 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
-  void helix_by_end(const Position& start);
+  void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words);
   std::optional<std::string> length(SourceRange at, char to, std::optional<double> v);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
