@@ -338,7 +338,7 @@ class Stream final : public BlockSink {
     size_t n = 0;
     for (; n < unit.blocks.size(); ++n) {
       ir::Block& b = unit.blocks[n];
-      if (s_.diags.error_count() || checks.found_errors() || !settled(b)) {
+      if (s_.diags.error_count() || checks.found_errors() || !settled(b) || (observer_ && !observer_->streams(program, b))) {
         stopped_ = true;
         break;
       }

@@ -61,6 +61,9 @@ class StreamObserver {
  public:
   virtual ~StreamObserver() = default;
   virtual void streamed(const ir::Program& program, const ir::Block& block) = 0;
+  // False for a block the observer must see with the blocks after it: streaming
+  // stops there, and the rest is held whole.
+  virtual bool streams(const ir::Program&, const ir::Block&) const { return true; }
 };
 // compile_source, showing `observer` each block it streams, and leaving in `rest` the
 // program's IR without them (the units and blocks it holds at the end).

@@ -261,9 +261,11 @@ void Structured::unit(const ir::Unit& u, bool main) {
   bool returned = false;
   for (size_t i = 0; i < u.blocks.size(); ++i) {
     before_block(i);
+    next_ = i + 1 < u.blocks.size() ? &u.blocks[i + 1] : nullptr;
     returned = block(u.blocks[i]);
     after_block(i);
   }
+  next_ = nullptr;
   close_unit(u, main, returned);
 }
 
@@ -413,6 +415,11 @@ void Structured::translated_machine() {
   std::vector<std::string> params;
   bool moves = false;
   origin_words_ = false;
+  // Where the previous block's corner left the tool, and the motion code its fillet
+  // leaves to be written again.
+  const auto chained = std::exchange(chained_start_, std::nullopt);
+  const std::string restore_motion = std::exchange(restore_motion_, {});
+  const auto centre_override = std::exchange(centre_override_, std::nullopt);  // its arc's, from that point
   if (src_.corrector_in_tool_word)  // before M06 of the same block
     for (const ir::Word& w : block_->words)
       if (w.kind == ir::WordKind::Parameter && w.address[0] == 'T') corrector(w);
@@ -451,9 +458,17 @@ void Structured::translated_machine() {
   std::array<const ir::Word*, 3> centre_words{};
   const ir::Word* radius = nullptr;  // an arc's R, where the target gives arcs by their centre
   const ir::Word* lead = nullptr;    // a helix's lead word
+  const ir::Word* corner = nullptr;  // ISO's ,C or ,R, where the target has no corners
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
+      if (lowers_corner(w)) {
+        corner = &w;
+        continue;
+      }
+      if (centre_override && arc && w.address.size() == 1 &&
+          ((w.address[0] >= 'I' && w.address[0] <= 'K') || w.address[0] == src_.radius_word))
+        continue;
       if (arc && !reads_source_words() && plane_ && !src_.helix_by_end && w.address.size() == 1 &&
           w.address[0] == (src_.centre_words == CentreWords::Plane ? 'K' : *plane_)) {
         lead = &w;  // a helix's lead, in the source's unit (helix())
@@ -481,12 +496,18 @@ void Structured::translated_machine() {
   if (machine_frame) position_ = {};
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
   moved_ |= moves;
-  if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
-    plane_centre(centre_words, start, params);
-  if (radius) radius_centre(*radius, start, params);
-  if (arc) helix(start, lead, params);
-  absolute_centre(start, params);
-  arc_on_circle(start);
+  if (centre_override) {
+    params.insert(params.end(), centre_override->begin(), centre_override->end());
+  } else {
+    if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
+      plane_centre(centre_words, start, params);
+    if (radius) radius_centre(*radius, start, params);
+    if (arc) helix(start, lead, params);
+    absolute_centre(start, params);
+    arc_on_circle(start);
+  }
+  std::vector<std::string> joint;  // the corner's move, after the block's
+  if (corner) joint = corner_moves(*corner, start, chained, params);
   auto conflict = [&](const Mapped& a) {
     return std::any_of(codes.begin(), codes.end(), [&](const Mapped& b) {
       if (&a == &b) return false;
@@ -531,11 +552,12 @@ void Structured::translated_machine() {
       }
     }
   }
+  const bool has_motion = std::any_of(codes.begin(), codes.end(), [](const Mapped& c) {
+    const auto& calls = c.code.entry->desc.calls;
+    return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
+  });
+  if (!restore_motion.empty() && !has_motion) main.insert(main.begin(), restore_motion);
   if (moves && in_main_ && !deferred_motion_.empty()) {
-    const bool has_motion = std::any_of(codes.begin(), codes.end(), [](const Mapped& c) {
-      const auto& calls = c.code.entry->desc.calls;
-      return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
-    });
     if (!has_motion) main.insert(main.begin(), deferred_motion_);
     deferred_motion_.clear();
   }
@@ -559,6 +581,7 @@ void Structured::translated_machine() {
   };
   apart_blocks(before);
   write_words(main);
+  write_words(joint);
   apart_blocks(after);
   write_words(later);
 }
@@ -830,28 +853,13 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   if (helix_mode) return fail(at, fmt::format("a helix: {} moves along {} in its helix mode only, which is not written yet", w_.dialect(), normal_axis()));
   const bool writes_lead = !dst_.helix_by_end;
   if (!lead && !writes_lead) return;
-  // The centre in the plane, from the words the source gives, or as computed here.
-  std::array<std::optional<double>, 2> centre{centre_[u], centre_[v]};
-  for (const ir::Word& w : block_->words)
-    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == src_.radius_word && !centre[0])
-      if (const auto by_radius = centre_by_radius(w, start)) centre = {(*by_radius)[0], (*by_radius)[1]};
-  for (int k = 0; k < 2 && (!centre[0] || !centre[1]); ++k) {
-    const size_t axis = k == 0 ? u : v;
-    const char letter = src_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
-    std::optional<double> word = 0.0;
-    for (const ir::Word& w : block_->words)
-      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter) word = constant_of(w.value);
-    const bool from_start = src_.arc_centre == ArcCentre::Incremental || incremental_ == true;
-    if (!word || !start[axis] || !incremental_) centre[static_cast<size_t>(k)].reset();
-    else centre[static_cast<size_t>(k)] = from_start ? *start[axis] + *word : *word;
-  }
+  const auto centre = arc_centre(start);
   const std::optional<double> source_lead = lead ? constant_of(lead->value) : std::nullopt;
-  if (!centre[0] || !centre[1] || !start[u] || !start[v] || !start[n] || !position_[u] || !position_[v] || !position_[n] ||
-      (lead && !source_lead))
+  if (!centre || !start[u] || !start[v] || !start[n] || !position_[u] || !position_[v] || !position_[n] || (lead && !source_lead))
     return fail(at, "a helix whose start, end, centre or lead is not known here (after a label, a call or a computed value)");
   constexpr double kTwoPi = 2 * 3.14159265358979323846;
-  const double a0 = std::atan2(*start[v] - *centre[1], *start[u] - *centre[0]);
-  const double a1 = std::atan2(*position_[v] - *centre[1], *position_[u] - *centre[0]);
+  const double a0 = std::atan2(*start[v] - (*centre)[1], *start[u] - (*centre)[0]);
+  const double a1 = std::atan2(*position_[v] - (*centre)[1], *position_[u] - (*centre)[0]);
   double sweep = motion_ == Fn::MotionArcCw ? a0 - a1 : a1 - a0;
   sweep = std::fmod(std::fmod(sweep, kTwoPi) + kTwoPi, kTwoPi);
   if (sweep < 1e-12) sweep = kTwoPi;  // the end over the start: a full turn
@@ -873,6 +881,30 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   if (dst_.centre_words == CentreWords::Plane) to = std::fabs(to);  // NC-110's pitch: the travel's sign is Z's
   const char letter = dst_.centre_words == CentreWords::Plane ? 'K' : static_cast<char>('I' + n);
   words.push_back(letter + w_.number({letter, to, Value::Length}));
+}
+
+// The block's arc's centre in the plane (source coordinates): as this translation
+// computed it, from the source's R, or from its centre words; nothing where the text
+// does not say it.
+std::optional<std::array<double, 2>> Structured::arc_centre(const Position& start) {
+  const int plane = plane_index();
+  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  if (centre_[u] && centre_[v]) return std::array<double, 2>{*centre_[u], *centre_[v]};
+  for (const ir::Word& w : block_->words)
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == src_.radius_word)
+      return centre_by_radius(w, start);
+  std::array<double, 2> centre{};
+  for (int k = 0; k < 2; ++k) {
+    const size_t axis = k == 0 ? u : v;
+    const char letter = src_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
+    std::optional<double> word = 0.0;
+    for (const ir::Word& w : block_->words)
+      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter) word = constant_of(w.value);
+    const bool from_start = src_.arc_centre == ArcCentre::Incremental || incremental_ == true;
+    if (!word || !start[axis] || !incremental_) return std::nullopt;
+    centre[static_cast<size_t>(k)] = from_start ? *start[axis] + *word : *word;
+  }
+  return centre;
 }
 
 // An arc whose centre this translation computed: its end must lie on its circle as
@@ -1740,6 +1772,7 @@ class Streamer final : public StreamObserver {
     t_.stream(program, block);
     spill.grown();
   }
+  bool streams(const ir::Program& program, const ir::Block& block) const override { return !t_.looks_ahead(program, block); }
 
   Spill spill;
 

@@ -55,6 +55,9 @@ class Structured {
   // LinuxCNC: a jump back to a streamed block, where an o-word must open: the
   // program is to be read whole and translated again.
   bool needs_whole() const { return needs_whole_; }
+  // A block the translation writes with the next one in view (ISO's corners into a
+  // target without them): it is not to be streamed.
+  bool looks_ahead(const ir::Program& program, const ir::Block& b);
 
   std::vector<Problem> problems;
 
@@ -211,6 +214,10 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  bool lowers_corner(const ir::Word& w) const;
+  std::vector<std::string> corner_moves(const ir::Word& corner, const Position& start,
+                                        const std::optional<std::array<double, 2>>& chained, std::vector<std::string>& words);
+  std::optional<std::array<double, 2>> arc_centre(const Position& start);
   std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
   void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words);
@@ -257,6 +264,10 @@ class Structured {
   bool lowers_inch_ = false;           // ... and the program has inches where the target has none
   std::optional<Fn> motion_;           // the motion code in force
   Position centre_;                    // of the block's arc, where this translation computed it
+  const ir::Block* next_ = nullptr;    // the block after this one in its unit
+  std::optional<std::array<double, 2>> chained_start_;  // in the plane: where a corner's move left the tool
+  std::string restore_motion_;         // the motion code a fillet's move leaves to be written again
+  std::optional<std::vector<std::string>> centre_override_;  // the next arc's centre words, from a corner's end
 };
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
