@@ -52,14 +52,15 @@ struct Structured::Mapped {
 };
 
 Structured::Structured(std::string dialect, Writer& writer, const MachineConfig& target_machine)
-    : w_(writer), target_(target_machine), dst_(writer.conventions()), same_(dialect == writer.dialect()) {}
+    : w_(writer), target_(target_machine), dst_(writer.conventions()), same_(dialect == writer.dialect()),
+      target_inch_(exact_code({{Fn::UnitsInch}}, Scope::Modal).has_value()) {}
 
 void Structured::attach(const ir::Program& program) {
   p_ = &program;
   src_ = program.semantics.conventions;
   // A program that changes to inches, into a target without them: its lengths are
   // written in mm, and after a label or a call the unit is not known.
-  if (!target_code({{Fn::UnitsInch}}, Scope::Modal))
+  if (!target_inch_)
     for (const ir::Unit& u : program.units)
       for (const ir::Block& b : u.blocks)
         for (const ir::Word& w : b.words)
@@ -1078,7 +1079,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
     }
     switch (f.fn) {
       case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
-      case Fn::UnitsInch: inch_ = true, unit_ = target_code({{Fn::UnitsInch}}, Scope::Modal) ? 1.0 : 25.4; break;
+      case Fn::UnitsInch: inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4; break;
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset: offset_selected_ = true; break;
       case Fn::CycleCancel: cycle_on_ = false; break;
@@ -1204,7 +1205,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     if (code) each.push_back(*code);
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
     else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
-    else if ((c.fn == Fn::UnitsMm || c.fn == Fn::UnitsInch) && !target_code({{Fn::UnitsInch}}, Scope::Modal))
+    else if ((c.fn == Fn::UnitsMm || c.fn == Fn::UnitsInch) && !target_inch_)
       state({c});  // pp: mm always, inches written as mm (unit_)
     else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal)) continue;  // ISO: rpm always
     else if (still_at_power_on(c)) continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)

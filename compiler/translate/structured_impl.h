@@ -162,6 +162,7 @@ class Structured {
   Conventions src_;
   const Conventions& dst_;
   const bool same_;  // the target is the source's dialect
+  const bool target_inch_;  // the target has an inch mode (pp has not)
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
   bool main_number_ = false;           // ... written ':' (a GOST main block)
