@@ -53,20 +53,24 @@ struct Structured::Mapped {
 
 Structured::Structured(std::string dialect, Writer& writer, const MachineConfig& target_machine)
     : w_(writer), target_(target_machine), dst_(writer.conventions()), same_(dialect == writer.dialect()),
-      target_inch_(exact_code({{Fn::UnitsInch}}, Scope::Modal).has_value()) {}
+      target_inch_(exact_code({{Fn::UnitsInch}}, Scope::Modal).has_value()),
+      target_polar_(exact_code({{Fn::PolarOn}}, Scope::Modal).has_value()) {}
 
 void Structured::attach(const ir::Program& program) {
   p_ = &program;
   src_ = program.semantics.conventions;
-  // A program that changes to inches, into a target without them: its lengths are
-  // written in mm, and after a label or a call the unit is not known.
-  if (!target_inch_)
+  // A program that changes to inches or to polar coordinates, into a target without
+  // them: its lengths are written in mm, its points in X Y Z, and after a label or a
+  // call the mode is not known.
+  if (!target_inch_ || !target_polar_)
     for (const ir::Unit& u : program.units)
       for (const ir::Block& b : u.blocks)
         for (const ir::Word& w : b.words)
           if (w.kind == ir::WordKind::Code && w.code >= 0) {
             const auto& calls = program.semantics.codes[static_cast<size_t>(w.code)].calls;
-            lowers_inch_ |= std::find(calls.begin(), calls.end(), FnCall{Fn::UnitsInch}) != calls.end();
+            auto has = [&](Fn fn) { return std::find(calls.begin(), calls.end(), FnCall{fn}) != calls.end(); };
+            lowers_inch_ |= !target_inch_ && has(Fn::UnitsInch);
+            lowers_polar_ |= !target_polar_ && has(Fn::PolarOn);
           }
 }
 
@@ -377,6 +381,7 @@ void Structured::forget() {
   motion_.reset();
   inch_.reset();
   if (unit_ != 1.0 || lowers_inch_) unit_.reset();
+  if (polar_ != false || lowers_polar_) polar_.reset();
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -460,12 +465,27 @@ void Structured::translated_machine() {
   const ir::Word* radius = nullptr;  // an arc's R, where the target gives arcs by their centre
   const ir::Word* lead = nullptr;    // a helix's lead word
   const ir::Word* corner = nullptr;  // ISO's ,C or ,R, where the target has no corners
+  std::array<const ir::Word*, 2> polar{};  // the plane's radius and angle, where the target has no G16
+  size_t polar_at = 0;                    // ... written at this place of params
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
       if (lowers_corner(w)) {
         corner = &w;
         continue;
+      }
+      if (!reads_source_words() && !target_polar_ && polar_ != false && w.address.size() == 1 && !machine_frame) {
+        const int k = !plane_ ? -1 : w.address[0] == 'X' + kPlanes[plane_index()].u ? 0 : w.address[0] == 'X' + kPlanes[plane_index()].v ? 1 : -1;
+        if (k >= 0 || (!plane_ && std::string_view("XYZ").find(w.address[0]) != std::string_view::npos)) {
+          if (k < 0 || !polar_) {
+            fail(w.range, fmt::format("an axis word where the plane or G15/G16 is not known: {} has no polar coordinates", w_.dialect()));
+            continue;
+          }
+          if (!polar[0] && !polar[1]) polar_at = params.size();
+          polar[static_cast<size_t>(k)] = &w;
+          moves = true;
+          continue;
+        }
       }
       if (centre_override && arc && w.address.size() == 1 &&
           ((w.address[0] >= 'I' && w.address[0] <= 'K') || w.address[0] == src_.radius_word))
@@ -494,6 +514,7 @@ void Structured::translated_machine() {
         parameter(w, params);
       track(w);
     }
+  if (polar[0] || polar[1]) polar_point(polar, start, params, polar_at);
   if (machine_frame) position_ = {};
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
   moved_ |= moves;
@@ -884,6 +905,43 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   words.push_back(letter + w_.number({letter, to, Value::Length}));
 }
 
+// ISO's polar coordinates (G16, §8.6) into a target without them: the plane's first
+// word is a radius, its second an angle in degrees from the first axis, about the work
+// zero under G90 (a word not written keeps the position's), about the position under
+// G91 (a word not written is 0), as the runtime reads them (machine_frame.cpp). The
+// point is written in the plane's two axes.
+void Structured::polar_point(const std::array<const ir::Word*, 2>& words, const Position& start,
+                             std::vector<std::string>& out, size_t at) {
+  const ir::Word& first = words[0] ? *words[0] : *words[1];
+  const int plane = plane_index();
+  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  position_[u].reset();
+  position_[v].reset();
+  if (!incremental_ || std::any_of(words.begin(), words.end(), [&](const ir::Word* w) { return w && !constant_of(w->value); }))
+    return fail(first.range, fmt::format("a point in polar coordinates given by a parameter, or where G90/G91 is not known: {} "
+                                         "has none, and it cannot be written in X Y Z here", w_.dialect()));
+  if (!start[u] || !start[v])
+    return fail(first.range, fmt::format("a point in polar coordinates, where the tool's position is not known: {} has none, "
+                                         "and it cannot be written in X Y Z here", w_.dialect()));
+  constexpr double kDegree = 3.14159265358979323846 / 180;
+  const bool absolute = !*incremental_;
+  double radius = absolute ? std::hypot(*start[u], *start[v]) : 0;
+  double angle = absolute ? std::atan2(*start[v], *start[u]) / kDegree : 0;
+  if (words[0]) radius = *constant_of(words[0]->value);
+  if (words[1]) angle = *constant_of(words[1]->value);
+  const double pu = (absolute ? 0 : *start[u]) + radius * std::cos(angle * kDegree);
+  const double pv = (absolute ? 0 : *start[v]) + radius * std::sin(angle * kDegree);
+  std::vector<std::string> words_xy;
+  for (const auto& [axis, p] : {std::pair{u, pu}, std::pair{v, pv}}) {
+    const char letter = static_cast<char>('X' + axis);
+    if (const auto text = length(first.range, letter, absolute ? p : p - *start[axis])) words_xy.push_back(letter + *text);
+  }
+  if (u > v) std::swap(words_xy.front(), words_xy.back());  // X Y Z order
+  out.insert(out.begin() + static_cast<long>(std::min(at, out.size())), words_xy.begin(), words_xy.end());
+  position_[u] = pu;
+  position_[v] = pv;
+}
+
 // The block's arc's centre in the plane (source coordinates): as this translation
 // computed it, from the source's R, or from its centre words; nothing where the text
 // does not say it.
@@ -1079,6 +1137,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
     }
     switch (f.fn) {
       case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
+      case Fn::PolarOn: case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
       case Fn::UnitsInch: inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4; break;
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset: offset_selected_ = true; break;
@@ -1207,6 +1266,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
     else if ((c.fn == Fn::UnitsMm || c.fn == Fn::UnitsInch) && !target_inch_)
       state({c});  // pp: mm always, inches written as mm (unit_)
+    else if ((c.fn == Fn::PolarOn || c.fn == Fn::PolarOff) && !target_polar_)
+      state({c});  // the points written in X Y Z (polar())
     else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal)) continue;  // ISO: rpm always
     else if (still_at_power_on(c)) continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)
     // pp has no G43: its length link adds the offset's length on the axes it names.

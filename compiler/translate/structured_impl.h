@@ -163,6 +163,7 @@ class Structured {
   const Conventions& dst_;
   const bool same_;  // the target is the source's dialect
   const bool target_inch_;  // the target has an inch mode (pp has not)
+  const bool target_polar_;  // ... polar coordinates (ISO's G16)
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
   bool main_number_ = false;           // ... written ':' (a GOST main block)
@@ -221,6 +222,8 @@ class Structured {
   std::optional<std::array<double, 2>> arc_centre(const Position& start);
   std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
+  void polar_point(const std::array<const ir::Word*, 2>& words, const Position& start, std::vector<std::string>& out,
+                   size_t at);
   void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words);
   std::optional<std::string> length(SourceRange at, char to, std::optional<double> v);
   void arc_on_circle(const Position& start);
@@ -263,6 +266,8 @@ class Structured {
   std::optional<bool> inch_;           // G20
   std::optional<double> unit_ = 1.0;   // the source's length unit in the target's (25.4: inches into pp's mm)
   bool lowers_inch_ = false;           // ... and the program has inches where the target has none
+  std::optional<bool> polar_ = false;  // G16, where the target has none (written in X Y Z)
+  bool lowers_polar_ = false;          // ... and the program has it
   std::optional<Fn> motion_;           // the motion code in force
   Position centre_;                    // of the block's arc, where this translation computed it
   const ir::Block* next_ = nullptr;    // the block after this one in its unit
