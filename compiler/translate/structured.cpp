@@ -474,18 +474,16 @@ void Structured::translated_machine() {
         corner = &w;
         continue;
       }
-      if (!reads_source_words() && !target_polar_ && polar_ != false && w.address.size() == 1 && !machine_frame) {
-        const int k = !plane_ ? -1 : w.address[0] == 'X' + kPlanes[plane_index()].u ? 0 : w.address[0] == 'X' + kPlanes[plane_index()].v ? 1 : -1;
-        if (k >= 0 || (!plane_ && std::string_view("XYZ").find(w.address[0]) != std::string_view::npos)) {
-          if (k < 0 || !polar_) {
-            fail(w.range, fmt::format("an axis word where the plane or G15/G16 is not known: {} has no polar coordinates", w_.dialect()));
-            continue;
-          }
-          if (!polar[0] && !polar[1]) polar_at = params.size();
-          polar[static_cast<size_t>(k)] = &w;
-          moves = true;
+      if (const int k = polar_word(w); k >= 0 && !machine_frame) {  // 0 the radius, 1 the angle, 2 not known
+        if (k == 2) {
+          fail(w.range, fmt::format("an axis word where the plane or G15/G16 is not known: {} has no polar coordinates",
+                                    w_.dialect()));
           continue;
         }
+        if (!polar[0] && !polar[1]) polar_at = params.size();
+        polar[static_cast<size_t>(k)] = &w;
+        moves = true;
+        continue;
       }
       if (centre_override && arc && w.address.size() == 1 &&
           ((w.address[0] >= 'I' && w.address[0] <= 'K') || w.address[0] == src_.radius_word))
@@ -851,9 +849,9 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
 // An arc that moves along its plane's normal too: a helix. ISO gives it by its end
 // point alone (one turn at most), GOST 20999 by a lead per radian or per revolution
 // as well, NC-110 by a pitch (a lead per revolution, positive), each a lead that
-// selects the number of turns (machine_motion.cpp). The target's lead is the source's
-// converted, or the travel over the sweep where the source has none; a helix of
-// more turns than the end point says is refused where the target has no lead word.
+// selects the number of turns (machine_motion.cpp). The target's lead is the travel
+// over the sweep the source's run takes (the turns its lead selects, or its end
+// point's); a helix of more than one turn is refused where the target has no lead.
 // The start, the end and the centre must be known from the text.
 void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words) {
   if (reads_source_words() || !plane_) return;
@@ -879,12 +877,8 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   const std::optional<double> source_lead = lead ? constant_of(lead->value) : std::nullopt;
   if (!centre || !start[u] || !start[v] || !start[n] || !position_[u] || !position_[v] || !position_[n] || (lead && !source_lead))
     return fail(at, "a helix whose start, end, centre or lead is not known here (after a label, a call or a computed value)");
-  constexpr double kTwoPi = 2 * 3.14159265358979323846;
-  const double a0 = std::atan2(*start[v] - (*centre)[1], *start[u] - (*centre)[0]);
-  const double a1 = std::atan2(*position_[v] - (*centre)[1], *position_[u] - (*centre)[0]);
-  double sweep = motion_ == Fn::MotionArcCw ? a0 - a1 : a1 - a0;
-  sweep = std::fmod(std::fmod(sweep, kTwoPi) + kTwoPi, kTwoPi);
-  if (sweep < 1e-12) sweep = kTwoPi;  // the end over the start: a full turn
+  double sweep = arc_sweep(std::atan2(*start[v] - (*centre)[1], *start[u] - (*centre)[0]),
+                           std::atan2(*position_[v] - (*centre)[1], *position_[u] - (*centre)[0]), motion_ == Fn::MotionArcCcw);
   const double dw = *position_[n] - *start[n];
   if (source_lead) {  // the turns it selects, as the runtime takes them
     const double per_radian = *source_lead / (src_.helix_lead == HelixLead::PerRevolution ? kTwoPi : 1.0);
@@ -905,6 +899,17 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   words.push_back(letter + w_.number({letter, to, Value::Length}));
 }
 
+// Which polar word `w` is where the target has no polar coordinates: 0 the radius
+// (the plane's first axis), 1 the angle, 2 an axis word where the plane or the mode
+// is not known; -1 none.
+int Structured::polar_word(const ir::Word& w) const {
+  if (reads_source_words() || target_polar_ || polar_ == false || w.address.size() != 1) return -1;
+  const char letter = w.address[0];
+  if (!plane_ || !polar_) return std::string_view("XYZ").find(letter) != std::string_view::npos ? 2 : -1;
+  const Plane& plane = kPlanes[plane_index()];
+  return letter == 'X' + plane.u ? 0 : letter == 'X' + plane.v ? 1 : -1;
+}
+
 // ISO's polar coordinates (G16, §8.6) into a target without them: the plane's first
 // word is a radius, its second an angle in degrees from the first axis, about the work
 // zero under G90 (a word not written keeps the position's), about the position under
@@ -923,7 +928,7 @@ void Structured::polar_point(const std::array<const ir::Word*, 2>& words, const 
   if (!start[u] || !start[v])
     return fail(first.range, fmt::format("a point in polar coordinates, where the tool's position is not known: {} has none, "
                                          "and it cannot be written in X Y Z here", w_.dialect()));
-  constexpr double kDegree = 3.14159265358979323846 / 180;
+  constexpr double kDegree = std::numbers::pi / 180;
   const bool absolute = !*incremental_;
   double radius = absolute ? std::hypot(*start[u], *start[v]) : 0;
   double angle = absolute ? std::atan2(*start[v], *start[u]) / kDegree : 0;
@@ -940,6 +945,11 @@ void Structured::polar_point(const std::array<const ir::Word*, 2>& words, const 
   out.insert(out.begin() + static_cast<long>(std::min(at, out.size())), words_xy.begin(), words_xy.end());
   position_[u] = pu;
   position_[v] = pv;
+}
+
+double arc_sweep(double from, double to, bool ccw) {
+  const double s = std::fmod(std::fmod(ccw ? to - from : from - to, kTwoPi) + kTwoPi, kTwoPi);
+  return s < 1e-12 ? kTwoPi : s;  // the end over the start: a whole turn
 }
 
 // The block's arc's centre in the plane (source coordinates): as this translation

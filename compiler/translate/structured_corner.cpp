@@ -28,12 +28,9 @@ bool plain(const ir::Block& b) {
   });
 }
 
-// An arc's sweep in radians, its way; a whole turn where it ends where it starts.
+// An element's sweep, an arc's.
 double sweep(const corner::Element& e) {
-  constexpr double kTwoPi = 2 * 3.14159265358979323846;
-  const double a0 = std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), a1 = std::atan2(e.b.y() - e.c.y(), e.b.x() - e.c.x());
-  const double s = std::fmod(std::fmod(e.ccw ? a1 - a0 : a0 - a1, kTwoPi) + kTwoPi, kTwoPi);
-  return s < 1e-12 ? kTwoPi : s;
+  return arc_sweep(std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), std::atan2(e.b.y() - e.c.y(), e.b.x() - e.c.x()), e.ccw);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <set>
 #include <string>
@@ -222,6 +223,7 @@ class Structured {
   std::optional<std::array<double, 2>> arc_centre(const Position& start);
   std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
+  int polar_word(const ir::Word& w) const;
   void polar_point(const std::array<const ir::Word*, 2>& words, const Position& start, std::vector<std::string>& out,
                    size_t at);
   void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words);
@@ -275,6 +277,11 @@ class Structured {
   std::string restore_motion_;         // the motion code a fillet's move leaves to be written again
   std::optional<std::vector<std::string>> centre_override_;  // the next arc's centre words, from a corner's end
 };
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+// An arc's sweep in radians from angle `from` to `to`, its way; a whole turn where
+// they are the same.
+double arc_sweep(double from, double to, bool ccw);
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target);
