@@ -128,6 +128,7 @@ class Structured {
   std::string operand(ir::ExprId a);  // a function's operand
   std::string negation(ir::ExprId id, int min);  // not id
   void forget();  // the state the text says is not known any more (a label, a call)
+  void forget_position() { position_ = {}; }  // a code that moves the origin or the frame
   bool ends_program(const ir::Unit& u) const;
   void fail(SourceRange at, std::string what) { problems.push_back({at, std::move(what)}); }
   void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), Problem::Dropped}); }

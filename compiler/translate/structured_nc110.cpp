@@ -11,6 +11,8 @@
 
 #include <fmt/format.h>
 
+#include "runtime/system_vars.h"
+#include "stdlib/tables.h"
 #include "structured_impl.h"
 
 namespace ncc::translate {
@@ -34,6 +36,20 @@ Class class_of(uint32_t e) {
 }
 
 std::string quoted(const std::string& label) { return "\"" + label + "\""; }
+
+// NC-110's name of each system variable a program reads or writes (its table, the
+// first name of each), and whether it takes a number after it (TIM0, RMN11).
+const std::map<SysVar, std::pair<std::string, bool>>& system_names() {
+  static const auto names = [] {
+    std::map<SysVar, std::pair<std::string, bool>> out;
+    Diagnostics quiet;
+    if (auto table = stdlib::load_table("nc110", "system_variables.tsv", 5, quiet))
+      for (const stdlib::TableRow& row : table->rows)
+        if (auto var = sys_by_name(row.cells[1])) out.try_emplace(*var, row.cells[0], row.cells[2] != "-");
+    return out;
+  }();
+  return names;
+}
 
 // 1 to 6 capital letters and digits (nc110 decision 3).
 bool valid_label(const std::string& s) {
@@ -294,8 +310,13 @@ class Nc110Structured final : public Structured {
   // --- codes ------------------------------------------------------------------------
 
   // A work offset (ISO's G54..., NC-110's own UAO): (UAO,n) in a block of its own,
-  // before the block's motion.
+  // before the block's motion. NC-110's other three-letter codes of a function
+  // (MIR, URT, SCF, UOT, UIO, ...) into NC-110: as written.
   bool own_code(const ir::Word& w, const CodeDesc& desc) override {
+    if (same_ && w.address.size() == 3 && desc.calls.size() == 1) {
+      offset_selected_ |= desc.calls[0].fn == Fn::OriginSelect;
+      return as_written(w);
+    }
     if (desc.calls.size() != 1 || desc.scope != Scope::Modal) return false;  // G53's one block: no UAO for it
     const Fn fn = desc.calls[0].fn;
     if (fn != Fn::WorkOffset && fn != Fn::OriginSelect) return false;
@@ -315,6 +336,24 @@ class Nc110Structured final : public Structured {
       if (auto why = partial_offset(n, desc.name)) return fail(w.range, *why), true;
     line(fmt::format("(UAO,{})", n));
     offset_selected_ = true;
+    return true;
+  }
+
+  // A three-letter code and its operands, which are the block's other words (one
+  // instruction a block): a value operand by its text, an axis with its value or
+  // alone. It may move the origin or the frame: the position is not known after it.
+  bool as_written(const ir::Word& code) {
+    std::string text = "(" + code.address.str();
+    for (const ir::Word& o : block_->words) {
+      if (o.kind != ir::WordKind::Parameter) continue;
+      const std::string address = o.address.str();
+      if (address.find('\'') != std::string::npos)
+        return fail(o.range, fmt::format("{} with a pair of values: not written yet", code.address.str())), true;
+      text += "," + (address[0] == '#' ? o.text.substr(o.text.starts_with("=") ? 1 : 0) : address + o.text);
+    }
+    line(text + ")");
+    origin_words_ = true;  // its operands are written
+    forget_position();
     return true;
   }
 
@@ -363,8 +402,25 @@ class Nc110Structured final : public Structured {
   // Each variable of the source in an LR parameter from E30 up, in the order the
   // program first names them; NC-110's own keep their numbers.
   std::string var(const ir::Expr& e) override {
+    if (same_ && (e.op == ir::ExprOp::Mem || e.op == ir::ExprOp::Text || e.op == ir::ExprOp::Sys)) return own_reference(e);
     const auto n = e_of(e);
     return n ? fmt::format("E{}", *n) : "E0";
+  }
+
+  // NC-110's own memories (SA3.IN, SYVAR16.3CH) and system variables (TMR, TIM0),
+  // into NC-110: as NC-110 names them.
+  std::string own_reference(const ir::Expr& e) {
+    if (e.op == ir::ExprOp::Sys) {
+      const SysRef ref = SysRef::unpack(e.sys);
+      const auto it = system_names().find(ref.var);
+      if (it == system_names().end()) return fail(e.range, "a system variable NC-110 has no name for"), "E0";
+      return it->second.second ? fmt::format("{}{}", it->second.first, ref.index) : it->second.first;
+    }
+    const auto index = constant_of(e.a);
+    if (!index) return fail(e.range, "a memory at a computed index"), "E0";
+    static constexpr const char* kFormats[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
+    const std::string format = e.op == ir::ExprOp::Text ? fmt::format("{}CH", e.count) : kFormats[static_cast<int>(e.format)];
+    return fmt::format("{}{}.{}", p_->spaces[e.space].name, static_cast<uint32_t>(*index), format);
   }
 
   std::optional<uint32_t> e_of(const ir::Expr& e) {
@@ -475,6 +531,14 @@ class Nc110Structured final : public Structured {
     switch (e.op) {
       case ir::ExprOp::Number: return e.number < 0 ? wrap(kSign, exact(e.number, false)) : exact(e.number, false);
       case ir::ExprOp::Var: return var(e);
+      case ir::ExprOp::Mem: case ir::ExprOp::Text: case ir::ExprOp::Sys:
+        if (same_) return own_reference(e);
+        fail(e.range, "a memory, a system variable or a text in an expression");
+        return "0";
+      case ir::ExprOp::String:
+        if (same_) return quoted(p_->texts[e.text]);
+        fail(e.range, "a memory, a system variable or a text in an expression");
+        return "0";
       case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return expr(e.a, min);
       case ir::ExprOp::Neg:  // -(-2) reads back as 2: a constant is folded
         if (auto v = constant_of(id)) return *v < 0 ? wrap(kSign, exact(*v, false)) : exact(*v, false);
