@@ -380,6 +380,7 @@ void Structured::forget() {
   rpm_.reset();
   motion_.reset();
   inch_.reset();
+  per_minute_.reset();
   if (unit_ != 1.0 || lowers_inch_) unit_.reset();
   if (polar_ != false || lowers_polar_) polar_.reset();
 }
@@ -1148,6 +1149,9 @@ void Structured::state(const std::vector<FnCall>& calls) {
     switch (f.fn) {
       case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
       case Fn::PolarOn: case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
+      case Fn::FeedPerMinute: case Fn::FeedPerRevolution: case Fn::FeedInverseTime:
+        per_minute_ = f.fn == Fn::FeedPerMinute;
+        break;
       case Fn::UnitsInch: inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4; break;
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset: offset_selected_ = true; break;

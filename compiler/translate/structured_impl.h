@@ -183,6 +183,7 @@ class Structured {
   bool program_ended_ = false;         // the main program's end is written
   bool start_empty_ = false;           // the start wrote no line
   bool main_begun_ = false;            // a line of the main program is written
+  std::optional<bool> per_minute_;     // the feed is per minute (G94), where the text says
   std::vector<std::string> title_comments_;  // the comment blocks before it
 
  private:

@@ -313,6 +313,7 @@ class Nc110Structured final : public Structured {
   // before the block's motion. NC-110's other three-letter codes of a function
   // (MIR, URT, SCF, UOT, UIO, ...) into NC-110: as written.
   bool own_code(const ir::Word& w, const CodeDesc& desc) override {
+    if (!same_ && desc.calls == std::vector<FnCall>{{Fn::Dwell}}) return dwell_block(w), true;
     if (same_ && w.address.size() == 3 && desc.calls.size() == 1) {
       offset_selected_ |= desc.calls[0].fn == Fn::OriginSelect;
       return as_written(w);
@@ -337,6 +338,30 @@ class Nc110Structured final : public Structured {
     line(fmt::format("(UAO,{})", n));
     offset_selected_ = true;
     return true;
+  }
+
+  // Another dialect's dwell (G04 and its time): NC-110 dwells at the end of a G04
+  // block for the time in the system variable TMR, in seconds under G94 (at most
+  // 60), in revolutions under G95 (§2.10.1). So: TMR=t, then G04.
+  void dwell_block(const ir::Word& code) {
+    origin_words_ = true;  // its time is written here
+    const ir::Word* time = nullptr;
+    for (const ir::Word& o : block_->words) {
+      if (o.kind != ir::WordKind::Parameter) continue;
+      if (o.address.size() != 1 || o.address[0] != src_.dwell_word)
+        return fail(o.range, fmt::format("a dwell with the word {}: NC-110 dwells in a block of its own, by TMR", o.address.str()));
+      time = &o;
+    }
+    const auto value = time ? constant_of(time->value) : std::nullopt;
+    if (!value) return fail(code.range, "a dwell whose time is not a constant: NC-110 dwells by TMR, set before");
+    const double seconds = *value * src_.dwell_seconds_per_unit;
+    if (per_minute_ != true)
+      return fail(code.range, "a dwell where the feed may be per revolution: NC-110's TMR counts revolutions under G95");
+    if (seconds < 0 || seconds > 60) return fail(time->range, fmt::format("a dwell of {} s: NC-110's TMR holds 0 to 60 s", exact(seconds, false)));
+    const auto g04 = target_code({{Fn::PathDwellEnd}}, Scope::Block);
+    if (!g04) return fail(code.range, "a dwell: NC-110's table has no G04");
+    line("TMR=" + exact(seconds, false));
+    line(g04->text());
   }
 
   // A three-letter code and its operands, which are the block's other words (one
