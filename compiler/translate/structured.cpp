@@ -202,6 +202,7 @@ void Structured::begin_main() {
   rpm_ = true;  // a cutting speed needs its code (G96)
   tool_selected_ = tool_loaded_ = 0;  // no tool in the spindle
   corrector_ = 0;
+  timer_ = 0;  // NC-110's TMR at power-on
   state(power_on());
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
   // power-on motion goes into the main program's first move instead of the start.
@@ -304,6 +305,8 @@ bool Structured::block(const ir::Block& b) {
                               }));
   block_ = &b;
   words_written_ = false;
+  if (!pending_number_) pending_number_ = carried_number_;  // a block before it wrote nothing
+  carried_number_.reset();
   skip_ = b.skippable;
   if (in_main_) lead(b);
   if (std::any_of(b.words.begin(), b.words.end(), [](const ir::Word& w) { return w.optional; }))
@@ -320,7 +323,7 @@ bool Structured::block(const ir::Block& b) {
     else statement(s);
   }
   if (!extra_words_.empty()) write_words(std::exchange(extra_words_, {}));  // with no machine words to join
-  flush();  // a block with nothing else
+  if (!std::exchange(carry_, false)) flush();  // a block with nothing else
   return returned;
 }
 
@@ -381,6 +384,7 @@ void Structured::forget() {
   motion_.reset();
   inch_.reset();
   per_minute_.reset();
+  timer_.reset();
   if (unit_ != 1.0 || lowers_inch_) unit_.reset();
   if (polar_ != false || lowers_polar_) polar_.reset();
 }
@@ -665,6 +669,29 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
     return fail(w.range, fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} not", desc.name,
                                      p_->dialect, w_.dialect(), to->text()));
   out.push_back({*to, desc.timing, to->entry->desc.timing, {}, {}});
+}
+
+// NC-110's dwells into a dialect with a dwell code and word: (DLY,t), t seconds, and
+// G04, which dwells at the end of its block for the time in TMR (seconds under G94):
+// the target's G04 with its time, after the block's motion.
+void Structured::timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out) {
+  const auto code = target_code({{Fn::Dwell}}, Scope::Block);
+  if (!code || !dst_.dwell_word) return fail(w.range, fmt::format("{} ({}): {} has no dwell with a time", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
+  bool known = timer_.has_value();
+  double seconds = timer_.value_or(0);
+  if (desc.calls[0].fn == Fn::DwellSeconds) {
+    known = false;
+    for (const ir::Word& o : block_->words)
+      if (o.kind == ir::WordKind::Parameter && o.slot == operand_slot(0))
+        if (const auto v = constant_of(o.value)) known = true, seconds = *v;
+    origin_words_ = true;  // its operand is the dwell's time
+  } else if (per_minute_ != true) {
+    return fail(w.range, fmt::format("{} where the feed may be per revolution: TMR then counts revolutions", desc.name));
+  }
+  if (!known) return fail(w.range, fmt::format("{} whose time is not known here (TMR set by a label's way, or computed)", desc.name));
+  const OutWord time{dst_.dwell_word, seconds / dst_.dwell_seconds_per_unit, Value::Seconds};
+  if (auto why = w_.unwritable(time)) return fail(w.range, *why);
+  out.push_back({*code, desc.timing, code->entry->desc.timing, {}, code->text() + " " + dst_.dwell_word + w_.number(time)});
 }
 
 // NC-110's (UAO,n): origin n on every axis it declares. It is the target's work
@@ -1194,6 +1221,16 @@ void Structured::state(const std::vector<FnCall>& calls) {
                                             p_->dialect, w_.dialect()));
           }
         }
+        // The target's M06 first takes the tool axis to the reference point, the
+        // source's changes the tool where it stands: the same only where the tool is
+        // there already, before the first move on a machine that starts there.
+        if (dst_.tool_change_retract && !src_.tool_change_retract && plane_) {
+          const size_t i = static_cast<size_t>(normal_axis() - 'X');
+          if (moved_ || target_.initial_position[i] != target_.reference_position[i])
+            fail(block_->range, fmt::format("a tool change where the tool stands: {}'s M06 first takes the tool axis to the "
+                                            "reference point, {}'s does not (a machine that changes tools in place says "
+                                            "iso.tool_change_retract = false)", w_.dialect(), p_->dialect));
+        }
         tool_loaded_ = tool_selected_;
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
@@ -1215,6 +1252,9 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
   if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope)) return reference(w, desc, out);
+  if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} || desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
+      !target_code(desc.calls, desc.scope))
+    return timed_dwell(w, desc, out);
   // ISO's G41/G42 move the tool's centre off the path (cutter_path.cpp); the others'
   // runs keep to the programmed path.
   if (src_.comp_path != dst_.comp_path && std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) {
@@ -1559,6 +1599,15 @@ void Structured::dwell(const ir::Word& w, std::vector<std::string>& words) {
 
 void Structured::assign(const ir::Stmt& s) {
   const ir::Expr& target = p_->exprs[s.target];
+  // NC-110's dwell time TMR, into a dialect without it: what its next G04 dwells
+  // (path_dwell()); nothing written.
+  if (!same_ && target.op == ir::ExprOp::Sys && SysRef::unpack(target.sys).var == SysVar::DwellTime) {
+    timer_ = constant_of(s.value);
+    if (!timer_) fail(s.range, fmt::format("a dwell time TMR that is not a constant: {} gives a dwell its time in its block", w_.dialect()));
+    carried_number_ = std::exchange(pending_number_, std::nullopt);  // with the comments, to the next line
+    carry_ = true;
+    return;
+  }
   std::string value = expr(s.value, kOr);
   if (!same_ && target.op == ir::ExprOp::Var && p_->is_constant(target.a)) {
     // A store rounds as the parameter's class does (NC-110 decision 8; pp R: 0.001).

@@ -184,6 +184,9 @@ class Structured {
   bool start_empty_ = false;           // the start wrote no line
   bool main_begun_ = false;            // a line of the main program is written
   std::optional<bool> per_minute_;     // the feed is per minute (G94), where the text says
+  std::optional<double> timer_ = 0;    // NC-110's dwell time TMR, where the text says
+  bool carry_ = false;                 // the block wrote nothing: its number goes to the next line
+  std::optional<int> carried_number_;  // ... this one
   std::vector<std::string> title_comments_;  // the comment blocks before it
 
  private:
@@ -219,6 +222,7 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  void timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   bool lowers_corner(const ir::Word& w) const;
   std::vector<std::string> corner_moves(const ir::Word& corner, const Position& start,
                                         const std::optional<std::array<double, 2>>& chained, std::vector<std::string>& words);
