@@ -1224,8 +1224,9 @@ void Structured::state(const std::vector<FnCall>& calls) {
         // The target's M06 first takes the tool axis to the reference point, the
         // source's changes the tool where it stands: the same only where the tool is
         // there already, before the first move on a machine that starts there.
-        if (dst_.tool_change_retract && !src_.tool_change_retract && plane_) {
-          const size_t i = static_cast<size_t>(normal_axis() - 'X');
+        if (dst_.tool_change_retract && !src_.tool_change_retract) {
+          const char axis = dst_.tool_offset_axes.empty() ? 'Z' : dst_.tool_offset_axes[0];
+          const size_t i = std::string_view(kAxisLetters).find(axis);
           if (moved_ || target_.initial_position[i] != target_.reference_position[i])
             fail(block_->range, fmt::format("a tool change where the tool stands: {}'s M06 first takes the tool axis to the "
                                             "reference point, {}'s does not (a machine that changes tools in place says "
@@ -1600,7 +1601,7 @@ void Structured::dwell(const ir::Word& w, std::vector<std::string>& words) {
 void Structured::assign(const ir::Stmt& s) {
   const ir::Expr& target = p_->exprs[s.target];
   // NC-110's dwell time TMR, into a dialect without it: what its next G04 dwells
-  // (path_dwell()); nothing written.
+  // (timed_dwell()); nothing written.
   if (!same_ && target.op == ir::ExprOp::Sys && SysRef::unpack(target.sys).var == SysVar::DwellTime) {
     timer_ = constant_of(s.value);
     if (!timer_) fail(s.range, fmt::format("a dwell time TMR that is not a constant: {} gives a dwell its time in its block", w_.dialect()));
