@@ -837,8 +837,7 @@ std::optional<std::array<double, 2>> Structured::centre_by_radius(const ir::Word
     fail(r.range, fmt::format("an arc by its radius {} given by a parameter: {} gives the centre", r.address.str(), w_.dialect()));
     return std::nullopt;
   }
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t u = plane_u(), v = plane_v();
   if (!start[u] || !start[v] || !position_[u] || !position_[v]) {
     fail(r.range, "an arc by its radius, where its start or end is not known (after a label, a call or a computed move)");
     return std::nullopt;
@@ -859,16 +858,15 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
   if (!plane_ || !incremental_) return fail(r.range, "an arc by its radius where the plane or G90/G91 is not known");
   const auto centre = centre_by_radius(r, start);
   if (!centre) return;
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
-  if (!unit_) return fail(r.range, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
+  const size_t u = plane_u(), v = plane_v();
+  if (!unit_) return fail(r.range, unit_unknown());
   const double step = w_.resolution(), unit = *unit_;  // in the target's unit
   for (int k = 0; k < 2; ++k) {
     const size_t axis = k == 0 ? u : v;
     const double exact = (*centre)[static_cast<size_t>(k)] * unit, at = step > 0 ? std::round(exact / step) * step : exact;
     if (std::fabs(at - exact) > 1e-9 * std::max(1.0, std::fabs(at))) problems.push_back({r.range, "rounded", Problem::Rounded});
     centre_[axis] = at / unit;  // arc_on_circle() checks the end against it
-    const char to = dst_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
+    const char to = centre_letter(dst_, k);
     const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
     words.push_back(to + w_.number({to, from_start ? at - *start[axis] * unit : at, Value::Length}));
   }
@@ -883,8 +881,7 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
 // The start, the end and the centre must be known from the text.
 void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words) {
   if (reads_source_words() || !plane_) return;
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t u = plane_u(), v = plane_v();
   const size_t n = static_cast<size_t>(normal_axis() - 'X');
   const ir::Word* travel = nullptr;
   for (const ir::Word& w : block_->words)
@@ -920,7 +917,7 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
       fail(at, fmt::format("a helix of more than one turn: {} gives a helix by its end point alone", w_.dialect()));
     return;
   }
-  if (!unit_) return fail(at, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
+  if (!unit_) return fail(at, unit_unknown());
   double to = dw * *unit_ / sweep * (dst_.helix_lead == HelixLead::PerRevolution ? kTwoPi : 1.0);
   if (dst_.centre_words == CentreWords::Plane) to = std::fabs(to);  // NC-110's pitch: the travel's sign is Z's
   const char letter = dst_.centre_words == CentreWords::Plane ? 'K' : static_cast<char>('I' + n);
@@ -946,8 +943,7 @@ int Structured::polar_word(const ir::Word& w) const {
 void Structured::polar_point(const std::array<const ir::Word*, 2>& words, const Position& start,
                              std::vector<std::string>& out, size_t at) {
   const ir::Word& first = words[0] ? *words[0] : *words[1];
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t u = plane_u(), v = plane_v();
   position_[u].reset();
   position_[v].reset();
   if (!incremental_ || std::any_of(words.begin(), words.end(), [&](const ir::Word* w) { return w && !constant_of(w->value); }))
@@ -984,8 +980,7 @@ double arc_sweep(double from, double to, bool ccw) {
 // computed it, from the source's R, or from its centre words; nothing where the text
 // does not say it.
 std::optional<std::array<double, 2>> Structured::arc_centre(const Position& start) {
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t u = plane_u(), v = plane_v();
   if (centre_[u] && centre_[v]) return std::array<double, 2>{*centre_[u], *centre_[v]};
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == src_.radius_word)
@@ -993,7 +988,7 @@ std::optional<std::array<double, 2>> Structured::arc_centre(const Position& star
   std::array<double, 2> centre{};
   for (int k = 0; k < 2; ++k) {
     const size_t axis = k == 0 ? u : v;
-    const char letter = src_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k) : static_cast<char>('I' + axis);
+    const char letter = centre_letter(src_, k);
     std::optional<double> word = 0.0;
     for (const ir::Word& w : block_->words)
       if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter) word = constant_of(w.value);
@@ -1009,8 +1004,7 @@ std::optional<std::array<double, 2>> Structured::arc_centre(const Position& star
 void Structured::arc_on_circle(const Position& start) {
   const auto centre = std::exchange(centre_, {});
   if (!plane_) return;
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t u = plane_u(), v = plane_v();
   if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
   const double step = w_.resolution(), unit = unit_.value_or(1.0);  // the points as the target reads them
   auto at = [&](double x) { return step > 0 ? std::round(x * unit / step) * step : x * unit; };
@@ -1543,7 +1537,7 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
 // the target's mm (a target without an inch mode: pp); refused where it is not a
 // constant or the unit is not known.
 std::optional<std::string> Structured::length(SourceRange at, char to, std::optional<double> v) {
-  if (!unit_) fail(at, fmt::format("a length where G20 or G21 is not known: {} has no inch mode", w_.dialect()));
+  if (!unit_) fail(at, unit_unknown());
   else if (!v) fail(at, fmt::format("a length in inches given by a parameter: {} has no inch mode", w_.dialect()));
   if (!unit_ || !v) return std::nullopt;
   return number({to, *v * *unit_, to == 'F' ? Value::Feed : Value::Length}, at);

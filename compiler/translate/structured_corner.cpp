@@ -63,8 +63,7 @@ std::vector<std::string> Structured::corner_moves(const ir::Word& c, const Posit
   if (!plane_ || !incremental_ || !unit_) return refuse("the plane, G90/G91 or the unit is not known");
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
   if (!arc && motion_ != Fn::MotionLinear) return refuse("it follows no feed move");
-  const int plane = plane_index();
-  const size_t u = static_cast<size_t>(kPlanes[plane].u), v = static_cast<size_t>(kPlanes[plane].v);
+  const size_t u = plane_u(), v = plane_v();
   const size_t n = static_cast<size_t>(normal_axis() - 'X');
   if (!start[u] || !start[v] || !position_[u] || !position_[v])
     return refuse("the move's start or end is not known (after a label, a call or a computed move)");
@@ -165,8 +164,7 @@ std::vector<std::string> Structured::corner_moves(const ir::Word& c, const Posit
     std::vector<std::string> out;
     const bool from_start = dst_.arc_centre == ArcCentre::Incremental || incremental;
     for (int k = 0; k < 2; ++k) {
-      const char letter = dst_.centre_words == CentreWords::Plane ? static_cast<char>('I' + k)
-                                                                 : static_cast<char>('I' + (k == 0 ? u : v));
+      const char letter = centre_letter(dst_, k);
       if (const auto text = length(c.range, letter, from_start ? p[k] - base[k] : p[k])) out.push_back(letter + *text);
     }
     return out;

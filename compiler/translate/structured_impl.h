@@ -202,6 +202,17 @@ class Structured {
   // is known.
   int plane_index() const { return *plane_ == 'K' ? 0 : *plane_ == 'J' ? 1 : 2; }
   char normal_axis() const { return *plane_ == 'K' ? 'Z' : *plane_ == 'J' ? 'Y' : 'X'; }
+  // The plane's first and second axes (X Y Z: 0 1 2), where plane_ is known.
+  size_t plane_u() const { return static_cast<size_t>(kPlanes[plane_index()].u); }
+  size_t plane_v() const { return static_cast<size_t>(kPlanes[plane_index()].v); }
+  // The word of an arc centre's k-th coordinate in the plane: I J of the plane
+  // (NC-110), or the I J K of the plane's axes.
+  char centre_letter(const Conventions& c, int k) const {
+    return static_cast<char>('I' + (c.centre_words == CentreWords::Plane ? static_cast<size_t>(k) : k == 0 ? plane_u() : plane_v()));
+  }
+  std::string unit_unknown() const {
+    return "a length where G20 or G21 is not known: " + std::string(w_.dialect()) + " has no inch mode";
+  }
 
  protected:
   bool start_needs(const FnCall& c) const;
