@@ -72,6 +72,25 @@ void Structured::attach(const ir::Program& program) {
             lowers_inch_ |= !target_inch_ && has(Fn::UnitsInch);
             lowers_polar_ |= !target_polar_ && has(Fn::PolarOn);
           }
+  // A rotation, scale or mirror the target has not (or whose mirror toggles otherwise):
+  // every frame written into the points (a block with a frame code is not streamed).
+  for (const ir::Unit& u : program.units)
+    for (const ir::Block& b : u.blocks) lowers_frame_ |= frame_codes(program, b) == 2;
+}
+
+// 0: the block has no frame code; 1: only codes the target has as the source's;
+// 2: one it has not.
+int Structured::frame_codes(const ir::Program& program, const ir::Block& b) const {
+  int found = 0;
+  for (const ir::Word& w : b.words)
+    if (w.kind == ir::WordKind::Code && w.code >= 0) {
+      const CodeDesc& d = program.semantics.codes[static_cast<size_t>(w.code)];
+      for (const FnCall& c : d.calls)
+        if (is_frame(c.fn))
+          found = std::max(found, reads_source_words() || own_frame(c.fn) || (exact_code({c}, d.scope) && (c.fn != Fn::Mirror ||
+                                                           program.semantics.conventions.mirror_toggles == dst_.mirror_toggles)) ? 1 : 2);
+    }
+  return found;
 }
 
 // The power-on codes' functions: the program's, or those given before it was read.
@@ -387,6 +406,7 @@ void Structured::forget() {
   timer_.reset();
   if (unit_ != 1.0 || lowers_inch_) unit_.reset();
   if (polar_ != false || lowers_polar_) polar_.reset();
+  if (lowers_frame_) frame_.reset();
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -425,7 +445,7 @@ void Structured::translated_machine() {
   std::vector<Mapped> codes;
   std::vector<std::string> params;
   bool moves = false;
-  origin_words_ = false;
+  operand_words_ = false;
   // Where the previous block's corner left the tool, and the motion code its fillet
   // leaves to be written again.
   const auto chained = std::exchange(chained_start_, std::nullopt);
@@ -452,6 +472,7 @@ void Structured::translated_machine() {
       if (codes[j].code.letter == codes[i].code.letter && codes[j].code.number == codes[i].code.number && codes[j].later.empty())
         codes.erase(codes.begin() + static_cast<long>(j));
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
+  for (const ir::Word* w : std::exchange(frames_, {})) frame_code(*w, p_->semantics.codes[static_cast<size_t>(w->code)]);
   // A block in machine coordinates (G53) leaves the program's coordinates unknown.
   const bool machine_frame = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
     if (w.kind != ir::WordKind::Code || w.code < 0) return false;
@@ -473,9 +494,29 @@ void Structured::translated_machine() {
   std::array<const ir::Word*, 2> polar{};  // the plane's radius and angle, where the target has no G16
   size_t polar_at = 0;                    // ... written at this place of params
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
+  // A move under a frame the target has not: its points transformed (framed_move()).
+  const bool framed_block = !operand_words_ && !machine_frame && framed(std::any_of(block_->words.begin(), block_->words.end(), [](const ir::Word& w) {
+    return w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] >= 'X' && w.address[0] <= 'Z';
+  }));
+  size_t framed_at = SIZE_MAX;
+  std::string arc_code;  // ... an arc's motion code, turned where one axis of its plane is mirrored
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
+      if (operand_words_) continue;  // the code says them (UAO by its work offset), or they are refused with it
+      const char l = w.address.size() == 1 ? w.address[0] : 0;
+      if (framed_block && l >= 'X' && l <= 'Z' &&
+          (!frame_ || !plane_ || frame_->moves(static_cast<size_t>(l - 'X'), plane_u(), plane_v()) ||
+           (arc && (static_cast<size_t>(l - 'X') == plane_u() || static_cast<size_t>(l - 'X') == plane_v())))) {
+        framed_at = std::min(framed_at, params.size());
+        moves = true;
+        track(w);
+        continue;
+      }
+      if (framed_block && arc && ((l >= 'I' && l <= 'K') || (l && l == src_.radius_word))) continue;  // the centre, transformed
+      if (lowers_frame_ && frame_ && frame_->scales_others && l && std::string_view("UVW").find(l) != std::string_view::npos)
+        fail(w.range, fmt::format("an axis {} under a scale or mirror: {} has none, and only X Y Z are written transformed", l, w_.dialect()));
       if (lowers_corner(w)) {
+        if (framed_block) fail(w.range, fmt::format("a corner under a rotation, scale or mirror: {} has none of them", w_.dialect()));
         corner = &w;
         continue;
       }
@@ -509,7 +550,6 @@ void Structured::translated_machine() {
       }
       moves |= w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
       if (src_.corrector_in_tool_word && !dst_.corrector_in_tool_word && w.address == "T'") continue;
-      if (origin_words_) continue;  // UAO's operands: the work offset says them
       if (!reads_source_words() && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K' &&
           !cycle_word(w.address[0]) && (src_.arc_centre != dst_.arc_centre || src_.centre_words != dst_.centre_words))
         centre(w, start, params);
@@ -518,11 +558,20 @@ void Structured::translated_machine() {
       track(w);
     }
   if (polar[0] || polar[1]) polar_point(polar, start, params, polar_at);
+  if (framed_block) {
+    std::vector<std::string> transformed;
+    framed_move(start, arc, transformed, arc_code);
+    params.insert(params.begin() + static_cast<long>(std::min(framed_at, params.size())), transformed.begin(), transformed.end());
+  } else if (lowers_frame_ && arc && moves && std::exchange(flipped_, false)) {
+    if (auto code = target_code({{*motion_}}, Scope::Modal)) arc_code = code->text();  // the target's is the other way round
+  }
   if (machine_frame) position_ = {};
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
   moved_ |= moves;
   if (centre_override) {
     params.insert(params.end(), centre_override->begin(), centre_override->end());
+  } else if (framed_block) {
+    centre_ = {};
   } else {
     if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
       plane_centre(centre_words, start, params);
@@ -530,6 +579,13 @@ void Structured::translated_machine() {
     if (arc) helix(start, lead, params);
     absolute_centre(start, params);
     arc_on_circle(start);
+  }
+  if (!arc_code.empty()) {  // instead of the block's own
+    std::erase_if(codes, [](const Mapped& c) {
+      const auto& calls = c.code.entry->desc.calls;
+      return std::find(calls.begin(), calls.end(), FnCall{Fn::MotionArcCw}) != calls.end() ||
+             std::find(calls.begin(), calls.end(), FnCall{Fn::MotionArcCcw}) != calls.end();
+    });
   }
   std::vector<std::string> joint;  // the corner's move, after the block's
   if (corner) joint = corner_moves(*corner, start, chained, params);
@@ -582,6 +638,7 @@ void Structured::translated_machine() {
     return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
   });
   if (!restore_motion.empty() && !has_motion) main.insert(main.begin(), restore_motion);
+  if (!arc_code.empty()) main.push_back(arc_code);  // after the block's other G codes
   if (moves && in_main_ && !deferred_motion_.empty()) {
     if (!has_motion) main.insert(main.begin(), deferred_motion_);
     deferred_motion_.clear();
@@ -684,7 +741,7 @@ void Structured::timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vecto
     for (const ir::Word& o : block_->words)
       if (o.kind == ir::WordKind::Parameter && o.slot == operand_slot(0))
         if (const auto v = constant_of(o.value)) known = true, seconds = *v;
-    origin_words_ = true;  // its operand is the dwell's time
+    operand_words_ = true;  // its operand is the dwell's time
   } else if (per_minute_ != true) {
     return fail(w.range, fmt::format("{} where the feed may be per revolution: TMR then counts revolutions", desc.name));
   }
@@ -706,7 +763,7 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
     else if (o.slot < 52) listed = true;
   }
   auto code = n && *n >= 1 && *n <= 0xFFFF ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*n)}}, Scope::Modal) : std::nullopt;
-  origin_words_ = true;  // its operands are said by the work offset, or refused with it
+  operand_words_ = true;  // its operands are said by the work offset, or refused with it
   if (!n) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name));
   if (listed) return fail(w.range, fmt::format("{} on the axes it lists: {}'s work offset sets every axis", desc.name, w_.dialect()));
   if (!code) return fail(w.range, fmt::format("{},{}: {} has no work offset {}", desc.name, *n, w_.dialect(), *n));
@@ -1075,12 +1132,44 @@ std::string Structured::length_offset(SourceRange at) {
     fail(at, "M06 with a corrector that is not known here");
     return {};
   }
-  auto code = target_code({{*corrector_ ? Fn::LengthPlus : Fn::LengthOff}}, Scope::Modal);
+  const int n = *corrector_;
+  std::map<int, char> target_axes;
+  for (const auto& [number, entry] : target_.offsets)
+    if (entry.axis) target_axes[number] = entry.axis;
+  const char axis = corrector_axis(source_corrector_axes_, n, src_);
+  // pp has no G43: its link adds the D entry's length on the axes it names.
+  if (!dst_.link_axes.empty()) {
+    const size_t at_digit = dst_.link_axes.find(axis);
+    if (n && at_digit == std::string::npos) {
+      fail(at, fmt::format("corrector {}'s length is on {}, which {}'s length link does not name", n, axis, w_.dialect()));
+      return {};
+    }
+    const bool was_on = length_on_ != false;
+    length_on_ = n != 0;
+    if (!n) return was_on ? "&0" : std::string();
+    return fmt::format("D{} &1{}", n, std::string(dst_.link_axes.size() - at_digit - 1, '0'));
+  }
+  auto code = target_code({{n ? Fn::LengthPlus : Fn::LengthOff}}, Scope::Modal);
+  if (!code) code = code_doing_more({{n ? Fn::LengthPlus : Fn::LengthOff}}, Scope::Modal);  // GOST's G43 also ends G41
   if (!code) {
     fail(at, fmt::format("the corrector: {} has no tool length offset", w_.dialect()));
     return {};
   }
-  return *corrector_ ? fmt::format("{} H{}", code->text(), *corrector_) : code->text();
+  if (n && corrector_axis(target_axes, n, dst_) != axis) {
+    fail(at, fmt::format("corrector {}'s length is on {}, the target machine's offset {} on {}", n, axis, n,
+                         corrector_axis(target_axes, n, dst_)));
+    return {};
+  }
+  const char letter = reads_offset_number(dst_, 'H') ? 'H' : 'D';
+  length_on_ = n != 0;
+  return n ? fmt::format("{} {}{}", code->text(), letter, n) : code->text();
+}
+
+// The axis corrector (or offset) n's length applies to: its entry's, else the
+// dialect's tool axis.
+char Structured::corrector_axis(const std::map<int, char>& axes, int n, const Conventions& c) {
+  const auto it = axes.find(n);
+  return it != axes.end() ? it->second : c.tool_offset_axes.empty() ? 'Z' : c.tool_offset_axes[0];
 }
 
 // ISO's M06 as the target's blocks (pp: M05, M09, G30 Z0, then its M06): what ISO's
@@ -1243,6 +1332,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
   if (desc.calls.empty()) return;  // a call, a return: the statements write them
   if (own_code(w, desc)) return;
+  if (lowers_frame(desc)) return frames_.push_back(&w);  // after the block's G90/G91 and plane (translated_machine())
   if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
     return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
@@ -1308,6 +1398,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (desc.calls == std::vector<FnCall>{{Fn::ToolChange}} && src_.tool_change_iso && dst_.corrector_in_tool_word)
     if (auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal)) return add(*m06);
   std::vector<Code> each;
+  std::string later;
   for (const FnCall& c : desc.calls) {
     auto code = target_code({c}, desc.scope);
     if (code) each.push_back(*code);
@@ -1326,10 +1417,18 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     }
     // NC-110's M06 applies the T word's corrector: corrector 0 is no length offset.
     else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false) continue;
+    // ... in a block after the target's M06 (pp's D and link, GOST's G43).
+    else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && !each.empty() &&
+             each.back().entry->desc.calls == std::vector<FnCall>{{Fn::ToolChange}})
+      later = length_offset(w.range);
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
     else return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(c.fn), w_.dialect()));
   }
   for (const Code& c : each) add(c);
+  if (!later.empty()) {  // a block of its own after the M06's
+    out.push_back(out.back());
+    out.back().later = later;
+  }
 }
 
 std::optional<Structured::Code> Structured::code_doing_more(const std::vector<FnCall>& calls, Scope scope) const {
@@ -1921,6 +2020,12 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   auto translation = make();
   translation->set_power_on(power_on_functions(s, dialect));
   if (request.to != "linuxcnc") translation->set_target_power_on(power_on_functions(s, request.to, *request.target_profile));
+  if (s.profile) {
+    std::map<int, char> axes;
+    for (const auto& [number, entry] : stdlib::load_machine_config(*s.profile, s.diags).offsets)
+      if (entry.axis) axes[number] = entry.axis;
+    translation->set_source_corrector_axes(std::move(axes));
+  }
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> streamed(std::tmpfile(), &std::fclose);
   if (!streamed) {
     s.diags.report(DiagId::FileUnwritable, {}, std::string("a temporary file"), std::strerror(errno));

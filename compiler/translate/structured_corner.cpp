@@ -40,6 +40,7 @@ bool Structured::lowers_corner(const ir::Word& w) const {
 }
 
 bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) {
+  if (frame_codes(program, b)) return true;  // a frame: every frame is lowered, or none (attach())
   if (!program.semantics.conventions.corners || dst_.corners || std::none_of(b.words.begin(), b.words.end(), is_corner_word))
     return false;
   attach(program);  // what the target reads of the source

@@ -43,6 +43,9 @@ class Structured {
   // The target machine's power-on functions, where ncc reads the target: the start
   // sets only where the source's differ.
   void set_target_power_on(std::vector<FnCall> calls) { target_power_on_ = std::move(calls); }
+  // The axis each of the source machine's correctors names for its length (NC-110's
+  // [offsets] entries), where it names one.
+  void set_source_corrector_axes(std::map<int, char> axes) { source_corrector_axes_ = std::move(axes); }
   // One of the main program's leading blocks, as the compiler streams it: written
   // to the text taken from the writer (`take`) before it is dropped.
   void stream(const ir::Program& program, const ir::Block& b);
@@ -98,6 +101,9 @@ class Structured {
   // A code the target says otherwise than by a code of its tables (NC-110's UAO):
   // true when written.
   virtual bool own_code(const ir::Word&, const CodeDesc&) { return false; }
+  // A frame function the target has as codes of its own (NC-110's MIR, URT, SCF):
+  // such a frame is not lowered (own_code() writes it, or it is refused).
+  virtual bool own_frame(Fn) const { return false; }
   // The start's parameters: set to 0 where the source's start at 0 and the target's
   // may not.
   virtual void start_parameters();
@@ -176,7 +182,7 @@ class Structured {
   bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
   bool in_main_ = false;               // the unit being written is the main program
-  bool origin_words_ = false;          // the block's operands are UAO's
+  bool operand_words_ = false;         // the block's words are its code's operands (UAO, a dwell, a frame)
   bool offset_selected_ = false;       // the main program has selected a work offset
   bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
   bool moved_ = false;                 // a block has moved (or a label or call come)
@@ -240,6 +246,24 @@ class Structured {
   std::optional<std::array<double, 2>> arc_centre(const Position& start);
   std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
+  // Rotation, scaling and mirroring where the target lacks one of them: every point
+  // written transformed (structured_frame.cpp).
+  struct Frame {
+    std::array<double, 3> scale{1, 1, 1};
+    std::array<bool, 3> mirror{};
+    std::array<double, 3> scale_centre{};
+    double rotation = 0;  // degrees, counter-clockwise in the plane of the move
+    std::array<double, 2> rotation_centre{};  // on the plane's axes when set (ISO G68)
+    bool scales_others = false;  // NC-110's (SCF,n) scales U V W as well
+    bool moves(size_t axis, size_t u, size_t v) const;  // the frame changes the axis
+    std::array<double, 3> apply(std::array<double, 3> p, size_t u, size_t v) const;
+    std::array<double, 3> invert(std::array<double, 3> q, size_t u, size_t v) const;
+  };
+  bool lowers_frame(const CodeDesc& desc) const;
+  int frame_codes(const ir::Program& program, const ir::Block& b) const;
+  void frame_code(const ir::Word& w, const CodeDesc& desc);
+  bool framed(bool moves) const;
+  void framed_move(const Position& start, bool arc, std::vector<std::string>& words, std::string& arc_code);
   int polar_word(const ir::Word& w) const;
   void polar_point(const std::array<const ir::Word*, 2>& words, const Position& start, std::vector<std::string>& out,
                    size_t at);
@@ -252,6 +276,7 @@ class Structured {
   std::string link_word(Fn fn) const;
   void dwell(const ir::Word& w, std::vector<std::string>& words);
   std::string length_offset(SourceRange at);
+  static char corrector_axis(const std::map<int, char>& axes, int corrector, const Conventions& c);
   void assign(const ir::Stmt& s);
   void display(const ir::Stmt& s);
   std::string builtin_of_scaled(ir::ExprId value, SourceRange at);
@@ -280,6 +305,7 @@ class Structured {
   std::optional<int> tool_selected_, tool_loaded_;  // by T, and in the spindle
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
+  std::map<int, char> source_corrector_axes_;
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
   std::optional<bool> inch_;           // G20
@@ -287,6 +313,11 @@ class Structured {
   bool lowers_inch_ = false;           // ... and the program has inches where the target has none
   std::optional<bool> polar_ = false;  // G16, where the target has none (written in X Y Z)
   bool lowers_polar_ = false;          // ... and the program has it
+  bool lowers_frame_ = false;          // the program has a frame the target has not: every frame lowered
+  std::optional<Frame> frame_ = Frame{};  // ... the one in force, where the text says
+  double last_rotation_ = 0;           // ISO G68: the angle G91 adds to
+  bool flipped_ = false;               // a mirrored arc was written the other way round
+  std::vector<const ir::Word*> frames_;  // the block's frame codes, lowered
   std::optional<Fn> motion_;           // the motion code in force
   Position centre_;                    // of the block's arc, where this translation computed it
   const ir::Block* next_ = nullptr;    // the block after this one in its unit
@@ -299,6 +330,8 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 // An arc's sweep in radians from angle `from` to `to`, its way; a whole turn where
 // they are the same.
 double arc_sweep(double from, double to, bool ccw);
+// A function of a rotation, scale or mirror frame (structured_frame.cpp).
+bool is_frame(Fn fn);
 
 std::unique_ptr<Structured> make_iso_structured(std::string dialect, Writer& writer, const MachineConfig& target);
 std::unique_ptr<Structured> make_ngc_structured(std::string dialect, Writer& writer, const MachineConfig& target);

@@ -312,6 +312,8 @@ class Nc110Structured final : public Structured {
   // A work offset (ISO's G54..., NC-110's own UAO): (UAO,n) in a block of its own,
   // before the block's motion. NC-110's other three-letter codes of a function
   // (MIR, URT, SCF, UOT, UIO, ...) into NC-110: as written.
+  bool own_frame(Fn fn) const override { return fn == Fn::Mirror || fn == Fn::Rotation || fn == Fn::Scale; }
+
   bool own_code(const ir::Word& w, const CodeDesc& desc) override {
     if (!same_ && desc.calls == std::vector<FnCall>{{Fn::Dwell}}) return dwell_block(w), true;
     if (same_ && w.address.size() == 3 && desc.calls.size() == 1) {
@@ -324,7 +326,7 @@ class Nc110Structured final : public Structured {
     int n = fn == Fn::WorkOffset ? desc.calls[0].arg : -1;
     bool listed = false;
     if (fn == Fn::OriginSelect) {
-      origin_words_ = true;
+      operand_words_ = true;
       for (const ir::Word& o : block_->words) {
         if (o.kind != ir::WordKind::Parameter) continue;
         if (o.slot != operand_slot(0)) listed |= o.slot < 52;
@@ -344,7 +346,7 @@ class Nc110Structured final : public Structured {
   // block for the time in the system variable TMR, in seconds under G94 (at most
   // 60), in revolutions under G95 (§2.10.1). So: TMR=t, then G04.
   void dwell_block(const ir::Word& code) {
-    origin_words_ = true;  // its time is written here
+    operand_words_ = true;  // its time is written here
     const ir::Word* time = nullptr;
     for (const ir::Word& o : block_->words) {
       if (o.kind != ir::WordKind::Parameter) continue;
@@ -377,7 +379,7 @@ class Nc110Structured final : public Structured {
       text += "," + (address[0] == '#' ? o.text.substr(o.text.starts_with("=") ? 1 : 0) : address + o.text);
     }
     line(text + ")");
-    origin_words_ = true;  // its operands are written
+    operand_words_ = true;  // its operands are written
     forget_position();
     return true;
   }
