@@ -504,9 +504,7 @@ void Structured::translated_machine() {
     if (w.kind == ir::WordKind::Parameter) {
       if (operand_words_) continue;  // the code says them (UAO by its work offset), or they are refused with it
       const char l = w.address.size() == 1 ? w.address[0] : 0;
-      if (framed_block && l >= 'X' && l <= 'Z' &&
-          (!frame_ || !plane_ || frame_->moves(static_cast<size_t>(l - 'X'), plane_u(), plane_v()) ||
-           (arc && (static_cast<size_t>(l - 'X') == plane_u() || static_cast<size_t>(l - 'X') == plane_v())))) {
+      if (framed_block && l >= 'X' && l <= 'Z' && framed_axis(static_cast<size_t>(l - 'X'), arc)) {
         framed_at = std::min(framed_at, params.size());
         moves = true;
         track(w);
@@ -917,11 +915,11 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
   if (!centre) return;
   const size_t u = plane_u(), v = plane_v();
   if (!unit_) return fail(r.range, unit_unknown());
-  const double step = w_.resolution(), unit = *unit_;  // in the target's unit
+  const double unit = *unit_;  // in the target's unit
   for (int k = 0; k < 2; ++k) {
     const size_t axis = k == 0 ? u : v;
-    const double exact = (*centre)[static_cast<size_t>(k)] * unit, at = step > 0 ? std::round(exact / step) * step : exact;
-    if (std::fabs(at - exact) > 1e-9 * std::max(1.0, std::fabs(at))) problems.push_back({r.range, "rounded", Problem::Rounded});
+    const double exact = (*centre)[static_cast<size_t>(k)] * unit, at = on_step(exact);
+    if (off_step(exact)) problems.push_back({r.range, "rounded", Problem::Rounded});
     centre_[axis] = at / unit;  // arc_on_circle() checks the end against it
     const char to = centre_letter(dst_, k);
     const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
@@ -1063,15 +1061,11 @@ void Structured::arc_on_circle(const Position& start) {
   if (!plane_) return;
   const size_t u = plane_u(), v = plane_v();
   if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
-  const double step = w_.resolution(), unit = unit_.value_or(1.0);  // the points as the target reads them
-  auto at = [&](double x) { return step > 0 ? std::round(x * unit / step) * step : x * unit; };
-  const double r0 = std::hypot(at(*start[u]) - at(*centre[u]), at(*start[v]) - at(*centre[v]));
-  const double r1 = std::hypot(at(*position_[u]) - at(*centre[u]), at(*position_[v]) - at(*centre[v]));
-  const double mm = std::fabs(r1 - r0) * (inch_ != false && unit == 1.0 ? 25.4 : 1.0);  // the tolerance is in mm
-  if (mm > dst_.arc_tolerance)
-    fail(block_->range, fmt::format("an arc whose end, written to {}'s step of {}, lies farther off its circle than the "
-                                    "{} mm {} takes", w_.dialect(), exact(step, false), exact(dst_.arc_tolerance, false),
-                                    w_.dialect()));
+  const double unit = unit_.value_or(1.0);
+  auto at = [&](const std::optional<double>& pu, const std::optional<double>& pv) {  // as the target reads it
+    return std::array<double, 2>{on_step(*pu * unit), on_step(*pv * unit)};
+  };
+  on_circle(at(start[u], start[v]), at(position_[u], position_[v]), at(centre[u], centre[v]));
 }
 
 // Where the text leaves the tool on X, Y and Z, in the program's coordinates.
@@ -1100,11 +1094,22 @@ std::optional<double> Structured::constant_of(ir::ExprId id) const {
 // writes is rounded to its step, with a warning (once): CAM output's fourth decimal
 // into GOST or pp.
 std::string Structured::number(const OutWord& w, SourceRange at) {
-  const double step = w_.resolution();
-  if ((w.kind == Value::Length || w.kind == Value::Angle) && step > 0 &&
-      std::fabs(std::round(w.value / step) * step - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
-    problems.push_back({at, "rounded", Problem::Rounded});
+  if ((w.kind == Value::Length || w.kind == Value::Angle) && off_step(w.value)) problems.push_back({at, "rounded", Problem::Rounded});
   return w_.number(w);
+}
+
+double Structured::on_step(double v) const {
+  const double step = w_.resolution();
+  return step > 0 ? std::round(v / step) * step : v;
+}
+
+void Structured::on_circle(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+  const double r0 = std::hypot(a[0] - c[0], a[1] - c[1]), r1 = std::hypot(b[0] - c[0], b[1] - c[1]);
+  const double mm = std::fabs(r1 - r0) * (inch_ != false && unit_.value_or(1.0) == 1.0 ? 25.4 : 1.0);  // the tolerance is in mm
+  if (mm > dst_.arc_tolerance)
+    fail(block_->range, fmt::format("an arc whose end, written to {}'s step of {}, lies farther off its circle than the "
+                                    "{} mm {} takes", w_.dialect(), exact(w_.resolution(), false),
+                                    exact(dst_.arc_tolerance, false), w_.dialect()));
 }
 
 // Without the checks the source's reads make (a vacant value, a range).
@@ -1133,10 +1138,7 @@ std::string Structured::length_offset(SourceRange at) {
     return {};
   }
   const int n = *corrector_;
-  std::map<int, char> target_axes;
-  for (const auto& [number, entry] : target_.offsets)
-    if (entry.axis) target_axes[number] = entry.axis;
-  const char axis = corrector_axis(source_corrector_axes_, n, src_);
+  const char axis = corrector_axis(source_offsets_, n, src_);
   // pp has no G43: its link adds the D entry's length on the axes it names.
   if (!dst_.link_axes.empty()) {
     const size_t at_digit = dst_.link_axes.find(axis);
@@ -1155,9 +1157,9 @@ std::string Structured::length_offset(SourceRange at) {
     fail(at, fmt::format("the corrector: {} has no tool length offset", w_.dialect()));
     return {};
   }
-  if (n && corrector_axis(target_axes, n, dst_) != axis) {
+  if (n && corrector_axis(target_.offsets, n, dst_) != axis) {
     fail(at, fmt::format("corrector {}'s length is on {}, the target machine's offset {} on {}", n, axis, n,
-                         corrector_axis(target_axes, n, dst_)));
+                         corrector_axis(target_.offsets, n, dst_)));
     return {};
   }
   const char letter = reads_offset_number(dst_, 'H') ? 'H' : 'D';
@@ -1167,9 +1169,9 @@ std::string Structured::length_offset(SourceRange at) {
 
 // The axis corrector (or offset) n's length applies to: its entry's, else the
 // dialect's tool axis.
-char Structured::corrector_axis(const std::map<int, char>& axes, int n, const Conventions& c) {
-  const auto it = axes.find(n);
-  return it != axes.end() ? it->second : c.tool_offset_axes.empty() ? 'Z' : c.tool_offset_axes[0];
+char Structured::corrector_axis(const std::map<int, OffsetEntry>& offsets, int n, const Conventions& c) {
+  const auto it = offsets.find(n);
+  return it != offsets.end() && it->second.axis ? it->second.axis : tool_axis(c);
 }
 
 // ISO's M06 as the target's blocks (pp: M05, M09, G30 Z0, then its M06): what ISO's
@@ -1308,8 +1310,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
         // source's changes the tool where it stands: the same only where the tool is
         // there already, before the first move on a machine that starts there.
         if (dst_.tool_change_retract && !src_.tool_change_retract) {
-          const char axis = dst_.tool_offset_axes.empty() ? 'Z' : dst_.tool_offset_axes[0];
-          const size_t i = std::string_view(kAxisLetters).find(axis);
+          const size_t i = std::string_view(kAxisLetters).find(tool_axis(dst_));
           if (moved_ || target_.initial_position[i] != target_.reference_position[i])
             fail(block_->range, fmt::format("a tool change where the tool stands: {}'s M06 first takes the tool axis to the "
                                             "reference point, {}'s does not (a machine that changes tools in place says "
@@ -2020,12 +2021,7 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   auto translation = make();
   translation->set_power_on(power_on_functions(s, dialect));
   if (request.to != "linuxcnc") translation->set_target_power_on(power_on_functions(s, request.to, *request.target_profile));
-  if (s.profile) {
-    std::map<int, char> axes;
-    for (const auto& [number, entry] : stdlib::load_machine_config(*s.profile, s.diags).offsets)
-      if (entry.axis) axes[number] = entry.axis;
-    translation->set_source_corrector_axes(std::move(axes));
-  }
+  if (s.profile) translation->set_source_offsets(stdlib::load_machine_config(*s.profile, s.diags).offsets);
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> streamed(std::tmpfile(), &std::fclose);
   if (!streamed) {
     s.diags.report(DiagId::FileUnwritable, {}, std::string("a temporary file"), std::strerror(errno));

@@ -190,6 +190,13 @@ bool Structured::framed(bool moves) const {
   return false;
 }
 
+// Whether the frame decides an axis's coordinate in a framed block: an axis it moves,
+// and an arc's plane, whose centre it maps (every axis where the frame is not known).
+bool Structured::framed_axis(size_t axis, bool arc) const {
+  if (!frame_ || !plane_) return true;
+  return frame_->moves(axis, plane_u(), plane_v()) || (arc && (axis == plane_u() || axis == plane_v()));
+}
+
 // The move as the frame maps it, in the target's program coordinates: every axis the
 // frame moves that the block writes or whose coordinate changes, and an arc's centre
 // (the arc turned the other way where one axis of its plane is mirrored: the motion
@@ -206,22 +213,21 @@ void Structured::framed_move(const Position& start, bool arc, std::vector<std::s
   const size_t u = plane_u(), v = plane_v();
   std::array<double, 3> p0{}, p1{};
   for (size_t i = 0; i < 3; ++i) {
-    if (!frame_->moves(i, u, v) && !(arc && (i == u || i == v))) continue;
+    if (!framed_axis(i, arc)) continue;
     if (!start[i] || !position_[i])
       return fail(at, fmt::format("a move under a rotation, scale or mirror, where the tool's position is not known (after a "
                                   "label, a call or a computed move): {} has none", name));
     p0[i] = *start[i], p1[i] = *position_[i];
   }
   const auto q0 = frame_->apply(p0, u, v), q1 = frame_->apply(p1, u, v);
-  const double step = w_.resolution(), unit = *unit_;
+  const double unit = *unit_;
   bool rounded = false;
   auto target = [&](double x) {  // a coordinate as the target reads it
-    const double exact = x * unit, there = step > 0 ? std::round(exact / step) * step : exact;
-    rounded |= std::fabs(there - exact) > 1e-9 * std::max(1.0, std::fabs(there));
-    return there;
+    rounded |= off_step(x * unit);
+    return on_step(x * unit);
   };
   for (size_t i = 0; i < 3; ++i) {
-    if (!frame_->moves(i, u, v) && !(arc && (i == u || i == v))) continue;
+    if (!framed_axis(i, arc)) continue;
     const char letter = static_cast<char>('X' + i);
     const bool written = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
       return w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter;
@@ -247,11 +253,7 @@ void Structured::framed_move(const Position& start, bool arc, std::vector<std::s
       const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
       words.push_back(to + w_.number({to, from_start ? target(qc[axis]) - target(q0[axis]) : target(qc[axis]), Value::Length}));
     }
-    const double r0 = std::hypot(target(q0[u]) - target(qc[u]), target(q0[v]) - target(qc[v]));
-    const double r1 = std::hypot(target(q1[u]) - target(qc[u]), target(q1[v]) - target(qc[v]));
-    if (std::fabs(r1 - r0) * (inch_ != false && unit == 1.0 ? 25.4 : 1.0) > dst_.arc_tolerance)
-      fail(at, fmt::format("an arc under a rotation, scale or mirror whose end, written to {}'s step of {}, lies farther off its "
-                           "circle than the {} mm {} takes", name, exact(step, false), exact(dst_.arc_tolerance, false), name));
+    on_circle({target(q0[u]), target(q0[v])}, {target(q1[u]), target(q1[v])}, {target(qc[u]), target(qc[v])});
   }
   if (rounded) problems.push_back({at, "rounded", Problem::Rounded});
   if (arc) {

@@ -43,9 +43,8 @@ class Structured {
   // The target machine's power-on functions, where ncc reads the target: the start
   // sets only where the source's differ.
   void set_target_power_on(std::vector<FnCall> calls) { target_power_on_ = std::move(calls); }
-  // The axis each of the source machine's correctors names for its length (NC-110's
-  // [offsets] entries), where it names one.
-  void set_source_corrector_axes(std::map<int, char> axes) { source_corrector_axes_ = std::move(axes); }
+  // The source machine's offsets (NC-110's correctors name the axis of their length).
+  void set_source_offsets(std::map<int, OffsetEntry> offsets) { source_offsets_ = std::move(offsets); }
   // One of the main program's leading blocks, as the compiler streams it: written
   // to the text taken from the writer (`take`) before it is dropped.
   void stream(const ir::Program& program, const ir::Block& b);
@@ -263,6 +262,7 @@ class Structured {
   int frame_codes(const ir::Program& program, const ir::Block& b) const;
   void frame_code(const ir::Word& w, const CodeDesc& desc);
   bool framed(bool moves) const;
+  bool framed_axis(size_t axis, bool arc) const;
   void framed_move(const Position& start, bool arc, std::vector<std::string>& words, std::string& arc_code);
   int polar_word(const ir::Word& w) const;
   void polar_point(const std::array<const ir::Word*, 2>& words, const Position& start, std::vector<std::string>& out,
@@ -276,7 +276,15 @@ class Structured {
   std::string link_word(Fn fn) const;
   void dwell(const ir::Word& w, std::vector<std::string>& words);
   std::string length_offset(SourceRange at);
-  static char corrector_axis(const std::map<int, char>& axes, int corrector, const Conventions& c);
+  static char corrector_axis(const std::map<int, OffsetEntry>& offsets, int corrector, const Conventions& c);
+  static char tool_axis(const Conventions& c) { return c.tool_offset_axes.empty() ? 'Z' : c.tool_offset_axes[0]; }
+  // A length in the target's unit as the target reads it (its step), and whether
+  // writing it so moves it (the rounding warning).
+  double on_step(double v) const;
+  bool off_step(double v) const { return std::fabs(on_step(v) - v) > 1e-9 * std::max(1.0, std::fabs(v)); }
+  // Refuses an arc whose end lies farther off its circle than the target takes: its
+  // start, end and centre in the plane, as the target reads them.
+  void on_circle(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c);
   void assign(const ir::Stmt& s);
   void display(const ir::Stmt& s);
   std::string builtin_of_scaled(ir::ExprId value, SourceRange at);
@@ -305,7 +313,7 @@ class Structured {
   std::optional<int> tool_selected_, tool_loaded_;  // by T, and in the spindle
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
-  std::map<int, char> source_corrector_axes_;
+  std::map<int, OffsetEntry> source_offsets_;
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
   std::optional<bool> inch_;           // G20
