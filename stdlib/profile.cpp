@@ -227,11 +227,12 @@ std::vector<std::string> Profile::keys(std::string_view table) const {
   return out;
 }
 
-void Profile::report_unused(Diagnostics& diags) const {
+void Profile::report_unused(Diagnostics& diags, const std::vector<std::string_view>& others) const {
   if (!user_) return;
   std::vector<std::string> leaves;
   collect_leaves(user_->table, "", leaves);
   for (const std::string& key : leaves) {
+    if (std::find(others.begin(), others.end(), std::string_view(key).substr(0, key.find('.'))) != others.end()) continue;
     // A key is used if it, a table holding it, or a key inside it was looked up.
     auto child = used_.lower_bound(key + ".");
     bool used = child != used_.end() && child->compare(0, key.size() + 1, key + ".") == 0;

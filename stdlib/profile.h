@@ -52,8 +52,9 @@ class Profile {
   size_t array_size(std::string_view key, Diagnostics& diags) const;
   bool is_string(std::string_view key) const;
 
-  // Reports keys of the user's profile that no reader looked up (likely typos).
-  void report_unused(Diagnostics& diags) const;
+  // Reports keys of the user's profile that no reader looked up (likely typos). The
+  // sections of `others` (the dialects not read now) are theirs to check.
+  void report_unused(Diagnostics& diags, const std::vector<std::string_view>& others = {}) const;
   // Reports a bad value of `key` at its place in the profile.
   void report_value(Diagnostics& diags, std::string_view key, std::string_view message) const;
   // Where `key`'s value is written (the user's profile, else the default).

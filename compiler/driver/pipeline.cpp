@@ -313,7 +313,9 @@ std::unique_ptr<Frontend> frontend_for(Session& s, const std::string& dialect) {
   uint32_t errors = s.diags.error_count();
   auto frontend = make_frontend(dialect, *s.profile, s.diags);
   stdlib::load_machine_config(*s.profile, s.diags);
-  s.profile->report_unused(s.diags);
+  std::vector<std::string_view> others = dialect_names();  // a profile may serve several dialects
+  std::erase(others, std::string_view(dialect));
+  s.profile->report_unused(s.diags, others);
   if (!frontend || s.diags.error_count() != errors) return nullptr;
   if (!s.processes.empty() && frontend->rules().processes < 2) {
     s.diags.report(DiagId::ProcessOption, {}, fmt::format("{}={}", s.processes[0].first, s.processes[0].second),

@@ -87,7 +87,7 @@ int Structured::frame_codes(const ir::Program& program, const ir::Block& b) cons
       const CodeDesc& d = program.semantics.codes[static_cast<size_t>(w.code)];
       for (const FnCall& c : d.calls)
         if (is_frame(c.fn))
-          found = std::max(found, reads_source_words() || own_frame(c.fn) || (exact_code({c}, d.scope) && (c.fn != Fn::Mirror ||
+          found = std::max(found, same_ || own_frame(c.fn) || (exact_code({c}, d.scope) && (c.fn != Fn::Mirror ||
                                                            program.semantics.conventions.mirror_toggles == dst_.mirror_toggles)) ? 1 : 2);
     }
   return found;
@@ -983,7 +983,7 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
 // (the plane's first axis), 1 the angle, 2 an axis word where the plane or the mode
 // is not known; -1 none.
 int Structured::polar_word(const ir::Word& w) const {
-  if (reads_source_words() || target_polar_ || polar_ == false || w.address.size() != 1) return -1;
+  if (target_polar_ || polar_ == false || w.address.size() != 1) return -1;
   const char letter = w.address[0];
   if (!plane_ || !polar_) return std::string_view("XYZ").find(letter) != std::string_view::npos ? 2 : -1;
   const Plane& plane = kPlanes[plane_index()];

@@ -36,15 +36,12 @@ double sweep(const corner::Element& e) {
 }  // namespace
 
 bool Structured::lowers_corner(const ir::Word& w) const {
-  return !reads_source_words() && src_.corners && !dst_.corners && is_corner_word(w);
+  return src_.corners && !dst_.corners && is_corner_word(w);
 }
 
 bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) {
   if (frame_codes(program, b)) return true;  // a frame: every frame is lowered, or none (attach())
-  if (!program.semantics.conventions.corners || dst_.corners || std::none_of(b.words.begin(), b.words.end(), is_corner_word))
-    return false;
-  attach(program);  // what the target reads of the source
-  return !reads_source_words();
+  return program.semantics.conventions.corners && !dst_.corners && std::any_of(b.words.begin(), b.words.end(), is_corner_word);
 }
 
 // The block's own words get the corner's first end on the plane's axes; the words

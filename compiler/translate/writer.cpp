@@ -78,8 +78,10 @@ std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Prof
   if (!target) return nullptr;
   if (dialect == "linuxcnc") {
     const uint32_t errors = diags.error_count();
+    Conventions conventions = target->conventions();
+    conventions.corners = false;  // no ,C ,R: a corner is written as its moves
     auto writer = make_iso_writer(std::move(target), true);
-    writer->set_tables(stdlib::load_dialect_tables("linuxcnc", diags));
+    writer->set_own(stdlib::load_dialect_tables("linuxcnc", diags), std::move(conventions));
     return diags.error_count() == errors ? std::move(writer) : nullptr;
   }
   if (dialect == "iso") return make_iso_writer(std::move(target), false);

@@ -91,9 +91,12 @@ class Writer {
   virtual std::optional<std::string> unwritable(const OutWord& w) const;
   // The target's code tables and conventions, with its machine profile.
   const stdlib::DialectTables& tables() const { return own_tables_ ? *own_tables_ : *target_->rules().tables; }
-  // A target ncc does not read yet (LinuxCNC) has code tables of its own.
-  void set_tables(stdlib::DialectTables tables) { own_tables_ = std::move(tables); }
-  const Conventions& conventions() const { return target_->conventions(); }
+  // A target ncc does not read yet (LinuxCNC) has code tables and conventions of its own.
+  void set_own(stdlib::DialectTables tables, Conventions conventions) {
+    own_tables_ = std::move(tables);
+    own_conventions_ = std::move(conventions);
+  }
+  const Conventions& conventions() const { return own_conventions_ ? *own_conventions_ : target_->conventions(); }
 
   // The text written so far, taken (a caller writes it out as it goes).
   std::string take() { return std::exchange(out_, {}); }
@@ -108,6 +111,7 @@ class Writer {
  private:
   std::unique_ptr<Frontend> target_;
   std::optional<stdlib::DialectTables> own_tables_;
+  std::optional<Conventions> own_conventions_;
 };
 
 // What a writer has written, spilled to a file as it grows: a long program
