@@ -407,6 +407,7 @@ void Structured::forget() {
   if (unit_ != 1.0 || lowers_inch_) unit_.reset();
   if (polar_ != false || lowers_polar_) polar_.reset();
   if (lowers_frame_) frame_.reset();
+  helix_mode_.reset();
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -500,6 +501,7 @@ void Structured::translated_machine() {
   }));
   size_t framed_at = SIZE_MAX;
   std::string arc_code;  // ... an arc's motion code, turned where one axis of its plane is mirrored
+  std::string helix_code;  // the target's helix mode, where a helix needs it
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
       if (operand_words_) continue;  // the code says them (UAO by its work offset), or they are refused with it
@@ -574,7 +576,7 @@ void Structured::translated_machine() {
     if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
       plane_centre(centre_words, start, params);
     if (radius) radius_centre(*radius, start, params);
-    if (arc) helix(start, lead, params);
+    if (arc) helix(start, lead, params, helix_code);
     absolute_centre(start, params);
     arc_on_circle(start);
   }
@@ -637,6 +639,7 @@ void Structured::translated_machine() {
   });
   if (!restore_motion.empty() && !has_motion) main.insert(main.begin(), restore_motion);
   if (!arc_code.empty()) main.push_back(arc_code);  // after the block's other G codes
+  if (!helix_code.empty()) main.insert(main.begin(), helix_code);
   if (moves && in_main_ && !deferred_motion_.empty()) {
     if (!has_motion) main.insert(main.begin(), deferred_motion_);
     deferred_motion_.clear();
@@ -934,7 +937,7 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
 // over the sweep the source's run takes (the turns its lead selects, or its end
 // point's); a helix of more than one turn is refused where the target has no lead.
 // The start, the end and the centre must be known from the text.
-void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words) {
+void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words, std::string& mode) {
   if (reads_source_words() || !plane_) return;
   const size_t u = plane_u(), v = plane_v();
   const size_t n = static_cast<size_t>(normal_axis() - 'X');
@@ -945,12 +948,14 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   // A lead in an arc that does not move along the normal does nothing (the source's
   // check warns of it, NC4025): not written.
   if (!travel || (start[n] && position_[n] && *start[n] == *position_[n])) return;
-  const auto& g = w_.tables().g_codes;  // a target whose helix needs a mode (pp's G09)
-  const bool helix_mode = std::any_of(g.begin(), g.end(), [](const auto& entry) {
-    const auto& calls = entry.second.desc.calls;
-    return std::find(calls.begin(), calls.end(), FnCall{Fn::HelixOn}) != calls.end();
-  });
-  if (helix_mode) return fail(at, fmt::format("a helix: {} moves along {} in its helix mode only, which is not written yet", w_.dialect(), normal_axis()));
+  // A target that moves along the normal in its helix mode only (pp's G09): the mode
+  // is written in the block, where the text does not say it is on already.
+  if (helix_mode_ != true)
+    for (const auto& [number, entry] : w_.tables().g_codes)
+      if (std::find(entry.desc.calls.begin(), entry.desc.calls.end(), FnCall{Fn::HelixOn}) != entry.desc.calls.end()) {
+        mode = Code{entry.letter, number, &entry}.text();
+        helix_mode_ = true;
+      }
   const bool writes_lead = !dst_.helix_by_end;
   if (!lead && !writes_lead) return;
   const auto centre = arc_centre(start);
@@ -1261,6 +1266,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
     switch (f.fn) {
       case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
       case Fn::PolarOn: case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
+      case Fn::HelixOn: case Fn::HelixOff: helix_mode_ = f.fn == Fn::HelixOn; break;
       case Fn::FeedPerMinute: case Fn::FeedPerRevolution: case Fn::FeedInverseTime:
         per_minute_ = f.fn == Fn::FeedPerMinute;
         break;

@@ -267,7 +267,7 @@ class Structured {
   int polar_word(const ir::Word& w) const;
   void polar_point(const std::array<const ir::Word*, 2>& words, const Position& start, std::vector<std::string>& out,
                    size_t at);
-  void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words);
+  void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words, std::string& mode);
   std::optional<std::string> length(SourceRange at, char to, std::optional<double> v);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
@@ -320,6 +320,7 @@ class Structured {
   std::optional<double> unit_ = 1.0;   // the source's length unit in the target's (25.4: inches into pp's mm)
   bool lowers_inch_ = false;           // ... and the program has inches where the target has none
   std::optional<bool> polar_ = false;  // G16, where the target has none (written in X Y Z)
+  std::optional<bool> helix_mode_;     // the target's helix mode (pp's G09) is on
   bool lowers_polar_ = false;          // ... and the program has it
   bool lowers_frame_ = false;          // the program has a frame the target has not: every frame lowered
   std::optional<Frame> frame_ = Frame{};  // ... the one in force, where the text says

@@ -1,4 +1,4 @@
-(translate-radius-helix: pp moves along a third axis in its helix mode only, not written yet; an arc by R after a computed move has no known start)
+(translate-radius-helix: a helix into pp is written in its helix mode G09 with its pitch K; an arc by R after a computed move has no known start)
 G17 G90 G00 X10. Y0. Z0.
 G03 X-10. Y0. Z-2. R10. F100.
 G02 X10. Y0. Z-2. R10.
