@@ -390,7 +390,7 @@ class Cli {
     }
     translate::Request request;
     request.to = o_.to;
-    request.header = {o_.input, m ? m->semantics.dialect : o_.dialect, {}, o_.flatten};
+    request.header = {o_.input, m ? m->semantics.dialect : o_.dialect, {}, o_.flatten, {}};
     request.run = o_.run;
     std::optional<stdlib::Profile> target_profile;
     if (!o_.target_machine.empty()) {

@@ -107,6 +107,7 @@ struct Word {
   WordKind kind = WordKind::Parameter;
   uint8_t slot = 0;
   bool optional = false;  // after a mid-block '/': dropped when block skip is on
+  bool derived = false;   // made by the reader from another word (NC-110 G72's result slots, GOST's T offset)
   Address address;        // as written: "X", "G", ":"
   ExprId value = kNoExpr;
   int32_t code = -1;

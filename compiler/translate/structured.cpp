@@ -276,7 +276,7 @@ bool Structured::emit(std::FILE* streamed, std::FILE* out) {
 
 void Structured::unit(const ir::Unit& u, bool main) {
   if (u.kind == ir::UnitKind::Process) return fail(u.range, "a process program (EXE)");
-  if (!main && u.kind == ir::UnitKind::Program)  // GOST 20999 §1.8
+  if (!main && u.kind == ir::UnitKind::Program && !next_program(u))  // GOST 20999 §1.8
     return fail(u.range, fmt::format("a second program on the medium, run after the first ends: {} runs one", w_.dialect()));
   if (main) main_at_ = w_.pending();
   in_main_ = main;
@@ -328,8 +328,10 @@ bool Structured::block(const ir::Block& b) {
   carried_number_.reset();
   skip_ = b.skippable;
   if (in_main_) lead(b);
-  if (std::any_of(b.words.begin(), b.words.end(), [](const ir::Word& w) { return w.optional; }))
+  if (std::any_of(b.words.begin(), b.words.end(), [](const ir::Word& w) { return w.optional; })) {
+    if (skip_within(b)) return false;
     fail(b.range, "a '/' in the middle of a block");
+  }
   // Operator text (GOST's comments) or the block's comments, on its first line.
   bool has_comment_stmt = false;
   for (const ir::Stmt& s : b.stmts) has_comment_stmt |= s.kind == ir::StmtKind::Comment;
@@ -418,17 +420,20 @@ void Structured::machine() {
   if (std::exchange(words_written_, true)) return;
   if (!verbatim()) return translated_machine();
   std::vector<std::string> words;
-  for (const ir::Word& w : block_->words) {
-    switch (w.kind) {
-      case ir::WordKind::Code:
-        words.push_back(w.code < 0 ? as_written(w) : p_->semantics.codes[static_cast<size_t>(w.code)].name);
-        break;
-      case ir::WordKind::Parameter: case ir::WordKind::Argument: words.push_back(as_written(w)); break;
-      case ir::WordKind::Control: words.push_back(w.address + value(w.value, 'N')); break;  // M98 P1000, not P1000.
-      default: break;
-    }
-  }
+  for (const ir::Word& w : block_->words)
+    if (std::string text = verbatim_word(w); !text.empty()) words.push_back(std::move(text));
   write_words(words);
+}
+
+// A word of the same dialect as it is written (nothing for a word the block's
+// statements say).
+std::string Structured::verbatim_word(const ir::Word& w) {
+  switch (w.kind) {
+    case ir::WordKind::Code: return w.code < 0 ? as_written(w) : p_->semantics.codes[static_cast<size_t>(w.code)].name;
+    case ir::WordKind::Parameter: case ir::WordKind::Argument: return as_written(w);
+    case ir::WordKind::Control: return w.address + value(w.value, 'N');  // M98 P1000, not P1000.
+    default: return {};
+  }
 }
 
 void Structured::write_words(const std::vector<std::string>& words) {
@@ -1291,7 +1296,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::CompOff: comp_on_ = false; break;
       case Fn::ProgramEnd: case Fn::ProgramEndInformation:
         spindle_on_ = coolant_on_ = cycle_on_ = false;
-        program_ended_ |= in_main_;
+        program_ended_ |= in_main_ && !skip_;  // after a '/' it ends the program only with block skip off
         break;
       case Fn::ToolChange:
         // ... and first takes the tool axis to the reference point: a move the
@@ -1578,7 +1583,7 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
     return;  // T6 is corrector 0
   }
   // A code's operand (pp G14's plane axes, from the block's axis words): the code says it.
-  if (w.address.str()[0] == '#') return;
+  if (w.address.str()[0] == '#' || (w.derived && same_)) return;  // the same reader derives it again
   if (reads_source_words()) return words.push_back(as_written(w));
   const std::string address = w.address.str();
   const char letter = address.size() == 1 ? address[0] : 0;
@@ -2043,7 +2048,12 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   }
   streamer.spill.flush();
   Header header = request.header;
-  if (!rest.units.empty()) header.title = rest.units.front().title;
+  if (!rest.units.empty()) {
+    header.title = rest.units.front().title;
+    const std::string& name = rest.units.front().name;  // GOST's and pp's "%12"
+    if (name.size() > 1 && name.size() <= 9 && name[0] == '%' && name.find_first_not_of("0123456789", 1) == std::string::npos)
+      header.number = name.substr(1);
+  }
   translation->translate(rest, header);
   if (translation->needs_whole()) {  // LinuxCNC: a loop back into the streamed blocks
     auto whole = read_whole(s, file, dialect);

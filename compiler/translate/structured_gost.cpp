@@ -5,6 +5,7 @@
 // block; a program with parameters or jumps is refused, and --flatten writes the
 // blocks it runs (docs/translate.md).
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <fmt/format.h>
@@ -24,7 +25,7 @@ class GostStructured final : public Structured {
  private:
   // The main program with its repeat loops and calls written out (a loop of a
   // constant count runs the same blocks each time: the program needs no loop); a
-  // second program on the medium is refused (unit()).
+  // second program on the medium follows it into GOST, and is refused elsewhere (unit()).
   void body() override {
     ir::Unit main = p_->units.front();
     main.blocks.clear();
@@ -84,6 +85,33 @@ class GostStructured final : public Structured {
     }
     return true;
   }
+  // GOST into GOST: the medium's programs one after the other, each with its number.
+  bool next_program(const ir::Unit& u) override {
+    if (!same_ || !w_.next_program(std::string_view(u.name).substr(1), u.title)) return false;
+    last_number_ = 0;  // its numbers rise from its start
+    return true;
+  }
+  // GOST into GOST: the words and comments after a '/' in the middle of a block stay
+  // after it (Table 2), and the block's end of program counts where it is before it.
+  bool skip_within(const ir::Block& b) override {
+    if (!same_ || std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
+          return s.kind != ir::StmtKind::Comment && s.kind != ir::StmtKind::Machine;
+        }))
+      return false;
+    std::array<std::string, 2> part;  // before the '/', after it
+    auto add = [&](bool optional, const std::string& text) {
+      std::string& to = part[optional];
+      if (!text.empty()) to += (to.empty() ? "" : " ") + text;
+    };
+    for (const ir::Word& w : b.words) {
+      add(w.optional, verbatim_word(w));
+      if (!w.optional && w.kind == ir::WordKind::Code && w.code >= 0) state(p_->semantics.codes[static_cast<size_t>(w.code)].calls);
+    }
+    for (const ir::Stmt& s : b.stmts)
+      if (s.kind == ir::StmtKind::Comment) add(s.optional, w_.inline_comment(s.label));
+    line(part[0] + (part[0].empty() ? "/" : " /") + (part[1].empty() ? "" : " " + part[1]));
+    return true;
+  }
   void open_unit(const ir::Unit& u, bool) override { unit_ = &u; }
   void close_unit(const ir::Unit&, bool, bool) override {}
   void before_block(size_t i) override { pending_number_ = number_of(unit_->blocks[i]); }
@@ -134,12 +162,15 @@ class GostStructured final : public Structured {
       return "0";
     }
     // §3.3.5: a format whose T word holds tool and offset digits (T1 is written T100)
-    // says the offset in it: D is not written yet.
+    // says the offset with the tool only (GOST's own D: the T word's, value('T')).
     if (letter == 'D' && std::stoll(w_.number({'T', 1, Value::Count})) != 1) {
-      fail(e.range, "an offset of a T word of tool and offset digits (§3.3.5): not written yet");
+      fail(e.range, "an offset (D) where the T word holds tool and offset digits (§3.3.5): the target says it with its tool only");
       return "0";
     }
-    const OutWord word{letter, *v, kind_of(letter)};
+    OutWord word{letter, *v, kind_of(letter)};
+    if (letter == 'T')  // GOST's own T of tool and offset digits: the offset the reader took from it
+      for (const ir::Word& d : block_->words)
+        if (d.derived && d.address == "D") word.offset = static_cast<int>(p_->exprs[d.value].number);
     if (auto why = w_.unwritable(word)) fail(e.range, *why);
     return number(word, e.range);
   }

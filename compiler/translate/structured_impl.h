@@ -108,6 +108,9 @@ class Structured {
   virtual void start_parameters();
   virtual void start_modes(std::vector<FnCall>&) const {}  // the target's modes the source's power-on needs
   virtual void call_range(const ir::Stmt& s) { fail(s.range, "a call of a range of blocks (EPP)"); }
+  virtual void display(const ir::Stmt& s);
+  virtual bool next_program(const ir::Unit&) { return false; }  // a second program on the medium, started
+  virtual bool skip_within(const ir::Block&) { return false; }   // a block with a '/' after its first word, written  // a comment, where the target shows the operator no values
   virtual void start_offset();
   // What the program's first line starts with (`first`, its first character) where
   // the start wrote nothing before it.
@@ -221,6 +224,8 @@ class Structured {
 
  protected:
   bool start_needs(const FnCall& c) const;
+  std::string verbatim_word(const ir::Word& w);  // a word of the same dialect, as written
+  void state(const std::vector<FnCall>& calls);  // what the codes' functions set
 
  private:
   void start();
@@ -230,7 +235,6 @@ class Structured {
   void parameter(const ir::Word& w, std::vector<std::string>& words);
   std::string as_written(const ir::Word& w);
   std::optional<Code> exact_code(const std::vector<FnCall>& calls, Scope scope) const;
-  void state(const std::vector<FnCall>& calls);
   using Position = std::array<std::optional<double>, 3>;
   void centre(const ir::Word& w, const Position& start, std::vector<std::string>& words);
   void absolute_centre(const Position& start, std::vector<std::string>& out);
@@ -286,7 +290,6 @@ class Structured {
   // start, end and centre in the plane, as the target reads them.
   void on_circle(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c);
   void assign(const ir::Stmt& s);
-  void display(const ir::Stmt& s);
   std::string builtin_of_scaled(ir::ExprId value, SourceRange at);
   bool is_thousandths(ir::ExprId id) const;
 

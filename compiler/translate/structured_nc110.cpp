@@ -292,6 +292,30 @@ class Nc110Structured final : public Structured {
     line(fmt::format("(EPP,{},{})", labels_.at(s.label), labels_.at(s.end_label)));
   }
 
+  // NC-110 shows texts and values (DIS). A value not right after a text shows as
+  // NAME=value: a text that says that name before such a value is the reader's, and
+  // left to it.
+  void display(const ir::Stmt& s) override {
+    std::string text = "(DIS";
+    bool after_text = false;  // the item written last is a text
+    for (size_t i = 0; i < s.items.size(); ++i) {
+      const ir::Expr& e = p_->exprs[s.items[i].value];
+      if (e.op != ir::ExprOp::String) {
+        text += "," + expr(s.items[i].value, kOr);
+        after_text = false;
+        continue;
+      }
+      const std::string& shown = p_->texts[e.text];
+      const bool names_next = !after_text && i + 1 < s.items.size() &&
+                              p_->exprs[s.items[i + 1].value].op != ir::ExprOp::String &&
+                              shown == expr(s.items[i + 1].value, kOr) + "=";
+      if (names_next) continue;
+      text += "," + quoted(shown);
+      after_text = true;
+    }
+    line(text + ")");
+  }
+
   void ret(const ir::Stmt& s) override {
     if (in_main_) return fail(s.range, "M99 in the main program");
     if (block_ == &unit_->blocks.back()) return;  // the range ends here
@@ -374,8 +398,10 @@ class Nc110Structured final : public Structured {
     for (const ir::Word& o : block_->words) {
       if (o.kind != ir::WordKind::Parameter) continue;
       const std::string address = o.address.str();
-      if (address.find('\'') != std::string::npos)
-        return fail(o.range, fmt::format("{} with a pair of values: not written yet", code.address.str())), true;
+      if (address.find('\'') != std::string::npos) {  // the pair's second value (DLO): after the first, a blank between
+        text += " " + address.substr(0, 1) + o.text;
+        continue;
+      }
       text += "," + (address[0] == '#' ? o.text.substr(o.text.starts_with("=") ? 1 : 0) : address + o.text);
     }
     line(text + ")");
@@ -480,7 +506,7 @@ class Nc110Structured final : public Structured {
 
   std::string value(ir::ExprId id, char letter) override {
     const ir::Expr& e = p_->exprs[bare(id)];
-    if (letter == 'E') {  // G72-G74: where the results go
+    if (letter == 'E' && !same_) {  // G72-G74: where the results go (NC-110 keeps its own E numbers)
       fail(e.range, "a measurement's results (E): not written yet");
       return "0";
     }

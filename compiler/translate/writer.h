@@ -32,6 +32,7 @@ struct OutWord {
   char letter = 0;
   double value = 0;
   Value kind = Value::Length;
+  int offset = -1;  // GOST's T of tool and offset digits (§3.3.5): its offset (-1: the one in force)
 };
 
 // The program being written: what its leading comment says.
@@ -40,6 +41,7 @@ struct Header {
   std::string dialect;  // the source's dialect
   std::string title;    // the source program's title, if it has one
   bool flattened = false;
+  std::string number;   // the source program's number, if it has one ("%0012": "0012")
 };
 
 // The leading comment of a translation: "translated from F, dialect D: TITLE"
@@ -83,6 +85,9 @@ class Writer {
   virtual bool claim_number(long) { return true; }
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
+  // A program after the first on the medium, which the target runs after it (GOST
+  // 20999 §1.9): its start, with its own number and title. False: the target has none.
+  virtual bool next_program(std::string_view /*number*/, std::string_view /*title*/) { return false; }
   // The smallest length step the target's numbers write (mm): a position it writes
   // is exact to half of it.
   virtual double resolution() const = 0;

@@ -40,10 +40,22 @@ class GostWriter final : public Writer {
     // operator, and translated again as one.
     begun_ = true;
     if (!s_.format.program_start) return;
-    std::string line = "%";
+    std::string line = "%" + h.number;  // §1.8: up to 8 digits (a name of more is no number)
     append_comment(line, header_text(h, " - "));  // GOST's comment takes no ':'
     out_ += line;
     out_ += '\n';
+  }
+
+  // §1.9: the next program starts with its '%'; its numbers and its end are its own.
+  bool next_program(std::string_view number, std::string_view title) override {
+    if (!s_.format.program_start) return false;
+    std::string line = "%" + std::string(number);
+    append_comment(line, title);
+    out_ += line + '\n';
+    ended_ = false;
+    next_number_ = 1;
+    highest_ = 0;
+    return true;
   }
 
   void block(const std::vector<OutWord>& words, std::string_view comment) override {
@@ -176,7 +188,8 @@ class GostWriter final : public Writer {
     if (!f->dimension) {
       double v = w.value;
       // §3.3.5: T written as tool digits and offset digits repeats the offset in force.
-      if (w.letter == 'T' && s_.tool_digits > 0) v = v * std::pow(10.0, s_.offset_digits) + static_cast<double>(offset_);
+      if (w.letter == 'T' && s_.tool_digits > 0)
+        v = v * std::pow(10.0, s_.offset_digits) + static_cast<double>(w.offset >= 0 ? w.offset : offset_);
       return digits(*f, v);
     }
     const int b = f->frac_digits;

@@ -49,7 +49,8 @@ class PpWriter final : public Writer {
 
   void begin(const Header& h) override {
     // §2.3.1: the program number, 1..999999; the comment after it is the title.
-    comment_lines("%1", text(header_text(h)));
+    const long number = h.number.empty() ? 0 : std::stol(h.number);  // the source's, where pp can say it
+    comment_lines(fmt::format("%{}", number >= 1 && number <= 999999 ? number : 1), text(header_text(h)));
   }
 
   void block(const std::vector<OutWord>& words, std::string_view comment) override {

@@ -520,6 +520,7 @@ void Reader::address_word(char letter, const WrittenNumber& n, SourceRange r, st
     d.value = program_.number(offset, r);
     d.address = "D";
     d.text = std::to_string(offset);
+    d.derived = true;
     block_.words.push_back(std::move(w));
     block_.words.push_back(std::move(d));
     return;

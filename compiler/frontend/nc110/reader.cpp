@@ -730,6 +730,7 @@ void Reader::check_iso_block() {
           d.address = slot_name(d.slot);
           d.text = fmt::format("E{}", next);
           d.value = program_.number(next++, w.range);
+          d.derived = true;
           destinations.push_back(d);
         }
       for (ir::Word& d : destinations) block_.words.push_back(std::move(d));
