@@ -223,6 +223,11 @@ void Structured::begin_main() {
   corrector_ = 0;
   timer_ = 0;  // NC-110's TMR at power-on
   state(power_on());
+  source_origin_ = 0;  // NC-110 powers on in origin 0, unshifted
+  for (const FnCall& c : power_on())
+    if (c.fn == Fn::WorkOffset) source_origin_ = c.arg;
+  shift_ = {};
+  shift_known_ = true;
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
   // power-on motion goes into the main program's first move instead of the start.
   if (motion_code_moves() && !same_)
@@ -410,6 +415,9 @@ void Structured::forget() {
   if (polar_ != false || lowers_polar_) polar_.reset();
   if (lowers_frame_) frame_.reset();
   helix_mode_.reset();
+  source_origin_.reset();
+  shift_known_ = false;
+  if (!shifted_axes_.empty()) shifted_axes_ = dst_.axes;  // a local shift may be on any axis the target moves
 }
 
 // --- the machine action -----------------------------------------------------------------
@@ -775,6 +783,57 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
   if (!code) return fail(w.range, fmt::format("{},{}: {} has no work offset {}", desc.name, *n, w_.dialect(), *n));
   if (auto why = partial_offset(static_cast<int>(*n), desc.name)) return fail(w.range, *why);
   out.push_back({*code, desc.timing, code->entry->desc.timing, {}, {}});
+  // UAO ends the temporary and incremental shifts; the target's work offset brings
+  // back the local shift it had: ended in a block after it.
+  source_origin_ = static_cast<int>(*n);
+  shift_ = {};
+  shift_known_ = true;
+  if (!shifted_axes_.empty()) {
+    std::string zero = local_shift_code()->text();
+    for (char axis : shifted_axes_)
+      if (const auto text = length(w.range, axis, 0.0)) zero += fmt::format(" {}{}", axis, *text);
+    out.push_back({*code, desc.timing, code->entry->desc.timing, {}, zero});
+  }
+}
+
+// NC-110's temporary origin (UOT: origin n shifted on the axes it lists) and
+// incremental origin (UIO: the origin in force shifted, cumulatively) into a target
+// whose work offset has a local shift of its own (ISO's G52, which replaces the shift
+// of the axes it names). The shift of each axis is known from the text since the last
+// UAO; the origin UOT names must be the one in force (the target shifts that one).
+void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out) {
+  operand_words_ = true;  // the shift's words are written below, or refused with it
+  const auto local = local_shift_code();
+  if (!local) return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
+  const bool temporary = desc.calls[0].fn == Fn::OriginTemporary;
+  std::optional<double> n;
+  std::vector<std::pair<int, std::optional<double>>> axes;
+  for (const ir::Word& o : block_->words) {
+    if (o.kind != ir::WordKind::Parameter) continue;
+    if (temporary && o.slot == operand_slot(0)) n = constant_of(o.value);
+    else if (o.address.size() == 1 && std::string_view(kAxisLetters).find(o.address[0]) != std::string_view::npos)
+      axes.emplace_back(static_cast<int>(std::string_view(kAxisLetters).find(o.address[0])), constant_of(o.value));
+  }
+  if (temporary && (!n || !source_origin_ || *n != *source_origin_))
+    return fail(w.range, fmt::format("{} of another origin than the one in force, or where that is not known (after a "
+                                     "label, a loop's start or a call): {}'s local shift moves the work offset in force",
+                                     desc.name, w_.dialect()));
+  if (!temporary && !shift_known_)
+    return fail(w.range, fmt::format("{} where the shift it adds to is not known (after a label, a loop's start or a call)", desc.name));
+  std::string text = local->text();
+  for (const auto& [axis, v] : axes) {
+    const char letter = kAxisLetters[static_cast<size_t>(axis)];
+    if (!v) return fail(w.range, fmt::format("{} by a parameter: the shift is not known from the text", desc.name));
+    if (dst_.axes.find(letter) == std::string::npos)
+      return fail(w.range, fmt::format("{} of axis {}: {} has axes {}", desc.name, letter, w_.dialect(), dst_.axes));
+    shift_[static_cast<size_t>(axis)] = temporary ? *v : shift_[static_cast<size_t>(axis)] + *v;
+    const auto written = length(w.range, letter, shift_[static_cast<size_t>(axis)]);
+    if (!written) return;
+    text += fmt::format(" {}{}", letter, *written);
+    if (shifted_axes_.find(letter) == std::string::npos) shifted_axes_ += letter;
+  }
+  forget_position();  // the program's coordinates of the tool move with its origin
+  out.push_back({*local, desc.timing, local->entry->desc.timing, {}, text});  // a block of its own (ISO)
 }
 
 std::optional<std::string> Structured::partial_offset(int n, std::string_view name) const {
@@ -1348,6 +1407,9 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
     return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
+  if (desc.calls.size() == 1 && (desc.calls[0].fn == Fn::OriginTemporary || desc.calls[0].fn == Fn::OriginIncremental) &&
+      !target_code(desc.calls, desc.scope))
+    return origin_shift(w, desc, out);
   if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope)) return reference(w, desc, out);
   if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} || desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
       !target_code(desc.calls, desc.scope))

@@ -241,6 +241,8 @@ class Structured {
   void plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start, std::vector<std::string>& out);
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  void origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  std::optional<Code> local_shift_code() const { return target_code({{Fn::OffsetLocal}}, Scope::Block); }
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   bool lowers_corner(const ir::Word& w) const;
@@ -324,6 +326,10 @@ class Structured {
   bool lowers_inch_ = false;           // ... and the program has inches where the target has none
   std::optional<bool> polar_ = false;  // G16, where the target has none (written in X Y Z)
   std::optional<bool> helix_mode_;     // the target's helix mode (pp's G09) is on
+  std::optional<int> source_origin_;   // NC-110's origin selected (UAO), where the text says
+  AxisValues shift_{};                 // ... its temporary or incremental shift on each axis (UOT, UIO)
+  bool shift_known_ = true;            // ... as far as the text says
+  std::string shifted_axes_;           // the axes a local shift (ISO's G52) has been written for
   bool lowers_polar_ = false;          // ... and the program has it
   bool lowers_frame_ = false;          // the program has a frame the target has not: every frame lowered
   std::optional<Frame> frame_ = Frame{};  // ... the one in force, where the text says
