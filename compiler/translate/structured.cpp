@@ -415,6 +415,8 @@ void Structured::forget() {
   if (polar_ != false || lowers_polar_) polar_.reset();
   if (lowers_frame_) frame_.reset();
   helix_mode_.reset();
+  return_initial_.reset();
+  level_cycle_.reset();
   source_origin_.reset();
   shift_known_ = false;
   if (!shifted_axes_.empty()) shifted_axes_ = dst_.axes;  // a local shift may be on any axis the target moves
@@ -459,11 +461,12 @@ void Structured::translated_machine() {
   std::vector<Mapped> codes;
   std::vector<std::string> params;
   bool moves = false;
+  bool drills = false;  // the block has a position in the plane (a converted cycle's hole)
   operand_words_ = false;
   // Where the previous block's corner left the tool, and the motion code its fillet
   // leaves to be written again.
   const auto chained = std::exchange(chained_start_, std::nullopt);
-  const std::string restore_motion = std::exchange(restore_motion_, {});
+  std::string restore_motion = std::exchange(restore_motion_, {});
   const auto centre_override = std::exchange(centre_override_, std::nullopt);  // its arc's, from that point
   if (src_.corrector_in_tool_word)  // before M06 of the same block
     for (const ir::Word& w : block_->words)
@@ -480,6 +483,20 @@ void Structured::translated_machine() {
     } else if (block_->words[i].kind == ir::WordKind::Code) {
       code(block_->words[i], codes);
     }
+  // A converted cycle ends at G80 or (ISO) a motion code, before the block's words.
+  std::vector<std::string> cycle_before;  // a converted cycle's lines before the block's (NC-110's cycle block, G80)
+  if (level_cycle_) {
+    auto has = [&](auto is) {
+      return std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+        if (w.kind != ir::WordKind::Code || w.code < 0) return false;
+        const auto& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
+        return std::any_of(calls.begin(), calls.end(), is);
+      });
+    };
+    const bool cancel = has([](const FnCall& c) { return c.fn == Fn::CycleCancel; });
+    if (cancel || (src_.fanuc_cycles && has([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion; })))
+      end_level_cycle(!cancel, cycle_before);
+  }
   // A code two words map to (GOST's M05 M09: pp's M05 M09, and M09 again), once.
   for (size_t i = 0; i < codes.size(); ++i)
     for (size_t j = codes.size() - 1; j > i; --j)
@@ -518,7 +535,9 @@ void Structured::translated_machine() {
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
       if (operand_words_) continue;  // the code says them (UAO by its work offset), or they are refused with it
+      if (level_word(w)) continue;   // a converted cycle's level, depth or dwell
       const char l = w.address.size() == 1 ? w.address[0] : 0;
+      drills |= plane_ && l && (l == 'X' + static_cast<char>(plane_u()) || l == 'X' + static_cast<char>(plane_v()));
       if (framed_block && l >= 'X' && l <= 'Z' && framed_axis(static_cast<size_t>(l - 'X'), arc)) {
         framed_at = std::min(framed_at, params.size());
         moves = true;
@@ -571,6 +590,11 @@ void Structured::translated_machine() {
       track(w);
     }
   if (polar[0] || polar[1]) polar_point(polar, start, params, polar_at);
+  if (level_cycle_) {
+    if (level_cycle_lines(drills, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
+  } else {
+    unknown_level_cycle(moves);
+  }
   if (framed_block) {
     std::vector<std::string> transformed;
     framed_move(start, arc, transformed, arc_code);
@@ -627,6 +651,7 @@ void Structured::translated_machine() {
     else if (c.code.letter == 'M') m.push_back(c.code.text());
     else g.push_back(c.code);
   }
+  for (const std::string& line : cycle_before) write_words({line});
   // G codes the target takes in no one block: the last block's with the motion,
   // the others' before it.
   const auto blocks = together(g);
@@ -650,7 +675,10 @@ void Structured::translated_machine() {
     const auto& calls = c.code.entry->desc.calls;
     return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
   });
-  if (!restore_motion.empty() && !has_motion) main.insert(main.begin(), restore_motion);
+  if (!restore_motion.empty() && !has_motion) {  // at the next move
+    if (moves) main.insert(main.begin(), restore_motion);
+    else restore_motion_ = restore_motion;
+  }
   if (!arc_code.empty()) main.push_back(arc_code);  // after the block's other G codes
   if (!helix_code.empty()) main.insert(main.begin(), helix_code);
   if (moves && in_main_ && !deferred_motion_.empty()) {
@@ -680,6 +708,10 @@ void Structured::translated_machine() {
   write_words(joint);
   apart_blocks(after);
   write_words(later);
+  if (level_cycle_ && std::exchange(level_cycle_->carry, false) && pending_number_) {  // to the cycle's first hole
+    carried_number_ = std::exchange(pending_number_, std::nullopt);
+    carry_ = true;
+  }
 }
 
 // Two codes of the block whose functions together are one code of the target, which
@@ -1331,6 +1363,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
       case Fn::PolarOn: case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
       case Fn::HelixOn: case Fn::HelixOff: helix_mode_ = f.fn == Fn::HelixOn; break;
+      case Fn::CycleReturnInitial: case Fn::CycleReturnLevel: return_initial_ = f.fn == Fn::CycleReturnInitial; break;
       case Fn::FeedPerMinute: case Fn::FeedPerRevolution: case Fn::FeedInverseTime:
         per_minute_ = f.fn == Fn::FeedPerMinute;
         break;
@@ -1429,6 +1462,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
       // pp's): the target's of the same pattern, the level, peck and dwell words
       // renamed (parameter()): ISO's R Q P are pp's K I and Q in 10 ms.
       const CyclePattern& pattern = p_->semantics.cycles[c.arg];
+      if (converts_cycle_levels()) return level_cycle_code(w, desc, pattern);
       const bool alike = !src_.cycle_two_levels && !src_.cycle_defines_only && !dst_.cycle_two_levels &&
                          !dst_.cycle_defines_only && dst_.cycle_level_word && (!src_.peck_word || dst_.peck_word) &&
                          (!src_.dwell_word || dst_.dwell_word);
@@ -1477,6 +1511,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     auto code = target_code({c}, desc.scope);
     if (code) each.push_back(*code);
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
+    else if ((c.fn == Fn::CycleReturnInitial || c.fn == Fn::CycleReturnLevel) && dst_.cycle_two_levels)
+      state({c});  // the return level, written as the cycle's R2 (level_cycle_lines())
     else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
     else if ((c.fn == Fn::UnitsMm || c.fn == Fn::UnitsInch) && !target_inch_)
       state({c});  // pp: mm always, inches written as mm (unit_)

@@ -242,6 +242,13 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  // Canned cycles between NC-110's two levels and the others' one (structured_cycle.cpp).
+  bool converts_cycle_levels() const;
+  void level_cycle_code(const ir::Word& w, const CodeDesc& desc, const CyclePattern& pattern);
+  bool level_word(const ir::Word& w);
+  bool level_cycle_lines(bool drills, std::vector<std::string>& before, std::vector<std::string>& words);
+  void end_level_cycle(bool by_motion, std::vector<std::string>& before);
+  void unknown_level_cycle(bool moves);
   std::optional<Code> local_shift_code() const { return target_code({{Fn::OffsetLocal}}, Scope::Block); }
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
@@ -326,6 +333,24 @@ class Structured {
   bool lowers_inch_ = false;           // ... and the program has inches where the target has none
   std::optional<bool> polar_ = false;  // G16, where the target has none (written in X Y Z)
   std::optional<bool> helix_mode_;     // the target's helix mode (pp's G09) is on
+  // A canned cycle converted between two levels and one (structured_cycle.cpp).
+  struct LevelCycle {
+    struct Levels {
+      std::optional<double> r1, r2, depth, dwell;  // R1 (approach), R2 (return): lengths in the source's unit; seconds
+    };
+    const CyclePattern* pattern;
+    Code code;  // the target's
+    SourceRange at;
+    Levels now, given;               // in force; this block's words
+    std::optional<double> initial;   // the level the cycle began at (the one-level dialects' return level)
+    bool defined_here = true;        // the block being written has the cycle's code
+    bool written = false;            // its first hole is written (a one-level target's cycle block with it)
+    bool restate = false;            // ... and its levels changed since
+    bool carry = false;              // the cycle's block writes nothing: its number goes to the next line
+  };
+  bool level_cycles_ = false;  // the program has a converted cycle
+  std::optional<LevelCycle> level_cycle_;
+  std::optional<bool> return_initial_;  // ISO's G98 (true) or G99, where the text says
   std::optional<int> source_origin_;   // NC-110's origin selected (UAO), where the text says
   AxisValues shift_{};                 // ... its temporary or incremental shift on each axis (UOT, UIO)
   bool shift_known_ = true;            // ... as far as the text says
