@@ -536,6 +536,7 @@ void Structured::translated_machine() {
     if (w.kind == ir::WordKind::Parameter) {
       if (operand_words_) continue;  // the code says them (UAO by its work offset), or they are refused with it
       if (level_word(w)) continue;   // a converted cycle's level, depth or dwell
+      if (skip_offset_word_ && w.address == "H") continue;  // G43's, folded into the M06 before
       const char l = w.address.size() == 1 ? w.address[0] : 0;
       drills |= plane_ && l && (l == 'X' + static_cast<char>(plane_u()) || l == 'X' + static_cast<char>(plane_v()));
       if (framed_block && l >= 'X' && l <= 'Z' && framed_axis(static_cast<size_t>(l - 'X'), arc)) {
@@ -590,6 +591,12 @@ void Structured::translated_machine() {
       track(w);
     }
   if (polar[0] || polar[1]) polar_point(polar, start, params, polar_at);
+  if (const auto h = std::exchange(folded_corrector_, std::nullopt)) {  // NC-110's M06 of T tool.corrector
+    std::erase_if(params, [](const std::string& p) { return p[0] == 'T'; });
+    params.push_back(fmt::format("T{}.{}", *tool_selected_, *h));
+    folded_g43_ = true;
+  }
+  skip_offset_word_ = false;
   if (level_cycle_) {
     if (level_cycle_lines(drills, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
   } else {
@@ -1444,6 +1451,14 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
       !target_code(desc.calls, desc.scope))
     return origin_shift(w, desc, out);
   if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope)) return reference(w, desc, out);
+  // ISO's G53 (its block in machine coordinates, absolute) into NC-110: G79.
+  if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block && !target_code(desc.calls, desc.scope))
+    if (auto g79 = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block)) {
+      if (incremental_ != false || comp_on_ != false)
+        return fail(w.range, fmt::format("{} under G91, or with cutter compensation, or where the text does not say they are off: "
+                                         "{}'s {} is absolute and takes no compensation", desc.name, w_.dialect(), g79->text()));
+      return out.push_back({*g79, desc.timing, g79->entry->desc.timing, {}, {}});
+    }
   if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} || desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
       !target_code(desc.calls, desc.scope))
     return timed_dwell(w, desc, out);
@@ -1502,9 +1517,21 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   // A code that does more, where what it does more changes nothing here (GOST's G40
   // also ends a length offset that is not on; its M05 stops a coolant that is off).
   if (auto more = code_doing_more(desc.calls, desc.scope)) return add(*more);
-  // ISO's M06 ends the length offset: NC-110's M06 with the T word's corrector 0.
+  // ISO's M06 ends the length offset: NC-110's M06 with the T word's corrector 0, or
+  // with the corrector of a G43 H in the block after it, where nothing moves between.
   if (desc.calls == std::vector<FnCall>{{Fn::ToolChange}} && src_.tool_change_iso && dst_.corrector_in_tool_word)
-    if (auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal)) return add(*m06);
+    if (auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal)) {
+      if (tool_selected_) folded_corrector_ = offset_after_change();
+      return add(*m06);
+    }
+  // ... that G43 H, applied by that M06 already.
+  if (desc.calls == std::vector<FnCall>{{Fn::LengthPlus}} && dst_.corrector_in_tool_word && !src_.corrector_in_tool_word) {
+    skip_offset_word_ = true;
+    if (std::exchange(folded_g43_, false)) return void(length_on_ = true);
+    return fail(w.range, fmt::format("{}: {} applies a length offset at its tool change only (T tool.corrector M06), and "
+                                     "this one is not in the block after the change, or something moves before it",
+                                     desc.name, w_.dialect()));
+  }
   std::vector<Code> each;
   std::string later;
   for (const FnCall& c : desc.calls) {
@@ -1567,6 +1594,26 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
       }
     }
   return best;
+}
+
+// The length offset number of ISO's G43 H in the block after an M06, where that block
+// moves nothing and no jump comes to it: NC-110's M06 applies it.
+std::optional<int> Structured::offset_after_change() const {
+  if (!next_ || !next_->label.empty()) return std::nullopt;
+  bool g43 = false;
+  std::optional<double> h;
+  for (const ir::Word& w : next_->words) {
+    if (w.kind == ir::WordKind::Code && w.code >= 0)
+      g43 |= p_->semantics.codes[static_cast<size_t>(w.code)].calls == std::vector<FnCall>{{Fn::LengthPlus}};
+    else if (w.kind == ir::WordKind::Parameter && w.address == "H")
+      h = constant_of(w.value);
+    else if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos)
+      return std::nullopt;
+  }
+  for (const ir::Stmt& s : next_->stmts)
+    if (s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Comment) return std::nullopt;
+  if (!g43 || !h || *h < 1 || *h != std::floor(*h) || *h > 9999) return std::nullopt;
+  return static_cast<int>(*h);
 }
 
 // The number of each unit the program calls: ISO's O number and pp's L number are

@@ -180,6 +180,9 @@ class Structured {
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
   std::string label_;                  // ... and before it (NC-110's "LABEL")
   std::vector<std::string> extra_words_;  // the block's words the target adds (pp's G70 of a subprogram's end)
+  std::optional<int> folded_corrector_;   // ISO's G43 H of the next block, into NC-110's M06 of this one
+  bool folded_g43_ = false;               // ... and that G43 is written so
+  bool skip_offset_word_ = false;         // ... and its H too
   bool streamed_ = false;              // the main program's leading blocks are written
   bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
@@ -242,6 +245,7 @@ class Structured {
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  std::optional<int> offset_after_change() const;
   // Canned cycles between NC-110's two levels and the others' one (structured_cycle.cpp).
   bool converts_cycle_levels() const;
   void level_cycle_code(const ir::Word& w, const CodeDesc& desc, const CyclePattern& pattern);
