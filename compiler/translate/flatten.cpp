@@ -445,6 +445,48 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
   }
 }
 
+// A parabola, where the target writes one by its end and control point (LinuxCNC's
+// G5.1, in the XY plane: X and Y move, and the control point's offset from the start
+// is I J). Else refused: flattening writes no chords.
+void Flattener::parabola(const Event& e) {
+  const auto code = w_.parabola_code();
+  if (!code) return refuse(e.source, "a parabola (G06): flattening writes straight lines and arcs");
+  want_.plane = 0;  // G5.1 is XY's
+  sync_state(e.source);
+  if (!told_.position)
+    for (int i = 0; i < kAxisCount; ++i) start_[i] = target_.initial_position[i] - offset_mm(i);
+  const AxisValues from = told_.position.value_or(start_);
+  const AxisValues end = target_point(e.pos);
+  AxisValues control = e.pos;
+  for (int i = 0; i < 3; ++i) control[i] = e.control[i];
+  control = target_point(control);
+  for (int i = 2; i < kAxisCount; ++i)
+    if (std::fabs(written_length(end[i]) - from[i]) > kSame || (i == 2 && std::fabs(written_length(control[i]) - from[i]) > kSame))
+      return refuse(e.source, fmt::format("a parabola out of the XY plane: {}'s G5.1 moves X and Y only", w_.dialect()));
+  const double i = written_length(control[0] - from[0]), j = written_length(control[1] - from[1]);
+  if (std::fabs(i) < kSame && std::fabs(j) < kSame)
+    return refuse(e.source, fmt::format("a parabola whose control point is its start: {}'s G5.1 takes none", w_.dialect()));
+  if (!told_.plane || *told_.plane != want_.plane) {
+    std::vector<OutWord> pc;
+    if (!write_code({plane_fn(want_.plane)}, pc, e.source, "the parabola's plane")) return;
+    emit_block(std::move(pc));
+  }
+  std::vector<OutWord> b = block_codes_;
+  block_codes_.clear();
+  b.push_back({'G', *code, Value::Code});
+  AxisValues at = from;
+  for (int a = 0; a < 2; ++a) {
+    at[a] = written_length(end[a]);
+    b.push_back({kAxisLetters[a], at[a], Value::Length});
+  }
+  b.push_back({'I', i, Value::Length});
+  b.push_back({'J', j, Value::Length});
+  feed_word(b);
+  told_.motion = static_cast<int>(Fn::MotionParabola);  // G5.1 is modal: the next move writes its code
+  told_.position = at;
+  emit_block(std::move(b));
+}
+
 void Flattener::event(const Event& e) {
   source_ = e.source;
   if (ended_ && e.kind != EventKind::Block) {
@@ -592,7 +634,7 @@ void Flattener::event(const Event& e) {
       if (write_code({fn}, words, e.source, "a machine function")) emit_block(std::move(words));
       break;
     }
-    case EventKind::Parabola: refuse(e.source, "a parabola (G06): flattening writes straight lines and arcs"); break;
+    case EventKind::Parabola: parabola(e); break;
     case EventKind::Thread: refuse(e.source, "a threading move: flattening writes no spindle-synchronised motion yet"); break;
     case EventKind::Spline: refuse(e.source, "a spline: flattening writes straight lines and arcs"); break;
     case EventKind::Probe: refuse(e.source, "a probing move: its end depends on the part"); break;

@@ -56,6 +56,7 @@ class Flattener final : public TraceSink {
   void feed_word(std::vector<OutWord>& words);
   void move(const Event& e);
   void arc_to(const Event& e, const AxisValues& end);
+  void parabola(const Event& e);
   AxisValues target_point(const AxisValues& pos) const;
   double offset_mm(int axis) const;  // the target's work offset on an axis, mm
   void emit_block(std::vector<OutWord> words, std::string_view comment = {});

@@ -462,6 +462,7 @@ void Structured::translated_machine() {
   std::vector<std::string> params;
   bool moves = false;
   bool drills = false;  // the block has a position in the plane (a converted cycle's hole)
+  std::array<const ir::Word*, 6> parabola_words{};  // X Y Z I J K of a parabola the target writes otherwise
   operand_words_ = false;
   // Where the previous block's corner left the tool, and the motion code its fillet
   // leaves to be written again.
@@ -539,6 +540,10 @@ void Structured::translated_machine() {
       if (skip_offset_word_ && w.address == "H") continue;  // G43's, folded into the M06 before
       const char l = w.address.size() == 1 ? w.address[0] : 0;
       drills |= plane_ && l && (l == 'X' + static_cast<char>(plane_u()) || l == 'X' + static_cast<char>(plane_v()));
+      if (const size_t k = std::string_view("XYZIJK").find(l); l && k != std::string_view::npos && lowers_parabola()) {
+        parabola_words[k] = &w;
+        continue;
+      }
       if (framed_block && l >= 'X' && l <= 'Z' && framed_axis(static_cast<size_t>(l - 'X'), arc)) {
         framed_at = std::min(framed_at, params.size());
         moves = true;
@@ -591,6 +596,10 @@ void Structured::translated_machine() {
       track(w);
     }
   if (polar[0] || polar[1]) polar_point(polar, start, params, polar_at);
+  if (std::any_of(parabola_words.begin(), parabola_words.end(), [](const ir::Word* w) { return w; })) {
+    moves = true;
+    parabola(parabola_words, start, params);
+  }
   if (const auto h = std::exchange(folded_corrector_, std::nullopt)) {  // NC-110's M06 of T tool.corrector
     std::erase_if(params, [](const std::string& p) { return p[0] == 'T'; });
     params.push_back(fmt::format("T{}.{}", *tool_selected_, *h));
@@ -1446,6 +1455,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (lowers_frame(desc)) return frames_.push_back(&w);  // after the block's G90/G91 and plane (translated_machine())
   if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
     return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
+  if (desc.calls == std::vector<FnCall>{{Fn::MotionParabola}} && w_.parabola_code() && !target_code(desc.calls, desc.scope))
+    return state(desc.calls);  // its points written as the target's parabola (parabola())
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
   if (desc.calls.size() == 1 && (desc.calls[0].fn == Fn::OriginTemporary || desc.calls[0].fn == Fn::OriginIncremental) &&
       !target_code(desc.calls, desc.scope))
@@ -1594,6 +1605,58 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
       }
     }
   return best;
+}
+
+// GOST 20999's parabola (G06) into a target that writes one by its end and control
+// point (LinuxCNC's G5.1, in XY: I J the control point from the start).
+bool Structured::lowers_parabola() const {
+  return !same_ && motion_ == Fn::MotionParabola && w_.parabola_code() && !target_code({{Fn::MotionParabola}}, Scope::Modal);
+}
+
+// The parabola's control point as the runtime takes it (machine_motion.cpp, §4.4): the
+// tangents' intersection I J K (coordinates under G90, or from the start, as the
+// source machine says), or from two blocks without them twice the intermediate point
+// less half the start and the end. The words must be constants, the start known.
+void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out) {
+  const ir::Word& first = **std::find_if(words.begin(), words.end(), [](const ir::Word* w) { return w; });
+  position_ = {};
+  if (!incremental_ || !start[0] || !start[1] || !start[2] || plane_ != 'K')
+    return fail(first.range, fmt::format("a parabola where the tool's position, G90/G91 or the plane is not known, or out of "
+                                         "the XY plane: {}'s G5.1 is in XY (G17)", w_.dialect()));
+  const bool tangent = words[3] || words[4] || words[5];
+  // The second of two blocks goes on from the intermediate point (G91, words not written).
+  const Position base = !tangent && parabola_middle_ ? *parabola_middle_ : start;
+  std::array<double, 3> end{}, control{};
+  for (size_t a = 0; a < 3; ++a) {
+    const auto p = words[a] ? constant_of(words[a]->value) : std::optional<double>(0.0);
+    const auto t = words[3 + a] ? constant_of(words[3 + a]->value) : std::optional<double>(0.0);
+    if (!p || !t) return fail(first.range, "a parabola given by a parameter");
+    end[a] = *incremental_ || !words[a] ? *base[a] + *p : *p;
+    const bool coordinates = src_.parabola_tangent == ParabolaTangent::Coordinates && !*incremental_;
+    control[a] = coordinates && words[3 + a] ? *t : *start[a] + *t;
+  }
+  if (!tangent && !parabola_middle_) {  // the first of two blocks: nothing moves yet
+    parabola_middle_ = Position{end[0], end[1], end[2]};
+    position_ = start;
+    return;
+  }
+  if (!tangent) {
+    for (size_t a = 0; a < 3; ++a) control[a] = 2 * *(*parabola_middle_)[a] - (*start[a] + end[a]) / 2;
+    parabola_middle_.reset();
+  }
+  if (std::fabs(end[2] - *start[2]) > 1e-9 || std::fabs(control[2] - *start[2]) > 1e-9)
+    return fail(first.range, fmt::format("a parabola out of the XY plane: {}'s G5.1 moves X and Y only", w_.dialect()));
+  if (std::fabs(control[0] - *start[0]) < 1e-9 && std::fabs(control[1] - *start[1]) < 1e-9)
+    return fail(first.range, fmt::format("a parabola whose control point is its start: {}'s G5.1 takes none", w_.dialect()));
+  std::vector<std::string> written{"G" + w_.number({'G', *w_.parabola_code(), Value::Code})};
+  for (const auto& [letter, v] : {std::pair{'X', end[0]}, std::pair{'Y', end[1]}, std::pair{'I', control[0] - *start[0]},
+                                  std::pair{'J', control[1] - *start[1]}}) {
+    const auto text = length(first.range, letter, letter >= 'X' && *incremental_ ? v - *start[letter - 'X'] : v);
+    if (!text) return;
+    written.push_back(letter + *text);
+  }
+  out.insert(out.begin(), written.begin(), written.end());
+  position_ = Position{end[0], end[1], end[2]};
 }
 
 // The length offset number of ISO's G43 H in the block after an M06, where that block

@@ -246,6 +246,8 @@ class Structured {
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   std::optional<int> offset_after_change() const;
+  bool lowers_parabola() const;
+  void parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out);
   // Canned cycles between NC-110's two levels and the others' one (structured_cycle.cpp).
   bool converts_cycle_levels() const;
   void level_cycle_code(const ir::Word& w, const CodeDesc& desc, const CyclePattern& pattern);
@@ -354,6 +356,7 @@ class Structured {
   };
   bool level_cycles_ = false;  // the program has a converted cycle
   std::optional<LevelCycle> level_cycle_;
+  std::optional<Position> parabola_middle_;  // GOST's two-block parabola: its intermediate point
   std::optional<bool> return_initial_;  // ISO's G98 (true) or G99, where the text says
   std::optional<int> source_origin_;   // NC-110's origin selected (UAO), where the text says
   AxisValues shift_{};                 // ... its temporary or incremental shift on each axis (UOT, UIO)

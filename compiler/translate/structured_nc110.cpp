@@ -507,7 +507,7 @@ class Nc110Structured final : public Structured {
   std::string value(ir::ExprId id, char letter) override {
     const ir::Expr& e = p_->exprs[bare(id)];
     if (letter == 'E' && !same_) {  // G72-G74: where the results go (NC-110 keeps its own E numbers)
-      fail(e.range, "a measurement's results (E): not written yet");
+      fail(e.range, fmt::format("the word E of {}: NC-110's E says where a measurement stores its results", p_->dialect));
       return "0";
     }
     const auto address = w_.tables().addresses.find(letter);

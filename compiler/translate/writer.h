@@ -85,6 +85,10 @@ class Writer {
   virtual bool claim_number(long) { return true; }
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
+  // The G code of a parabola given by its end in X and Y and its control point's
+  // offset from the start, I and J (LinuxCNC's quadratic spline G5.1); none where the
+  // target has none.
+  virtual std::optional<double> parabola_code() const { return std::nullopt; }
   // A program after the first on the medium, which the target runs after it (GOST
   // 20999 §1.9): its start, with its own number and title. False: the target has none.
   virtual bool next_program(std::string_view /*number*/, std::string_view /*title*/) { return false; }

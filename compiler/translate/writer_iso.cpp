@@ -1,5 +1,7 @@
 // ISO/Fanuc programs, and RS274NGC as LinuxCNC 2.9 reads it: the same words, but
 // LinuxCNC reads `O` as an o-word and acts on comments that start with MSG.
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "writer.h"
@@ -29,6 +31,16 @@ class IsoWriter final : public Writer {
       line += w.letter;
       line += number(w);
     }
+    // LinuxCNC reads lines of 255 characters at most: a longer comment goes on in
+    // comment lines of its own, broken at blanks.
+    while (linuxcnc_ && line.size() + comment.size() + 4 > kLinuxcncLine) {
+      const size_t room = kLinuxcncLine - 4 - std::min(line.size(), kLinuxcncLine - 64);
+      size_t cut = comment.rfind(' ', room);
+      if (cut == std::string_view::npos || cut == 0) cut = room;
+      out_ += (line.empty() ? "" : line + " ") + inline_comment(comment.substr(0, cut)) + "\n";
+      line.clear();
+      comment.remove_prefix(std::min(comment.size(), cut + (cut < comment.size() && comment[cut] == ' ')));
+    }
     if (!comment.empty() || words.empty()) {  // an empty message is "()", not an empty line
       if (!line.empty()) line += ' ';
       line += inline_comment(comment);
@@ -49,11 +61,14 @@ class IsoWriter final : public Writer {
     if (!linuxcnc_) out_ += "%\n";
   }
 
+  std::optional<double> parabola_code() const override { return linuxcnc_ ? std::optional(5.1) : std::nullopt; }
+
  private:
   // Fanuc reads a length without a decimal point in thousandths: every length has one.
   std::string number(const OutWord& w) const {
     switch (w.kind) {
-      case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
+      case Value::Code:  // G5.1: a code with a decimal
+        return w.value == std::floor(w.value) ? fmt::format("{:02}", static_cast<int>(w.value)) : exact(w.value, false);
       case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
       case Value::Speed: return decimal(w.value, 4, false);
       case Value::Feed: return decimal(w.value, 6, true);  // a computed feed as it is (inverse time, G95)
@@ -68,6 +83,7 @@ class IsoWriter final : public Writer {
            head.starts_with("LOG") || head.starts_with("PROBE");
   }
 
+  static constexpr size_t kLinuxcncLine = 255;
   bool linuxcnc_;
 };
 
