@@ -723,7 +723,9 @@ void Structured::translated_machine() {
   write_words(main);
   write_words(joint);
   apart_blocks(after);
-  write_words(later);
+  later.insert(later.end(), later_lines_.begin(), later_lines_.end());
+  later_lines_.clear();
+  for (const std::string& line : later) write_words({line});  // each a block of its own
   if (level_cycle_ && std::exchange(level_cycle_->carry, false) && pending_number_) {  // to the cycle's first hole
     carried_number_ = std::exchange(pending_number_, std::nullopt);
     carry_ = true;
@@ -780,10 +782,26 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
       zero &= v && *v == 0;
     }
   }
-  if (!to) return fail(w.range, fmt::format("{} (reference.return): {} has no code for it", desc.name, w_.dialect()));
   if (!axes || incremental != true || !zero)
-    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, as {}'s {} goes "
-                                     "there directly)", desc.name, w_.dialect(), to->text()));
+    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, as {} goes "
+                                     "there directly)", desc.name, to ? std::string(w_.dialect()) + "'s " + to->text() : std::string(w_.dialect())));
+  if (!to) {  // NC-110 and GOST: a rapid in machine coordinates (iso_tool_change())
+    std::string named;  // before the program's first move, an axis at the reference point already moves not
+    for (const ir::Word& o : block_->words)
+      if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && std::string_view("XYZ").find(o.address[0]) != std::string_view::npos) {
+        const size_t i = static_cast<size_t>(o.address[0] - 'X');
+        if (moved_ || target_.initial_position[i] != target_.reference_position[i]) named += o.address[0];
+      }
+    std::vector<std::string> lines;
+    if (named.empty()) return void(operand_words_ = true);
+    if (std::string why = machine_reference(named, incremental, lines); !why.empty())
+      return fail(w.range, fmt::format("{} (reference.return): {} has no code for it, and a rapid in its machine coordinates "
+                                       "cannot say it here: {}", desc.name, w_.dialect(), why));
+    operand_words_ = true;  // the axes named are the move's, not a point to go through
+    later_lines_.insert(later_lines_.end(), lines.begin(), lines.end());
+    for (const char axis : named) position_[static_cast<size_t>(axis - 'X')].reset();
+    return;
+  }
   if (length_on_ != false)
     return fail(w.range, fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} not", desc.name,
                                      p_->dialect, w_.dialect(), to->text()));
@@ -1301,18 +1319,10 @@ char Structured::corrector_axis(const std::map<int, OffsetEntry>& offsets, int n
 // Nothing when written, else why not.
 std::string Structured::iso_tool_change() {
   const auto reference = target_code({{Fn::MotionReference}}, Scope::Block);
-  std::optional<Code> machine_zero, rapid, restore;
-  if (!reference) {
-    machine_zero = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block);
-    if (!machine_zero) machine_zero = target_code({{Fn::WorkOffset, 0}}, Scope::Block);
-    rapid = target_code({{Fn::MotionRapid}}, Scope::Modal);
-    if (motion_ && *motion_ != Fn::MotionRapid) restore = target_code({{*motion_}}, Scope::Modal);
-    if (!machine_zero || !rapid) return "it has no code for the reference point nor for machine coordinates";
-    if (!motion_ || (*motion_ != Fn::MotionRapid && !restore)) return "the motion code in force is not known here";
-    if (length_on_ != false || comp_on_ != false)
-      return "a length offset or cutter compensation is (perhaps) on, which its machine coordinates do not take";
-    if (!inch_) return "the unit is not known here";
-  }
+  const char axis = plane_ ? normal_axis() : 'Z';
+  std::vector<std::string> retract;  // where the target has no reference-point code
+  if (!reference)
+    if (std::string why = machine_reference(std::string(1, axis), incremental_, retract); !why.empty()) return why;
   // A block of M06 alone (and T): another code would act before or after the change
   // as the target orders them, not as ISO does.
   const bool moves = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
@@ -1345,7 +1355,6 @@ std::string Structured::iso_tool_change() {
     before.push_back(off->text());
   }
   for (const std::string& code : before) write_words({code});
-  const char axis = normal_axis();
   const size_t i = static_cast<size_t>(axis - 'X');
   // Before the program's first move the tool is where the machine starts: no move
   // where that is the reference point.
@@ -1353,13 +1362,40 @@ std::string Structured::iso_tool_change() {
   } else if (reference) {
     write_words({reference->text(), std::string(1, axis) + "0"});
   } else {
-    const double at = target_.reference_position[i] / (*inch_ ? 25.4 : 1.0);
-    write_words({machine_zero->text(), rapid->text(), axis + number({axis, at, Value::Length}, block_->range)});
-    if (restore) write_words({restore->text()});
+    for (const std::string& line : retract) write_words({line});
   }
   spindle_on_ = coolant_on_ = false;
   if (!before.empty() && before.front()[0] == '&') length_on_ = false;
   position_[i].reset();
+  return {};
+}
+
+// The move at rapid to the target machine's reference point along `axes`, in machine
+// coordinates, where the target has no reference-point code (NC-110's G79, GOST's
+// G53), and the codes in force again after it: its lines, or why it cannot be written.
+std::string Structured::machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines) {
+  auto machine_zero = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block);
+  const bool absolute = machine_zero.has_value();  // NC-110's G79 is absolute in its block
+  if (!machine_zero) machine_zero = target_code({{Fn::WorkOffset, 0}}, Scope::Block);
+  const auto rapid = target_code({{Fn::MotionRapid}}, Scope::Modal);
+  const auto g90 = target_code({{Fn::DistanceAbsolute}}, Scope::Modal), g91 = target_code({{Fn::DistanceIncremental}}, Scope::Modal);
+  std::optional<Code> restore;
+  if (motion_ && *motion_ != Fn::MotionRapid) restore = target_code({{*motion_}}, Scope::Modal);
+  if (!machine_zero || !rapid) return "it has no code for the reference point nor for machine coordinates";
+  if (!motion_ || (*motion_ != Fn::MotionRapid && !restore)) return "the motion code in force is not known here";
+  if (length_on_ != false || comp_on_ != false)
+    return "a length offset or cutter compensation is (perhaps) on, which its machine coordinates do not take";
+  if (!inch_) return "the unit is not known here";
+  if (!absolute && (!incremental || (*incremental && (!g90 || !g91)))) return "G90 or G91 is not known here";
+  std::string line = machine_zero->text() + (!absolute && *incremental ? " " + g90->text() : "") + " " + rapid->text();
+  for (char axis : axes) {
+    const double at = target_.reference_position[static_cast<size_t>(axis - 'X')] / (*inch_ ? 25.4 : 1.0);
+    line += " " + (axis + number({axis, at, Value::Length}, block_->range));
+  }
+  lines.push_back(line);
+  std::string again = (!absolute && *incremental ? g91->text() : "") + (restore ? " " + restore->text() : "");
+  if (again.starts_with(' ')) again.erase(0, 1);
+  if (!again.empty()) lines.push_back(again);
   return {};
 }
 

@@ -155,6 +155,7 @@ class Structured {
   ir::ExprId bare(ir::ExprId id) const;
   std::string number(const OutWord& w, SourceRange at);
   std::string iso_tool_change();
+  std::string machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines);
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's
@@ -180,6 +181,7 @@ class Structured {
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
   std::string label_;                  // ... and before it (NC-110's "LABEL")
   std::vector<std::string> extra_words_;  // the block's words the target adds (pp's G70 of a subprogram's end)
+  std::vector<std::string> later_lines_;  // the block's lines after its own (a reference return in machine coordinates)
   std::optional<int> folded_corrector_;   // ISO's G43 H of the next block, into NC-110's M06 of this one
   bool folded_g43_ = false;               // ... and that G43 is written so
   bool skip_offset_word_ = false;         // ... and its H too
