@@ -784,9 +784,10 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
   }
   if (!axes || incremental != true || !zero)
     return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, as {} goes "
-                                     "there directly)", desc.name, to ? std::string(w_.dialect()) + "'s " + to->text() : std::string(w_.dialect())));
+                                     "there directly)", desc.name, to ? fmt::format("{}'s {}", w_.dialect(), to->text())
+                                                                      : fmt::format("a rapid in {}'s machine coordinates", w_.dialect())));
   if (!to) {  // NC-110 and GOST: a rapid in machine coordinates (iso_tool_change())
-    std::string named;  // before the program's first move, an axis at the reference point already moves not
+    std::string named;  // the axes to move: before the program's first move, one that starts at the reference point does not
     for (const ir::Word& o : block_->words)
       if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && std::string_view("XYZ").find(o.address[0]) != std::string_view::npos) {
         const size_t i = static_cast<size_t>(o.address[0] - 'X');
@@ -858,7 +859,7 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
     std::string zero = local_shift_code()->text();
     for (char axis : shifted_axes_)
       if (const auto text = length(w.range, axis, 0.0)) zero += fmt::format(" {}{}", axis, *text);
-    out.push_back({*code, desc.timing, code->entry->desc.timing, {}, zero});
+    later_lines_.push_back(zero);
   }
 }
 
@@ -867,7 +868,7 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
 // whose work offset has a local shift of its own (ISO's G52, which replaces the shift
 // of the axes it names). The shift of each axis is known from the text since the last
 // UAO; the origin UOT names must be the one in force (the target shifts that one).
-void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out) {
+void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc) {
   operand_words_ = true;  // the shift's words are written below, or refused with it
   const auto local = local_shift_code();
   if (!local) return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
@@ -899,7 +900,7 @@ void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc, std::vect
     if (shifted_axes_.find(letter) == std::string::npos) shifted_axes_ += letter;
   }
   forget_position();  // the program's coordinates of the tool move with its origin
-  out.push_back({*local, desc.timing, local->entry->desc.timing, {}, text});  // a block of its own (ISO)
+  later_lines_.push_back(text);  // a block of its own (ISO)
 }
 
 std::optional<std::string> Structured::partial_offset(int n, std::string_view name) const {
@@ -1496,7 +1497,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
   if (desc.calls.size() == 1 && (desc.calls[0].fn == Fn::OriginTemporary || desc.calls[0].fn == Fn::OriginIncremental) &&
       !target_code(desc.calls, desc.scope))
-    return origin_shift(w, desc, out);
+    return origin_shift(w, desc);
   if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope)) return reference(w, desc, out);
   // ISO's G53 (its block in machine coordinates, absolute) into NC-110: G79.
   if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block && !target_code(desc.calls, desc.scope))

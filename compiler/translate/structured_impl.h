@@ -4,7 +4,10 @@
 // jump, repeat and call (structured_iso.cpp: block numbers and GOTO;
 // structured_ngc.cpp: LinuxCNC's o-words; structured_nc110.cpp: labels, branches,
 // RPT and EPP; structured_pp.cpp: R words, G26-G29, G73 and G71;
-// structured_gost.cpp: loops and calls written out).
+// structured_gost.cpp: loops and calls written out). The lowerings of constructs a
+// target has not are files of their own: structured_corner.cpp (ISO's corners),
+// structured_frame.cpp (rotation, scaling, mirroring), structured_cycle.cpp (canned
+// cycles between NC-110's two levels and the others' one).
 #pragma once
 
 #include <array>
@@ -246,7 +249,7 @@ class Structured {
   void plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start, std::vector<std::string>& out);
   void track(const ir::Word& w);
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
-  void origin_shift(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
+  void origin_shift(const ir::Word& w, const CodeDesc& desc);
   std::optional<int> offset_after_change() const;
   bool lowers_parabola() const;
   void parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out);
