@@ -844,11 +844,21 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
     else if (o.slot < 52) listed = true;
   }
   auto code = n && *n >= 1 && *n <= 0xFFFF ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*n)}}, Scope::Modal) : std::nullopt;
+  // NC-110's origin 0 (none) into a target without "none": the offset it powers on in,
+  // where the target machine sets it to zero (as the start takes it, start_offset()).
+  if (n && *n == 0) {
+    const int k = start_work_offset();
+    const auto it = target_.work_offsets.find(k);
+    if (k > 0 && (it == target_.work_offsets.end() ||
+                  std::all_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v == 0; })))
+      code = target_code({{Fn::WorkOffset, static_cast<uint16_t>(k)}}, Scope::Modal);
+  }
   operand_words_ = true;  // its operands are said by the work offset, or refused with it
   if (!n) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name));
   if (listed) return fail(w.range, fmt::format("{} on the axes it lists: {}'s work offset sets every axis", desc.name, w_.dialect()));
   if (!code) return fail(w.range, fmt::format("{},{}: {} has no work offset {}", desc.name, *n, w_.dialect(), *n));
-  if (auto why = partial_offset(static_cast<int>(*n), desc.name)) return fail(w.range, *why);
+  if (*n != 0)
+    if (auto why = partial_offset(static_cast<int>(*n), desc.name)) return fail(w.range, *why);
   out.push_back({*code, desc.timing, code->entry->desc.timing, {}, {}});
   // UAO ends the temporary and incremental shifts; the target's work offset brings
   // back the local shift it had: ended in a block after it.
@@ -872,6 +882,12 @@ void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc) {
   operand_words_ = true;  // the shift's words are written below, or refused with it
   const auto local = local_shift_code();
   if (!local) return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
+  if (lowers_frame_)
+    return fail(w.range, fmt::format("{} in a program with a rotation, scale or mirror written into its points: {}'s {} "
+                                     "shifts the points written", desc.name, w_.dialect(), local->text()));
+  // pp's G37 sets every axis's shift: the others' it does not name end.
+  const auto& calls = local->entry->desc.calls;
+  const bool names_every = std::find(calls.begin(), calls.end(), FnCall{Fn::ShiftAxes}) != calls.end();
   const bool temporary = desc.calls[0].fn == Fn::OriginTemporary;
   std::optional<double> n;
   std::vector<std::pair<int, std::optional<double>>> axes;
@@ -894,10 +910,15 @@ void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc) {
     if (dst_.axes.find(letter) == std::string::npos)
       return fail(w.range, fmt::format("{} of axis {}: {} has axes {}", desc.name, letter, w_.dialect(), dst_.axes));
     shift_[static_cast<size_t>(axis)] = temporary ? *v : shift_[static_cast<size_t>(axis)] + *v;
-    const auto written = length(w.range, letter, shift_[static_cast<size_t>(axis)]);
+    if (shifted_axes_.find(letter) == std::string::npos) shifted_axes_ += letter;
+  }
+  for (size_t i = 0; i < kAxisLetters.size(); ++i) {
+    const char letter = kAxisLetters[i];
+    const bool named = std::any_of(axes.begin(), axes.end(), [&](const auto& a) { return static_cast<size_t>(a.first) == i; });
+    if (!named && !(names_every && shifted_axes_.find(letter) != std::string::npos)) continue;
+    const auto written = length(w.range, letter, shift_[i]);
     if (!written) return;
     text += fmt::format(" {}{}", letter, *written);
-    if (shifted_axes_.find(letter) == std::string::npos) shifted_axes_ += letter;
   }
   forget_position();  // the program's coordinates of the tool move with its origin
   later_lines_.push_back(text);  // a block of its own (ISO)
@@ -2211,19 +2232,25 @@ std::vector<std::vector<Structured::Code>> Structured::together(const std::vecto
 // A source that starts without a work offset (GOST, pp G53) on a target that starts
 // in one and has no code to leave it: the same only where the target machine's
 // offset is zero.
+// The work offset the target powers on in (its tables' power-on codes); 0: none.
+int Structured::start_work_offset() const {
+  int n = 0;
+  if (auto it = w_.tables().power_on.find("default"); it != w_.tables().power_on.end())
+    for (const std::string& token : it->second)
+      if (auto code = w_.tables().g_codes.find(token.size() > 1 && token[0] == 'G' ? std::atoi(token.c_str() + 1) : -1);
+          code != w_.tables().g_codes.end())
+        for (const FnCall& c : code->second.desc.calls)
+          if (c.fn == Fn::WorkOffset) n = c.arg;
+  return n;
+}
+
 void Structured::start_offset() {
   auto offset_of = [](const std::vector<FnCall>& calls) -> std::optional<int> {
     for (const FnCall& c : calls)
       if (c.fn == Fn::WorkOffset) return c.arg;
     return std::nullopt;
   };
-  int source = 0, target = 0;
-  source = offset_of(power_on()).value_or(source);
-  if (auto it = w_.tables().power_on.find("default"); it != w_.tables().power_on.end())
-    for (const std::string& token : it->second)
-      if (auto code = w_.tables().g_codes.find(token.size() > 1 && token[0] == 'G' ? std::atoi(token.c_str() + 1) : -1);
-          code != w_.tables().g_codes.end())
-        target = offset_of(code->second.desc.calls).value_or(target);
+  const int source = offset_of(power_on()).value_or(0), target = start_work_offset();
   if (source == target || target_code({{Fn::WorkOffset, static_cast<uint16_t>(source)}}, Scope::Modal)) return;
   if (!moved_before_offset_) return;  // the program selects its offset before it moves
   const auto it = target_.work_offsets.find(target);

@@ -251,6 +251,7 @@ class Structured {
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void origin_shift(const ir::Word& w, const CodeDesc& desc);
   std::optional<int> offset_after_change() const;
+  int start_work_offset() const;
   bool lowers_parabola() const;
   void parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out);
   // Canned cycles between NC-110's two levels and the others' one (structured_cycle.cpp).
@@ -260,7 +261,11 @@ class Structured {
   bool level_cycle_lines(bool drills, std::vector<std::string>& before, std::vector<std::string>& words);
   void end_level_cycle(bool by_motion, std::vector<std::string>& before);
   void unknown_level_cycle(bool moves);
-  std::optional<Code> local_shift_code() const { return target_code({{Fn::OffsetLocal}}, Scope::Block); }
+  // The target's shift of its program zero: ISO's G52, else pp's G37.
+  std::optional<Code> local_shift_code() const {
+    if (auto g52 = target_code({{Fn::OffsetLocal}}, Scope::Block)) return g52;
+    return target_code({{Fn::ShiftAxes}}, Scope::Modal);
+  }
   void reference(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   bool lowers_corner(const ir::Word& w) const;
