@@ -299,6 +299,47 @@ void Structured::unit(const ir::Unit& u, bool main) {
   close_unit(u, main, returned);
 }
 
+std::optional<uint32_t> Structured::common_number(const ir::Expr& e) const {
+  if (p_->dialect != "iso" || e.op != ir::ExprOp::Var || e.space != 0 || !p_->is_constant(e.a)) return std::nullopt;
+  const double n = p_->exprs[e.a].number;
+  if (n < kMappedBase || n >= kMappedEnd) return std::nullopt;
+  return static_cast<uint32_t>(n) - kMappedBase;
+}
+
+void Structured::note_access(const ir::Block& b, const ir::Stmt& s) {
+  first_store_ = false;
+  if (!in_main_ || !straight_) return;
+  bool computed = false;
+  std::set<std::pair<uint16_t, uint32_t>> named;
+  std::function<void(ir::ExprId)> add = [&](ir::ExprId id) {
+    if (id == ir::kNoExpr) return;
+    const ir::Expr& e = p_->exprs[id];
+    if (e.op == ir::ExprOp::Var) {
+      if (p_->is_constant(e.a)) named.emplace(e.space, static_cast<uint32_t>(p_->exprs[e.a].number));
+      else computed = true;
+    }
+    if (e.op != ir::ExprOp::Number && e.op != ir::ExprOp::String) {
+      add(e.a);
+      add(e.b);
+    }
+  };
+  if (&s == &b.stmts.front())
+    for (const ir::Word& w : b.words) add(w.value);
+  add(s.value);
+  add(s.cond);
+  for (const ir::CallArg& a : s.args) add(a.value);
+  const ir::Expr* target = s.target == ir::kNoExpr ? nullptr : &p_->exprs[s.target];
+  if (s.kind == ir::StmtKind::Assign && s.cond == ir::kNoExpr && !b.skippable && target->op == ir::ExprOp::Var &&
+      p_->is_constant(target->a) && !computed) {
+    const std::pair<uint16_t, uint32_t> key{target->space, static_cast<uint32_t>(p_->exprs[target->a].number)};
+    first_store_ = !accessed_.count(key) && !named.count(key);
+  }
+  if (target) add(s.target);
+  accessed_.insert(named.begin(), named.end());
+  straight_ = !computed && !b.skippable && s.cond == ir::kNoExpr &&
+              (s.kind == ir::StmtKind::Assign || s.kind == ir::StmtKind::Machine || s.kind == ir::StmtKind::Comment);
+}
+
 // Whether a unit's last block ends the program or leaves it.
 bool Structured::ends_program(const ir::Unit& u) const {
   if (u.blocks.empty()) return false;
@@ -343,13 +384,18 @@ bool Structured::block(const ir::Block& b) {
   if (!has_comment_stmt)
     for (const std::string& c : b.comments) comment(c);
   bool returned = false;
+  const size_t lines = lines_;
   for (const ir::Stmt& s : b.stmts) {
+    note_access(b, s);
     returned = s.kind == ir::StmtKind::Return;
     if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) conditional(s);
     else statement(s);
   }
   if (!extra_words_.empty()) write_words(std::exchange(extra_words_, {}));  // with no machine words to join
-  if (!std::exchange(carry_, false)) flush();  // a block with nothing else
+  if (std::exchange(carry_, false)) return returned;
+  if (returns_after() && !in_main_ && !next_ && !returned && lines == lines_ && comments_.empty() && label_.empty())
+    end_number_ = std::exchange(pending_number_, std::nullopt);
+  flush();  // a block with nothing else
   return returned;
 }
 
@@ -393,7 +439,9 @@ void Structured::line(std::string text) {
     text += written;
   }
   comments_.clear();
-  if (!text.empty()) w_.line(text);
+  if (text.empty()) return;
+  w_.line(text);
+  ++lines_;
 }
 
 void Structured::forget() {
@@ -2002,7 +2050,9 @@ void Structured::assign(const ir::Stmt& s) {
     }
   }
   // A target may write the store itself, in the block's words or lines of its own (pp).
-  if (std::string text = assignment(s, var(target), value); !text.empty()) line(std::move(text));
+  std::string name = var(target);
+  if (first_store_) starts_stored_.insert(name);
+  if (std::string text = assignment(s, name, value); !text.empty()) line(std::move(text));
 }
 
 // Whether a value is a whole number whatever the variables hold: whole constants,
@@ -2086,7 +2136,12 @@ std::string Structured::expr(ir::ExprId id, int min) {
     case ir::ExprOp::Number: return e.number < 0 ? wrap(kSign, exact(e.number, false)) : exact(e.number, false);
     case ir::ExprOp::Var: return var(e);
     case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return expr(e.a, min);
-    case ir::ExprOp::Neg: return wrap(kSign, "-" + expr(e.a, kSign));
+    case ir::ExprOp::Neg:
+      if (auto v = constant_of(id)) {  // NC-110's NEG(NEG(-2)) is -2, not ---2
+        const double c = *v == 0 ? 0.0 : *v;
+        return c < 0 ? wrap(kSign, exact(c, false)) : exact(c, false);
+      }
+      return wrap(kSign, "-" + expr(e.a, kSign));
     case ir::ExprOp::Not: return negation(e.a, min);
     case ir::ExprOp::Add: return binary(kSum, "+");
     case ir::ExprOp::Sub: return binary(kSum, "-");
@@ -2208,7 +2263,7 @@ void Structured::start_parameters() {
   if (indirect_ && mapped_space_ >= 0)
     zero_all(kMappedBase, std::min(p_->spaces[static_cast<size_t>(mapped_space_)].size, kMappedEnd - kMappedBase));
   for (uint32_t v : used_)
-    if (!indirect_ || v < kMappedBase) w_.line(fmt::format("#{}=0", v));
+    if ((!indirect_ || v < kMappedBase) && !starts_stored_.count(fmt::format("#{}", v))) w_.line(fmt::format("#{}=0", v));
 }
 
 // G codes in as few blocks as the target takes them: two of one group, or a pair

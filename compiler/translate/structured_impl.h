@@ -100,6 +100,10 @@ class Structured {
   // The target reads the main program's blocks after its end (GOST 20999 §1.9 and
   // pp §2.3.2 do not: they are not written).
   virtual bool reads_after_end() const { return true; }
+  // The target writes a subprogram's return in a line after its last block (ISO's
+  // M99): a last block that writes nothing but its number leaves the number to it
+  // (end_number_), as pp's "N90 G70" is "N90 M99".
+  virtual bool returns_after() const { return false; }
   // A code the target says otherwise than by a code of its tables (NC-110's UAO):
   // true when written.
   virtual bool own_code(const ir::Word&, const CodeDesc&) { return false; }
@@ -141,6 +145,12 @@ class Structured {
   void forget();  // the state the text says is not known any more (a label, a call)
   void forget_position() { position_ = {}; }  // a code that moves the origin or the frame
   bool ends_program(const ir::Unit& u) const;
+  // ISO's #500+n as n, the number the dialects' numbered parameters share (E n, R n:
+  // docs/translate.md, "Parameters"); nothing for any other variable.
+  std::optional<uint32_t> common_number(const ir::Expr& e) const;
+  // Notes the variables statement `s` of block `b` names (the block's words with its
+  // first statement); sets first_store_.
+  void note_access(const ir::Block& b, const ir::Stmt& s);
   void fail(SourceRange at, std::string what) { problems.push_back({at, std::move(what)}); }
   void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), Problem::Dropped}); }
 
@@ -232,6 +242,9 @@ class Structured {
 
  protected:
   bool start_needs(const FnCall& c) const;
+  // A variable (the target's name) the program stores before anything reads it.
+  bool starts_stored(const std::string& name) const { return starts_stored_.count(name) > 0; }
+  std::optional<int> end_number_;  // returns_after()
   std::string verbatim_word(const ir::Word& w);  // a word of the same dialect, as written
   void state(const std::vector<FnCall>& calls);  // what the codes' functions set
 
@@ -333,8 +346,16 @@ class Structured {
   bool skip_ = false;
   bool words_written_ = false;
   std::vector<std::string> comments_;  // for the block's first line
+  size_t lines_ = 0;                   // the lines line() has written
   std::set<uint32_t> used_;  // target variables the program reads or writes
   bool indirect_ = false;    // ... and one computed
+  // The main program's start, up to its first jump, loop, call, condition or '/',
+  // runs each statement once and in order: a variable it stores before anything
+  // reads it needs no 0 at the start (a round trip adds no store).
+  bool straight_ = true;
+  std::set<std::pair<uint16_t, uint32_t>> accessed_;  // ... the variables named so far
+  bool first_store_ = false;                          // the statement being written is such a store
+  std::set<std::string> starts_stored_;               // the target's names of those variables
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
   std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
   std::optional<bool> rpm_;           // the spindle speed is in rpm (not a cutting speed)

@@ -45,8 +45,9 @@ class IsoStructured final : public Structured {
     if (head_) line(fmt::format("N{}", *std::exchange(head_, std::nullopt)));  // a loop with an empty body
     // What stands after the main program's end is the subprograms' place.
     if (main && p_->units.size() > 1 && !ends_program(u)) line("M30");
-    if (!main && !returned) line("M99");
+    if (!main && !returned) line(end_number_ ? fmt::format("N{} M99", *std::exchange(end_number_, std::nullopt)) : "M99");
   }
+  bool returns_after() const override { return true; }
 
   // The block numbers of a unit: a jump target keeps its own number when no other
   // block has it, else gets one from 9001 up; other blocks keep theirs.
@@ -77,7 +78,7 @@ class IsoStructured final : public Structured {
     for (const ir::Block& b : unit.blocks) {
       if (b.label.empty() || !targets.count(b.label) || labels_.count(b.label)) continue;
       const bool own = b.number && count[*b.number] == 1 && b.label == fmt::format("N{}", *b.number);
-      labels_[b.label] = own ? static_cast<int>(*b.number) : fresh();
+      labels_[b.label] = own ? static_cast<int>(*b.number) : fresh(b.label);
     }
     std::set<std::string> placed;  // a label used twice names its first block (lowering)
     for (size_t i = 0; i < unit.blocks.size(); ++i) {
@@ -88,7 +89,14 @@ class IsoStructured final : public Structured {
     blocks_ = &unit.blocks;
   }
 
-  int fresh() {
+  // A number of the translation's own. NC-110's labels N1 up and K1 up (those a
+  // translation into NC-110 gives, structured_nc110.cpp) get 1 up and 9001 up where free.
+  int fresh(std::string_view label = {}) {
+    if (p_->dialect == "nc110" && label.size() > 1 && label.size() <= 5 && (label[0] == 'K' || label[0] == 'N') &&
+        label.find_first_not_of("0123456789", 1) == std::string_view::npos) {
+      const int n = std::stoi(std::string(label.substr(1))) + (label[0] == 'K' ? kFresh : 0);
+      if (n > (label[0] == 'K' ? kFresh : 0) && n <= 9999 && taken_.insert(n).second) return n;
+    }
     while (taken_.count(++next_)) {}
     taken_.insert(next_);
     return next_;

@@ -97,7 +97,13 @@ class Nc110Structured final : public Structured {
   }
 
   // A label of the output: the source's where it is NC-110's and free, else K1 up.
+  // ISO's N9001 up are the labels a translation from NC-110 gave its K1 up: K1 again.
   std::string own(const std::string& label) {
+    if (p_->dialect == "iso" && label.size() == 5 && label.starts_with("N9") && label != "N9000" &&
+        label.find_first_not_of("0123456789", 1) == std::string::npos) {
+      const std::string k = fmt::format("K{}", std::stoi(label.substr(1)) - 9000);
+      if (!taken_.count(k) && made_.insert(k).second) return k;
+    }
     if (valid_label(label) && !made_.count(label) && !(label.size() > 1 && label[0] == 'K' && std::isdigit(label[1]))) {
       made_.insert(label);
       return label;
@@ -148,6 +154,8 @@ class Nc110Structured final : public Structured {
       forget();
     }
     pending_number_ = number_of(b);
+    // An ISO jump target's number is its label: the label says it.
+    if (p_->dialect == "iso" && label_at_.count(i) && b.number && b.label == fmt::format("N{}", *b.number)) pending_number_.reset();
     if ((b.skippable) && std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
           return s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::RepeatBegin || s.kind == ir::StmtKind::RepeatEnd ||
                  s.kind == ir::StmtKind::Call || s.cond != ir::kNoExpr;
@@ -491,11 +499,19 @@ class Nc110Structured final : public Structured {
     const std::string name = fmt::format("{}{}", p_->spaces[e.space].name, index);
     auto it = mapped_.find(name);
     if (it == mapped_.end()) {
-      if (next_e_ >= e_count_ - kScratch - kCounters) {
-        fail(e.range, fmt::format("more variables than the E parameters E30-E{} hold", e_count_ - kScratch - kCounters - 1));
-        return std::nullopt;
+      const uint32_t end = e_count_ - kScratch - kCounters;
+      // ISO's #500+n is E n, as E n goes to #500+n: a round trip keeps the number.
+      std::optional<uint32_t> n = common_number(e);
+      if (!n || *n < kFirst[LR] || *n >= end || e_taken_.count(*n)) {
+        while (e_taken_.count(next_e_)) ++next_e_;
+        if (next_e_ >= end) {
+          fail(e.range, fmt::format("more variables than the E parameters E30-E{} hold", end - 1));
+          return std::nullopt;
+        }
+        n = next_e_;
       }
-      it = mapped_.emplace(name, next_e_++).first;
+      e_taken_.insert(*n);
+      it = mapped_.emplace(name, *n).first;
       legend_.emplace_back(it->second, name);
     }
     return it->second;
@@ -647,6 +663,7 @@ class Nc110Structured final : public Structured {
   std::map<std::string, uint32_t> mapped_;      // source variable -> E
   std::vector<std::pair<uint32_t, std::string>> legend_;
   uint32_t next_e_ = kFirst[LR];
+  std::set<uint32_t> e_taken_;  // the E parameters mapped_ gives
   std::set<uint32_t> source_e_;  // NC-110's own E parameters
   uint32_t scratch_used_ = 0, class_used_[LR] = {};
   struct Loop {

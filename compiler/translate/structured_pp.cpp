@@ -73,7 +73,17 @@ class PpStructured final : public Structured {
     else if (head_) pending_number_ = static_cast<int>(*std::exchange(head_, std::nullopt));
     else pending_number_ = number_of(b);
     if (!p_->units.empty() && unit_ != &p_->units.front()) {
-      if (i + 1 == unit_->blocks.size()) extra_words_.push_back("G70");  // P-8.2: the end block
+      // P-8.2: the end block; a return alone after the last block (ISO's M99 line)
+      // is its G70, as the translation back writes it.
+      const auto& blocks = unit_->blocks;
+      const ir::Block& last = blocks.back();
+      const bool bare = blocks.size() > 1 && !last.number && last.comments.empty() && last.stmts.size() == 1 &&
+                        last.stmts.front().kind == ir::StmtKind::Return &&
+                        std::all_of(last.words.begin(), last.words.end(), [&](const ir::Word& w) {  // M99: the return's own
+                          return w.kind == ir::WordKind::Control ||
+                                 (w.kind == ir::WordKind::Code && w.code >= 0 && p_->semantics.codes[static_cast<size_t>(w.code)].calls.empty());
+                        });
+      if (i + (bare ? 2 : 1) == blocks.size()) extra_words_.push_back("G70");
       for (const ir::Word& w : b.words)
         if (w.kind == ir::WordKind::Code && w.code >= 0)
           for (const FnCall& c : p_->semantics.codes[static_cast<size_t>(w.code)].calls)
@@ -183,8 +193,9 @@ class PpStructured final : public Structured {
   void start_parameters() override {
     if (mapped_.empty()) return;
     std::string text;
-    for (const auto& [name, r] : mapped_) text += fmt::format("{}R{} 0", text.empty() ? "" : " ", r);
-    w_.line(text);
+    for (const auto& [name, r] : mapped_)
+      if (const std::string var = fmt::format("R{}", r); !starts_stored(var)) text += fmt::format("{}{} 0", text.empty() ? "" : " ", var);
+    if (!text.empty()) w_.line(text);
     std::string legend = "R parameters:";
     for (const auto& [r, name] : legend_) legend += fmt::format(" R{} {},", r, name);
     legend.pop_back();
@@ -210,11 +221,18 @@ class PpStructured final : public Structured {
     const std::string name = fmt::format("{}{}", p_->spaces[e.space].name, index);
     auto it = mapped_.find(name);
     if (it == mapped_.end()) {
-      if (next_r_ >= kParameters - kScratch) {
-        fail(e.range, fmt::format("more variables than the R parameters R0-R{} hold", kParameters - kScratch - 1));
-        return "R0";
+      // ISO's #500+n is R n, as R n goes to #500+n: a round trip keeps the number.
+      std::optional<uint32_t> n = common_number(e);
+      if (!n || *n >= kParameters - kScratch || r_taken_.count(*n)) {
+        while (r_taken_.count(next_r_)) ++next_r_;
+        if (next_r_ >= kParameters - kScratch) {
+          fail(e.range, fmt::format("more variables than the R parameters R0-R{} hold", kParameters - kScratch - 1));
+          return "R0";
+        }
+        n = next_r_;
       }
-      it = mapped_.emplace(name, next_r_++).first;
+      r_taken_.insert(*n);
+      it = mapped_.emplace(name, *n).first;
       legend_.emplace_back(it->second, name);
     }
     return fmt::format("R{}", it->second);
@@ -343,6 +361,7 @@ class PpStructured final : public Structured {
   std::map<std::string, uint32_t> mapped_;
   std::vector<std::pair<uint32_t, std::string>> legend_;
   uint32_t next_r_ = 0, scratch_used_ = 0;
+  std::set<uint32_t> r_taken_;  // the R parameters mapped_ gives
   std::string count_ = "1";  // the Q of pp's own G73 being written
   struct Loop {
     int count;

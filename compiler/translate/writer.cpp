@@ -68,6 +68,17 @@ std::string Writer::number(const OutWord& w) const {
   return exact(w.value, w.kind != Value::Code && w.kind != Value::Count);
 }
 
+std::optional<int> Writer::end_code() const {
+  std::optional<int> end;
+  for (const auto& [number, entry] : tables().m_codes) {
+    const std::vector<FnCall>& calls = entry.desc.calls;
+    if (calls.size() != 1) continue;
+    if (calls[0].fn == Fn::ProgramEndInformation) return number;
+    if (calls[0].fn == Fn::ProgramEnd && !end) end = number;
+  }
+  return end;
+}
+
 bool is_target(std::string_view dialect) {
   return dialect == "gost" || dialect == "nc110" || dialect == "pp" || dialect == "iso" || dialect == "linuxcnc";
 }

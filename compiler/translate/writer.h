@@ -85,6 +85,10 @@ class Writer {
   virtual bool claim_number(long) { return true; }
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
+  // The M code a target that must end its program with one writes where the source's
+  // run made no end: end of information (M30), as the end of an ISO tape rewinds it,
+  // else end of program. ISO has only the first, so a round trip through it keeps it.
+  std::optional<int> end_code() const;
   // The G code of a parabola given by its end in X and Y and its control point's
   // offset from the start, I and J (LinuxCNC's quadratic spline G5.1); none where the
   // target has none.

@@ -127,12 +127,10 @@ class GostWriter final : public Writer {
   }
 
   void end() override {
-    // §1.9: a program ends with M02 or M30; a run that stopped without either gets M02.
+    // §1.9: a program ends with M02 or M30; a run that stopped without either gets one.
     if (ended_) return;
     next_number_ = std::max(next_number_, highest_ + 1);
-    for (const auto& [number, entry] : tables().m_codes)
-      if (std::find(entry.desc.calls.begin(), entry.desc.calls.end(), FnCall{Fn::ProgramEnd}) != entry.desc.calls.end())
-        return block({{'M', static_cast<double>(number), Value::Code}}, {});
+    if (auto m = end_code()) block({{'M', static_cast<double>(*m), Value::Code}}, {});
   }
 
  private:

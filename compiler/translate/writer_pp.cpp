@@ -93,6 +93,9 @@ class PpWriter final : public Writer {
               std::string(space == std::string_view::npos ? "" : words.substr(space + 1));
       words = moved;
     }
+    // Comments alone: comment lines of the block before, as pp reads them back (a
+    // number of the writer's own would come back as the source's).
+    if (words.empty()) return comment_lines({}, comment);
     std::string line;
     size_t at = 0;
     if (words.starts_with('N') && words.size() > 1 && std::isdigit(static_cast<unsigned char>(words[1]))) {
@@ -132,14 +135,8 @@ class PpWriter final : public Writer {
     ended_ = true;
     // §2.3.2: the main part ends with M02 or M30, also when the source's run made no
     // end (a program that stops at its last block); `*` is the physical end.
-    if (!main_ended_) {
-      const auto& m = tables().m_codes;
-      auto it = std::find_if(m.begin(), m.end(), [](const auto& code) {
-        const std::vector<FnCall>& calls = code.second.desc.calls;
-        return calls.size() == 1 && calls[0].fn == Fn::ProgramEnd;
-      });
-      if (it != m.end()) block({{'M', static_cast<double>(it->first), Value::Code}}, {});
-    }
+    if (!main_ended_)
+      if (auto m = end_code()) block({{'M', static_cast<double>(*m), Value::Code}}, {});
     out_ += "*\n";
   }
 
