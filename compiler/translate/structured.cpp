@@ -716,6 +716,7 @@ void Structured::translated_machine() {
     else g.push_back(c.code);
   }
   for (const std::string& line : cycle_before) write_words({line});
+  for (const std::string& line : std::exchange(lines_before_, {})) write_words({line});
   // G codes the target takes in no one block: the last block's with the motion,
   // the others' before it.
   const auto blocks = together(g);
@@ -830,17 +831,25 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
       zero &= v && *v == 0;
     }
   }
-  if (!axes || incremental != true || !zero)
-    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, as {} goes "
-                                     "there directly)", desc.name, to ? fmt::format("{}'s {}", w_.dialect(), to->text())
-                                                                      : fmt::format("a rapid in {}'s machine coordinates", w_.dialect())));
+  // Without words every axis goes there directly (docs/dialects/iso.md, decision 17):
+  // a rapid in machine coordinates says it for a machine of X Y Z.
+  const bool every = !axes && !to && src_.axes == "XYZ";
+  if (!every && (!axes || incremental != true || !zero))
+    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words{}, as {} goes "
+                                     "there directly)", desc.name, to ? "" : ", or none on a machine of X Y Z",
+                                     to ? fmt::format("{}'s {}", w_.dialect(), to->text())
+                                        : fmt::format("a rapid in {}'s machine coordinates", w_.dialect())));
   if (!to) {  // NC-110 and GOST: a rapid in machine coordinates (iso_tool_change())
     std::string named;  // the axes to move: before the program's first move, one that starts at the reference point does not
+    auto add = [&](char axis) {
+      const size_t i = static_cast<size_t>(axis - 'X');
+      if (moved_ || target_.initial_position[i] != target_.reference_position[i]) named += axis;
+    };
+    if (every)
+      for (char axis : std::string_view("XYZ")) add(axis);
     for (const ir::Word& o : block_->words)
-      if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && std::string_view("XYZ").find(o.address[0]) != std::string_view::npos) {
-        const size_t i = static_cast<size_t>(o.address[0] - 'X');
-        if (moved_ || target_.initial_position[i] != target_.reference_position[i]) named += o.address[0];
-      }
+      if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && std::string_view("XYZ").find(o.address[0]) != std::string_view::npos)
+        add(o.address[0]);
     std::vector<std::string> lines;
     if (named.empty()) return void(operand_words_ = true);
     if (std::string why = machine_reference(named, incremental, lines); !why.empty())
@@ -1645,10 +1654,14 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (desc.calls == std::vector<FnCall>{{Fn::LengthPlus}} && dst_.corrector_in_tool_word && !src_.corrector_in_tool_word) {
     skip_offset_word_ = true;
     if (std::exchange(folded_g43_, false)) return void(length_on_ = true);
+    if (corrector_change(true)) return;
     return fail(w.range, fmt::format("{}: {} applies a length offset at its tool change only (T tool.corrector M06), and "
-                                     "this one is not in the block after the change, or something moves before it",
+                                     "no tool is known to be in the spindle here, or its H is not a constant",
                                      desc.name, w_.dialect()));
   }
+  if (desc.calls == std::vector<FnCall>{{Fn::LengthOff}} && length_on_ != false && dst_.corrector_in_tool_word &&
+      !src_.corrector_in_tool_word && !target_code(desc.calls, desc.scope) && corrector_change(false))
+    return;
   std::vector<Code> each;
   std::string later;
   for (const FnCall& c : desc.calls) {
@@ -1763,6 +1776,29 @@ void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Pos
   }
   out.insert(out.begin(), written.begin(), written.end());
   position_ = Position{end[0], end[1], end[2]};
+}
+
+// ISO's G43 H (on) or G49 elsewhere than after an M06, into NC-110, whose correction
+// only M06 activates (§2.7.7): the M06 of the tool in the spindle with the corrector H
+// (0: none) in a block before the G43's. False where the tool, the H or the block's
+// own tool change make that another change.
+bool Structured::corrector_change(bool on) {
+  if (!tool_loaded_ || *tool_loaded_ < 1) return false;  // T0 is no tool: NC-110's T is 1 on
+  std::optional<double> h = 0.0;
+  for (const ir::Word& x : block_->words) {
+    if (x.kind == ir::WordKind::Parameter && x.address == "H") h = on ? constant_of(x.value) : std::nullopt;
+    if (x.kind == ir::WordKind::Code && x.code >= 0)
+      for (const FnCall& c : p_->semantics.codes[static_cast<size_t>(x.code)].calls)
+        if (c.fn == Fn::ToolChange) return false;
+  }
+  if (!h || *h < 0 || *h != std::floor(*h) || *h > 9999 || (on && *h == 0)) return false;
+  auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal);
+  if (!m06) return false;
+  const int corrector = static_cast<int>(*h);
+  lines_before_.push_back(fmt::format("T{}{} {}", *tool_loaded_, corrector ? fmt::format(".{}", corrector) : "", m06->text()));
+  corrector_ = corrector;
+  length_on_ = on;
+  return true;
 }
 
 // The length offset number of ISO's G43 H in the block after an M06, where that block

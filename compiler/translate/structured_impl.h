@@ -198,6 +198,7 @@ class Structured {
   std::optional<int> folded_corrector_;   // ISO's G43 H of the next block, into NC-110's M06 of this one
   bool folded_g43_ = false;               // ... and that G43 is written so
   bool skip_offset_word_ = false;         // ... and its H too
+  std::vector<std::string> lines_before_;  // the block's lines before its own (NC-110's M06 of a G43's corrector)
   bool streamed_ = false;              // the main program's leading blocks are written
   bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
@@ -264,6 +265,7 @@ class Structured {
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void origin_shift(const ir::Word& w, const CodeDesc& desc);
   std::optional<int> offset_after_change() const;
+  bool corrector_change(bool on);
   int start_work_offset() const;
   bool lowers_parabola() const;
   void parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out);

@@ -77,14 +77,14 @@ class IsoStructured final : public Structured {
     }
     for (const ir::Block& b : unit.blocks) {
       if (b.label.empty() || !targets.count(b.label) || labels_.count(b.label)) continue;
-      const bool own = b.number && count[*b.number] == 1 && b.label == fmt::format("N{}", *b.number);
+      const bool own = number_of(b) && count[*b.number] == 1 && b.label == fmt::format("N{}", *b.number);
       labels_[b.label] = own ? static_cast<int>(*b.number) : fresh(b.label);
     }
     std::set<std::string> placed;  // a label used twice names its first block (lowering)
     for (size_t i = 0; i < unit.blocks.size(); ++i) {
       const ir::Block& b = unit.blocks[i];
       if (!b.label.empty() && labels_.count(b.label) && placed.insert(b.label).second) numbers_[i] = labels_.at(b.label);
-      else if (b.number) numbers_[i] = static_cast<int>(*b.number);
+      else if (auto n = number_of(b)) numbers_[i] = *n;  // one ISO's N holds
     }
     blocks_ = &unit.blocks;
   }

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "frontend/iso/settings.h"
 #include "writer.h"
 
 namespace ncc::translate {
@@ -17,6 +18,13 @@ class IsoWriter final : public Writer {
   // Fanuc's finest increment (IS-C) is 0.0001 mm; LinuxCNC reads any number, and a
   // CAM program's fifth decimal matters on a 0.3 mm arc.
   double resolution() const override { return linuxcnc_ ? 1e-6 : 1e-4; }
+
+  // Fanuc's and LinuxCNC's N holds 0 to 99999: a block number beyond is left out.
+  std::optional<std::string> unwritable(const OutWord& w) const override {
+    if (w.letter == 'N' && (w.value < 0 || w.value > iso::kMaxBlockNumber))
+      return fmt::format("N{}: {} writes N from 0 to {}", decimal(w.value, 0, false), dialect(), iso::kMaxBlockNumber);
+    return Writer::unwritable(w);
+  }
 
   void begin(const Header& h) override {
     const std::string text = header_text(h);

@@ -200,8 +200,11 @@ def one(ncc, name, cwd, program, options, targets, scratch, structured=False):
         # A structured translation is exact unless ncc said it rounded (NC4098): an arc
         # by its radius gets a centre on the target's step.
         rounded = "[NC4098]" in text
-        differences = equivalent.compare(source_events, target_events,
-                                         STRUCTURED_TOLERANCE if structured and not rounded else TOLERANCE[target])
+        tolerance = STRUCTURED_TOLERANCE if structured and not rounded else TOLERANCE[target]
+        if structured and rounded and target != "pp" and any(e.get("event") == "units" and e.get("units") == "inch"
+                                                             for e in source_events):
+            tolerance *= 25.4  # the step of a program in inches (pp writes millimetres)
+        differences = equivalent.compare(source_events, target_events, tolerance)
         if differences:
             results.append((target, "differing", "motion: " + " | ".join(differences[:3])[:400]))
             continue

@@ -100,6 +100,20 @@ class Positions(unittest.TestCase):
         b[2] = linear(10.01, 0, -1)
         self.assertEqual(compare(program(*BASE), program(*b), 0.02), [])
 
+    def test_step_rounded_away_or_into_being(self):
+        # 0.001 mm steps: the source's 0.0007/0.0009 move is nothing after rounding,
+        # and a nothing of 0.000001 is a step of 0.001 at a rounding boundary.
+        feed = ev("feed_rate", value=500)
+        square = [linear(6, 6, -1), linear(7, 6, -1), linear(7, 7, -1), linear(6, 7, -1)]
+        a = program(rapid(0, 0, 5), feed, linear(4.725712, 5.757432, -1), linear(4.72637, 5.756509, -1), *square,
+                    linear(6, 7, -0.859499), linear(6, 7, -0.8595), *square, rapid(6, 7, 5))
+        b = program(rapid(0, 0, 5), feed, linear(4.726, 5.757, -1), *square, linear(6, 7, -0.859), linear(6, 7, -0.86),
+                    *square, rapid(6, 7, 5))
+        self.assertEqual(compare(a, b, 1e-3), [])
+        # A move of more than a step is a move.
+        self.assertNotEqual(compare(program(rapid(0, 0, 5), feed, linear(0, 0, -1), rapid(0, 0, 5)),
+                                    program(rapid(0, 0, 5), feed, linear(0, 0, -1), linear(0, 0, -1.002), rapid(0, 0, 5)), 1e-3), [])
+
     def test_extra_axis_at_zero(self):
         b = [*BASE]
         b[0] = rapid(0, 0, 5, A=0.0, U=0.0)

@@ -636,8 +636,8 @@ void Reader::finish_read(size_t index) {
 void Reader::number_block(const std::string& digits, SourceRange r, size_t index) {
   uint32_t n = 0;
   auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), n);
-  if (ec != std::errc() || n > 99999) {
-    diags_.report(DiagId::ValueRange, r, "N" + digits, "N", 0, 99999);
+  if (ec != std::errc() || n > kMaxBlockNumber) {
+    diags_.report(DiagId::ValueRange, r, "N" + digits, "N", 0, kMaxBlockNumber);
     return;
   }
   block_.number = n;
@@ -725,7 +725,7 @@ ir::Stmt Reader::go_to(IsoParser::GotoStmtContext* ctx) {
   if (program_.is_constant(target)) {
     // §8.34.2 (E-33): the target is a block number.
     const double n = program_.exprs[target].number;
-    const std::optional<uint32_t> number = whole_in<uint32_t>(n, 0, 99999);
+    const std::optional<uint32_t> number = whole_in<uint32_t>(n, 0, kMaxBlockNumber);
     if (!number) {
       diags_.report(DiagId::ValueForm, range(ctx->value()), "GOTO", "a block number 0 to 99999", shortest(n));
       block_.has_errors = true;
@@ -1002,7 +1002,7 @@ bool Reader::call_words(ir::ExprId cond) {
     block_.has_errors = true;
     return false;
   }
-  std::optional<uint32_t> number = whole(*p, 0, what == "M97" ? 99999 : what == "M98" ? 9999999 : 9999,
+  std::optional<uint32_t> number = whole(*p, 0, what == "M97" ? kMaxBlockNumber : what == "M98" ? 9999999 : 9999,
                                          what == "M97" ? "a block number" : "a program number");
   uint32_t count = 0;
   if (number && what == "M98" && *number > 9999) {

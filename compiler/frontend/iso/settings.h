@@ -14,6 +14,8 @@
 
 namespace ncc::iso {
 
+inline constexpr uint32_t kMaxBlockNumber = 99999;  // N, GOTO's and M97's block: 0 to 99999 (NC2014)
+
 struct Settings {
   stdlib::DialectTables tables;
   std::vector<std::string> power_on;
