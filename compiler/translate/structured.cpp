@@ -1780,10 +1780,10 @@ void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Pos
 
 // ISO's G43 H (on) or G49 elsewhere than after an M06, into NC-110, whose correction
 // only M06 activates (§2.7.7): the M06 of the tool in the spindle with the corrector H
-// (0: none) in a block before the G43's. False where the tool, the H or the block's
-// own tool change make that another change.
+// (0: none) in a block before the G43's, and the next tool selected again. False where
+// the tools, the H or the block's own tool change make that another change.
 bool Structured::corrector_change(bool on) {
-  if (!tool_loaded_ || *tool_loaded_ < 1) return false;  // T0 is no tool: NC-110's T is 1 on
+  if (!tool_loaded_ || *tool_loaded_ < 1 || !tool_selected_) return false;  // T0 is no tool: NC-110's T is 1 on
   std::optional<double> h = 0.0;
   for (const ir::Word& x : block_->words) {
     if (x.kind == ir::WordKind::Parameter && x.address == "H") h = on ? constant_of(x.value) : std::nullopt;
@@ -1796,6 +1796,8 @@ bool Structured::corrector_change(bool on) {
   if (!m06) return false;
   const int corrector = static_cast<int>(*h);
   lines_before_.push_back(fmt::format("T{}{} {}", *tool_loaded_, corrector ? fmt::format(".{}", corrector) : "", m06->text()));
+  // The next tool selected since (ISO's T2 after T1 M06), selected again for its M06.
+  if (*tool_selected_ != *tool_loaded_) lines_before_.push_back(fmt::format("T{}", *tool_selected_));
   corrector_ = corrector;
   length_on_ = on;
   return true;
