@@ -306,7 +306,7 @@ std::optional<uint32_t> Structured::common_number(const ir::Expr& e) const {
   return static_cast<uint32_t>(n) - kMappedBase;
 }
 
-void Structured::note_access(const ir::Block& b, const ir::Stmt& s) {
+void Structured::note_access(const ir::Block& b, const ir::Stmt* stmt) {
   first_store_ = false;
   if (!in_main_ || !straight_) return;
   bool computed = false;
@@ -323,8 +323,13 @@ void Structured::note_access(const ir::Block& b, const ir::Stmt& s) {
       add(e.b);
     }
   };
-  if (&s == &b.stmts.front())
+  if (!stmt) {  // the block's words, read before its statements are
     for (const ir::Word& w : b.words) add(w.value);
+    accessed_.insert(named.begin(), named.end());
+    straight_ = !computed;
+    return;
+  }
+  const ir::Stmt& s = *stmt;
   add(s.value);
   add(s.cond);
   for (const ir::CallArg& a : s.args) add(a.value);
@@ -385,8 +390,9 @@ bool Structured::block(const ir::Block& b) {
     for (const std::string& c : b.comments) comment(c);
   bool returned = false;
   const size_t lines = lines_;
+  note_access(b, nullptr);
   for (const ir::Stmt& s : b.stmts) {
-    note_access(b, s);
+    note_access(b, &s);
     returned = s.kind == ir::StmtKind::Return;
     if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) conditional(s);
     else statement(s);

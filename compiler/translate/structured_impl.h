@@ -148,9 +148,9 @@ class Structured {
   // ISO's #500+n as n, the number the dialects' numbered parameters share (E n, R n:
   // docs/translate.md, "Parameters"); nothing for any other variable.
   std::optional<uint32_t> common_number(const ir::Expr& e) const;
-  // Notes the variables statement `s` of block `b` names (the block's words with its
-  // first statement); sets first_store_.
-  void note_access(const ir::Block& b, const ir::Stmt& s);
+  // Notes the variables block `b`'s words name (`s` none), or its statement `s`
+  // names; sets first_store_.
+  void note_access(const ir::Block& b, const ir::Stmt* s);
   void fail(SourceRange at, std::string what) { problems.push_back({at, std::move(what)}); }
   void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), Problem::Dropped}); }
 
