@@ -306,6 +306,26 @@ std::optional<uint32_t> Structured::common_number(const ir::Expr& e) const {
   return static_cast<uint32_t>(n) - kMappedBase;
 }
 
+std::optional<uint32_t> Structured::parameter_number(const ir::Expr& e, uint32_t first, uint32_t end,
+                                                    std::set<uint32_t>& taken, uint32_t& next) const {
+  std::optional<uint32_t> n = common_number(e);
+  if (!n || *n < first || *n >= end || taken.count(*n)) {
+    while (taken.count(next)) ++next;
+    if (next >= end) return std::nullopt;
+    n = next;
+  }
+  taken.insert(*n);
+  return n;
+}
+
+bool Structured::block_has(Fn fn) const {
+  return std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+    if (w.kind != ir::WordKind::Code || w.code < 0) return false;
+    const auto& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
+    return std::any_of(calls.begin(), calls.end(), [&](const FnCall& c) { return c.fn == fn; });
+  });
+}
+
 void Structured::note_access(const ir::Block& b, const ir::Stmt* stmt) {
   first_store_ = false;
   if (!in_main_ || !straight_) return;
@@ -1790,13 +1810,10 @@ void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Pos
 // the tools, the H or the block's own tool change make that another change.
 bool Structured::corrector_change(bool on) {
   if (!tool_loaded_ || *tool_loaded_ < 1 || !tool_selected_) return false;  // T0 is no tool: NC-110's T is 1 on
+  if (block_has(Fn::ToolChange)) return false;
   std::optional<double> h = 0.0;
-  for (const ir::Word& x : block_->words) {
+  for (const ir::Word& x : block_->words)
     if (x.kind == ir::WordKind::Parameter && x.address == "H") h = on ? constant_of(x.value) : std::nullopt;
-    if (x.kind == ir::WordKind::Code && x.code >= 0)
-      for (const FnCall& c : p_->semantics.codes[static_cast<size_t>(x.code)].calls)
-        if (c.fn == Fn::ToolChange) return false;
-  }
   if (!h || *h < 0 || *h != std::floor(*h) || *h > 9999 || (on && *h == 0)) return false;
   auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal);
   if (!m06) return false;

@@ -148,6 +148,12 @@ class Structured {
   // ISO's #500+n as n, the number the dialects' numbered parameters share (E n, R n:
   // docs/translate.md, "Parameters"); nothing for any other variable.
   std::optional<uint32_t> common_number(const ir::Expr& e) const;
+  // A target parameter for source variable `e`: its common number where that lies in
+  // [first, end) and is free, else the next free one from `next`; nothing when none is.
+  std::optional<uint32_t> parameter_number(const ir::Expr& e, uint32_t first, uint32_t end, std::set<uint32_t>& taken,
+                                           uint32_t& next) const;
+  // Whether the block being written has a code word with function `fn`.
+  bool block_has(Fn fn) const;
   // Notes the variables block `b`'s words name (`s` none), or its statement `s`
   // names; sets first_store_.
   void note_access(const ir::Block& b, const ir::Stmt* s);

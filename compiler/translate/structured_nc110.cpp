@@ -500,17 +500,12 @@ class Nc110Structured final : public Structured {
     auto it = mapped_.find(name);
     if (it == mapped_.end()) {
       const uint32_t end = e_count_ - kScratch - kCounters;
-      // ISO's #500+n is E n, as E n goes to #500+n: a round trip keeps the number.
-      std::optional<uint32_t> n = common_number(e);
-      if (!n || *n < kFirst[LR] || *n >= end || e_taken_.count(*n)) {
-        while (e_taken_.count(next_e_)) ++next_e_;
-        if (next_e_ >= end) {
-          fail(e.range, fmt::format("more variables than the E parameters E30-E{} hold", end - 1));
-          return std::nullopt;
-        }
-        n = next_e_;
+      // ISO's #500+n is E n (LR), as E n goes to #500+n: a round trip keeps the number.
+      const auto n = parameter_number(e, kFirst[LR], end, e_taken_, next_e_);
+      if (!n) {
+        fail(e.range, fmt::format("more variables than the E parameters E30-E{} hold", end - 1));
+        return std::nullopt;
       }
-      e_taken_.insert(*n);
       it = mapped_.emplace(name, *n).first;
       legend_.emplace_back(it->second, name);
     }

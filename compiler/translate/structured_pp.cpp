@@ -222,16 +222,11 @@ class PpStructured final : public Structured {
     auto it = mapped_.find(name);
     if (it == mapped_.end()) {
       // ISO's #500+n is R n, as R n goes to #500+n: a round trip keeps the number.
-      std::optional<uint32_t> n = common_number(e);
-      if (!n || *n >= kParameters - kScratch || r_taken_.count(*n)) {
-        while (r_taken_.count(next_r_)) ++next_r_;
-        if (next_r_ >= kParameters - kScratch) {
-          fail(e.range, fmt::format("more variables than the R parameters R0-R{} hold", kParameters - kScratch - 1));
-          return "R0";
-        }
-        n = next_r_;
+      const auto n = parameter_number(e, 0, kParameters - kScratch, r_taken_, next_r_);
+      if (!n) {
+        fail(e.range, fmt::format("more variables than the R parameters R0-R{} hold", kParameters - kScratch - 1));
+        return "R0";
       }
-      r_taken_.insert(*n);
       it = mapped_.emplace(name, *n).first;
       legend_.emplace_back(it->second, name);
     }
