@@ -28,6 +28,10 @@
 
 namespace ncc {
 
+namespace cycle {
+struct Step;
+}
+
 // The words of one block by slot (word_slots.h); `present` marks those written.
 struct BlockWords {
   std::array<double, kWordSlots> value{};
@@ -392,6 +396,7 @@ class Machine {
   void cycle();
   void repeat_cycle();  // ISO: L (or K) holes
   void iso_cycle();     // one ISO hole
+  void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program);
   std::optional<double> initial_level_;  // ISO: the drilling axis where the cycle mode began (G98 returns there)
   void cycle_registers();
   void nc110_cycle_registers(bool definition);

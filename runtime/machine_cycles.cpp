@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "cycle_steps.h"
 #include "machine.h"
 #include "support/text.h"
 
@@ -10,7 +11,6 @@ namespace ncc {
 
 namespace {
 
-constexpr int kMaxPecks = 10000;  // per hole
 constexpr double kUnloadClearance = 1;  // mm: G83 goes back to 1 mm above the last bottom (§2.8.9.2)
 
 }  // namespace
@@ -72,123 +72,77 @@ void Machine::iso_cycle() {
   // from R (§8.23). The initial level is where the tool stood when the cycle mode
   // began (§8.21: "the position before the cycle").
   if (!initial_level_) initial_level_ = machine_[d];
-  const double start = *initial_level_;
+  cycle::Hole h;
+  h.initial = *initial_level_;
+  h.current = machine_[d];
   const AxisValues off = target_frame();
-  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
-  const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
-  const double down = bottom < level ? -1 : 1;  // the direction into the hole (G87: out of it)
-  if (pattern.in == In::Back && bottom < level) {
+  h.level = modal_.absolute ? length_units(*cycle_.level) + off[d] : h.initial + length_units(*cycle_.level);
+  h.bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : h.level + length_units(*cycle_.depth);
+  if (pattern.in == In::Back && h.bottom < h.level) {
     // §8.27: G87 bores from R up to Z, so Z lies above R.
     report(DiagId::CycleDefinition, 0, fmt::format("canned cycle G87 bores upwards from R: the bottom {} must lie above R {}",
-                                                   four_decimals(to_program(bottom - off[d])), four_decimals(to_program(level - off[d]))));
+                                                   four_decimals(to_program(h.bottom - off[d])), four_decimals(to_program(h.level - off[d]))));
     move_to(hole);
     return;
   }
-  // A start below R goes up to R first, and R is the initial level then; G87 always
-  // comes back to the initial level (decision 21).
-  const bool below_level = pattern.in != In::Back && (down < 0 ? start < level : start > level);
-  const double initial = below_level ? level : start;
-  const double back = modal_.cycle_return_level && pattern.in != In::Back ? level : initial;
-  auto at = [&](double z, double shift = 0) {
-    AxisValues p = hole;
-    p[d] = z;
-    p[u] += shift;
-    return p;
-  };
-  auto go = [&](const AxisValues& p, bool feed) {
-    if (p == machine_) return;
-    feed ? linear(p) : rapid(p);
-  };
-  if (below_level) {
-    AxisValues up = machine_;
-    up[d] = level;
-    go(up, false);
-  }
-  go(at(machine_[d]), false);
-  const int direction = spindle_direction_ ? spindle_direction_ : 1;
-  const double shift = shifts ? length_units(*cycle_.peck) * conv_.boring_shift : 0;
-  auto spindle = [&](Fn fn) {
-    if ((fn == Fn::SpindleCw && modal_.spindle == 1) || (fn == Fn::SpindleCcw && modal_.spindle == -1) ||
-        (fn == Fn::SpindleStop && modal_.spindle == 0))
-      return;
-    apply({fn}, Scope::Modal, true);
-  };
-  const Fn forward = direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw;
-  if (pattern.in == In::Back) {
-    // §8.27 G87: oriented stop, shift, down to R, shift back, spindle on, bore up.
-    spindle(Fn::SpindleOrient);
-    go(at(initial, shift), false);
-    go(at(level, shift), false);
-    go(at(level), true);
-    spindle(Fn::SpindleCw);
-    go(at(bottom), true);
-  } else {
-    go(at(level), false);
-    const bool tap = pattern.in == In::TapCw || pattern.in == In::TapCcw;
-    const Fn tap_in = pattern.in == In::TapCw ? Fn::SpindleCw : Fn::SpindleCcw;
-    const Fn tap_out = pattern.in == In::TapCw ? Fn::SpindleCcw : Fn::SpindleCw;
-    if (tap) spindle(tap_in);
-    if (pecks || (tap && cycle_.peck)) {
-      const double step = length_units(*cycle_.peck);
-      const double count = std::ceil(std::fabs(bottom - level) / step - 1e-9);
-      if (count > kMaxPecks) {
-        report(DiagId::CyclePecks, 'Q', pattern.name, four_decimals(count), four_decimals(*cycle_.peck), kMaxPecks);
+  if (pecks || (pattern.in == In::TapCw || pattern.in == In::TapCcw)) {
+    if (cycle_.peck) {
+      h.peck = length_units(*cycle_.peck);
+      const double count = std::ceil(std::fabs(h.bottom - h.level) / *h.peck - 1e-9);
+      if (count > cycle::kMaxPecks) {
+        report(DiagId::CyclePecks, 'Q', pattern.name, four_decimals(count), four_decimals(*cycle_.peck), cycle::kMaxPecks);
         return;
       }
-      double reached = level;
-      while (true) {
-        double next = reached + down * step;
-        if (next * down >= bottom * down) next = bottom;
-        go(at(next), true);
-        if (next == bottom) break;
-        if (pattern.in == In::Peck) {
-          // G83: out to R, back at rapid to just above the depth reached (decision 19).
-          go(at(level), false);
-          go(at(next - down * conv_.peck_clearance), false);
-        } else if (pattern.in == In::ChipBreak) {
-          // G73 (§8.25): up to the depth of the pass before, or by the machine's retract.
-          go(at(conv_.chip_break_retract > 0 ? next - down * conv_.chip_break_retract : reached), false);
-        } else {
-          // Peck tapping (decision 20): out to R reversed, back in to the depth reached.
-          spindle(tap_out);
-          go(at(level), true);
-          spindle(tap_in);
-          go(at(next), true);
-        }
-        reached = next;
+    }
+  }
+  h.dwell = dwell;
+  h.shift = shifts ? length_units(*cycle_.peck) * conv_.boring_shift : 0;
+  h.return_level = modal_.cycle_return_level;
+  h.direction = spindle_direction_ ? spindle_direction_ : 1;
+  hole_steps(cycle::iso_hole(pattern, h, conv_), hole, d, u, false);
+}
+
+// A hole's steps (cycle_steps.h): `hole` is its position, `d` the drilling axis, `u`
+// the axis of a shift; in the program's coordinates where `program` (NC-110's), else
+// the machine's.
+void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program) {
+  using Kind = cycle::Step::Kind;
+  auto here = [&] { return program ? to_frame(machine_) : machine_; };
+  bool over = false;
+  for (const cycle::Step& s : steps) {
+    AxisValues p = over ? hole : here();
+    p[d] = s.level;
+    p[u] += s.shift;
+    if (program) p = to_machine(p);
+    switch (s.kind) {
+      case Kind::Rapid: rapid(p); break;
+      case Kind::Feed: linear(p); break;
+      case Kind::Tap: case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut); break;
+      case Kind::Over:
+        over = true;
+        p = hole;
+        p[d] = here()[d];
+        if (program) p = to_machine(p);
+        if (p != machine_) rapid(p);
+        break;
+      case Kind::Dwell: dwell_seconds(s.seconds); break;
+      case Kind::Spindle: {
+        const int runs = s.spindle == Fn::SpindleCw ? 1 : s.spindle == Fn::SpindleCcw ? -1 : s.spindle == Fn::SpindleStop ? 0 : 2;
+        if (s.always || modal_.spindle != runs) apply({s.spindle}, Scope::Modal, true);
+        break;
       }
-    } else {
-      go(at(bottom), true);
+      case Kind::Manual: {
+        // The operator retracts by hand: the run stops; on resume the tool is where
+        // the step says (S-7.5).
+        Event stop{EventKind::Stop};
+        stop.n = 3;
+        emit(stop);
+        emit(motion_event(EventKind::OperatorMove, p));
+        move_to(p);
+        break;
+      }
     }
-    if (dwell > 0) dwell_seconds(dwell);
-    if (tap) {
-      spindle(tap_out);
-      go(at(level), true);
-      spindle(tap_in);
-      if (back != level) go(at(back), false);
-      return;
-    }
   }
-  if (pattern.in == In::Back && dwell > 0) dwell_seconds(dwell);
-  switch (pattern.bottom) {
-    case CyclePattern::Bottom::Stop: spindle(Fn::SpindleStop); break;
-    case CyclePattern::Bottom::OrientShift:
-      // §8.27 G76: oriented stop, shift off the wall at feed; G87 shifts at rapid.
-      spindle(Fn::SpindleOrient);
-      go(at(bottom, shift), pattern.in != In::Back);
-      break;
-    default: break;
-  }
-  const double sideways = pattern.bottom == CyclePattern::Bottom::OrientShift ? shift : 0;
-  if (pattern.out == CyclePattern::Out::Feed) {
-    go(at(level), true);  // §8.27 G85, G89: out to R at feed, then at rapid
-    go(at(back), false);
-  } else {
-    // G87 withdraws at feed (§8.27 step 11).
-    go(at(back, sideways), pattern.in == In::Back);
-  }
-  if (sideways != 0) go(at(back), false);
-  if (pattern.bottom != CyclePattern::Bottom::None) spindle(forward);  // restarted after the cycle
 }
 
 void Machine::cycle() {
@@ -235,74 +189,23 @@ void Machine::cycle() {
   }
   // G90: R and the depth are coordinates; G91: R is measured from the initial level
   // and the depth from R.
-  const double start = machine_[d];
+  cycle::Hole h;
+  h.initial = h.current = machine_[d];
   AxisValues off = target_frame();
-  const double level = modal_.absolute ? length_units(*cycle_.level) + off[d] : start + length_units(*cycle_.level);
-  const double bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : level + length_units(*cycle_.depth);
-  // The tool never travels between holes on the work side of R: a start below R
-  // first goes up to R, and R is then the initial level it returns to.
-  const bool below_level = (bottom < level) ? start < level : start > level;
-  const double initial = below_level ? level : start;
-  auto at = [&](double z) {
-    AxisValues p = hole;
-    p[d] = z;
-    return p;
-  };
-  if (below_level) {
-    AxisValues up = machine_;
-    up[d] = level;
-    rapid(up);
-  }
-  // Moves of zero length (already at the hole, R equal to the initial level) are
-  // not made.
-  if (hole != machine_) rapid(at(machine_[d]));
-  if (level != machine_[d]) rapid(at(level));
-  if (pattern.in == CyclePattern::In::SpindleFeed && modal_.spindle != spindle_direction_)
-    apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+  h.level = modal_.absolute ? length_units(*cycle_.level) + off[d] : h.current + length_units(*cycle_.level);
+  h.bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : h.level + length_units(*cycle_.depth);
   if (pattern.in == CyclePattern::In::Peck) {
-    // Pecks of Q, each followed by a rapid withdrawal to R and a rapid return to the
-    // depth reached.
-    double pecks = std::ceil(std::fabs(bottom - level) / length_units(*cycle_.peck));
-    if (pecks > kMaxPecks) {
+    h.peck = length_units(*cycle_.peck);
+    double pecks = std::ceil(std::fabs(h.bottom - h.level) / *h.peck);
+    if (pecks > cycle::kMaxPecks) {
       report(DiagId::CyclePecks, conv_.peck_word, pattern.name, four_decimals(pecks), four_decimals(*cycle_.peck),
-             kMaxPecks);
+             cycle::kMaxPecks);
       return;
     }
-    const double step = length_units(*cycle_.peck) * (bottom < level ? -1 : 1);
-    double reached = level;
-    while (true) {
-      double next = reached + step;
-      if ((step < 0 && next <= bottom) || (step > 0 && next >= bottom)) next = bottom;
-      linear(at(next));
-      if (next == bottom) break;
-      rapid(at(level));
-      rapid(at(next));
-      reached = next;
-    }
-  } else {
-    linear(at(bottom));
   }
-  if (pattern.dwell) dwell_seconds(*cycle_.dwell * conv_.dwell_seconds_per_unit);
-  const int direction = spindle_direction_;
-  if (pattern.bottom == CyclePattern::Bottom::Reverse)
-    apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
-  if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
-  switch (pattern.out) {
-    case CyclePattern::Out::Rapid: rapid(at(initial)); break;
-    case CyclePattern::Out::Feed: linear(at(initial)); break;
-    case CyclePattern::Out::Manual: {
-      // The operator retracts by hand: the run stops; on resume the tool is at the
-      // initial level (S-7.5).
-      Event stop{EventKind::Stop};
-      stop.n = 3;
-      emit(stop);
-      emit(motion_event(EventKind::OperatorMove, at(initial)));
-      move_to(at(initial));
-      break;
-    }
-  }
-  if (pattern.bottom == CyclePattern::Bottom::Reverse)
-    apply({direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+  if (pattern.dwell) h.dwell = *cycle_.dwell * conv_.dwell_seconds_per_unit;
+  h.direction = spindle_direction_;
+  hole_steps(cycle::hole(pattern, h), hole, d, d, false);
 }
 
 // ---- NC-110 -------------------------------------------------------------------------
@@ -334,46 +237,6 @@ void Machine::nc110_cycle_registers(bool definition) {
     if (auto v = word_if(conv_.tap_pitch_word)) cycle_.pitch = length_units(*v);
 }
 
-namespace {
-
-// G83's pecks (NC-110 §2.8.9.2, decisions 21 and 53), program coordinates along the
-// drilling axis. Without K and J each peck of I goes on from the depth reached; with
-// them the tool unloads the chips at R1 after each peck, comes back to `clearance`
-// above the depth reached, and the peck changes by the factor K down to J.
-struct Pecks {
-  double r1 = 0, bottom = 0, step = 0, clearance = 0;
-  std::optional<double> factor, minimum;
-
-  bool unloading() const { return factor || minimum; }
-  // A whole count up, not misled by rounding (25.999 / 0.001 is not 26000).
-  static double up(double x) { return std::ceil(x - 1e-9 * std::max(1.0, x)); }
-  double next(double peck) const {
-    double n = peck * factor.value_or(1);
-    return minimum && n < *minimum ? *minimum : n;
-  }
-  // How many pecks reach the bottom; nullopt when a peck (`stuck`) would not get
-  // deeper than the clearance it comes back (the hole would never end).
-  std::optional<double> count(double& stuck) const {
-    if (!unloading()) return up((r1 - bottom) / step);
-    double from = r1, peck = step;
-    for (double n = 1;; ++n) {
-      double reached = from - peck;
-      if (reached <= bottom) return n;
-      if (n > kMaxPecks) return std::numeric_limits<double>::infinity();  // how many more is not needed
-      double following = next(peck);
-      if (following <= clearance) {
-        stuck = following;
-        return std::nullopt;
-      }
-      // A steady peck gains peck - clearance each time: the rest by division.
-      if (following == peck) return n + up((reached - bottom) / (peck - clearance));
-      from = reached + clearance;
-      peck = following;
-    }
-  }
-};
-
-}  // namespace
 
 bool Machine::nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written) {
   const std::string& name = pattern.name;
@@ -458,15 +321,10 @@ void Machine::nc110_cycle() {
   // Per hole (§2.8.9.4): the position at the height the tool is at, R1, the hole, back.
   AxisValues p = program_target();
   p[d] = to_frame(machine_)[d];
-  auto at = [&](double level) {
-    AxisValues q = p;
-    q[d] = level;
-    return to_machine(q);
-  };
   const AxisValues position = to_machine(p);
   const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
   // The 1 mm G83 comes back is the machine's, whatever the scale (decision 53).
-  Pecks pecks{*cycle_.r1, *cycle_.bottom, cycle_.step.value_or(0),
+  cycle::Pecks pecks{*cycle_.r1, *cycle_.bottom, cycle_.step.value_or(0),
               kUnloadClearance / (frame_.transformed() ? frame_.scale[d] : 1.0), cycle_.factor, cycle_.minimum};
   // Everything the hole needs is checked before the tool moves: a refused hole is
   // not drilled, and the tool is taken to be over it.
@@ -490,60 +348,24 @@ void Machine::nc110_cycle() {
       return refuse();
     }
   }
+  std::optional<double> n;  // G83's pecks
   if (pattern.in == CyclePattern::In::Peck) {
     double stuck = 0;
-    auto n = pecks.count(stuck);
+    n = pecks.count(stuck);
     if (!n) {
       report(DiagId::CycleNoProgress, conv_.peck_word, name, four_decimals(to_program(stuck)));
       return refuse();
     }
-    if (*n > kMaxPecks) {
-      report(DiagId::CyclePecks, conv_.peck_word, name, std::isinf(*n) ? fmt::format("more than {}", kMaxPecks) : shortest(*n),
-             four_decimals(to_program(pecks.step)), kMaxPecks);
+    if (*n > cycle::kMaxPecks) {
+      report(DiagId::CyclePecks, conv_.peck_word, name, std::isinf(*n) ? fmt::format("more than {}", cycle::kMaxPecks) : shortest(*n),
+             four_decimals(to_program(pecks.step)), cycle::kMaxPecks);
       return refuse();
     }
   }
 
-  if (position != machine_) rapid(position);
-  if (at(*cycle_.r1) != machine_) rapid(at(*cycle_.r1));
-  if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1)
-    apply({spindle_direction_ > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);  // Table 2.6
-  const int direction = spindle_direction_;
-
-  if (pattern.in == CyclePattern::In::Peck && pecks.unloading()) {
-    double from = pecks.r1, peck = pecks.step;
-    while (true) {
-      if (at(from) != machine_) rapid(at(from));
-      double reached = std::max(from - peck, pecks.bottom);
-      linear(at(reached));
-      if (reached <= pecks.bottom) break;
-      rapid(at(pecks.r1));
-      from = reached + pecks.clearance;
-      peck = pecks.next(peck);
-    }
-  } else if (pattern.in == CyclePattern::In::Peck) {
-    // Pecks of I with a dwell between them to break the chip.
-    for (double reached = pecks.r1; reached > pecks.bottom;) {
-      reached = std::max(reached - pecks.step, pecks.bottom);
-      linear(at(reached));
-      if (reached > pecks.bottom) dwell_seconds(timer_dwell());
-    }
-  } else if (tapping) {
-    tap_feed(at(*cycle_.bottom), false);
-  } else {
-    linear(at(*cycle_.bottom));
-  }
-  if (pattern.dwell) dwell_seconds(timer_dwell());
-  if (tapping) apply({direction > 0 ? Fn::SpindleCcw : Fn::SpindleCw}, Scope::Modal, true);
-  if (pattern.bottom == CyclePattern::Bottom::Stop) apply({Fn::SpindleStop}, Scope::Modal, true);
-  if (pattern.out == CyclePattern::Out::Feed) {
-    if (tapping) tap_feed(at(*cycle_.r1), true);
-    else linear(at(*cycle_.r1));
-    if (*cycle_.r2 != *cycle_.r1) rapid(at(*cycle_.r2));
-  } else {
-    rapid(at(*cycle_.r2));
-  }
-  if (tapping) apply({direction > 0 ? Fn::SpindleCw : Fn::SpindleCcw}, Scope::Modal, true);
+  cycle::Nc110Hole h{to_frame(machine_)[d], *cycle_.r2, pecks, 0, spindle_direction_};
+  if (pattern.dwell || (n && *n > 1 && !pecks.unloading())) h.dwell = timer_dwell();  // TMR's, read where it is used
+  hole_steps(cycle::nc110_hole(pattern, h), p, d, d, true);
 }
 
 void Machine::tap_feed(const AxisValues& t, bool out) {
