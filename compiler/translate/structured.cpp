@@ -218,6 +218,7 @@ void Structured::begin_main() {
   in_main_ = true;
   moved_ = false;  // the tool is where the machine starts
   spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
+  spindle_turns_ = spindle_direction_ = 0;
   rpm_ = true;  // a cutting speed needs its code (G96)
   tool_selected_ = tool_loaded_ = 0;  // no tool in the spindle
   corrector_ = 0;
@@ -228,6 +229,12 @@ void Structured::begin_main() {
     if (c.fn == Fn::WorkOffset) source_origin_ = c.arg;
   shift_ = {};
   shift_known_ = true;
+  // Before its first move the tool is where the machine starts: in the program's
+  // coordinates (mm at power-on), that less the power-on origin's offset.
+  const auto origin = target_.work_offsets.find(*source_origin_);
+  if (inch_ == false && (origin != target_.work_offsets.end() ? !origin->second.inch : *source_origin_ == 0))
+    for (size_t i = 0; i < 3; ++i)
+      position_[i] = target_.initial_position[i] - (origin != target_.work_offsets.end() ? origin->second.values[i] : 0);
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
   // power-on motion goes into the main program's first move instead of the start.
   if (motion_code_moves() && !same_)
@@ -319,10 +326,14 @@ std::optional<uint32_t> Structured::parameter_number(const ir::Expr& e, uint32_t
 }
 
 bool Structured::block_has(Fn fn) const {
+  return block_has_call([&](const FnCall& c) { return c.fn == fn; });
+}
+
+bool Structured::block_has_call(const std::function<bool(const FnCall&)>& is) const {
   return std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
     if (w.kind != ir::WordKind::Code || w.code < 0) return false;
     const auto& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
-    return std::any_of(calls.begin(), calls.end(), [&](const FnCall& c) { return c.fn == fn; });
+    return std::any_of(calls.begin(), calls.end(), is);
   });
 }
 
@@ -474,6 +485,8 @@ void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
   moved_ = true;
   spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
+  spindle_turns_.reset();
+  spindle_direction_.reset();
   tool_selected_.reset();
   tool_loaded_.reset();
   position_ = {};
@@ -561,15 +574,9 @@ void Structured::translated_machine() {
   // A converted cycle ends at G80 or (ISO) a motion code, before the block's words.
   std::vector<std::string> cycle_before;  // a converted cycle's lines before the block's (NC-110's cycle block, G80)
   if (level_cycle_) {
-    auto has = [&](auto is) {
-      return std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
-        if (w.kind != ir::WordKind::Code || w.code < 0) return false;
-        const auto& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
-        return std::any_of(calls.begin(), calls.end(), is);
-      });
-    };
-    const bool cancel = has([](const FnCall& c) { return c.fn == Fn::CycleCancel; });
-    if (cancel || (src_.fanuc_cycles && has([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion; })))
+    // ... but not the cycle the block's own cycle code begins (code() has read it).
+    const bool cancel = block_has(Fn::CycleCancel);
+    if (cancel || (src_.fanuc_cycles && !block_has(Fn::Cycle) && block_has_motion()))
       end_level_cycle(!cancel, cycle_before);
   }
   // A code two words map to (GOST's M05 M09: pp's M05 M09, and M09 again), once.
@@ -594,6 +601,7 @@ void Structured::translated_machine() {
   const bool plane_words = !reads_source_words() && src_.centre_words == CentreWords::PerAxis &&
                            dst_.centre_words == CentreWords::Plane;
   std::array<const ir::Word*, 3> centre_words{};
+  size_t centre_at = 0;  // ... written at this place of params
   const ir::Word* radius = nullptr;  // an arc's R, where the target gives arcs by their centre
   const ir::Word* lead = nullptr;    // a helix's lead word
   const ir::Word* corner = nullptr;  // ISO's ,C or ,R, where the target has no corners
@@ -652,6 +660,7 @@ void Structured::translated_machine() {
         continue;
       }
       if (plane_words && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K') {
+        if (std::none_of(centre_words.begin(), centre_words.end(), [](const ir::Word* c) { return c; })) centre_at = params.size();
         centre_words[static_cast<size_t>(w.address[0] - 'I')] = &w;
         continue;
       }
@@ -680,8 +689,16 @@ void Structured::translated_machine() {
     folded_g43_ = true;
   }
   skip_offset_word_ = false;
+  bool hole = false;  // the block's own line goes over a hole written as moves (hole_moves())
   if (level_cycle_) {
-    if (level_cycle_lines(drills, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
+    hole = level_cycle_->moves;
+    if (level_cycle_lines(drills, start, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
+    hole &= !hole_lines_.empty();
+    if (hole)  // ... whose motion it is: a motion code of the block (GOST's under a cycle) is its state only
+      std::erase_if(codes, [](const Mapped& c) {
+        const auto& calls = c.code.entry->desc.calls;
+        return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
+      });
   } else {
     unknown_level_cycle(moves);
   }
@@ -700,10 +717,13 @@ void Structured::translated_machine() {
   } else if (framed_block) {
     centre_ = {};
   } else {
-    if (std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; }))
-      plane_centre(centre_words, start, params);
+    std::vector<std::string> centre;  // the centre and the lead, where the source has its first centre word
+    const bool by_plane = std::any_of(centre_words.begin(), centre_words.end(), [](const ir::Word* w) { return w; });
+    if (by_plane) plane_centre(centre_words, start, centre);
     if (radius) radius_centre(*radius, start, params);
-    if (arc) helix(start, lead, params, helix_code);
+    if (!by_plane) centre_at = params.size();
+    if (arc) helix(start, lead, centre, helix_code);
+    params.insert(params.begin() + static_cast<long>(std::min(centre_at, params.size())), centre.begin(), centre.end());
     absolute_centre(start, params);
     arc_on_circle(start);
   }
@@ -726,7 +746,7 @@ void Structured::translated_machine() {
   };
   bool any_before = false, any_after = false;
   for (const Mapped& c : codes) {
-    const bool apart = c.code.letter == 'M' && ((moves && c.wants != c.has) || conflict(c));
+    const bool apart = c.code.letter == 'M' && ((moves && c.wants != c.has) || conflict(c) || hole);
     any_before |= apart && c.wants == Timing::Before;
     any_after |= apart && c.wants == Timing::After;
   }
@@ -796,6 +816,7 @@ void Structured::translated_machine() {
   };
   apart_blocks(before);
   write_words(main);
+  for (const std::string& line : std::exchange(hole_lines_, {})) write_words({line});
   write_words(joint);
   apart_blocks(after);
   later.insert(later.end(), later_lines_.begin(), later_lines_.end());
@@ -1061,7 +1082,11 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
       *v += *start[static_cast<size_t>(axis)];
     }
   }
-  const char to = static_cast<char>('I' + axis);
+  // The target's word: I J K of X Y Z, or (pp) I J of the plane's two axes.
+  if (dst_.centre_words == CentreWords::Plane && !plane_)
+    return fail(w.range, fmt::format("the arc centre {} where the plane is not known", letter));
+  const char to = dst_.centre_words == CentreWords::Plane ? centre_letter(dst_, static_cast<size_t>(axis) == plane_u() ? 0 : 1)
+                                                          : static_cast<char>('I' + axis);
   if (!v && unit_ == 1.0) return words.push_back(to + value(w.value, to));
   if (const auto text = length(w.range, to, v)) words.push_back(to + *text);
 }
@@ -1470,6 +1495,7 @@ std::string Structured::iso_tool_change() {
     for (const std::string& line : retract) write_words({line});
   }
   spindle_on_ = coolant_on_ = false;
+  spindle_turns_ = 0;
   if (!before.empty() && before.front()[0] == '&') length_on_ = false;
   position_[i].reset();
   return {};
@@ -1533,8 +1559,14 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::PlaneXY: plane_ = 'K'; break;  // the plane by its normal's centre word
       case Fn::PlaneZX: plane_ = 'J'; break;
       case Fn::PlaneYZ: plane_ = 'I'; break;
-      case Fn::SpindleCw: case Fn::SpindleCcw: spindle_on_ = true; break;
-      case Fn::SpindleStop: case Fn::SpindleOrient: spindle_on_ = false; break;
+      case Fn::SpindleCw: case Fn::SpindleCcw:
+        spindle_on_ = true;
+        spindle_turns_ = spindle_direction_ = f.fn == Fn::SpindleCw ? 1 : -1;
+        break;
+      case Fn::SpindleStop: case Fn::SpindleOrient:
+        spindle_on_ = false;
+        spindle_turns_ = f.fn == Fn::SpindleStop ? 0 : 2;
+        break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
       case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = !iso_change; break;
@@ -1545,6 +1577,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::CompOff: comp_on_ = false; break;
       case Fn::ProgramEnd: case Fn::ProgramEndInformation:
         spindle_on_ = coolant_on_ = cycle_on_ = false;
+        spindle_turns_ = 0;
         program_ended_ |= in_main_ && !skip_;  // after a '/' it ends the program only with block skip off
         break;
       case Fn::ToolChange:
@@ -1577,6 +1610,7 @@ void Structured::state(const std::vector<FnCall>& calls) {
                                             "iso.tool_change_retract = false)", w_.dialect(), p_->dialect));
         }
         tool_loaded_ = tool_selected_;
+        if (src_.m06_stops_spindle || src_.tool_change_iso) spindle_turns_.reset();
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
         if (dst_.tool_change_iso && !src_.tool_change_iso && (spindle_on_ != false || coolant_on_ != false))
@@ -1628,18 +1662,23 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
       // Another dialect's cycle of one level, whose block drills (ISO's, GOST 20999's,
       // pp's): the target's of the same pattern, the level, peck and dwell words
       // renamed (parameter()): ISO's R Q P are pp's K I and Q in 10 ms.
+      // Where the target has no cycle of the pattern, or reads its words otherwise,
+      // each hole is written as its moves (moves_cycle_code()); so is any cycle
+      // after one written so, whose levels ISO keeps to G80.
       const CyclePattern& pattern = p_->semantics.cycles[c.arg];
-      if (converts_cycle_levels()) return level_cycle_code(w, desc, pattern);
+      if (level_cycle_ && level_cycle_->moves) return moves_cycle_code(w, pattern);
+      if (converts_cycle_levels()) return level_cycle_code(w, pattern);
       const bool alike = !src_.cycle_two_levels && !src_.cycle_defines_only && !dst_.cycle_two_levels &&
                          !dst_.cycle_defines_only && dst_.cycle_level_word && (!src_.peck_word || dst_.peck_word) &&
                          (!src_.dwell_word || dst_.dwell_word);
-      if (!reads_source_words() && !alike)
-        return fail(w.range, fmt::format("canned cycle {}: its words read otherwise in {}; --flatten writes its moves",
-                                         desc.name, w_.dialect()));
+      if (!reads_source_words() && !alike) return moves_cycle_code(w, pattern);
       // ISO feeds out to R, then rapids to the initial level; GOST feeds out all the way.
       if (!reads_source_words() && pattern.out == CyclePattern::Out::Feed && src_.fanuc_cycles != dst_.fanuc_cycles)
-        return fail(w.range, fmt::format("canned cycle {}: {} feeds out of the hole otherwise; --flatten writes its moves",
-                                         desc.name, w_.dialect()));
+        return moves_cycle_code(w, pattern);
+      // ISO's G99 returns to R; GOST's and pp's cycles return to where they began.
+      if (!reads_source_words() && src_.fanuc_cycles && !dst_.fanuc_cycles &&
+          !(block_has(Fn::CycleReturnInitial) || (return_initial_ == true && !block_has(Fn::CycleReturnLevel))))
+        return moves_cycle_code(w, pattern);
       for (const auto& [number, entry] : w_.tables().g_codes) {
         if (entry.desc.calls.size() != 1 || entry.desc.calls[0].fn != Fn::Cycle) continue;
         const CyclePattern& has = w_.tables().cycles[entry.desc.calls[0].arg];
@@ -1655,7 +1694,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
           return;
         }
       }
-      return fail(w.range, fmt::format("canned cycle {}: {} has no cycle of its pattern", desc.name, w_.dialect()));
+      return moves_cycle_code(w, pattern);
     }
   auto add = [&](const Code& c) {
     out.push_back({c, desc.timing, c.entry->desc.timing, c.entry->conflict_sets, {}});
@@ -1691,12 +1730,24 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   std::vector<Code> each;
   std::string later;
   for (const FnCall& c : desc.calls) {
+    // What a code does more changes nothing here (GOST's M05 ends a coolant that is off).
+    if (desc.calls.size() > 1 && idle(c) && std::none_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& o) {
+          if (&o == &w || o.kind != ir::WordKind::Code || o.code < 0) return false;
+          const auto& calls = p_->semantics.codes[static_cast<size_t>(o.code)].calls;
+          return std::any_of(calls.begin(), calls.end(), [&](const FnCall& f) { return fn_group(f.fn) == fn_group(c.fn); });
+        }))
+      continue;
     auto code = target_code({c}, desc.scope);
     if (code) each.push_back(*code);
     else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
     else if ((c.fn == Fn::CycleReturnInitial || c.fn == Fn::CycleReturnLevel) && dst_.cycle_two_levels)
       state({c});  // the return level, written as the cycle's R2 (level_cycle_lines())
-    else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) continue;  // GOST's cycles return so always
+    else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) state({c});  // GOST's cycles return so always
+    // ... and ISO's G99 changes nothing where no cycle is on, or the holes are written
+    // as moves, or the block has a cycle code, which code() writes so then.
+    else if (c.fn == Fn::CycleReturnLevel &&
+             (cycle_on_ == false || (level_cycle_ && level_cycle_->moves) || block_has(Fn::Cycle)))
+      state({c});
     else if ((c.fn == Fn::UnitsMm || c.fn == Fn::UnitsInch) && !target_inch_)
       state({c});  // pp: mm always, inches written as mm (unit_)
     else if ((c.fn == Fn::PolarOn || c.fn == Fn::PolarOff) && !target_polar_)
@@ -1724,16 +1775,18 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   }
 }
 
+// A function that changes nothing in the state the text says.
+bool Structured::idle(const FnCall& f) const {
+  switch (f.fn) {
+    case Fn::LengthOff: return length_on_ == false;
+    case Fn::CoolantOff: return coolant_on_ == false;
+    case Fn::CompOff: return comp_on_ == false;
+    case Fn::SpindleRpm: return rpm_ == true;  // pp's G94 also says rpm
+    default: return false;
+  }
+}
+
 std::optional<Structured::Code> Structured::code_doing_more(const std::vector<FnCall>& calls, Scope scope) const {
-  auto idle = [&](const FnCall& f) {  // a function that changes nothing in the state the text says
-    switch (f.fn) {
-      case Fn::LengthOff: return length_on_ == false;
-      case Fn::CoolantOff: return coolant_on_ == false;
-      case Fn::CompOff: return comp_on_ == false;
-      case Fn::SpindleRpm: return rpm_ == true;  // pp's G94 also says rpm
-      default: return false;
-    }
-  };
   std::optional<Code> best;
   size_t fewest = SIZE_MAX;
   for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})

@@ -5,11 +5,14 @@
 // R; ISO returns to R (G99) or to the level the cycle began at (G98), GOST and pp to
 // that level always. A cycle whose moves are the same in both (in at feed, nothing at
 // the bottom, out at rapid or at feed, a dwell or not) is written as the target's own,
-// its levels converted, where the text says them; any other is refused.
+// its levels converted, where the text says them. A one-level cycle whose pattern
+// the target writes otherwise or has not is written hole by hole as its moves, the
+// runtime's own (runtime/cycle_steps.h); NC-110's are refused.
 #include <cmath>
 
 #include <fmt/format.h>
 
+#include "runtime/cycle_steps.h"
 #include "structured_impl.h"
 
 namespace ncc::translate {
@@ -18,13 +21,13 @@ bool Structured::converts_cycle_levels() const { return !same_ && src_.cycle_two
 
 // A source cycle code: the target's of the same pattern, the rest of the block read
 // by level_word() and written by level_cycle_lines().
-void Structured::level_cycle_code(const ir::Word& w, const CodeDesc& desc, const CyclePattern& pattern) {
-  level_cycle_.reset();
+void Structured::level_cycle_code(const ir::Word& w, const CyclePattern& pattern) {
   cycle_on_ = true;
+  // GOST's and pp's way out at feed goes all the way, NC-110's to R1 and then at rapid.
+  const bool all_the_way = !src_.cycle_two_levels && !src_.fanuc_cycles && pattern.out == CyclePattern::Out::Feed;
   if (pattern.in != CyclePattern::In::Feed || pattern.bottom != CyclePattern::Bottom::None ||
-      pattern.out == CyclePattern::Out::Manual)
-    return fail(w.range, fmt::format("canned cycle {}: {} drills, turns or pecks it otherwise; --flatten writes its moves",
-                                     desc.name, w_.dialect()));
+      pattern.out == CyclePattern::Out::Manual || all_the_way)
+    return moves_cycle_code(w, pattern);
   for (const auto& [number, entry] : w_.tables().g_codes) {
     if (entry.desc.calls.size() != 1 || entry.desc.calls[0].fn != Fn::Cycle) continue;
     const CyclePattern& has = w_.tables().cycles[entry.desc.calls[0].arg];
@@ -34,7 +37,212 @@ void Structured::level_cycle_code(const ir::Word& w, const CodeDesc& desc, const
       return;
     }
   }
-  fail(w.range, fmt::format("canned cycle {}: {} has no cycle of its pattern", desc.name, w_.dialect()));
+  moves_cycle_code(w, pattern);
+}
+
+void Structured::moves_cycle_code(const ir::Word& w, const CyclePattern& pattern) {
+  std::optional<LevelCycle> was = std::exchange(level_cycle_, LevelCycle{&pattern, Code{}, w.range, {}, {}, {}});
+  level_cycle_->moves = true;
+  level_cycles_ = true;
+  cycle_on_ = true;
+  // ISO's registers and initial level hold from the cycle before, up to G80 or a motion code.
+  if (was && src_.fanuc_cycles && !block_has_motion())
+    level_cycle_->now = was->now, level_cycle_->initial = was->initial;
+  // ... which, where the target drills it with its own cycle, ends first.
+  if (was && !was->moves)
+    if (const auto cancel = target_code({{Fn::CycleCancel}}, Scope::Modal)) lines_before_.push_back(cancel->text());
+}
+
+// A dwell of `seconds` as the target's lines: its dwell code with the time, or
+// NC-110's G04, which dwells for TMR's time (seconds under G94, at most 60), TMR set
+// where it holds another. False, said why, where it has none.
+bool Structured::dwell_lines(double seconds, std::vector<std::string>& lines) {
+  auto refuse = [&](const std::string& why) { return fail(block_->range, why), false; };
+  if (const auto code = target_code({{Fn::Dwell}}, Scope::Block); code && dst_.dwell_word) {
+    const OutWord time{dst_.dwell_word, seconds / dst_.dwell_seconds_per_unit, Value::Seconds};
+    if (auto why = w_.unwritable(time)) return refuse(*why);
+    lines.push_back(code->text() + " " + dst_.dwell_word + w_.number(time));
+    return true;
+  }
+  const auto g04 = target_code({{Fn::PathDwellEnd}}, Scope::Block);
+  if (!g04) return refuse(fmt::format("a dwell: {} has no dwell with a time", w_.dialect()));
+  if (per_minute_ != true) return refuse(fmt::format("a dwell where the feed may be per revolution: {}'s TMR counts revolutions then", w_.dialect()));
+  if (seconds < 0 || seconds > 60) return refuse(fmt::format("a dwell of {} s: {}'s TMR holds 0 to 60 s", exact(seconds, false), w_.dialect()));
+  if (!timer_ || *timer_ != seconds) lines.push_back("TMR=" + exact(seconds, false));
+  timer_ = seconds;
+  lines.push_back(g04->text());
+  return true;
+}
+
+// A block under a cycle written as moves: where it drills (an axis or R word, the
+// runtime's rule), its own line goes over the hole at rapid and the hole's moves
+// follow in lines of their own (hole_lines_); the levels are constants the text
+// says, and so is the level the tool starts at. True where it drills.
+bool Structured::hole_moves(const Position& start, std::vector<std::string>& before, std::vector<std::string>& words) {
+  LevelCycle& c = *level_cycle_;
+  const bool defined_here = std::exchange(c.defined_here, false);
+  const LevelCycle::Levels given = std::exchange(c.given, {});
+  for (auto [now, was] : {std::pair{&c.now.depth, given.depth}, {&c.now.peck, given.peck}, {&c.now.dwell, given.dwell},
+                          {&c.now.factor, given.factor}, {&c.now.minimum, given.minimum}})
+    if (was) *now = was;
+  const std::optional<double> z = position_[2];
+  const bool two_levels = src_.cycle_two_levels;
+  if (!two_levels && given.r1) c.now.r1 = given.r1;
+  if (two_levels) {  // one R sets both levels, two each; none at the cycle's block: where the tool is
+    if (given.r1) c.now.r2 = given.r2 ? given.r2 : given.r1, c.now.r1 = given.r1;
+    else if (given.r2) c.now.r2 = given.r2;
+    if (defined_here && !c.now.r1) c.now.r1 = c.now.r2 = z;
+  }
+  // A hole: an axis word or R (the one-level dialects), an axis word off the drilling
+  // axis (NC-110, whose cycle block drills none).
+  const bool drills = !(two_levels && defined_here) &&
+                      std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+                        if (w.kind != ir::WordKind::Parameter || w.address.size() != 1) return false;
+                        const char l = w.address[0];
+                        return two_levels ? l != 'Z' && src_.axes.find(l) != std::string::npos
+                                          : src_.axes.find(l) != std::string::npos || l == src_.cycle_level_word;
+                      });
+  c.carry = two_levels && defined_here;  // its block writes nothing: its number goes to the next line
+  if (!drills) return false;
+  const std::string name = c.pattern->name;
+  auto refuse = [&](const std::string& why) {
+    fail(defined_here ? c.at : block_->range, fmt::format("canned cycle {}: {} has no cycle that drills it so, and its "
+                                                          "moves cannot be written here: {}", name, w_.dialect(), why));
+    level_cycle_.reset();
+    return false;
+  };
+  if (incremental_ != false) return refuse("under G91, or where G90 is not known");
+  if (plane_ != 'K') return refuse("in another plane than XY, or where the plane is not known");
+  if (lowers_frame_ || polar_ != false) return refuse("under a rotation, scale, mirror or polar coordinates the target has not");
+  if (!unit_) return refuse(unit_unknown());
+  if (!z) return refuse("the level the tool starts at is not known");
+  if (!c.now.r1 || !c.now.depth) return refuse("without its level R or its depth");
+  using In = CyclePattern::In;
+  const CyclePattern& pattern = *c.pattern;
+  const bool pecks = pattern.in == In::Peck || pattern.in == In::ChipBreak;
+  if (pecks && !c.now.peck) return refuse("without its peck depth");
+  if (pattern.dwell && !c.now.dwell && !src_.fanuc_cycles && !two_levels) return refuse("without its dwell");
+  if (pattern.out == CyclePattern::Out::Manual) return refuse("the operator takes the tool out of the hole by hand");
+  if (!spindle_direction_) return refuse("the spindle's direction is not known");
+  const double mm = inch_ == true ? 25.4 : 1;  // the source's unit
+  std::vector<cycle::Step> steps;
+  if (two_levels) {
+    cycle::Pecks p{*c.now.r1, *c.now.depth, c.now.peck.value_or(0), 1 / mm, c.now.factor, c.now.minimum};
+    if (p.bottom >= p.r1 || *c.now.r2 < p.r1) return refuse("its bottom is not below R1, or R2 lies below R1");
+    std::optional<double> n;
+    if (pattern.in == In::Peck) {
+      double stuck = 0;
+      if (p.step <= 0 || p.factor.value_or(1) <= 0 || p.minimum.value_or(0) < 0) return refuse("a peck, factor or minimum not above 0");
+      n = p.count(stuck);
+      if (!n || *n > 1000) return refuse("its pecks never reach the bottom, or are more than 1000");
+    }
+    cycle::Nc110Hole h{*z, *c.now.r2, p, 0, *spindle_direction_};
+    if (pattern.dwell || (n && *n > 1 && !p.unloading())) {  // TMR's seconds, under G94
+      if (!timer_ || per_minute_ != true) return refuse("a dwell whose time is not known here (TMR, and G94)");
+      h.dwell = *timer_;
+    }
+    steps = cycle::nc110_hole(pattern, h);
+  } else {
+    cycle::Hole h;
+    h.current = *z;
+    h.level = *c.now.r1;
+    h.bottom = *c.now.depth;
+    if (src_.fanuc_cycles) {
+      if (!c.initial) c.initial = z;
+      if (!return_initial_) return refuse("where G98 or G99 is not known");
+      h.return_level = !*return_initial_;
+    } else {
+      c.initial = z;
+    }
+    h.initial = *c.initial;
+    const bool shifts = pattern.bottom == CyclePattern::Bottom::OrientShift;
+    if ((pecks || ((pattern.in == In::TapCw || pattern.in == In::TapCcw) && src_.fanuc_cycles)) && c.now.peck) {
+      if (*c.now.peck <= 0) return refuse("its peck depth is not above 0");
+      if (std::fabs(h.bottom - h.level) / *c.now.peck > 1000) return refuse("more than 1000 pecks");
+      h.peck = c.now.peck;
+    }
+    if (shifts && !c.now.peck) return refuse("without its shift Q");
+    if (pattern.dwell) h.dwell = c.now.dwell.value_or(0);
+    if (pattern.in == In::Back && h.bottom < h.level) return refuse("G87's bottom lies below R");
+    Conventions conv = src_;
+    conv.peck_clearance /= mm;
+    conv.chip_break_retract /= mm;
+    h.shift = shifts ? *c.now.peck * src_.boring_shift : 0;
+    h.direction = *spindle_direction_ ? *spindle_direction_ : src_.fanuc_cycles ? 1 : 0;
+    steps = src_.fanuc_cycles ? cycle::iso_hole(pattern, h, conv) : cycle::hole(pattern, h);
+  }
+  // The lines: the up to R first in the block's before; the block's own over the
+  // hole; the rest after it.
+  std::vector<std::string> lines;
+  std::optional<Fn> written;  // the target's motion code of the line before
+  std::optional<double> shift_written = 0;
+  for (const cycle::Step& s : steps) {
+    std::vector<std::string> line;
+    switch (s.kind) {
+      case cycle::Step::Kind::Over: {
+        // Over the hole already (X Y as they were): no move, as in the source.
+        auto axis = [&](const std::string& word) { return dst_.axes.find(word[0]) != std::string::npos; };
+        if (std::all_of(words.begin(), words.end(), [&](const std::string& word) {
+              const size_t i = word[0] == 'X' ? 0 : word[0] == 'Y' ? 1 : 3;
+              return !axis(word) || (i < 2 && start[i] && position_[i] && *start[i] == *position_[i]);
+            }))
+          std::erase_if(words, axis);
+        const bool position = std::any_of(words.begin(), words.end(), axis);
+        for (std::string& l : lines) before.push_back(std::move(l));
+        lines.clear();
+        if (position) {
+          const auto rapid = target_code({{Fn::MotionRapid}}, Scope::Modal);
+          if (!rapid) return refuse("no rapid motion code");
+          words.insert(words.begin(), rapid->text());
+          written = Fn::MotionRapid;
+        }
+        continue;
+      }
+      case cycle::Step::Kind::Rapid: case cycle::Step::Kind::Feed: {
+        const Fn fn = s.kind == cycle::Step::Kind::Rapid ? Fn::MotionRapid : Fn::MotionLinear;
+        if (written != fn) {
+          const auto code = target_code({{fn}}, Scope::Modal);
+          if (!code) return refuse("no rapid or linear motion code");
+          line.push_back(code->text());
+          written = fn;
+        }
+        if (s.shift != shift_written) {
+          if (!position_[0]) return refuse("the hole's X is not known, which the shift off the wall moves from");
+          const auto x = length(block_->range, 'X', *position_[0] + s.shift);
+          if (!x) return level_cycle_.reset(), false;
+          line.push_back("X" + *x);
+          shift_written = s.shift;
+        }
+        const auto text = length(block_->range, 'Z', s.level);
+        if (!text) return level_cycle_.reset(), false;
+        line.push_back("Z" + *text);
+        break;
+      }
+      case cycle::Step::Kind::Dwell:
+        if (!dwell_lines(s.seconds, lines)) return level_cycle_.reset(), false;
+        continue;
+      case cycle::Step::Kind::Spindle: {
+        const int turns = s.spindle == Fn::SpindleCw ? 1 : s.spindle == Fn::SpindleCcw ? -1 : s.spindle == Fn::SpindleStop ? 0 : 2;
+        if (!spindle_turns_) return refuse("whether the spindle turns is not known");
+        if (!s.always && *spindle_turns_ == turns) continue;
+        auto code = target_code({{s.spindle}}, Scope::Modal);
+        if (!code) code = code_doing_more({{s.spindle}}, Scope::Modal);  // NC-110's M05 ends a coolant that is off
+        if (!code) return refuse(fmt::format("no code for {} alone", fn_name(s.spindle)));
+        line.push_back(code->text());
+        state({{s.spindle}});  // as the machine's run of the step sets it
+        break;
+      }
+      case cycle::Step::Kind::Manual: return refuse("the operator takes the tool out of the hole by hand");
+      case cycle::Step::Kind::Tap: case cycle::Step::Kind::TapOut:
+        return refuse("NC-110's tap goes in with the spindle (K) and out at RMS % of its speed");
+    }
+    std::string text;
+    for (const std::string& word : line) text += (text.empty() ? "" : " ") + word;
+    lines.push_back(text);
+  }
+  hole_lines_ = std::move(lines);
+  position_[2] = steps.back().level;
+  return true;
 }
 
 // A word of a block under a converted cycle that the cycle says (its levels, depth,
@@ -48,13 +256,16 @@ bool Structured::level_word(const ir::Word& w) {
   LevelCycle::Levels& given = level_cycle_->given;
   std::optional<double>* slot = nullptr;
   if (letter == src_.cycle_level_word) slot = second ? &given.r2 : &given.r1;
+  else if (letter == src_.peck_word && level_cycle_->moves) slot = &given.peck;
+  else if (letter == src_.peck_factor_word && level_cycle_->moves) slot = &given.factor;
+  else if (letter == src_.peck_minimum_word && level_cycle_->moves) slot = &given.minimum;
   else if (plane_ && letter == normal_axis() && address.size() == 1) slot = &given.depth;
   else if (src_.dwell_word && letter == src_.dwell_word) slot = &given.dwell;
   else if (letter == src_.peck_word || src_.cycle_repeat_words.find(letter) != std::string::npos)
     return fail(w.range, fmt::format("{}{}: a word of a canned cycle that {} has not", letter, w.text, w_.dialect())), true;
   if (!slot) return false;
   *slot = constant_of(w.value);
-  if (!*slot) fail(w.range, "a canned cycle's level, depth or dwell given by a parameter");
+  if (!*slot) fail(w.range, "a canned cycle's level, depth, peck or dwell given by a parameter");
   else if (slot == &given.dwell) **slot *= src_.dwell_seconds_per_unit;  // seconds
   return true;
 }
@@ -62,8 +273,10 @@ bool Structured::level_word(const ir::Word& w) {
 // The lines of a block under a converted cycle: `before` its own line, `words` in it.
 // `drills`: the block has a position in the plane. True where the words have the
 // target's cycle code (the block's motion code).
-bool Structured::level_cycle_lines(bool drills, std::vector<std::string>& before, std::vector<std::string>& words) {
+bool Structured::level_cycle_lines(bool drills, const Position& start, std::vector<std::string>& before,
+                                   std::vector<std::string>& words) {
   if (!level_cycle_) return false;
+  if (level_cycle_->moves) return hole_moves(start, before, words);
   LevelCycle& c = *level_cycle_;
   const bool defined_here = std::exchange(c.defined_here, false);
   const LevelCycle::Levels given = std::exchange(c.given, {});
@@ -194,6 +407,12 @@ void Structured::unknown_level_cycle(bool moves) {
 // motion again, which ISO's G80 has ended: the code is written again.
 void Structured::end_level_cycle(bool by_motion, std::vector<std::string>& before) {
   if (!level_cycle_) return;
+  if (level_cycle_->moves) {  // the moves leave the target in G00 or G01: the source's motion again
+    if (!by_motion && motion_)
+      if (const auto code = target_code({{*motion_}}, Scope::Modal)) restore_motion_ = code->text();
+    if (!by_motion && !motion_) fail(block_->range, "the end of a canned cycle written as moves, where the motion code in force is not known");
+    return level_cycle_.reset();
+  }
   if (by_motion && dst_.cycle_two_levels)
     if (const auto cancel = target_code({{Fn::CycleCancel}}, Scope::Modal)) before.push_back(cancel->text());
   if (!by_motion && dst_.fanuc_cycles && motion_)

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -152,8 +153,12 @@ class Structured {
   // [first, end) and is free, else the next free one from `next`; nothing when none is.
   std::optional<uint32_t> parameter_number(const ir::Expr& e, uint32_t first, uint32_t end, std::set<uint32_t>& taken,
                                            uint32_t& next) const;
+  // A dwell of `seconds` as the target's lines (structured_cycle.cpp).
+  bool dwell_lines(double seconds, std::vector<std::string>& lines);
   // Whether the block being written has a code word with function `fn`.
   bool block_has(Fn fn) const;
+  bool block_has_call(const std::function<bool(const FnCall&)>& is) const;
+  bool block_has_motion() const { return block_has_call([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion; }); }
   // Notes the variables block `b`'s words name (`s` none), or its statement `s`
   // names; sets first_store_.
   void note_access(const ir::Block& b, const ir::Stmt* s);
@@ -167,6 +172,7 @@ class Structured {
     std::string text() const;
   };
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
+  bool idle(const FnCall& f) const;
   std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
   std::optional<Code> code_doing_more(const std::vector<FnCall>& calls, Scope scope) const;
   bool is_whole(ir::ExprId id) const;
@@ -201,6 +207,7 @@ class Structured {
   std::string label_;                  // ... and before it (NC-110's "LABEL")
   std::vector<std::string> extra_words_;  // the block's words the target adds (pp's G70 of a subprogram's end)
   std::vector<std::string> later_lines_;  // the block's lines after its own (a reference return in machine coordinates)
+  std::vector<std::string> hole_lines_;   // the moves of a cycle's hole after the block's own line (hole_moves())
   std::optional<int> folded_corrector_;   // ISO's G43 H of the next block, into NC-110's M06 of this one
   bool folded_g43_ = false;               // ... and that G43 is written so
   bool skip_offset_word_ = false;         // ... and its H too
@@ -277,11 +284,14 @@ class Structured {
   void parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out);
   // Canned cycles between NC-110's two levels and the others' one (structured_cycle.cpp).
   bool converts_cycle_levels() const;
-  void level_cycle_code(const ir::Word& w, const CodeDesc& desc, const CyclePattern& pattern);
+  void level_cycle_code(const ir::Word& w, const CyclePattern& pattern);
   bool level_word(const ir::Word& w);
-  bool level_cycle_lines(bool drills, std::vector<std::string>& before, std::vector<std::string>& words);
+  bool level_cycle_lines(bool drills, const Position& start, std::vector<std::string>& before, std::vector<std::string>& words);
   void end_level_cycle(bool by_motion, std::vector<std::string>& before);
   void unknown_level_cycle(bool moves);
+  // ... and a one-level cycle the target has none of its pattern for: each hole as its moves.
+  void moves_cycle_code(const ir::Word& w, const CyclePattern& pattern);
+  bool hole_moves(const Position& start, std::vector<std::string>& before, std::vector<std::string>& words);
   // The target's shift of its program zero: ISO's G52, else pp's G37.
   std::optional<Code> local_shift_code() const {
     if (auto g52 = target_code({{Fn::OffsetLocal}}, Scope::Block)) return g52;
@@ -368,6 +378,8 @@ class Structured {
   std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
   std::optional<bool> rpm_;           // the spindle speed is in rpm (not a cutting speed)
   std::optional<int> tool_selected_, tool_loaded_;  // by T, and in the spindle
+  std::optional<int> spindle_turns_ = 0;      // 1 cw, -1 ccw, 0 stopped, 2 oriented
+  std::optional<int> spindle_direction_ = 0;  // the last direction set (0: none yet)
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   std::map<int, OffsetEntry> source_offsets_;
@@ -381,7 +393,8 @@ class Structured {
   // A canned cycle converted between two levels and one (structured_cycle.cpp).
   struct LevelCycle {
     struct Levels {
-      std::optional<double> r1, r2, depth, dwell;  // R1 (approach), R2 (return): lengths in the source's unit; seconds
+      std::optional<double> r1, r2, depth, dwell, peck;  // R1 (approach), R2 (return): lengths in the source's unit; seconds
+      std::optional<double> factor, minimum;             // NC-110's G83: K and J
     };
     const CyclePattern* pattern;
     Code code;  // the target's
@@ -392,6 +405,7 @@ class Structured {
     bool written = false;            // its first hole is written (a one-level target's cycle block with it)
     bool restate = false;            // ... and its levels changed since
     bool carry = false;              // the cycle's block writes nothing: its number goes to the next line
+    bool moves = false;              // the target has no cycle of its pattern: each hole is its moves (hole_moves())
   };
   bool level_cycles_ = false;  // the program has a converted cycle
   std::optional<LevelCycle> level_cycle_;

@@ -388,14 +388,9 @@ class Nc110Structured final : public Structured {
     }
     const auto value = time ? constant_of(time->value) : std::nullopt;
     if (!value) return fail(code.range, "a dwell whose time is not a constant: NC-110 dwells by TMR, set before");
-    const double seconds = *value * src_.dwell_seconds_per_unit;
-    if (per_minute_ != true)
-      return fail(code.range, "a dwell where the feed may be per revolution: NC-110's TMR counts revolutions under G95");
-    if (seconds < 0 || seconds > 60) return fail(time->range, fmt::format("a dwell of {} s: NC-110's TMR holds 0 to 60 s", exact(seconds, false)));
-    const auto g04 = target_code({{Fn::PathDwellEnd}}, Scope::Block);
-    if (!g04) return fail(code.range, "a dwell: NC-110's table has no G04");
-    line("TMR=" + exact(seconds, false));
-    line(g04->text());
+    std::vector<std::string> lines;
+    if (dwell_lines(*value * src_.dwell_seconds_per_unit, lines))
+      for (std::string& l : lines) line(std::move(l));
   }
 
   // A three-letter code and its operands, which are the block's other words (one
