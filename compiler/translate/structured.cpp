@@ -505,6 +505,7 @@ void Structured::forget() {
   return_initial_.reset();
   level_cycle_.reset();
   source_origin_.reset();
+  work_offset_.reset();
   shift_known_ = false;
   if (!shifted_axes_.empty()) shifted_axes_ = dst_.axes;  // a local shift may be on any axis the target moves
 }
@@ -1325,12 +1326,30 @@ void Structured::arc_on_circle(const Position& start) {
   const auto centre = std::exchange(centre_, {});
   if (!plane_) return;
   const size_t u = plane_u(), v = plane_v();
-  if (!centre[u] || !centre[v] || !start[u] || !start[v] || !position_[u] || !position_[v]) return;
+  if (!start[u] || !start[v] || !position_[u] || !position_[v]) return;
   const double unit = unit_.value_or(1.0);
   auto at = [&](const std::optional<double>& pu, const std::optional<double>& pv) {  // as the target reads it
     return std::array<double, 2>{on_step(*pu * unit), on_step(*pv * unit)};
   };
-  on_circle(at(start[u], start[v]), at(position_[u], position_[v]), at(centre[u], centre[v]));
+  const auto a = at(start[u], start[v]);
+  if (centre[u] && centre[v]) return on_circle(a, at(position_[u], position_[v]), at(centre[u], centre[v]));
+  // The source's centre words from the start, each written to the target's step, where
+  // the target reads them so too (pp's I J from inches).
+  const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
+  if (!arc || reads_source_words() || src_.arc_centre != ArcCentre::Incremental || dst_.arc_centre != ArcCentre::Incremental ||
+      incremental_ != false)
+    return;
+  std::array<double, 2> c{};
+  bool given = false;
+  for (int k = 0; k < 2; ++k) {
+    std::optional<double> word = 0.0;
+    for (const ir::Word& w : block_->words)
+      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == centre_letter(src_, k))
+        word = constant_of(w.value), given = true;
+    if (!word) return;
+    c[static_cast<size_t>(k)] = a[static_cast<size_t>(k)] + on_step(*word * unit);
+  }
+  if (given) on_circle(a, at(position_[u], position_[v]), c);
 }
 
 // Where the text leaves the tool on X, Y and Z, in the program's coordinates.
@@ -1552,7 +1571,10 @@ void Structured::state(const std::vector<FnCall>& calls) {
         break;
       case Fn::UnitsInch: inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4; break;
       case Fn::Cycle: cycle_on_ = true; break;
-      case Fn::WorkOffset: offset_selected_ = true; break;
+      case Fn::WorkOffset:
+        offset_selected_ = true;
+        work_offset_ = f.arg;
+        break;
       case Fn::CycleCancel: cycle_on_ = false; break;
       case Fn::DistanceAbsolute: incremental_ = false; break;
       case Fn::DistanceIncremental: incremental_ = true; break;
@@ -1644,6 +1666,20 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
         return fail(w.range, fmt::format("{} under G91, or with cutter compensation, or where the text does not say they are off: "
                                          "{}'s {} is absolute and takes no compensation", desc.name, w_.dialect(), g79->text()));
       return out.push_back({*g79, desc.timing, g79->entry->desc.timing, {}, {}});
+    }
+  // ... into pp: its G53 (the machine's zero, modal) before the block, the work offset
+  // in force again after it.
+  if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block && !target_code(desc.calls, desc.scope))
+    if (auto zero = target_code({{Fn::WorkOffset, 0}}, Scope::Modal)) {
+      const auto back = work_offset_ ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*work_offset_)}}, Scope::Modal)
+                                     : std::nullopt;
+      if (incremental_ != false || comp_on_ != false || !back)
+        return fail(w.range, fmt::format("{} under G91, or with cutter compensation, or where the work offset in force is "
+                                         "not known: {}'s {} is absolute, takes no compensation and stays until the work "
+                                         "offset is selected again", desc.name, w_.dialect(), zero->text()));
+      lines_before_.push_back(zero->text());
+      later_lines_.push_back(back->text());
+      return;
     }
   if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} || desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
       !target_code(desc.calls, desc.scope))

@@ -412,6 +412,7 @@ class Structured {
   std::optional<Position> parabola_middle_;  // GOST's two-block parabola: its intermediate point
   std::optional<bool> return_initial_;  // ISO's G98 (true) or G99, where the text says
   std::optional<int> source_origin_;   // NC-110's origin selected (UAO), where the text says
+  std::optional<int> work_offset_;     // the work offset in force (the target's codes' G54 = 1), where the text says
   AxisValues shift_{};                 // ... its temporary or incremental shift on each axis (UOT, UIO)
   bool shift_known_ = true;            // ... as far as the text says
   std::string shifted_axes_;           // the axes a local shift (ISO's G52) has been written for
