@@ -577,8 +577,11 @@ void Structured::translated_machine() {
   if (level_cycle_) {
     // ... but not the cycle the block's own cycle code begins (code() has read it).
     const bool cancel = block_has(Fn::CycleCancel);
+    const bool as_moves = level_cycle_->moves;
     if (cancel || (src_.fanuc_cycles && !block_has(Fn::Cycle) && block_has_motion()))
       end_level_cycle(!cancel, cycle_before);
+    // The holes written as moves left the target in G00 or G01: from this block's moves on.
+    if (as_moves && !level_cycle_ && restore_motion.empty()) restore_motion = std::exchange(restore_motion_, {});
   }
   // A code two words map to (GOST's M05 M09: pp's M05 M09, and M09 again), once.
   for (size_t i = 0; i < codes.size(); ++i)

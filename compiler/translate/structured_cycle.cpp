@@ -136,6 +136,11 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
       n = p.count(stuck);
       if (!n || *n > 1000) return refuse("its pecks never reach the bottom, or are more than 1000");
     }
+    // G84: K is a tap synchronised with the spindle; without it the tap feeds at F and
+    // comes out at RMS % of it, RMS's 100 at power-on (a program that stores RMS is
+    // refused into the others).
+    if (pattern.bottom == CyclePattern::Bottom::Reverse && c.now.factor)
+      return refuse("a tap synchronised with the spindle (K)");
     cycle::Nc110Hole h{*z, *c.now.r2, p, 0, *spindle_direction_};
     if (pattern.dwell || (n && *n > 1 && !p.unloading())) {  // TMR's seconds, under G94
       if (!timer_ || per_minute_ != true) return refuse("a dwell whose time is not known here (TMR, and G94)");
@@ -198,7 +203,7 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
         }
         continue;
       }
-      case cycle::Step::Kind::Rapid: case cycle::Step::Kind::Feed: {
+      case cycle::Step::Kind::Rapid: case cycle::Step::Kind::Feed: case cycle::Step::Kind::Tap: case cycle::Step::Kind::TapOut: {
         const Fn fn = s.kind == cycle::Step::Kind::Rapid ? Fn::MotionRapid : Fn::MotionLinear;
         if (written != fn) {
           const auto code = target_code({{fn}}, Scope::Modal);
@@ -233,8 +238,6 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
         break;
       }
       case cycle::Step::Kind::Manual: return refuse("the operator takes the tool out of the hole by hand");
-      case cycle::Step::Kind::Tap: case cycle::Step::Kind::TapOut:
-        return refuse("NC-110's tap goes in with the spindle (K) and out at RMS % of its speed");
     }
     std::string text;
     for (const std::string& word : line) text += (text.empty() ? "" : " ") + word;
