@@ -695,9 +695,8 @@ void Structured::translated_machine() {
   skip_offset_word_ = false;
   bool hole = false;  // the block's own line goes over a hole written as moves (hole_moves())
   if (level_cycle_) {
-    hole = level_cycle_->moves;
     if (level_cycle_lines(drills, start, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
-    hole &= !hole_lines_.empty();
+    hole = level_cycle_ && level_cycle_->moves && !hole_lines_.empty();
     if (hole)  // ... whose motion it is: a motion code of the block (GOST's under a cycle) is its state only
       std::erase_if(codes, [](const Mapped& c) {
         const auto& calls = c.code.entry->desc.calls;

@@ -290,6 +290,16 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     level_cycle_.reset();
     return false;
   };
+  // A hole the target's cycle cannot drill so: its moves, from here on (decision 25),
+  // the target's cycle ended first.
+  auto as_moves = [&] {
+    if (c.written)
+      if (const auto cancel = target_code({{Fn::CycleCancel}}, Scope::Modal)) before.push_back(cancel->text());
+    c.moves = true;
+    c.defined_here = defined_here;
+    c.given = given;
+    return hole_moves(start, before, words);
+  };
   if (incremental_ != false && (defined_here || drills))
     return refuse("under G91, or where G90 is not known: the one-level dialects read its R and depth as increments then, "
                   "NC-110 as levels");
@@ -316,12 +326,12 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
   // NC-110 (as ISO) feeds out to R1, then goes at rapid to R2; GOST and pp feed all the way.
   auto all_the_way = [](const Conventions& k) { return !k.fanuc_cycles && !k.cycle_two_levels; };
   if (c.pattern->out == CyclePattern::Out::Feed && *now.r2 != *now.r1 && (all_the_way(src_) || all_the_way(dst_)))
-    return refuse("its way out: one feeds to R and then goes at rapid, the other feeds all the way");
+    return as_moves();  // one feeds to R and then goes at rapid, the other feeds all the way
   const bool changed = now.r1 != was.r1 || now.r2 != was.r2 || now.depth != was.depth || now.dwell != was.dwell;
   // The one-level dialects go up to R first from a start below it; NC-110 goes over
   // the hole at the level the tool is at.
   if (drills && !c.written && (!z || *z < *now.r1))
-    return refuse("its first hole starts below R, or where the tool's level is not known: the dialects go there otherwise");
+    return as_moves();  // the dialects go there otherwise
   auto level_words = [&](std::vector<std::string>& out, bool both) {
     for (const auto& [letter, v] : {std::pair{dst_.cycle_level_word, *now.r1}, std::pair{'Z', *now.depth}}) {
       const auto text = length(c.at, letter, v);
@@ -336,11 +346,10 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     return true;
   };
   if (dst_.cycle_two_levels) {  // into NC-110: the cycle's block (or its levels again), then the position drills
-    if (!defined_here && !drills && changed)
-      return refuse(fmt::format("a level or depth in a block without a position: {} drills where the tool is, {} sets "
-                                "them only", p_->dialect, w_.dialect()));
-    if (defined_here && !drills)
-      return refuse(fmt::format("a cycle block without a position: {}'s cycle drills at the blocks after its own", w_.dialect()));
+    // A level or depth in a block without a position: the source drills where the tool
+    // is, NC-110 sets them only; a cycle block without one: NC-110's drills at the
+    // blocks after it.
+    if ((!defined_here && !drills && changed) || (defined_here && !drills)) return as_moves();
     if (now.dwell && (!timer_ || *timer_ != *now.dwell)) {
       if (per_minute_ != true) return refuse("a dwell where the feed may be per revolution: TMR then counts revolutions");
       before.push_back("TMR=" + exact(*now.dwell, false));
@@ -357,7 +366,9 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     c.written |= drills;
   } else {  // from NC-110: a hole drills with the target's cycle block, or its levels again
     c.restate |= c.written && changed;
-    c.carry = defined_here;  // NC-110's cycle block writes nothing: the target's is written at its first hole
+    // NC-110's cycle block, and a block of its levels alone, write nothing: the
+    // target's are written at the next hole, which takes the block's number.
+    c.carry = !drills;
     if (!drills) return false;
     if (c.pattern->dwell) {  // TMR's time (seconds under G94) when the hole is drilled
       if (!timer_ || per_minute_ != true) return refuse("a dwell whose time is not known here (TMR, and G94)");
@@ -367,14 +378,12 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     if (!c.written) c.initial = z;
     std::vector<std::string> cycle;
     if (dst_.fanuc_cycles) {
-      if (*now.r2 != *now.r1 && now.r2 != c.initial)
-        return refuse("returning to R2, which is neither R nor the level the cycle began at");
+      if (*now.r2 != *now.r1 && now.r2 != c.initial) return as_moves();  // R2 is neither R nor the level it began at
       const auto back = target_code({{*now.r2 == *now.r1 ? Fn::CycleReturnLevel : Fn::CycleReturnInitial}}, Scope::Modal);
       if (!back) return refuse(fmt::format("{} has no code for its return level", w_.dialect()));
       if (!c.written || c.restate) cycle.push_back(back->text());
     } else if (now.r2 != c.initial) {
-      return refuse(fmt::format("returning to R2, which is not the level the cycle began at ({}'s cycles return there)",
-                                w_.dialect()));
+      return as_moves();  // R2 is not the level it began at, where the target's cycles return
     }
     const bool motion = !c.written;
     if (motion) cycle.push_back(c.code.text());
