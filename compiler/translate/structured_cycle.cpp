@@ -111,7 +111,11 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
     level_cycle_.reset();
     return false;
   };
-  if (incremental_ != false) return refuse("under G91, or where G90 is not known");
+  if (!incremental_) return refuse("where G90 or G91 is not known");
+  // Under G91 the one-level dialects' R is from the initial level (GOST's, pp's: where
+  // the hole begins), the depth from R; the lines then move by increments too.
+  const bool relative = *incremental_;
+  if (relative && two_levels) return refuse("under G91, where NC-110's levels are increments from the axis' position");
   if (plane_ != 'K') return refuse("in another plane than XY, or where the plane is not known");
   if (lowers_frame_ || polar_ != false) return refuse("under a rotation, scale, mirror or polar coordinates the target has not");
   if (!unit_) return refuse(unit_unknown());
@@ -150,8 +154,6 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   } else {
     cycle::Hole h;
     h.current = *z;
-    h.level = *c.now.r1;
-    h.bottom = *c.now.depth;
     if (src_.fanuc_cycles) {
       if (!c.initial) c.initial = z;
       if (!return_initial_) return refuse("where G98 or G99 is not known");
@@ -160,6 +162,8 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
       c.initial = z;
     }
     h.initial = *c.initial;
+    h.level = relative ? h.initial + *c.now.r1 : *c.now.r1;
+    h.bottom = relative ? h.level + *c.now.depth : *c.now.depth;
     const bool shifts = pattern.bottom == CyclePattern::Bottom::OrientShift;
     if ((pecks || ((pattern.in == In::TapCw || pattern.in == In::TapCcw) && src_.fanuc_cycles)) && c.now.peck) {
       if (*c.now.peck <= 0) return refuse("its peck depth is not above 0");
@@ -180,7 +184,7 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   // hole; the rest after it.
   std::vector<std::string> lines;
   std::optional<Fn> written;  // the target's motion code of the line before
-  std::optional<double> shift_written = 0;
+  double shift_written = 0, level_written = *z;  // where the lines before leave the tool
   for (const cycle::Step& s : steps) {
     std::vector<std::string> line;
     switch (s.kind) {
@@ -212,15 +216,16 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
           written = fn;
         }
         if (s.shift != shift_written) {
-          if (!position_[0]) return refuse("the hole's X is not known, which the shift off the wall moves from");
-          const auto x = length(block_->range, 'X', *position_[0] + s.shift);
+          if (!position_[0] && !relative) return refuse("the hole's X is not known, which the shift off the wall moves from");
+          const auto x = length(block_->range, 'X', relative ? s.shift - shift_written : *position_[0] + s.shift);
           if (!x) return level_cycle_.reset(), false;
           line.push_back("X" + *x);
           shift_written = s.shift;
         }
-        const auto text = length(block_->range, 'Z', s.level);
+        const auto text = length(block_->range, 'Z', relative ? s.level - level_written : s.level);
         if (!text) return level_cycle_.reset(), false;
         line.push_back("Z" + *text);
+        level_written = s.level;
         break;
       }
       case cycle::Step::Kind::Dwell:
@@ -300,6 +305,7 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     c.given = given;
     return hole_moves(start, before, words);
   };
+  if (incremental_ == true && (defined_here || drills) && !src_.cycle_two_levels) return as_moves();
   if (incremental_ != false && (defined_here || drills))
     return refuse("under G91, or where G90 is not known: the one-level dialects read its R and depth as increments then, "
                   "NC-110 as levels");
