@@ -547,6 +547,10 @@ void Structured::write_words(const std::vector<std::string>& words) {
 // codes the target does not take in one block (ISO M03 and M06).
 void Structured::translated_machine() {
   std::vector<Mapped> codes;
+  const auto motion_code = [](const Mapped& c) {
+    const auto& calls = c.code.entry->desc.calls;
+    return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
+  };
   std::vector<std::string> params;
   bool moves = false;
   bool drills = false;  // the block has a position in the plane (a converted cycle's hole)
@@ -697,11 +701,7 @@ void Structured::translated_machine() {
   if (level_cycle_) {
     if (level_cycle_lines(drills, start, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
     hole = level_cycle_ && level_cycle_->moves && !hole_lines_.empty();
-    if (hole)  // ... whose motion it is: a motion code of the block (GOST's under a cycle) is its state only
-      std::erase_if(codes, [](const Mapped& c) {
-        const auto& calls = c.code.entry->desc.calls;
-        return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
-      });
+    if (hole) std::erase_if(codes, motion_code);  // ... whose motion it is: a motion code of the block is its state only
   } else {
     unknown_level_cycle(moves);
   }
@@ -785,10 +785,7 @@ void Structured::translated_machine() {
       }
     }
   }
-  const bool has_motion = std::any_of(codes.begin(), codes.end(), [](const Mapped& c) {
-    const auto& calls = c.code.entry->desc.calls;
-    return std::any_of(calls.begin(), calls.end(), [](const FnCall& f) { return fn_group(f.fn) == FnGroup::Motion; });
-  });
+  const bool has_motion = std::any_of(codes.begin(), codes.end(), motion_code);
   if (!restore_motion.empty() && !has_motion) {  // at the next move
     if (moves) main.insert(main.begin(), restore_motion);
     else restore_motion_ = restore_motion;

@@ -5,9 +5,9 @@
 // R; ISO returns to R (G99) or to the level the cycle began at (G98), GOST and pp to
 // that level always. A cycle whose moves are the same in both (in at feed, nothing at
 // the bottom, out at rapid or at feed, a dwell or not) is written as the target's own,
-// its levels converted, where the text says them. A one-level cycle whose pattern
-// the target writes otherwise or has not is written hole by hole as its moves, the
-// runtime's own (runtime/cycle_steps.h); NC-110's are refused.
+// its levels converted, where the text says them. A cycle the target drills
+// otherwise is written hole by hole as its moves, the runtime's own
+// (runtime/cycle_steps.h; decision 25).
 #include <cmath>
 
 #include <fmt/format.h>
