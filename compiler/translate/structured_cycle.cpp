@@ -104,13 +104,8 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
                       });
   c.carry = two_levels && defined_here;  // its block writes nothing: its number goes to the next line
   if (!drills) return false;
-  const std::string name = c.pattern->name;
-  auto refuse = [&](const std::string& why) {
-    fail(defined_here ? c.at : block_->range, fmt::format("canned cycle {}: {} has no cycle that drills it so, and its "
-                                                          "moves cannot be written here: {}", name, w_.dialect(), why));
-    level_cycle_.reset();
-    return false;
-  };
+  const SourceRange at = defined_here ? c.at : block_->range;
+  auto refuse = [&](const std::string& why) { return refuse_moves(at, why); };
   if (!incremental_) return refuse("where G90 or G91 is not known");
   // Under G91 the one-level dialects' R is from the initial level (GOST's, pp's: where
   // the hole begins), the depth from R; the lines then move by increments too.
@@ -180,11 +175,25 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
     h.direction = *spindle_direction_ ? *spindle_direction_ : src_.fanuc_cycles ? 1 : 0;
     steps = src_.fanuc_cycles ? cycle::iso_hole(pattern, h, conv) : cycle::hole(pattern, h);
   }
-  // The lines: the up to R first in the block's before; the block's own over the
-  // hole; the rest after it.
+  return hole_lines(steps, at, start, relative, before, words);
+}
+
+bool Structured::refuse_moves(SourceRange at, const std::string& why) {
+  fail(at, fmt::format("canned cycle {}: {} has no cycle that drills it so, and its moves cannot be written here: {}",
+                       level_cycle_->pattern->name, w_.dialect(), why));
+  level_cycle_.reset();
+  return false;
+}
+
+// A hole's steps as lines: the way up to R first in the block's `before`; the block's
+// own line (`words`) over the hole; the rest after it (hole_lines_), by increments
+// where `relative`.
+bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange at, const Position& start, bool relative,
+                            std::vector<std::string>& before, std::vector<std::string>& words) {
+  auto refuse = [&](const std::string& why) { return refuse_moves(at, why); };
   std::vector<std::string> lines;
   std::optional<Fn> written;  // the target's motion code of the line before
-  double shift_written = 0, level_written = *z;  // where the lines before leave the tool
+  double shift_written = 0, level_written = *position_[2];  // where the lines before leave the tool
   for (const cycle::Step& s : steps) {
     std::vector<std::string> line;
     switch (s.kind) {

@@ -25,6 +25,10 @@
 #include "runtime/machine_config.h"
 #include "writer.h"
 
+namespace ncc::cycle {
+struct Step;
+}
+
 namespace ncc::translate {
 
 // What the target cannot say (refused), says otherwise than the source without
@@ -292,6 +296,9 @@ class Structured {
   // ... and a one-level cycle the target has none of its pattern for: each hole as its moves.
   void moves_cycle_code(const ir::Word& w, const CyclePattern& pattern);
   bool hole_moves(const Position& start, std::vector<std::string>& before, std::vector<std::string>& words);
+  bool hole_lines(const std::vector<cycle::Step>& steps, SourceRange at, const Position& start, bool relative,
+                  std::vector<std::string>& before, std::vector<std::string>& words);
+  bool refuse_moves(SourceRange at, const std::string& why);
   // The target's shift of its program zero: ISO's G52, else pp's G37.
   std::optional<Code> local_shift_code() const {
     if (auto g52 = target_code({{Fn::OffsetLocal}}, Scope::Block)) return g52;
