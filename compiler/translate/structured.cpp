@@ -702,6 +702,8 @@ void Structured::translated_machine() {
     if (level_cycle_lines(drills, start, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
     hole = level_cycle_ && level_cycle_->moves && !hole_lines_.empty();
     if (hole) std::erase_if(codes, motion_code);  // ... whose motion it is: a motion code of the block is its state only
+    if (const auto rapid = std::exchange(hole_rapid_, std::nullopt))
+      codes.push_back({*rapid, Timing::None, rapid->entry->desc.timing, rapid->entry->conflict_sets, {}});
   } else {
     unknown_level_cycle(moves);
   }
@@ -1550,6 +1552,15 @@ std::string Structured::machine_reference(std::string_view axes, std::optional<b
 
 // What the blocks so far leave the spindle, the coolant and the plane in, where the
 // text alone says: not after a label a jump goes to, nor after a call.
+// The positions the text says, in the source's new unit (`factor` from the old one;
+// 0: the old one is not known, nor are they then).
+void Structured::rescale(double factor) {
+  if (factor == 1.0) return;
+  for (auto& p : position_)
+    if (p) p = factor ? std::optional(*p * factor) : std::nullopt;
+  if (level_cycle_ && level_cycle_->initial) level_cycle_->initial = factor ? std::optional(*level_cycle_->initial * factor) : std::nullopt;
+}
+
 void Structured::state(const std::vector<FnCall>& calls) {
   // ISO's M06 ends the length offset: NC-110's M06 it becomes applies corrector 0.
   const bool iso_change = src_.tool_change_iso && std::find(calls.begin(), calls.end(), FnCall{Fn::ToolChange}) != calls.end();
@@ -1561,14 +1572,20 @@ void Structured::state(const std::vector<FnCall>& calls) {
       if (src_.fanuc_cycles) cycle_on_ = false;
     }
     switch (f.fn) {
-      case Fn::UnitsMm: inch_ = false, unit_ = 1.0; break;
+      case Fn::UnitsMm:
+        rescale(inch_ == true ? 25.4 : inch_ ? 1.0 : 0.0);
+        inch_ = false, unit_ = 1.0;
+        break;
       case Fn::PolarOn: case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
       case Fn::HelixOn: case Fn::HelixOff: helix_mode_ = f.fn == Fn::HelixOn; break;
       case Fn::CycleReturnInitial: case Fn::CycleReturnLevel: return_initial_ = f.fn == Fn::CycleReturnInitial; break;
       case Fn::FeedPerMinute: case Fn::FeedPerRevolution: case Fn::FeedInverseTime:
         per_minute_ = f.fn == Fn::FeedPerMinute;
         break;
-      case Fn::UnitsInch: inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4; break;
+      case Fn::UnitsInch:
+        rescale(inch_ == false ? 1 / 25.4 : inch_ ? 1.0 : 0.0);
+        inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4;
+        break;
       case Fn::Cycle: cycle_on_ = true; break;
       case Fn::WorkOffset:
         offset_selected_ = true;

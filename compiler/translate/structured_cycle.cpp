@@ -45,8 +45,9 @@ void Structured::moves_cycle_code(const ir::Word& w, const CyclePattern& pattern
   level_cycle_->moves = true;
   level_cycles_ = true;
   cycle_on_ = true;
-  // ISO's registers and initial level hold from the cycle before, up to G80 or a motion code.
-  if (was && src_.fanuc_cycles && !block_has_motion())
+  // The one-level dialects' registers (and ISO's initial level) hold from the cycle
+  // before, up to G80 (ISO's: or a motion code).
+  if (was && !src_.cycle_two_levels && !(src_.fanuc_cycles && block_has_motion()))
     level_cycle_->now = was->now, level_cycle_->initial = was->initial;
   // ... which, where the target drills it with its own cycle, ends first.
   if (was && !was->moves)
@@ -85,8 +86,10 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   for (auto [now, was] : {std::pair{&c.now.depth, given.depth}, {&c.now.peck, given.peck}, {&c.now.dwell, given.dwell},
                           {&c.now.factor, given.factor}, {&c.now.minimum, given.minimum}})
     if (was) *now = was;
-  const std::optional<double> z = position_[2];
   const bool two_levels = src_.cycle_two_levels;
+  // The drilling axis: the plane's normal (NC-110's is Z here, its cycle block's axis).
+  const size_t d = plane_ && !two_levels ? static_cast<size_t>(normal_axis() - 'X') : 2;
+  const std::optional<double> z = position_[d];
   if (!two_levels && given.r1) c.now.r1 = given.r1;
   if (two_levels) {  // one R sets both levels, two each; none at the cycle's block: where the tool is
     if (given.r1) c.now.r2 = given.r2 ? given.r2 : given.r1, c.now.r1 = given.r1;
@@ -111,7 +114,7 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   // the hole begins), the depth from R; the lines then move by increments too.
   const bool relative = *incremental_;
   if (relative && two_levels) return refuse("under G91, where NC-110's levels are increments from the axis' position");
-  if (plane_ != 'K') return refuse("in another plane than XY, or where the plane is not known");
+  if (!plane_ || (two_levels && plane_ != 'K')) return refuse("where the plane is not known, or NC-110's in another plane than XY");
   if (lowers_frame_ || polar_ != false) return refuse("under a rotation, scale, mirror or polar coordinates the target has not");
   if (!unit_) return refuse(unit_unknown());
   if (!z) return refuse("the level the tool starts at is not known");
@@ -193,7 +196,9 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
   auto refuse = [&](const std::string& why) { return refuse_moves(at, why); };
   std::vector<std::string> lines;
   std::optional<Fn> written;  // the target's motion code of the line before
-  double shift_written = 0, level_written = *position_[2];  // where the lines before leave the tool
+  const size_t d = static_cast<size_t>(normal_axis() - 'X'), u = plane_u();  // the drilling axis, the shift's
+  const char depth = static_cast<char>('X' + d), across = static_cast<char>('X' + u);
+  double shift_written = 0, level_written = *position_[d];  // where the lines before leave the tool
   for (const cycle::Step& s : steps) {
     std::vector<std::string> line;
     switch (s.kind) {
@@ -201,17 +206,16 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
         // Over the hole already (X Y as they were): no move, as in the source.
         auto axis = [&](const std::string& word) { return dst_.axes.find(word[0]) != std::string::npos; };
         if (std::all_of(words.begin(), words.end(), [&](const std::string& word) {
-              const size_t i = word[0] == 'X' ? 0 : word[0] == 'Y' ? 1 : 3;
-              return !axis(word) || (i < 2 && start[i] && position_[i] && *start[i] == *position_[i]);
+              const size_t i = word[0] >= 'X' && word[0] <= 'Z' ? static_cast<size_t>(word[0] - 'X') : 3;
+              return !axis(word) || (i < 3 && i != d && start[i] && position_[i] && *start[i] == *position_[i]);
             }))
           std::erase_if(words, axis);
         const bool position = std::any_of(words.begin(), words.end(), axis);
         for (std::string& l : lines) before.push_back(std::move(l));
         lines.clear();
-        if (position) {
-          const auto rapid = target_code({{Fn::MotionRapid}}, Scope::Modal);
-          if (!rapid) return refuse("no rapid motion code");
-          words.insert(words.begin(), rapid->text());
+        if (position) {  // the block's own line with the target's rapid (translated_machine() adds it)
+          hole_rapid_ = target_code({{Fn::MotionRapid}}, Scope::Modal);
+          if (!hole_rapid_) return refuse("no rapid motion code");
           written = Fn::MotionRapid;
         }
         continue;
@@ -225,15 +229,15 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
           written = fn;
         }
         if (s.shift != shift_written) {
-          if (!position_[0] && !relative) return refuse("the hole's X is not known, which the shift off the wall moves from");
-          const auto x = length(block_->range, 'X', relative ? s.shift - shift_written : *position_[0] + s.shift);
+          if (!position_[u] && !relative) return refuse("the hole's position is not known, which the shift off the wall moves from");
+          const auto x = length(block_->range, across, relative ? s.shift - shift_written : *position_[u] + s.shift);
           if (!x) return level_cycle_.reset(), false;
-          line.push_back("X" + *x);
+          line.push_back(across + *x);
           shift_written = s.shift;
         }
-        const auto text = length(block_->range, 'Z', relative ? s.level - level_written : s.level);
+        const auto text = length(block_->range, depth, relative ? s.level - level_written : s.level);
         if (!text) return level_cycle_.reset(), false;
-        line.push_back("Z" + *text);
+        line.push_back(depth + *text);
         level_written = s.level;
         break;
       }
@@ -258,7 +262,7 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
     lines.push_back(text);
   }
   hole_lines_ = std::move(lines);
-  position_[2] = steps.back().level;
+  position_[d] = steps.back().level;
   return true;
 }
 
@@ -318,6 +322,9 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
   if (incremental_ != false && (defined_here || drills))
     return refuse("under G91, or where G90 is not known: the one-level dialects read its R and depth as increments then, "
                   "NC-110 as levels");
+  if (defined_here && plane_ && plane_ != 'K' && !src_.cycle_two_levels) return as_moves();  // NC-110's drills along Z here
+  // NC-110's cycle block goes before the block's own, in the unit before its G70 or G71.
+  if (defined_here && dst_.cycle_two_levels && (block_has(Fn::UnitsInch) || block_has(Fn::UnitsMm))) return as_moves();
   if (defined_here && plane_ != 'K') return refuse("in another plane than XY, or where the plane is not known");
   // The levels in force after this block's words.
   LevelCycle::Levels& now = c.now;

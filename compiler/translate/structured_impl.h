@@ -177,6 +177,7 @@ class Structured {
   };
   std::optional<Code> target_code(const std::vector<FnCall>& calls, Scope scope) const;
   bool idle(const FnCall& f) const;
+  void rescale(double factor);
   std::vector<std::vector<Code>> together(const std::vector<Code>& g) const;
   std::optional<Code> code_doing_more(const std::vector<FnCall>& calls, Scope scope) const;
   bool is_whole(ir::ExprId id) const;
@@ -212,6 +213,7 @@ class Structured {
   std::vector<std::string> extra_words_;  // the block's words the target adds (pp's G70 of a subprogram's end)
   std::vector<std::string> later_lines_;  // the block's lines after its own (a reference return in machine coordinates)
   std::vector<std::string> hole_lines_;   // the moves of a cycle's hole after the block's own line (hole_moves())
+  std::optional<Code> hole_rapid_;        // ... and the rapid code of that line
   std::optional<int> folded_corrector_;   // ISO's G43 H of the next block, into NC-110's M06 of this one
   bool folded_g43_ = false;               // ... and that G43 is written so
   bool skip_offset_word_ = false;         // ... and its H too
