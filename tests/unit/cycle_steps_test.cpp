@@ -55,12 +55,18 @@ CyclePattern pattern(CyclePattern::In in, CyclePattern::Out out = CyclePattern::
   return p;
 }
 
+// A hole from `start` (the initial level and where the tool is), R `level`, `bottom`.
+cycle::Hole from(double start, double level, double bottom) {
+  cycle::Hole h;
+  h.initial = h.current = start;
+  h.level = level;
+  h.bottom = bottom;
+  return h;
+}
+
 TEST(CycleSteps, IsoPecksComeBackAboveTheDepthReached) {
   // G98 G83 R2 Z-10 Q4 from Z20, the clearance 0.254 (decision 19).
-  cycle::Hole h;
-  h.initial = h.current = 20;
-  h.level = 2;
-  h.bottom = -10;
+  cycle::Hole h = from(20, 2, -10);
   h.peck = 4;
   Conventions conv;
   conv.peck_clearance = 0.254;
@@ -71,10 +77,7 @@ TEST(CycleSteps, IsoPecksComeBackAboveTheDepthReached) {
 TEST(CycleSteps, IsoStartBelowRGoesUpFirstAndMakesNoMoveOfNothing) {
   // G99 G81 R2 Z-5 from Z0: up to R where the tool stands, over the hole at R (no
   // move down to R, it is there), back to R (no move either).
-  cycle::Hole h;
-  h.initial = h.current = 0;
-  h.level = 2;
-  h.bottom = -5;
+  cycle::Hole h = from(0, 2, -5);
   h.return_level = true;
   EXPECT_EQ(text(cycle::iso_hole(pattern(CyclePattern::In::Feed), h, {})), "rapid 2, over, feed -5, rapid 2");
 }
@@ -82,10 +85,7 @@ TEST(CycleSteps, IsoStartBelowRGoesUpFirstAndMakesNoMoveOfNothing) {
 TEST(CycleSteps, IsoTappingTurnsTheSpindleTheTapsWay) {
   // G98 G84 R2 Z-10 from Z20, the spindle ccw before (decision 20): cw in, ccw out,
   // cw again, then up to the initial level.
-  cycle::Hole h;
-  h.initial = h.current = 20;
-  h.level = 2;
-  h.bottom = -10;
+  cycle::Hole h = from(20, 2, -10);
   h.direction = -1;
   EXPECT_EQ(text(cycle::iso_hole(pattern(CyclePattern::In::TapCw), h, {})),
             "over, rapid 2, M03, feed -10, M04, feed 2, M03, rapid 20");
@@ -94,10 +94,7 @@ TEST(CycleSteps, IsoTappingTurnsTheSpindleTheTapsWay) {
 TEST(CycleSteps, IsoBoringShiftsOffTheWall) {
   // G76 R2 Z-5 Q1 under G99: an oriented stop at the bottom, a shift at feed, out
   // shifted, back over the hole, the spindle restarted.
-  cycle::Hole h;
-  h.initial = h.current = 20;
-  h.level = 2;
-  h.bottom = -5;
+  cycle::Hole h = from(20, 2, -5);
   h.shift = 1;
   h.return_level = true;
   EXPECT_EQ(text(cycle::iso_hole(pattern(CyclePattern::In::Feed, CyclePattern::Out::Rapid, CyclePattern::Bottom::OrientShift),
@@ -108,10 +105,7 @@ TEST(CycleSteps, IsoBoringShiftsOffTheWall) {
 TEST(CycleSteps, GostMakesEveryMoveAndFeedsOutAllTheWay) {
   // GOST's G85 R1 Z-6 from Z10: every move made, out at feed to where it began; G86
   // stops the spindle at the bottom whatever it does, and restarts none.
-  cycle::Hole h;
-  h.initial = h.current = 10;
-  h.level = 1;
-  h.bottom = -6;
+  cycle::Hole h = from(10, 1, -6);
   EXPECT_EQ(text(cycle::hole(pattern(CyclePattern::In::Feed, CyclePattern::Out::Feed), h)),
             "over, rapid 1, feed -6, feed 10");
   EXPECT_EQ(text(cycle::hole(pattern(CyclePattern::In::SpindleFeed, CyclePattern::Out::Rapid, CyclePattern::Bottom::Stop), h)),
