@@ -72,7 +72,7 @@ std::optional<Flattener::Code> Flattener::code_for(FnCall call, const std::funct
 }
 
 void Flattener::refuse(uint32_t source, std::string what) { report_({source, std::move(what)}); }
-void Flattener::drop(uint32_t source, std::string what) { report_({source, std::move(what), true}); }
+void Flattener::drop(uint32_t source, std::string what) { report_({source, std::move(what), Finding::Dropped}); }
 
 bool Flattener::write_code(FnCall call, std::vector<OutWord>& words, uint32_t source, const char* what) {
   auto fits = [&](FnCall c) {
@@ -174,8 +174,10 @@ double Flattener::written_length(double v) const {
 void Flattener::emit_block(std::vector<OutWord> words, std::string_view comment) {
   if (words.empty() && comment.empty()) return;
   if (!started_) start();
-  for (const OutWord& w : words)
+  for (const OutWord& w : words) {
     if (auto why = w_.unwritable(w)) return refuse(source_, "a value beyond the target's range: " + *why);
+    if (w.kind != Value::Count && w_.rounded_rate(w)) report_({source_, std::string(1, w.letter), Finding::RoundedRate});
+  }
   w_.block(words, comment);
 }
 

@@ -21,11 +21,12 @@ namespace ncc::translate {
 
 // A construct the target cannot say, at the source block of the event that showed
 // it: refused, or dropped when it changes how the machine runs the path, not the
-// path (a path mode, the overrides).
+// path (a path mode, the overrides); or a feed, a speed or a dwell rounded (what:
+// its letter).
 struct Refusal {
   uint32_t source = 0;
   std::string what;
-  bool dropped = false;
+  Finding kind = Finding::Refused;
 };
 
 class Flattener final : public TraceSink {

@@ -935,7 +935,7 @@ void Structured::timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vecto
   if (!known) return fail(w.range, fmt::format("{} whose time is not known here (TMR set by a label's way, or computed)", desc.name));
   const OutWord time{dst_.dwell_word, seconds / dst_.dwell_seconds_per_unit, Value::Seconds};
   if (auto why = w_.unwritable(time)) return fail(w.range, *why);
-  out.push_back({*code, desc.timing, code->entry->desc.timing, {}, code->text() + " " + dst_.dwell_word + w_.number(time)});
+  out.push_back({*code, desc.timing, code->entry->desc.timing, {}, code->text() + " " + dst_.dwell_word + number(time, w.range)});
 }
 
 // NC-110's (UAO,n): origin n on every axis it declares. It is the target's work
@@ -1184,7 +1184,7 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
   for (int k = 0; k < 2; ++k) {
     const size_t axis = k == 0 ? u : v;
     const double exact = (*centre)[static_cast<size_t>(k)] * unit, at = on_step(exact);
-    if (off_step(exact)) problems.push_back({r.range, "rounded", Problem::Rounded});
+    if (off_step(exact)) problems.push_back({r.range, "rounded", Finding::Rounded});
     centre_[axis] = at / unit;  // arc_on_circle() checks the end against it
     const char to = centre_letter(dst_, k);
     const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
@@ -1377,9 +1377,10 @@ std::optional<double> Structured::constant_of(ir::ExprId id) const {
 
 // A constant as the target writes it. A length with more decimals than the target
 // writes is rounded to its step, with a warning (once): CAM output's fourth decimal
-// into GOST or pp.
+// into GOST or pp; so is a feed, a speed or a dwell (F369.752387 into NC-110).
 std::string Structured::number(const OutWord& w, SourceRange at) {
-  if ((w.kind == Value::Length || w.kind == Value::Angle) && off_step(w.value)) problems.push_back({at, "rounded", Problem::Rounded});
+  if ((w.kind == Value::Length || w.kind == Value::Angle) && off_step(w.value)) problems.push_back({at, "rounded", Finding::Rounded});
+  if (w.kind != Value::Count && w_.rounded_rate(w) && !w_.unwritable(w)) problems.push_back({at, std::string(1, w.letter), Finding::RoundedRate});
   return w_.number(w);
 }
 
@@ -2176,7 +2177,7 @@ void Structured::dwell(const ir::Word& w, std::vector<std::string>& words) {
   const ir::Expr& e = p_->exprs[w.value];
   if (e.op == ir::ExprOp::Number)
     if (auto why = w_.unwritable({dst_.dwell_word, e.number * factor, Value::Seconds})) return fail(w.range, *why);
-  words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? w_.number({dst_.dwell_word, e.number * factor, Value::Seconds})
+  words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? number({dst_.dwell_word, e.number * factor, Value::Seconds}, w.range)
                                      : factor == 1              ? value(w.value, dst_.dwell_word)
                                                                 : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
 }
@@ -2568,12 +2569,15 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   for (const std::string& what : order) {
     const auto& [p, more] = seen.at(what);
     const std::string text = what + (more ? fmt::format(" (and in {} more places)", more) : "");
-    if (p->kind == Problem::Rounded)
+    if (p->kind == Finding::Rounded)
       s.diags.report(DiagId::TranslateRounded, p->at, writer->dialect(), static_cast<int>(std::lround(-std::log10(writer->resolution()))),
                      more ? fmt::format("this length and {} more are", more) : std::string("this length is"));
+    else if (p->kind == Finding::RoundedRate)
+      s.diags.report(DiagId::TranslateRoundedRate, p->at, writer->dialect(), what, writer->rate_decimals(what[0]),
+                     more ? fmt::format("this value and {} more are", more) : std::string("this value is"));
     else
-      s.diags.report(p->kind == Problem::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
-    refused |= p->kind == Problem::Refused;
+      s.diags.report(p->kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
+    refused |= p->kind == Finding::Refused;
   }
   if (refused || streamer.spill.failed) return false;
   return translation->emit(streamed.get(), out) && s.diags.error_count() == errors;

@@ -62,7 +62,7 @@ bool Structured::dwell_lines(double seconds, std::vector<std::string>& lines) {
   if (const auto code = target_code({{Fn::Dwell}}, Scope::Block); code && dst_.dwell_word) {
     const OutWord time{dst_.dwell_word, seconds / dst_.dwell_seconds_per_unit, Value::Seconds};
     if (auto why = w_.unwritable(time)) return refuse(*why);
-    lines.push_back(code->text() + " " + dst_.dwell_word + w_.number(time));
+    lines.push_back(code->text() + " " + dst_.dwell_word + number(time, block_->range));
     return true;
   }
   const auto g04 = target_code({{Fn::PathDwellEnd}}, Scope::Block);
@@ -415,7 +415,7 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
         const OutWord time{dst_.dwell_word, *now.dwell / dst_.dwell_seconds_per_unit, Value::Seconds};
         if (!dst_.dwell_word) return refuse(fmt::format("a dwell: {} gives its cycles none", w_.dialect()));
         if (auto why = w_.unwritable(time)) return refuse(*why);
-        cycle.push_back(dst_.dwell_word + w_.number(time));
+        cycle.push_back(dst_.dwell_word + number(time, block_->range));
       }
     }
     words.insert(words.begin(), cycle.begin(), cycle.end());

@@ -255,7 +255,7 @@ void Structured::framed_move(const Position& start, bool arc, std::vector<std::s
     }
     on_circle({target(q0[u]), target(q0[v])}, {target(q1[u]), target(q1[v])}, {target(qc[u]), target(qc[v])});
   }
-  if (rounded) problems.push_back({at, "rounded", Problem::Rounded});
+  if (rounded) problems.push_back({at, "rounded", Finding::Rounded});
   if (arc) {
     const bool flip = frame_->mirror[u] != frame_->mirror[v];
     const Fn way = (motion_ == Fn::MotionArcCw) != flip ? Fn::MotionArcCw : Fn::MotionArcCcw;

@@ -34,10 +34,9 @@ namespace ncc::translate {
 // What the target cannot say (refused), says otherwise than the source without
 // changing the path (dropped: a warning), or writes to its step (rounded: a warning).
 struct Problem {
-  enum Kind : uint8_t { Refused, Dropped, Rounded };
   SourceRange at;
   std::string what;
-  Kind kind = Refused;
+  Finding kind = Finding::Refused;
 };
 
 class Structured {
@@ -167,7 +166,7 @@ class Structured {
   // names; sets first_store_.
   void note_access(const ir::Block& b, const ir::Stmt* s);
   void fail(SourceRange at, std::string what) { problems.push_back({at, std::move(what)}); }
-  void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), Problem::Dropped}); }
+  void drop(SourceRange at, std::string what) { problems.push_back({at, std::move(what), Finding::Dropped}); }
 
   struct Code {
     char letter;

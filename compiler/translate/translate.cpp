@@ -36,13 +36,13 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
   // Each construct once, at its first block, with the count of the others.
   struct Seen {
     uint32_t source;
-    bool dropped;
+    Finding kind;
     size_t more = 0;
   };
   std::map<std::string, Seen> seen;
   std::vector<std::string> order;
   Flattener flattener(*writer, module.semantics, target, [&](const Refusal& r) {
-    auto [it, fresh] = seen.try_emplace(r.what, Seen{r.source, r.dropped});
+    auto [it, fresh] = seen.try_emplace(r.what, Seen{r.source, r.kind});
     if (fresh) order.push_back(r.what);
     else if (it->second.source != r.source) ++it->second.more;
   });
@@ -56,10 +56,16 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
   bool refused = false;
   for (const std::string& what : order) {
     const Seen& r = seen.at(what);
+    if (r.kind == Finding::RoundedRate) {
+      const std::string these = r.more ? fmt::format("this value and {} more are", r.more) : std::string("this value is");
+      report_at_block(s, module, r.source, DiagId::TranslateRoundedRate,
+                      diag_message(DiagId::TranslateRoundedRate, writer->dialect(), what, writer->rate_decimals(what[0]), these));
+      continue;
+    }
     const std::string text = what + (r.more ? fmt::format(" (and in {} more blocks)", r.more) : "");
-    const DiagId id = r.dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused;
+    const DiagId id = r.kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused;
     report_at_block(s, module, r.source, id, diag_message(id, writer->dialect(), text));
-    refused |= !r.dropped;
+    refused |= r.kind == Finding::Refused;
   }
   return result.ok && !result.usage_error && !refused && !sink.spill.failed && s.diags.error_count() == errors;
 }

@@ -37,22 +37,39 @@ std::string exact(double v, bool point) {
   return trimmed(std::move(s), point);
 }
 
+int Writer::rate_decimals(char letter) const {
+  const auto it = tables().addresses.find(letter);
+  if (it == tables().addresses.end() || !it->second.ranged) return 6;
+  // The decimals the range writes, at either end (pp's F 0.001..24000 takes 3).
+  const stdlib::AddressEntry& a = it->second;
+  int decimals = a.decimals;
+  while (decimals < 6 && std::fabs(a.min * std::pow(10.0, decimals) - std::round(a.min * std::pow(10.0, decimals))) > 1e-9)
+    ++decimals;
+  return decimals;
+}
+
+std::optional<double> Writer::rounded_rate(const OutWord& w) const {
+  if (w.kind != Value::Feed && w.kind != Value::Speed && w.kind != Value::Seconds && w.kind != Value::Count) return std::nullopt;
+  const double scale = std::pow(10.0, rate_decimals(w.letter));
+  const double v = std::round(w.value * scale) / scale;
+  if (std::fabs(v - w.value) <= 1e-9 * std::max(1.0, std::fabs(w.value))) return std::nullopt;
+  return v;
+}
+
 std::optional<std::string> Writer::unwritable(const OutWord& w) const {
   if (w.kind == Value::Code) return std::nullopt;
   const auto it = tables().addresses.find(w.letter);
   if (it == tables().addresses.end() || !it->second.ranged) return std::nullopt;
   const stdlib::AddressEntry& a = it->second;
-  // A length is rounded to the step the target writes (resolution); any other value
-  // must be written as it is: a speed, a feed or a dwell rounded is another one.
-  // The decimals the range writes, at either end (pp's F 0.001..24000 takes 3).
-  int decimals = a.decimals;
-  while (decimals < 6 && std::fabs(a.min * std::pow(10.0, decimals) - std::round(a.min * std::pow(10.0, decimals))) > 1e-9)
-    ++decimals;
-  const double scale = std::pow(10.0, decimals);
-  const double v = std::round(w.value * scale) / scale;
-  if (w.kind != Value::Length && w.kind != Value::Angle && std::fabs(v - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
-    return fmt::format("{}{}: {} writes {} with {} decimals", w.letter, decimal(w.value, 6, false), dialect(), w.letter,
-                       decimals);
+  // A length is rounded to the step the target writes (resolution); a feed, a speed
+  // or a dwell by a hundredth of itself at most; a count not at all.
+  double v = w.value;
+  if (auto r = rounded_rate(w)) {
+    if (w.kind == Value::Count || std::fabs(*r - w.value) > kRateRounding * std::fabs(w.value))
+      return fmt::format("{}{}: {} writes {} with {} decimals", w.letter, decimal(w.value, 6, false), dialect(), w.letter,
+                         rate_decimals(w.letter));
+    v = *r;
+  }
   if (v >= a.min && v <= a.max) return std::nullopt;
   return fmt::format("{}{}: {} writes {} from {} to {}", w.letter, decimal(w.value, 4, false), dialect(), w.letter,
                      decimal(a.min, 4, false), decimal(a.max, 4, false));

@@ -28,6 +28,18 @@ enum class Value : uint8_t {
   Seconds,  // a dwell, in the target's dwell unit already
 };
 
+// What a translation says of a construct it cannot write as it is.
+enum class Finding : uint8_t {
+  Refused,      // the target cannot say it: nothing is written
+  Dropped,      // a path mode or the like: the path is the same, the way the machine runs it is not
+  Rounded,      // a length, to the target's step
+  RoundedRate,  // a feed, a speed or a dwell, to the target's decimals (kRateRounding)
+};
+
+// How far a feed, a speed or a dwell may move, of itself, rounded to the decimals the
+// target writes (a machine keeps its feed no closer): more is another feed, and refused.
+inline constexpr double kRateRounding = 1e-2;
+
 struct OutWord {
   char letter = 0;
   double value = 0;
@@ -102,6 +114,12 @@ class Writer {
   // Why `w` cannot be written in the target (a value beyond the range of its
   // address, docs/dialects: addresses.tsv), or nothing.
   virtual std::optional<std::string> unwritable(const OutWord& w) const;
+  // The decimals the target writes a feed, a speed, a dwell or a count of `letter` with.
+  virtual int rate_decimals(char letter) const;
+  // Such a value as the target writes it, where that is not its value: rounded to the
+  // target's decimals (a CAM program's F369.752387 into NC-110's F of 2). unwritable()
+  // takes a feed, a speed or a dwell that moves by at most kRateRounding of itself.
+  std::optional<double> rounded_rate(const OutWord& w) const;
   // The target's code tables and conventions, with its machine profile.
   const stdlib::DialectTables& tables() const { return own_tables_ ? *own_tables_ : *target_->rules().tables; }
   // A target ncc does not read yet (LinuxCNC) has code tables and conventions of its own.

@@ -165,11 +165,12 @@ class GostWriter final : public Writer {
     if (w.kind == Value::Code) return std::nullopt;
     const gost::WordFormat* f = s_.format.word(w.letter);
     if (!f) return fmt::format("{}{}: the format {} has no {}", w.letter, decimal(w.value, 4, false), s_.format.text, w.letter);
-    const int b = f->dimension ? f->frac_digits : 0;
+    const int b = rate_decimals(w.letter);
     const double scale = std::pow(10.0, b);
     const double r = std::round(w.value * scale) / scale;
-    // Lengths are the flattener's to round (to resolution()); a feed, a speed or a dwell is not.
-    if (w.kind != Value::Length && w.kind != Value::Angle && std::fabs(r - w.value) > 1e-9 * std::max(1.0, std::fabs(w.value)))
+    // A length is rounded to resolution(); a feed, a speed or a dwell by a hundredth
+    // of itself at most; a count not at all.
+    if (auto rate = rounded_rate(w); rate && (w.kind == Value::Count || std::fabs(*rate - w.value) > kRateRounding * std::fabs(w.value)))
       return fmt::format("{}{}: {} writes {} decimals", w.letter, decimal(w.value, 6, false), f->text, b);
     if (w.letter == 'T' && s_.tool_digits > 0) return std::nullopt;  // tool and offset digits: the reader's rule
     const int digits = static_cast<int>(fmt::format("{:.0f}", std::floor(std::fabs(r))).size());
@@ -177,6 +178,11 @@ class GostWriter final : public Writer {
       return fmt::format("{}{}: {} holds {} digits before the point", w.letter, decimal(w.value, 4, false), f->text, f->int_digits);
     if (r < 0 && !f->is_signed) return fmt::format("{}{}: {} has no sign", w.letter, decimal(w.value, 4, false), f->text);
     return std::nullopt;
+  }
+
+  int rate_decimals(char letter) const override {
+    const gost::WordFormat* f = s_.format.word(letter);
+    return !f ? 3 : f->dimension ? f->frac_digits : 0;
   }
 
   // §3.1, §9.2: each word as its format says (unwritable says what it cannot hold).

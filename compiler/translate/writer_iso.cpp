@@ -19,6 +19,8 @@ class IsoWriter final : public Writer {
   // CAM program's fifth decimal matters on a 0.3 mm arc.
   double resolution() const override { return linuxcnc_ ? 1e-6 : 1e-4; }
 
+  int rate_decimals(char letter) const override { return letter == 'F' ? 6 : letter == 'S' ? 4 : linuxcnc_ ? 6 : 4; }
+
   // Fanuc's and LinuxCNC's N holds 0 to 99999: a block number beyond is left out.
   std::optional<std::string> unwritable(const OutWord& w) const override {
     if (w.letter == 'N' && (w.value < 0 || w.value > iso::kMaxBlockNumber))
@@ -78,8 +80,8 @@ class IsoWriter final : public Writer {
       case Value::Code:  // G5.1: a code with a decimal
         return w.value == std::floor(w.value) ? fmt::format("{:02}", static_cast<int>(w.value)) : exact(w.value, false);
       case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
-      case Value::Speed: return decimal(w.value, 4, false);
-      case Value::Feed: return decimal(w.value, 6, true);  // a computed feed as it is (inverse time, G95)
+      case Value::Speed: return decimal(w.value, rate_decimals(w.letter), false);
+      case Value::Feed: return decimal(w.value, rate_decimals(w.letter), true);  // a computed feed as it is (inverse time, G95)
       default: return decimal(w.value, linuxcnc_ ? 6 : 4, true);
     }
   }

@@ -312,15 +312,15 @@ def close(a, b, tolerance):
     return abs(a - b) <= tolerance
 
 
-def relatively_close(a, b):
+def relatively_close(a, b, relative=RELATIVE):
     if a is None or b is None:
         return a is None and b is None
     if math.isnan(a) or math.isnan(b):
         return math.isnan(a) and math.isnan(b)
-    return abs(a - b) <= RELATIVE * max(abs(a), abs(b))
+    return abs(a - b) <= relative * max(abs(a), abs(b))
 
 
-def field_differences(x, y, tolerance):
+def field_differences(x, y, tolerance, relative=RELATIVE):
     """What differs between two items: ["X 60.8 / 60.81", ...]; [] when they agree."""
     if x.kind != y.kind:
         return [f"{x.kind} / {y.kind}"]
@@ -348,7 +348,7 @@ def field_differences(x, y, tolerance):
             if not close(a, b, 2 * tolerance if name == "radius" else tolerance):
                 out.append(f"{name} {number(a)} / {number(b)}{by(a, b)}")
         elif name in RELATIVE_FIELDS:
-            if not relatively_close(a, b):
+            if not relatively_close(a, b, relative):
                 out.append(f"{name} {number(a)} / {number(b)}")
         elif a != b:
             out.append(f"{name} {shown(name, a)} / {shown(name, b)}")
@@ -378,10 +378,10 @@ def where(item, main):
 SHORT = 1 + 1e-9
 
 
-def compare_items(xs, ys, tolerance, label="", mains=("", ""), limit=10):
+def compare_items(xs, ys, tolerance, label="", mains=("", ""), limit=10, relative=RELATIVE):
     """Differences between two item sequences of one process."""
     out = []
-    same = lambda i, j: not field_differences(xs[i], ys[j], tolerance)
+    same = lambda i, j: not field_differences(xs[i], ys[j], tolerance, relative)
 
     def aligned(i, j):  # the next items (up to 3) agree from here on, short moves of either aside
         n = 0
@@ -407,7 +407,7 @@ def compare_items(xs, ys, tolerance, label="", mains=("", ""), limit=10):
 
     i = j = 0
     while i < len(xs) and j < len(ys) and len(out) < limit:
-        diffs = field_differences(xs[i], ys[j], tolerance)
+        diffs = field_differences(xs[i], ys[j], tolerance, relative)
         if not diffs:
             i, j = i + 1, j + 1
             continue
@@ -439,13 +439,14 @@ def compare_items(xs, ys, tolerance, label="", mains=("", ""), limit=10):
 
 
 def compare(events_a, events_b, tolerance=1e-6, *, start=None, initial=(None, None),
-            angular=ANGULAR, limit=10):
+            angular=ANGULAR, limit=10, relative=RELATIVE):
     """The differences between the motion of two traces (lists of event dicts or JSON
-    Lines strings): [] when they make the same motion. At most `limit` of them."""
+    Lines strings): [] when they make the same motion. At most `limit` of them. Feeds,
+    speeds and dwells agree to `relative` of themselves."""
     events_a, events_b = parse(events_a), parse(events_b)
     a = reduce(events_a, tolerance, start, initial[0], angular)
     b = reduce(events_b, tolerance, start, initial[1], angular)
-    return compare_reduced(a, b, tolerance, (main_file(events_a), main_file(events_b)), limit)
+    return compare_reduced(a, b, tolerance, (main_file(events_a), main_file(events_b)), limit, relative)
 
 
 def main_file(events):
@@ -454,12 +455,12 @@ def main_file(events):
     return files.pop() if len(files) == 1 else None if files else ""
 
 
-def compare_reduced(a, b, tolerance=1e-6, mains=("", ""), limit=10):
+def compare_reduced(a, b, tolerance=1e-6, mains=("", ""), limit=10, relative=RELATIVE):
     """compare() on the items of reduce()."""
     out = []
     for p in list(a) + [p for p in b if p not in a]:
         label = f"process {p}, " if p else ""
-        out += compare_items(a.get(p, []), b.get(p, []), tolerance, label, mains, limit - len(out))
+        out += compare_items(a.get(p, []), b.get(p, []), tolerance, label, mains, limit - len(out), relative)
         if len(out) >= limit:
             break
     return out

@@ -72,6 +72,15 @@ class Equal(unittest.TestCase):
                     linear(10, 0, -1), ev("feed_rate", value=500), linear(20, 0, -1))
         self.assertEqual(compare(a, b), [])
 
+    def test_rates_to_a_relative_tolerance(self):
+        # A feed rounded to the target's decimals (NC4099): within 1 % where the caller says so.
+        a = program(rapid(0, 0, 5), ev("feed_rate", value=369.752387), linear(10, 0, -1))
+        b = program(rapid(0, 0, 5), ev("feed_rate", value=369.75), linear(10, 0, -1))
+        self.assertEqual(compare(a, b, relative=1e-2), [])
+        self.assertEqual(len(compare(a, b)), 1)
+        c = program(rapid(0, 0, 5), ev("feed_rate", value=380.0), linear(10, 0, -1))
+        self.assertEqual(len(compare(a, c, relative=1e-2)), 1)
+
     def test_jsonl_strings(self):
         a = [json.dumps(e) for e in program(*BASE)] + [""]
         self.assertEqual(compare(a, program(*BASE)), [])
