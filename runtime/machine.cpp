@@ -364,8 +364,9 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       }
       if (emit_events && transform_locked(block_.code_name)) break;
       if (emit_events && scope == Scope::Modal && comp_locked(call.arg != modal_.work_offset)) break;
-      // ISO §8.14 (E-20): machine coordinates are absolute.
-      if (emit_events && conv_.fanuc_rules && scope == Scope::Block && call.arg == 0 && !modal_.absolute) {
+      // ISO §8.14 (E-20): machine coordinates are absolute (a G90 of the block counts).
+      if (emit_events && conv_.fanuc_rules && scope == Scope::Block && call.arg == 0 && !modal_.absolute &&
+          !block_has(Fn::DistanceAbsolute)) {
         report_code(DiagId::PlaneState, block_.code_name, "incremental positioning (G91)");
         break;
       }

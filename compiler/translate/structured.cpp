@@ -218,6 +218,7 @@ void Structured::begin_main() {
   in_main_ = true;
   moved_ = false;  // the tool is where the machine starts
   spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
+  length_entry_ = 0;
   spindle_turns_ = spindle_direction_ = 0;
   rpm_ = true;  // a cutting speed needs its code (G96)
   tool_selected_ = tool_loaded_ = 0;  // no tool in the spindle
@@ -485,6 +486,7 @@ void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
   moved_ = true;
   spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
+  length_entry_.reset();
   spindle_turns_.reset();
   spindle_direction_.reset();
   tool_selected_.reset();
@@ -695,6 +697,7 @@ void Structured::translated_machine() {
     std::erase_if(params, [](const std::string& p) { return p[0] == 'T'; });
     params.push_back(fmt::format("T{}.{}", *tool_selected_, *h));
     folded_g43_ = true;
+    length_entry_ = *h;
   }
   skip_offset_word_ = false;
   bool hole = false;  // the block's own line goes over a hole written as moves (hole_moves())
@@ -901,7 +904,7 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
         add(o.address[0]);
     std::vector<std::string> lines;
     if (named.empty()) return void(operand_words_ = true);
-    if (std::string why = machine_reference(named, incremental, lines); !why.empty())
+    if (std::string why = machine_reference(named, incremental, lines, true); !why.empty())
       return fail(w.range, fmt::format("{} (reference.return): {} has no code for it, and a rapid in its machine coordinates "
                                        "cannot say it here: {}", desc.name, w_.dialect(), why));
     operand_words_ = true;  // the axes named are the move's, not a point to go through
@@ -1473,7 +1476,7 @@ std::string Structured::iso_tool_change() {
   const char axis = plane_ ? normal_axis() : 'Z';
   std::vector<std::string> retract;  // where the target has no reference-point code
   if (!reference)
-    if (std::string why = machine_reference(std::string(1, axis), incremental_, retract); !why.empty()) return why;
+    if (std::string why = machine_reference(std::string(1, axis), incremental_, retract, false); !why.empty()) return why;
   // A block of M06 alone (and T): another code would act before or after the change
   // as the target orders them, not as ISO does.
   const bool moves = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
@@ -1525,7 +1528,8 @@ std::string Structured::iso_tool_change() {
 // The move at rapid to the target machine's reference point along `axes`, in machine
 // coordinates, where the target has no reference-point code (NC-110's G79, GOST's
 // G53), and the codes in force again after it: its lines, or why it cannot be written.
-std::string Structured::machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines) {
+std::string Structured::machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines,
+                                          bool keep_length) {
   auto machine_zero = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block);
   const bool absolute = machine_zero.has_value();  // NC-110's G79 is absolute in its block
   if (!machine_zero) machine_zero = target_code({{Fn::WorkOffset, 0}}, Scope::Block);
@@ -1535,10 +1539,13 @@ std::string Structured::machine_reference(std::string_view axes, std::optional<b
   if (motion_ && *motion_ != Fn::MotionRapid) restore = target_code({{*motion_}}, Scope::Modal);
   if (!machine_zero || !rapid) return "it has no code for the reference point nor for machine coordinates";
   if (!motion_ || (*motion_ != Fn::MotionRapid && !restore)) return "the motion code in force is not known here";
-  if (length_on_ != false || comp_on_ != false)
-    return "a length offset or cutter compensation is (perhaps) on, which its machine coordinates do not take";
+  if (comp_on_ != false) return "cutter compensation is (perhaps) on, which its machine coordinates do not take";
+  std::vector<std::string> off, on;
+  if (length_on_ != false)
+    if (std::string why = length_around(off, on, keep_length); !why.empty()) return why;
   if (!inch_) return "the unit is not known here";
   if (!absolute && (!incremental || (*incremental && (!g90 || !g91)))) return "G90 or G91 is not known here";
+  lines.insert(lines.end(), off.begin(), off.end());
   std::string line = machine_zero->text() + (!absolute && *incremental ? " " + g90->text() : "") + " " + rapid->text();
   for (char axis : axes) {
     const double at = target_.reference_position[static_cast<size_t>(axis - 'X')] / (*inch_ ? 25.4 : 1.0);
@@ -1548,6 +1555,33 @@ std::string Structured::machine_reference(std::string_view axes, std::optional<b
   std::string again = (!absolute && *incremental ? g91->text() : "") + (restore ? " " + restore->text() : "");
   if (again.starts_with(' ')) again.erase(0, 1);
   if (!again.empty()) lines.push_back(again);
+  lines.insert(lines.end(), on.begin(), on.end());
+  return {};
+}
+
+// The length offset in force ended before a move in machine coordinates, which take
+// none, and applied again after it where `keep` (ISO's G28 keeps it, its M06 does
+// not): NC-110's M06 of the tool in the spindle with corrector 0, then with the
+// source's entry; elsewhere the target's codes, with the entry as the target's H or D.
+// Nothing when written, else why not.
+std::string Structured::length_around(std::vector<std::string>& off, std::vector<std::string>& on, bool keep) {
+  const std::string why = "a length offset is (perhaps) on, which its machine coordinates do not take, and ";
+  if (length_on_ != true || !length_entry_) return why + "which entry is not known here";
+  if (dst_.corrector_in_tool_word) {
+    const auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal);
+    if (!m06 || !tool_loaded_ || *tool_loaded_ < 1 || !tool_selected_) return why + "no tool is known to be in the spindle";
+    off.push_back(fmt::format("T{} {}", *tool_loaded_, m06->text()));
+    if (keep) on.push_back(fmt::format("T{}.{} {}", *tool_loaded_, *length_entry_, m06->text()));
+    // The next tool selected since (ISO's T2 after T1 M06), selected again for its M06.
+    if (*tool_selected_ != *tool_loaded_) (keep ? on : off).push_back(fmt::format("T{}", *tool_selected_));
+    return {};
+  }
+  auto end = target_code({{Fn::LengthOff}}, Scope::Modal), plus = target_code({{Fn::LengthPlus}}, Scope::Modal);
+  if (!end) end = code_doing_more({{Fn::LengthOff}}, Scope::Modal);  // GOST's G40 also ends G41: none is on
+  if (!plus) plus = code_doing_more({{Fn::LengthPlus}}, Scope::Modal);
+  if (!end || !plus) return why + "it has no codes for a length offset";
+  off.push_back(end->text());
+  if (keep) on.push_back(fmt::format("{} D{}", plus->text(), *length_entry_));  // ISO's H is the target's D, as a word
   return {};
 }
 
@@ -1608,8 +1642,16 @@ void Structured::state(const std::vector<FnCall>& calls) {
         break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
-      case Fn::LengthPlus: case Fn::LengthMinus: length_on_ = !iso_change; break;
-      case Fn::LengthOff: length_on_ = false; break;
+      case Fn::LengthPlus: case Fn::LengthMinus: {
+        length_on_ = !iso_change;
+        std::optional<double> h;  // ISO's H, GOST's D: the entry in force (G44's is another direction)
+        for (const ir::Word& o : block_->words)
+          if (o.kind == ir::WordKind::Parameter && (o.address == "H" || o.address == "D")) h = constant_of(o.value);
+        length_entry_.reset();
+        if (f.fn == Fn::LengthPlus && h && *h >= 1 && *h == std::floor(*h)) length_entry_ = static_cast<int>(*h);
+        break;
+      }
+      case Fn::LengthOff: length_on_ = false; length_entry_ = 0; break;
       case Fn::CompLeft: case Fn::CompRight: comp_on_ = true; break;
       case Fn::SpindleRpm: rpm_ = true; break;
       case Fn::SpindleConstantSurface: rpm_ = false; break;
@@ -1929,6 +1971,7 @@ bool Structured::corrector_change(bool on) {
   if (*tool_selected_ != *tool_loaded_) lines_before_.push_back(fmt::format("T{}", *tool_selected_));
   corrector_ = corrector;
   length_on_ = on;
+  length_entry_ = corrector;
   return true;
 }
 

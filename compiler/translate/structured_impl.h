@@ -184,7 +184,9 @@ class Structured {
   ir::ExprId bare(ir::ExprId id) const;
   std::string number(const OutWord& w, SourceRange at);
   std::string iso_tool_change();
-  std::string machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines);
+  std::string machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines,
+                                bool keep_length);
+  std::string length_around(std::vector<std::string>& off, std::vector<std::string>& on, bool keep);
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
   // A block's number, where the target writes it (NC-110's N has four digits; GOST's
@@ -390,6 +392,7 @@ class Structured {
   std::optional<int> spindle_direction_ = 0;  // the last direction set (0: none yet)
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
+  std::optional<int> length_entry_ = 0;  // the source's length offset entry in force (G43's H); 0: none
   std::map<int, OffsetEntry> source_offsets_;
   Position position_;                  // X Y Z where the text leaves them
   std::optional<bool> incremental_;    // G91
