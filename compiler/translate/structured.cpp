@@ -330,8 +330,9 @@ bool Structured::block_has(Fn fn) const {
   return block_has_call([&](const FnCall& c) { return c.fn == fn; });
 }
 
-bool Structured::block_has_call(const std::function<bool(const FnCall&)>& is) const {
-  return std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+bool Structured::block_has_call(const std::function<bool(const FnCall&)>& is, const ir::Block* b) const {
+  if (!b) b = block_;
+  return std::any_of(b->words.begin(), b->words.end(), [&](const ir::Word& w) {
     if (w.kind != ir::WordKind::Code || w.code < 0) return false;
     const auto& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
     return std::any_of(calls.begin(), calls.end(), is);
@@ -1824,9 +1825,12 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     return;
   std::vector<Code> each;
   std::string later;
+  // Where it all changes nothing (GOST's G40 of a safety block: no compensation nor
+  // length offset on), its first function is written still, as the source says it.
+  const bool all_idle = std::all_of(desc.calls.begin(), desc.calls.end(), [&](const FnCall& c) { return idle(c); });
   for (const FnCall& c : desc.calls) {
     // What a code does more changes nothing here (GOST's M05 ends a coolant that is off).
-    if (desc.calls.size() > 1 && idle(c) && std::none_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& o) {
+    if (desc.calls.size() > 1 && idle(c) && !(all_idle && &c == &desc.calls.front()) && std::none_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& o) {
           if (&o == &w || o.kind != ir::WordKind::Code || o.code < 0) return false;
           const auto& calls = p_->semantics.codes[static_cast<size_t>(o.code)].calls;
           return std::any_of(calls.begin(), calls.end(), [&](const FnCall& f) { return fn_group(f.fn) == fn_group(c.fn); });
@@ -1861,7 +1865,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
              each.back().entry->desc.calls == std::vector<FnCall>{{Fn::ToolChange}})
       later = length_offset(w.range);
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
-    else return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(c.fn), w_.dialect()));
+    else return fail(w.range, fmt::format("{} ({}): {} has no code for it{}", desc.name, fn_name(c.fn), w_.dialect(), doing_more(c, desc.scope)));
   }
   for (const Code& c : each) add(c);
   if (!later.empty()) {  // a block of its own after the M06's
@@ -1881,6 +1885,39 @@ bool Structured::idle(const FnCall& f) const {
   }
 }
 
+// Whether the next block ends the coolant, or the program, before anything moves or
+// dwells (no axis word, no motion, no '/'), this block going on to it (no jump, no call): a
+// CAM program's M05 before its M09 or M30, which may stop the coolant too.
+bool Structured::coolant_ends_next() const {
+  if (!next_ || next_->skippable || std::any_of(block_->stmts.begin(), block_->stmts.end(), [](const ir::Stmt& s) {
+        return s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Comment;
+      }))
+    return false;
+  for (const ir::Word& w : next_->words)
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos) return false;
+  if (block_has_call([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion || c.fn == Fn::Dwell || c.fn == Fn::DwellSeconds; }, next_))
+    return false;
+  return block_has_call([](const FnCall& c) {
+    return c.fn == Fn::CoolantOff || c.fn == Fn::ProgramEnd || c.fn == Fn::ProgramEndInformation;
+  }, next_);
+}
+
+// Where the target has `f` in a code that does more, which changes something here:
+// ", only with coolant.off, which would change the state in force here".
+std::string Structured::doing_more(const FnCall& f, Scope scope) const {
+  for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})
+    for (const auto& [number, entry] : *table) {
+      const std::vector<FnCall>& has = entry.desc.calls;
+      if (entry.desc.scope != scope || has.size() < 2 || std::find(has.begin(), has.end(), f) == has.end()) continue;
+      std::string more;
+      for (const FnCall& c : has)
+        if (c != f) more += (more.empty() ? "" : "+") + std::string(fn_name(c.fn));
+      return fmt::format(" alone: its {}{} also does {}, which would change the state in force here", entry.letter,
+                         fmt::format("{:02}", number), more);
+    }
+  return {};
+}
+
 std::optional<Structured::Code> Structured::code_doing_more(const std::vector<FnCall>& calls, Scope scope) const {
   std::optional<Code> best;
   size_t fewest = SIZE_MAX;
@@ -1890,7 +1927,8 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
       if (entry.desc.scope != scope || has.size() <= calls.size() || has.size() - calls.size() >= fewest) continue;
       const bool all = std::all_of(calls.begin(), calls.end(), [&](const FnCall& c) { return std::find(has.begin(), has.end(), c) != has.end(); });
       const bool rest_idle = std::all_of(has.begin(), has.end(), [&](const FnCall& c) {
-        return std::find(calls.begin(), calls.end(), c) != calls.end() || idle(c);
+        // ... or ends the coolant just before the next block does (coolant_ends_next())
+        return std::find(calls.begin(), calls.end(), c) != calls.end() || idle(c) || (c.fn == Fn::CoolantOff && coolant_ends_next());
       });
       if (all && rest_idle) {
         best = Code{entry.letter, number, &entry};

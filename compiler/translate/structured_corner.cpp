@@ -41,14 +41,18 @@ bool Structured::lowers_corner(const ir::Word& w) const {
 
 bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) {
   if (frame_codes(program, b)) return true;  // a frame: every frame is lowered, or none (attach())
+  auto has = [&](Fn fn) {
+    return std::any_of(b.words.begin(), b.words.end(), [&](const ir::Word& w) {
+      return w.kind == ir::WordKind::Code && w.code >= 0 &&
+             program.semantics.codes[static_cast<size_t>(w.code)].calls == std::vector<FnCall>{{fn}};
+    });
+  };
   // ISO's M06 into NC-110: a G43 H in the block after it goes into its T word.
   const Conventions& src = program.semantics.conventions;
-  if (src.tool_change_iso && dst_.corrector_in_tool_word &&
-      std::any_of(b.words.begin(), b.words.end(), [&](const ir::Word& w) {
-        return w.kind == ir::WordKind::Code && w.code >= 0 &&
-               program.semantics.codes[static_cast<size_t>(w.code)].calls == std::vector<FnCall>{{Fn::ToolChange}};
-      }))
-    return true;
+  if (src.tool_change_iso && dst_.corrector_in_tool_word && has(Fn::ToolChange)) return true;
+  // A spindle stop the target says with the coolant's only (NC-110's and GOST's M05),
+  // where the next block ends the coolant (coolant_ends_next()).
+  if (has(Fn::SpindleStop) && !target_code({{Fn::SpindleStop}}, Scope::Modal)) return true;
   return program.semantics.conventions.corners && !dst_.corners && std::any_of(b.words.begin(), b.words.end(), is_corner_word);
 }
 

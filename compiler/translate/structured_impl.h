@@ -160,7 +160,9 @@ class Structured {
   bool dwell_lines(double seconds, std::vector<std::string>& lines);
   // Whether the block being written has a code word with function `fn`.
   bool block_has(Fn fn) const;
-  bool block_has_call(const std::function<bool(const FnCall&)>& is) const;
+  bool block_has_call(const std::function<bool(const FnCall&)>& is, const ir::Block* b = nullptr) const;  // b: this block
+  bool coolant_ends_next() const;
+  std::string doing_more(const FnCall& f, Scope scope) const;
   bool block_has_motion() const { return block_has_call([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion; }); }
   // Notes the variables block `b`'s words name (`s` none), or its statement `s`
   // names; sets first_store_.
