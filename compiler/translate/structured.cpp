@@ -885,11 +885,12 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
     }
   }
   // Without words every axis goes there directly (docs/dialects/iso.md, decision 17):
-  // a rapid in machine coordinates says it for a machine of X Y Z.
-  const bool every = !axes && !to && src_.axes == "XYZ";
+  // a rapid in machine coordinates, or pp's G30 naming X Y Z, says it for a machine of
+  // X Y Z.
+  const bool every = !axes && src_.axes == "XYZ";
   if (!every && (!axes || incremental != true || !zero))
-    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words{}, as {} goes "
-                                     "there directly)", desc.name, to ? "" : ", or none on a machine of X Y Z",
+    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, or none on a "
+                                     "machine of X Y Z, as {} goes there directly)", desc.name,
                                      to ? fmt::format("{}'s {}", w_.dialect(), to->text())
                                         : fmt::format("a rapid in {}'s machine coordinates", w_.dialect())));
   if (!to) {  // NC-110 and GOST: a rapid in machine coordinates (iso_tool_change())
@@ -913,9 +914,17 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
     for (const char axis : named) position_[static_cast<size_t>(axis - 'X')].reset();
     return;
   }
+  // With a length offset on, ISO's goes there without it and the target's not: the
+  // offset ends before and is applied again after (pp's link).
+  std::vector<std::string> off, on;
   if (length_on_ != false)
-    return fail(w.range, fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} not", desc.name,
-                                     p_->dialect, w_.dialect(), to->text()));
+    if (std::string why = length_around(off, on, true); !why.empty())
+      return fail(w.range, fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} with it; {}",
+                                       desc.name, p_->dialect, w_.dialect(), to->text(), why));
+  lines_before_.insert(lines_before_.end(), off.begin(), off.end());
+  later_lines_.insert(later_lines_.end(), on.begin(), on.end());
+  if (every)
+    for (char axis : std::string_view("XYZ")) extra_words_.push_back(std::string(1, axis) + number({axis, 0, Value::Length}, w.range));
   out.push_back({*to, desc.timing, to->entry->desc.timing, {}, {}});
 }
 
@@ -1475,15 +1484,19 @@ char Structured::corrector_axis(const std::map<int, OffsetEntry>& offsets, int n
 std::string Structured::iso_tool_change() {
   const auto reference = target_code({{Fn::MotionReference}}, Scope::Block);
   const char axis = plane_ ? normal_axis() : 'Z';
+
   std::vector<std::string> retract;  // where the target has no reference-point code
   if (!reference)
     if (std::string why = machine_reference(std::string(1, axis), incremental_, retract, false); !why.empty()) return why;
-  // A block of M06 alone (and T): another code would act before or after the change
-  // as the target orders them, not as ISO does.
+  // A block of M06 alone (and T, and an end of the program, which comes last): another
+  // code would act before or after the change as the target orders them, not as ISO does.
   const bool moves = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
-    return (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos) ||
-           (w.kind == ir::WordKind::Code && (w.code < 0 || p_->semantics.codes[static_cast<size_t>(w.code)].calls !=
-                                                                std::vector<FnCall>{{Fn::ToolChange}}));
+    if (w.kind == ir::WordKind::Parameter) return w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
+    if (w.kind != ir::WordKind::Code) return false;
+    if (w.code < 0) return true;
+    const std::vector<FnCall>& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
+    return calls != std::vector<FnCall>{{Fn::ToolChange}} && calls != std::vector<FnCall>{{Fn::ProgramEnd}} &&
+           calls != std::vector<FnCall>{{Fn::ProgramEndInformation}};
   });
   if (moves) return "its block has other codes or moves";
   if (!plane_ || !spindle_on_ || !coolant_on_) return "the plane, the spindle or the coolant is not known here";
@@ -1560,6 +1573,19 @@ std::string Structured::machine_reference(std::string_view axes, std::optional<b
   return {};
 }
 
+// A length offset code of the source's block: on or off, and the entry in force where
+// the block says it (ISO's H, GOST's D; G44's is another direction).
+void Structured::length(Fn fn) {
+  length_on_ = fn != Fn::LengthOff;
+  std::optional<double> h;
+  if (block_)  // not at power-on
+    for (const ir::Word& o : block_->words)
+      if (o.kind == ir::WordKind::Parameter && (o.address == "H" || o.address == "D")) h = constant_of(o.value);
+  length_entry_.reset();
+  if (fn == Fn::LengthOff) length_entry_ = 0;
+  else if (fn == Fn::LengthPlus && h && *h >= 1 && *h == std::floor(*h)) length_entry_ = static_cast<int>(*h);
+}
+
 // The length offset in force ended before a move in machine coordinates, which take
 // none, and applied again after it where `keep` (ISO's G28 keeps it, its M06 does
 // not): NC-110's M06 of the tool in the spindle with corrector 0, then with the
@@ -1568,6 +1594,13 @@ std::string Structured::machine_reference(std::string_view axes, std::optional<b
 std::string Structured::length_around(std::vector<std::string>& off, std::vector<std::string>& on, bool keep) {
   const std::string why = "a length offset is (perhaps) on, which its machine coordinates do not take, and ";
   if (length_on_ != true || !length_entry_) return why + "which entry is not known here";
+  if (!dst_.link_axes.empty()) {  // pp: its length link, with the entry as D
+    const std::string end = link_word(Fn::LengthOff), plus = link_word(Fn::LengthPlus);
+    if (end.empty() || plus.empty()) return why + "its length link does not name the source's offset axes";
+    off.push_back(end);
+    if (keep) on.push_back(fmt::format("D{} {}", *length_entry_, plus));
+    return {};
+  }
   if (dst_.corrector_in_tool_word) {
     const auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal);
     if (!m06 || !tool_loaded_ || *tool_loaded_ < 1 || !tool_selected_) return why + "no tool is known to be in the spindle";
@@ -1643,16 +1676,9 @@ void Structured::state(const std::vector<FnCall>& calls) {
         break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
-      case Fn::LengthPlus: case Fn::LengthMinus: {
-        length_on_ = !iso_change;
-        std::optional<double> h;  // ISO's H, GOST's D: the entry in force (G44's is another direction)
-        for (const ir::Word& o : block_->words)
-          if (o.kind == ir::WordKind::Parameter && (o.address == "H" || o.address == "D")) h = constant_of(o.value);
-        length_entry_.reset();
-        if (f.fn == Fn::LengthPlus && h && *h >= 1 && *h == std::floor(*h)) length_entry_ = static_cast<int>(*h);
+      case Fn::LengthPlus: case Fn::LengthMinus: case Fn::LengthOff:
+        length(iso_change ? Fn::LengthOff : f.fn);
         break;
-      }
-      case Fn::LengthOff: length_on_ = false; length_entry_ = 0; break;
       case Fn::CompLeft: case Fn::CompRight: comp_on_ = true; break;
       case Fn::SpindleRpm: rpm_ = true; break;
       case Fn::SpindleConstantSurface: rpm_ = false; break;
@@ -1856,7 +1882,7 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
     // pp has no G43: its length link adds the offset's length on the axes it names.
     else if (const std::string link = link_word(c.fn); !link.empty()) {
       extra_words_.push_back(link);
-      length_on_ = c.fn != Fn::LengthOff;
+      length(c.fn);
     }
     // NC-110's M06 applies the T word's corrector: corrector 0 is no length offset.
     else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false) continue;

@@ -188,6 +188,7 @@ class Structured {
   std::string iso_tool_change();
   std::string machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines,
                                 bool keep_length);
+  void length(Fn fn);
   std::string length_around(std::vector<std::string>& off, std::vector<std::string>& on, bool keep);
   bool uses_locals(const std::string& unit) const;
   std::map<std::string, int> unit_numbers(std::set<int> taken, std::vector<const ir::Unit*>* unnamed = nullptr) const;
