@@ -10,6 +10,12 @@
 
 namespace ncc::cycle {
 
+// What a spindle code leaves the spindle doing, as the machine keeps it (its modal
+// spindle): 1 clockwise, -1 counter-clockwise, 0 stopped, 2 oriented.
+constexpr int spindle_turns(Fn spindle) {
+  return spindle == Fn::SpindleCw ? 1 : spindle == Fn::SpindleCcw ? -1 : spindle == Fn::SpindleStop ? 0 : 2;
+}
+
 struct Step {
   // Over: at rapid over the hole, at the level the tool is at, unless it is there
   // already; the moves before it (up to R first) are where the tool stands. Manual:

@@ -127,8 +127,7 @@ void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues
         break;
       case Kind::Dwell: dwell_seconds(s.seconds); break;
       case Kind::Spindle: {
-        const int runs = s.spindle == Fn::SpindleCw ? 1 : s.spindle == Fn::SpindleCcw ? -1 : s.spindle == Fn::SpindleStop ? 0 : 2;
-        if (s.always || modal_.spindle != runs) apply({s.spindle}, Scope::Modal, true);
+        if (s.always || modal_.spindle != cycle::spindle_turns(s.spindle)) apply({s.spindle}, Scope::Modal, true);
         break;
       }
       case Kind::Manual: {

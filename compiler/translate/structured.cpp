@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "runtime/cycle_steps.h"
 #include "stdlib/profile.h"
 #include "structured_impl.h"
 #include "support/numbers.h"
@@ -217,7 +218,7 @@ void Structured::begin_main() {
   forget();
   in_main_ = true;
   moved_ = false;  // the tool is where the machine starts
-  spindle_on_ = coolant_on_ = length_on_ = comp_on_ = false;
+  coolant_on_ = length_on_ = comp_on_ = false;
   length_entry_ = 0;
   spindle_turns_ = spindle_direction_ = 0;
   rpm_ = true;  // a cutting speed needs its code (G96)
@@ -486,7 +487,7 @@ void Structured::line(std::string text) {
 void Structured::forget() {
   if (in_main_ && !offset_selected_) moved_before_offset_ = true;  // a jump may go round the selection
   moved_ = true;
-  spindle_on_ = coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
+  coolant_on_ = cycle_on_ = length_on_ = comp_on_ = std::nullopt;
   length_entry_.reset();
   spindle_turns_.reset();
   spindle_direction_.reset();
@@ -1499,7 +1500,8 @@ std::string Structured::iso_tool_change() {
            calls != std::vector<FnCall>{{Fn::ProgramEndInformation}};
   });
   if (moves) return "its block has other codes or moves";
-  if (!plane_ || !spindle_on_ || !coolant_on_) return "the plane, the spindle or the coolant is not known here";
+  const std::optional<bool> spindle_on = this->spindle_on();
+  if (!plane_ || !spindle_on || !coolant_on_) return "the plane, the spindle or the coolant is not known here";
   if (!tool_selected_ || !tool_loaded_ || *tool_selected_ == *tool_loaded_)
     return "the tool selected and the one in the spindle are not known to differ";
   std::vector<std::string> before;
@@ -1509,9 +1511,9 @@ std::string Structured::iso_tool_change() {
     if (off.empty()) return "a length offset is (perhaps) on, which its M06 keeps";
     before.push_back(off);
   }
-  const auto both = *spindle_on_ && *coolant_on_ ? target_code({{Fn::SpindleStop}, {Fn::CoolantOff}}, Scope::Modal) : std::nullopt;
+  const auto both = *spindle_on && *coolant_on_ ? target_code({{Fn::SpindleStop}, {Fn::CoolantOff}}, Scope::Modal) : std::nullopt;
   if (both) before.push_back(both->text());  // one code for both (GOST's M05)
-  if (*spindle_on_ && !both) {
+  if (*spindle_on && !both) {
     auto stop = target_code({{Fn::SpindleStop}}, Scope::Modal);
     if (!stop) stop = code_doing_more({{Fn::SpindleStop}}, Scope::Modal);
     if (!stop) return "it has no code that stops the spindle alone";
@@ -1532,7 +1534,7 @@ std::string Structured::iso_tool_change() {
   } else {
     for (const std::string& line : retract) write_words({line});
   }
-  spindle_on_ = coolant_on_ = false;
+  coolant_on_ = false;
   spindle_turns_ = 0;
   if (!before.empty() && before.front()[0] == '&') length_on_ = false;
   position_[i].reset();
@@ -1666,14 +1668,8 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::PlaneXY: plane_ = 'K'; break;  // the plane by its normal's centre word
       case Fn::PlaneZX: plane_ = 'J'; break;
       case Fn::PlaneYZ: plane_ = 'I'; break;
-      case Fn::SpindleCw: case Fn::SpindleCcw:
-        spindle_on_ = true;
-        spindle_turns_ = spindle_direction_ = f.fn == Fn::SpindleCw ? 1 : -1;
-        break;
-      case Fn::SpindleStop: case Fn::SpindleOrient:
-        spindle_on_ = false;
-        spindle_turns_ = f.fn == Fn::SpindleStop ? 0 : 2;
-        break;
+      case Fn::SpindleCw: case Fn::SpindleCcw: spindle_turns_ = spindle_direction_ = cycle::spindle_turns(f.fn); break;
+      case Fn::SpindleStop: case Fn::SpindleOrient: spindle_turns_ = cycle::spindle_turns(f.fn); break;
       case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
       case Fn::LengthPlus: case Fn::LengthMinus: case Fn::LengthOff:
@@ -1684,16 +1680,16 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::SpindleConstantSurface: rpm_ = false; break;
       case Fn::CompOff: comp_on_ = false; break;
       case Fn::ProgramEnd: case Fn::ProgramEndInformation:
-        spindle_on_ = coolant_on_ = cycle_on_ = false;
+        coolant_on_ = cycle_on_ = false;
         spindle_turns_ = 0;
         program_ended_ |= in_main_ && !skip_;  // after a '/' it ends the program only with block skip off
         break;
       case Fn::ToolChange:
         // ... and first takes the tool axis to the reference point: a move the
         // target's M06 does not make.
-        if (src_.m06_stops_spindle && !dst_.m06_stops_spindle && !dst_.tool_change_iso && (spindle_on_ != false || coolant_on_ != false))
+        if (src_.m06_stops_spindle && !dst_.m06_stops_spindle && !dst_.tool_change_iso && (spindle_on() != false || coolant_on_ != false))
           fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s does not",
-                                          spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect, w_.dialect()));
+                                          spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect, w_.dialect()));
         if (src_.tool_change_iso && !dst_.tool_change_iso) {
           if (src_.tool_change_retract) {
             if (const std::string why = iso_tool_change(); !why.empty())
@@ -1701,9 +1697,9 @@ void Structured::state(const std::vector<FnCall>& calls) {
                                               "{}'s does not, and it cannot be written before it here: {} (a machine "
                                               "that changes tools in place says iso.tool_change_retract = false)",
                                               p_->dialect, w_.dialect(), why));
-          } else if (spindle_on_ != false || coolant_on_ != false) {
+          } else if (spindle_on() != false || coolant_on_ != false) {
             fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s "
-                                            "does not", spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on",
+                                            "does not", spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on",
                                             p_->dialect, w_.dialect()));
           }
         }
@@ -1718,12 +1714,14 @@ void Structured::state(const std::vector<FnCall>& calls) {
                                             "iso.tool_change_retract = false)", w_.dialect(), p_->dialect));
         }
         tool_loaded_ = tool_selected_;
-        if (src_.m06_stops_spindle || src_.tool_change_iso) spindle_turns_.reset();
+        // ... which stops the spindle (a translation where the target's does not, with
+        // the spindle perhaps on, is refused).
+        if (src_.m06_stops_spindle || src_.tool_change_iso) spindle_turns_ = 0;
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
-        if (dst_.tool_change_iso && !src_.tool_change_iso && (spindle_on_ != false || coolant_on_ != false))
+        if (dst_.tool_change_iso && !src_.tool_change_iso && (spindle_on() != false || coolant_on_ != false))
           fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them",
-                                          spindle_on_ == true || coolant_on_ == true ? "on" : "perhaps on", w_.dialect()));
+                                          spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", w_.dialect()));
         break;
       default: break;
     }

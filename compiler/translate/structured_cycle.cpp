@@ -245,9 +245,8 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
         if (!dwell_lines(s.seconds, lines)) return level_cycle_.reset(), false;
         continue;
       case cycle::Step::Kind::Spindle: {
-        const int turns = s.spindle == Fn::SpindleCw ? 1 : s.spindle == Fn::SpindleCcw ? -1 : s.spindle == Fn::SpindleStop ? 0 : 2;
         if (!spindle_turns_) return refuse("whether the spindle turns is not known");
-        if (!s.always && *spindle_turns_ == turns) continue;
+        if (!s.always && *spindle_turns_ == cycle::spindle_turns(s.spindle)) continue;
         auto code = target_code({{s.spindle}}, Scope::Modal);
         if (!code) code = code_doing_more({{s.spindle}}, Scope::Modal);  // NC-110's M05 ends a coolant that is off
         if (!code) return refuse(fmt::format("no code for {} alone", fn_name(s.spindle)));

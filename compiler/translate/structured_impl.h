@@ -388,11 +388,14 @@ class Structured {
   bool first_store_ = false;                          // the statement being written is such a store
   std::set<std::string> starts_stored_;               // the target's names of those variables
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
-  std::optional<bool> spindle_on_ = false, coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
+  std::optional<bool> coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
   std::optional<bool> rpm_;           // the spindle speed is in rpm (not a cutting speed)
   std::optional<int> tool_selected_, tool_loaded_;  // by T, and in the spindle
   std::optional<int> spindle_turns_ = 0;      // 1 cw, -1 ccw, 0 stopped, 2 oriented
   std::optional<int> spindle_direction_ = 0;  // the last direction set (0: none yet)
+  std::optional<bool> spindle_on() const {
+    return spindle_turns_ ? std::optional(*spindle_turns_ == 1 || *spindle_turns_ == -1) : std::nullopt;
+  }
   std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
   std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
   std::optional<int> length_entry_ = 0;  // the source's length offset entry in force (G43's H); 0: none
