@@ -277,7 +277,10 @@ void Machine::reference_return() {
 
 void Machine::length_zeroed(bool zero) {
   Event e{EventKind::ToolLengthOffset};
-  if (!zero) e.pos = in_program_units(compensation().length);
+  if (!zero) {
+    e.n = offset_number_;  // the entry it comes from again (translation writes it)
+    e.pos = in_program_units(compensation().length);
+  }
   emit(e);
 }
 
