@@ -338,24 +338,35 @@ class Stream final : public BlockSink {
   void take(ir::Program& program, ir::Unit& unit) override {
     if (stopped_ || !program.units.empty()) return;
     size_t n = 0;
+    bool held = false;  // the last block waits for the one after it (looks_ahead)
     for (; n < unit.blocks.size(); ++n) {
       ir::Block& b = unit.blocks[n];
       if (s_.diags.error_count() || checks.found_errors() || !settled(b) || (observer_ && !observer_->streams(program, b))) {
         stopped_ = true;
         break;
       }
+      const bool ahead = observer_ && observer_->looks_ahead(program, b);
+      if (ahead && n + 1 == unit.blocks.size()) {
+        held = true;
+        break;
+      }
       checks.block(program, b);
       lowering.block(program, unit, b);
-      if (observer_) observer_->streamed(program, b);
+      if (observer_) observer_->streamed(program, b, ahead ? &unit.blocks[n + 1] : nullptr);
       if (!b.label.empty()) unit.streamed_labels.push_back({*b.number, b.range});
     }
     unit.blocks.erase(unit.blocks.begin(), unit.blocks.begin() + static_cast<std::ptrdiff_t>(n));
     unit.streamed += static_cast<uint32_t>(n);
     // The expressions made since the last time belong to the blocks just dropped
-    // (the reader holds none of them when it calls): they go too.
-    if (stopped_) return;
-    if (expressions_ != SIZE_MAX) program.exprs.resize(expressions_);
-    expressions_ = program.exprs.size();
+    // (the reader holds none of them when it calls): they go too, but a held block's,
+    // the last made, which move down to take their place.
+    if (stopped_ || expressions_ == SIZE_MAX) {
+      if (!stopped_ && !held) expressions_ = program.exprs.size();
+      return;
+    }
+    if (held) move_expressions(program, unit.blocks.front(), expressions_);
+    else program.exprs.resize(expressions_);
+    if (!held) expressions_ = program.exprs.size();
   }
 
   StreamChecks checks;
@@ -376,6 +387,50 @@ class Stream final : public BlockSink {
           s.kind != ir::StmtKind::Display && s.kind != ir::StmtKind::Asset)
         return false;
     return true;
+  }
+
+  // The expressions of `b`, the last the reader made (from the first it reaches at
+  // or past `mark`, operands included), moved down to `mark`, and the pool cut after
+  // them.
+  static void move_expressions(ir::Program& program, ir::Block& b, size_t mark) {
+    size_t first = program.exprs.size();
+    std::vector<ir::ExprId> todo;
+    std::set<ir::ExprId> seen;
+    for_each_expr(b, [&](ir::ExprId id) { todo.push_back(id); });
+    while (!todo.empty()) {
+      const ir::ExprId id = todo.back();
+      todo.pop_back();
+      if (id == ir::kNoExpr || id < mark || !seen.insert(id).second) continue;
+      first = std::min<size_t>(first, id);
+      todo.push_back(program.exprs[id].a);
+      todo.push_back(program.exprs[id].b);
+    }
+    const auto shift = static_cast<ir::ExprId>(first - mark);
+    if (shift == 0) return;
+    auto moved = [&](ir::ExprId& id) {
+      if (id != ir::kNoExpr && id >= first) id -= shift;
+    };
+    for_each_expr(b, moved);
+    for (size_t i = first; i < program.exprs.size(); ++i) {
+      ir::Expr e = program.exprs[i];
+      moved(e.a);
+      moved(e.b);
+      program.exprs[i - shift] = e;
+    }
+    program.exprs.resize(program.exprs.size() - shift);
+  }
+
+  // Every expression a settled block refers to (its words and its statements').
+  template <typename F>
+  static void for_each_expr(ir::Block& b, F&& f) {
+    for (ir::Word& w : b.words) f(w.value);
+    for (ir::Stmt& s : b.stmts) {
+      f(s.target);
+      f(s.value);
+      f(s.cond);
+      for (auto& item : s.items) f(item.value);
+      for (auto& arg : s.args) f(arg.value);
+    }
   }
 
   Session& s_;

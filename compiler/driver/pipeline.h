@@ -56,14 +56,18 @@ vm::Module lower_program(Session& s, const ir::Program& program);
 // module is the one analyse + lower_program make. Blocks with errors are lowered as
 // lower_program does; nothing if the program cannot be read at all.
 std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect);
-// Sees each block compile_source streams, after its checks and before it is dropped.
+// Sees each block compile_source streams, after its checks and before it is dropped;
+// `next` is the block after it where the observer looks ahead from this one.
 class StreamObserver {
  public:
   virtual ~StreamObserver() = default;
-  virtual void streamed(const ir::Program& program, const ir::Block& block) = 0;
-  // False for a block the observer must see with the blocks after it: streaming
+  virtual void streamed(const ir::Program& program, const ir::Block& block, const ir::Block* next) = 0;
+  // False for a block the observer must see with every block after it: streaming
   // stops there, and the rest is held whole.
   virtual bool streams(const ir::Program&, const ir::Block&) const { return true; }
+  // True for a block the observer must see with the one after it: it is held (with
+  // its expressions) until that one is read.
+  virtual bool looks_ahead(const ir::Program&, const ir::Block&) const { return false; }
 };
 // compile_source, showing `observer` each block it streams, and leaving in `rest` the
 // program's IR without them (the units and blocks it holds at the end).

@@ -60,6 +60,7 @@ Structured::Structured(std::string dialect, Writer& writer, const MachineConfig&
 void Structured::attach(const ir::Program& program) {
   p_ = &program;
   src_ = program.semantics.conventions;
+  const std::array<bool, 3> was{lowers_inch_, lowers_polar_, lowers_frame_};
   // A program that changes to inches or to polar coordinates, into a target without
   // them: its lengths are written in mm, its points in X Y Z, and after a label or a
   // call the mode is not known.
@@ -77,6 +78,9 @@ void Structured::attach(const ir::Program& program) {
   // every frame written into the points (a block with a frame code is not streamed).
   for (const ir::Unit& u : program.units)
     for (const ir::Block& b : u.blocks) lowers_frame_ |= frame_codes(program, b) == 2;
+  // The blocks streamed before were written not knowing it: the program is read and
+  // translated again whole.
+  if (streamed_ && was != std::array<bool, 3>{lowers_inch_, lowers_polar_, lowers_frame_}) needs_whole_ = true;
 }
 
 // 0: the block has no frame code; 1: only codes the target has as the source's;
@@ -127,14 +131,17 @@ std::optional<int> Structured::number_of(const ir::Block& b) {
   return static_cast<int>(*b.number);
 }
 
-void Structured::stream(const ir::Program& program, const ir::Block& b) {
+void Structured::stream(const ir::Program& program, const ir::Block& b, const ir::Block* next) {
   attach(program);
   if (!streamed_) {
     streamed_ = true;
     begin_main();
   }
+  block_begun();
   pending_number_ = number_of(b);
+  next_ = next;
   block(b);
+  next_ = nullptr;
 }
 
 // The functions of the main program's leading blocks, up to the first that moves,
@@ -217,6 +224,7 @@ void Structured::begin_main() {
   in_main_ = false;  // nothing is forgotten before the program starts
   forget();
   in_main_ = true;
+  frame_ = Frame{};  // no rotation, scale or mirror at power-on
   moved_ = false;  // the tool is where the machine starts
   coolant_on_ = length_on_ = comp_on_ = false;
   length_entry_ = 0;
@@ -299,6 +307,7 @@ void Structured::unit(const ir::Unit& u, bool main) {
   open_unit(u, main);
   bool returned = false;
   for (size_t i = 0; i < u.blocks.size(); ++i) {
+    block_begun();
     before_block(i);
     next_ = i + 1 < u.blocks.size() ? &u.blocks[i + 1] : nullptr;
     returned = block(u.blocks[i]);
@@ -2598,11 +2607,12 @@ namespace {
 class Streamer final : public StreamObserver {
  public:
   Streamer(Structured& t, Writer& w, std::FILE* file) : spill(w, file), t_(t) {}
-  void streamed(const ir::Program& program, const ir::Block& block) override {
-    t_.stream(program, block);
+  void streamed(const ir::Program& program, const ir::Block& block, const ir::Block* next) override {
+    t_.stream(program, block, next);
     spill.grown();
   }
-  bool streams(const ir::Program& program, const ir::Block& block) const override { return !t_.looks_ahead(program, block); }
+  bool streams(const ir::Program& program, const ir::Block& block) const override { return !t_.frame_codes(program, block); }
+  bool looks_ahead(const ir::Program& program, const ir::Block& block) const override { return t_.looks_ahead(program, block); }
 
   Spill spill;
 
@@ -2628,10 +2638,14 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
     if (request.to == "pp") return make_pp_structured(dialect, *writer, target);
     return make_iso_structured(dialect, *writer, target);
   };
-  auto translation = make();
-  translation->set_power_on(power_on_functions(s, dialect));
-  if (request.to != "linuxcnc") translation->set_target_power_on(power_on_functions(s, request.to, *request.target_profile));
-  if (s.profile) translation->set_source_offsets(stdlib::load_machine_config(*s.profile, s.diags).offsets);
+  auto configured = [&] {
+    auto t = make();
+    t->set_power_on(power_on_functions(s, dialect));
+    if (request.to != "linuxcnc") t->set_target_power_on(power_on_functions(s, request.to, *request.target_profile));
+    if (s.profile) t->set_source_offsets(stdlib::load_machine_config(*s.profile, s.diags).offsets);
+    return t;
+  };
+  auto translation = configured();
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> streamed(std::tmpfile(), &std::fclose);
   if (!streamed) {
     s.diags.report(DiagId::FileUnwritable, {}, std::string("a temporary file"), std::strerror(errno));
@@ -2654,11 +2668,13 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
       header.number = name.substr(1);
   }
   translation->translate(rest, header);
-  if (translation->needs_whole()) {  // LinuxCNC: a loop back into the streamed blocks
+  // LinuxCNC: a loop back into the streamed blocks; a frame lowered after them.
+  if (translation->needs_whole()) {
     auto whole = read_whole(s, file, dialect);
     if (!whole) return false;
-    writer->take();
-    translation = make();
+    writer = make_writer(request.to, *request.target_profile, s.diags);  // afresh: it numbers blocks
+    if (!writer) return false;
+    translation = configured();
     translation->translate(*whole, header);
     streamed.reset();
   }

@@ -39,8 +39,7 @@ bool Structured::lowers_corner(const ir::Word& w) const {
   return src_.corners && !dst_.corners && is_corner_word(w);
 }
 
-bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) {
-  if (frame_codes(program, b)) return true;  // a frame: every frame is lowered, or none (attach())
+bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) const {
   auto has = [&](Fn fn) {
     return std::any_of(b.words.begin(), b.words.end(), [&](const ir::Word& w) {
       return w.kind == ir::WordKind::Code && w.code >= 0 &&

@@ -29,7 +29,15 @@ class GostStructured final : public Structured {
   void body() override {
     ir::Unit main = p_->units.front();
     main.blocks.clear();
-    if (unroll(p_->units.front().blocks, 0, p_->units.front().blocks.size(), main.blocks, 0)) unit(main, true);
+    const size_t before = problems.size();
+    if (unroll(p_->units.front().blocks, 0, p_->units.front().blocks.size(), main.blocks, 0)) {
+      unit(main, true);
+    } else {  // the blocks before what cannot be written out, for their own problems, in the text's order
+      std::vector<Problem> unrolling(problems.begin() + static_cast<std::ptrdiff_t>(before), problems.end());
+      problems.resize(before);
+      unit(main, true);
+      problems.insert(problems.end(), unrolling.begin(), unrolling.end());
+    }
     for (size_t u = 1; u < p_->units.size(); ++u)
       if (p_->units[u].kind == ir::UnitKind::Program) unit(p_->units[u], false);
   }

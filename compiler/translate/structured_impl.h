@@ -53,8 +53,9 @@ class Structured {
   // The source machine's offsets (NC-110's correctors name the axis of their length).
   void set_source_offsets(std::map<int, OffsetEntry> offsets) { source_offsets_ = std::move(offsets); }
   // One of the main program's leading blocks, as the compiler streams it: written
-  // to the text taken from the writer (`take`) before it is dropped.
-  void stream(const ir::Program& program, const ir::Block& b);
+  // to the text taken from the writer (`take`) before it is dropped; `next`, the
+  // block after it, where it looks ahead.
+  void stream(const ir::Program& program, const ir::Block& b, const ir::Block* next);
   // The rest of the program (what was not streamed), and the start, made last
   // because it sets what the program uses; kept as text.
   void translate(const ir::Program& program, const Header& header);
@@ -66,8 +67,12 @@ class Structured {
   // program is to be read whole and translated again.
   bool needs_whole() const { return needs_whole_; }
   // A block the translation writes with the next one in view (ISO's corners into a
-  // target without them): it is not to be streamed.
-  bool looks_ahead(const ir::Program& program, const ir::Block& b);
+  // target without them, ISO's M06 into NC-110, an M05 that ends the coolant too):
+  // streamed with it.
+  bool looks_ahead(const ir::Program& program, const ir::Block& b) const;
+  // A block with a frame code: every frame is lowered, or none (attach()), so the
+  // stream stops there.
+  int frame_codes(const ir::Program& program, const ir::Block& b) const;
 
   std::vector<Problem> problems;
 
@@ -79,6 +84,7 @@ class Structured {
   virtual void body() = 0;  // every unit, in the target's order (unit())
   virtual void open_unit(const ir::Unit& u, bool main) = 0;
   virtual void close_unit(const ir::Unit& u, bool main, bool returned) = 0;
+  virtual void block_begun() {}  // a block's own state afresh (its scratch values), streamed or not
   virtual void before_block(size_t) {}
   virtual void after_block(size_t) {}
   virtual void jump(const ir::Stmt& s) = 0;
@@ -332,7 +338,6 @@ class Structured {
     std::array<double, 3> invert(std::array<double, 3> q, size_t u, size_t v) const;
   };
   bool lowers_frame(const CodeDesc& desc) const;
-  int frame_codes(const ir::Program& program, const ir::Block& b) const;
   void frame_code(const ir::Word& w, const CodeDesc& desc);
   bool framed(bool moves) const;
   bool framed_axis(size_t axis, bool arc) const;

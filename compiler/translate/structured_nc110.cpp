@@ -145,9 +145,12 @@ class Nc110Structured final : public Structured {
     if (!same_ && p_->units.size() > 1 && !ends_program(u)) line("M30");
   }
 
-  void before_block(size_t i) override {
+  void block_begun() override {
     scratch_used_ = 0;
     for (int c = BY; c <= RE; ++c) class_used_[c] = 0;
+  }
+
+  void before_block(size_t i) override {
     const ir::Block& b = unit_->blocks[i];
     if (label_at_.count(i)) {
       label_ = quoted(label_at_.at(i));

@@ -65,9 +65,12 @@ class PpStructured final : public Structured {
     if (!extra_words_.empty()) write_words(std::exchange(extra_words_, {}));
   }
 
-  void before_block(size_t i) override {
+  void block_begun() override {
     scratch_used_ = 0;
     r_words_ = 0;
+  }
+
+  void before_block(size_t i) override {
     const ir::Block& b = unit_->blocks[i];
     if (same_ && b.number) pending_number_ = static_cast<int>(*b.number);  // a jump's target
     else if (head_) pending_number_ = static_cast<int>(*std::exchange(head_, std::nullopt));

@@ -172,6 +172,13 @@ def one(ncc, name, cwd, program, options, targets, scratch, structured=False):
         mode = [] if structured else ["--flatten"]
         rc, _, err = run(ncc, ["translate"] + options + ["--to", target] + mode + [program, "-o", out], cwd)
         text = err.decode("utf-8", "replace")
+        if structured:  # the blocks the compiler streams are translated as the whole program's
+            whole = out + ".whole"
+            rc2, _, err2 = run(ncc, ["translate", "--no-stream"] + options + ["--to", target, program, "-o", whole], cwd)
+            written = [Path(f).read_bytes() if os.path.exists(f) else None for f in (out, whole)]
+            if rc2 != rc or err2 != err or written[0] != written[1]:
+                results.append((target, "differing", "streamed, the translation is not the whole program's (--no-stream)"))
+                continue
         if rc == 1 and "[NC4096]" in text:
             if os.path.exists(out):
                 results.append((target, "differing", "refused, but wrote " + out))
