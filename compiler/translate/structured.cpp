@@ -1600,7 +1600,7 @@ void Structured::length(Fn fn) {
 // The length offset in force ended before a move in machine coordinates, which take
 // none, and applied again after it where `keep` (ISO's G28 keeps it, its M06 does
 // not): NC-110's M06 of the tool in the spindle with corrector 0, then with the
-// source's entry; elsewhere the target's codes, with the entry as the target's H or D.
+// source's entry; pp's length link; elsewhere the target's codes, the entry as D.
 // Nothing when written, else why not.
 std::string Structured::length_around(std::vector<std::string>& off, std::vector<std::string>& on, bool keep) {
   const std::string why = "a length offset is (perhaps) on, which its machine coordinates do not take, and ";
