@@ -338,9 +338,11 @@ def field_differences(x, y, tolerance, relative=RELATIVE):
                     label = axis if name == "end" else f"{name} {axis}"
                     out.append(f"{label} {number(u)} / {number(v)}{by(u, v)}")
         elif name == "sweep" and a is not None and b is not None:
-            # Within the tolerance in degrees, or along the arc in mm.
+            # Within the tolerance in degrees, or along the arc in mm: as the radius, by
+            # twice as much (its ends and its centre each within the tolerance; a 0.3 mm
+            # arc of a CAM program rounded to 0.0001 mm).
             r = max(x.fields.get("radius", 0.0), y.fields.get("radius", 0.0))
-            if not (close(a, b, tolerance) or abs(a - b) * math.pi / 180 * r <= tolerance):
+            if not (close(a, b, tolerance) or abs(a - b) * math.pi / 180 * r <= 2 * tolerance):
                 out.append(f"sweep {number(a)} / {number(b)}{by(a, b)}")
         elif name in TOLERANCE_FIELDS and a is not None and b is not None:
             # An arc's radius comes from two points each within the tolerance: it may

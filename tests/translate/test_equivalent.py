@@ -301,6 +301,15 @@ class Arcs(unittest.TestCase):
         b[3] = arc(0, 10, -1, 0, 0, 10, 90 + 5e-7)
         self.assertEqual(compare(program(*BASE), program(*b)), [])
 
+    def test_sweep_along_a_small_arc(self):
+        # A 0.3 mm arc rounded to 0.0001 mm: its ends and centre each move by half a step,
+        # its sweep by up to twice the tolerance along it, as its radius.
+        a = program(rapid(0, 0, 5), ev("feed_rate", value=500), arc(0, 0.3, 0, 0, 0, 0.3, 154.0))
+        near = program(rapid(0, 0, 5), ev("feed_rate", value=500), arc(0, 0.3, 0, 0, 0, 0.3, 153.9766))  # 0.000123 mm
+        far = program(rapid(0, 0, 5), ev("feed_rate", value=500), arc(0, 0.3, 0, 0, 0, 0.3, 153.95))  # 0.00026 mm
+        self.assertEqual(compare(a, near, 1e-4), [])
+        self.assertIn("sweep 154 / 153.95", compare(a, far, 1e-4)[0])
+
     def test_plane(self):
         b = [*BASE]
         b[3] = dict(BASE[3], plane="ZX", centre={"Z": 0, "X": 0})
