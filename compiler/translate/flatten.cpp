@@ -84,7 +84,7 @@ bool Flattener::write_code(FnCall call, std::vector<OutWord>& words, uint32_t so
       case Fn::FeedInverseTime: return want_.feed_mode == 0;
       case Fn::CoolantOff: case Fn::CoolantFlood: case Fn::CoolantMist: return true;  // synced after
       case Fn::LengthOff: return want_.length_entry == 0;
-      case Fn::LengthPlus: return conv_.corrector_in_tool_word && want_.length_entry == 0;  // NC-110 M06 of T n.0
+      case Fn::LengthPlus: return conv_.corrector_in_tool_word;  // NC-110 M06 of T n.0: the corrector is synced after
       case Fn::ClampOff: case Fn::ClampRotaryOff: return true;  // NC-110 M11 unclamps every axis
       case Fn::DynamicsSmooth: return true;  // pp G09/G98: how blocks join, not where they go
       case Fn::HelixOn: case Fn::HelixOff: return true;  // pp G24: the helix mode follows (told_.helix)
@@ -269,20 +269,64 @@ void Flattener::sync_state(uint32_t source) {
   sync_spindle(source);
   if (!told_.length_entry || *told_.length_entry != want_.length_entry) {
     std::vector<OutWord> b;
-    if (want_.length_entry == 0) {
+    const bool on_or_was = want_.length_entry != 0 || (told_.length_entry && *told_.length_entry != 0);
+    if (conv_.corrector_in_tool_word && on_or_was) {
+      corrector(source);
+    } else if (!conv_.link_axes.empty() && on_or_was) {
+      link(source);
+    } else if (want_.length_entry == 0) {
       if (code_for({Fn::LengthOff})) write_code({Fn::LengthOff}, b, source, "tool length offset off");
       else told_.length_entry = 0;  // the target has none: never on
-    } else if (conv_.corrector_in_tool_word || conv_.aux_words.find('H') != std::string::npos) {
-      refuse(source, fmt::format("a tool length offset (entry {}): {} applies one through {}, which flattening does not write yet",
-                                 want_.length_entry, w_.dialect(),
-                                 conv_.corrector_in_tool_word ? "the corrector of the T word" : "the length link &"));
-      told_.length_entry = want_.length_entry;
     } else if (write_code({want_.length_minus ? Fn::LengthMinus : Fn::LengthPlus}, b, source, "tool length offset")) {
       b.push_back({'H', static_cast<double>(want_.length_entry), Value::Count});
       told_.length_entry = want_.length_entry;
     }
     emit_block(std::move(b));
   }
+}
+
+// NC-110 applies a corrector at its M06 only (§2.7.7): the M06 of the tool in the
+// spindle with the entry as its corrector (`T2.3 M06`; `T2 M06` ends it), which
+// changes no tool.
+void Flattener::corrector(uint32_t source) {
+  const auto m06 = code_for({Fn::ToolChange}, [](FnCall c) { return c.fn == Fn::LengthPlus; });
+  if (!m06 || loaded_ < 1) {
+    refuse(source, fmt::format("a tool length offset (entry {}): {} applies one at its M06 with the corrector in the T word, "
+                               "and no tool is in the spindle", want_.length_entry, w_.dialect()));
+    told_.length_entry = want_.length_entry;
+    return;
+  }
+  OutWord t{'T', static_cast<double>(loaded_), Value::Count};
+  if (want_.length_entry) t.offset = want_.length_entry;  // T2 M06: corrector 0
+  emit_block({t, {m06->letter, static_cast<double>(m06->number), Value::Code}});
+  told_.length_entry = want_.length_entry;
+  told_.tool = loaded_;
+  // The tool selected since, for the next change, selected again.
+  if (want_.tool >= 0 && want_.tool != loaded_) emit_block({{'T', static_cast<double>(want_.tool), Value::Count}});
+}
+
+// pp has no G43: its length link '&' adds (1) or takes away (2) entry D's length on
+// each of its axes, as the source's offset moves them (P-9.6): `D1 &10`, `&0` for none.
+void Flattener::link(uint32_t source) {
+  std::string digits;
+  for (char axis : conv_.link_axes) {
+    const int i = axis_index(axis);
+    const double v = i >= 0 ? want_.length_axes[static_cast<size_t>(i)] : 0;
+    const auto entry = target_.offsets.find(want_.length_entry);
+    const double length = entry != target_.offsets.end() ? entry->second.length : 0;
+    if (v != 0 && (i < 0 || length == 0 || std::fabs(std::fabs(mm(v, i)) - std::fabs(length)) > kSame)) {
+      refuse(source, fmt::format("a tool length offset (entry {}) of another length than the target machine's entry {}",
+                                 want_.length_entry, want_.length_entry));
+      told_.length_entry = want_.length_entry;
+      return;
+    }
+    digits += v == 0 ? '0' : (v > 0) == (length > 0) ? '1' : '2';
+  }
+  const size_t first = digits.find_first_not_of('0');
+  const OutWord amp{'&', first == std::string::npos ? 0.0 : std::stod(digits.substr(first)), Value::Count};
+  if (want_.length_entry == 0 || first == std::string::npos) emit_block({amp});
+  else emit_block({{'D', static_cast<double>(want_.length_entry), Value::Count}, amp});
+  told_.length_entry = want_.length_entry;
 }
 
 // F after the axis words, when the feed the move needs is not the one in force.
@@ -368,7 +412,8 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
   if (off > conv_.arc_tolerance + w_.resolution())
     return refuse(e.source, fmt::format("an arc whose end is {} mm off its circle: {} takes {} mm", four_decimals(off),
                                         w_.dialect(), four_decimals(conv_.arc_tolerance)));
-  const double dw = w >= 0 ? end[w] - start[w] : 0;
+  // Along the normal as the numbers are written: a rounding residue is no helix.
+  const double dw = w >= 0 ? written_length(end[w]) - written_length(start[w]) : 0;
   if (std::fabs(dw) > kSame && conv_.helix_by_end && e.b > 360 + 1e-6)
     return refuse(e.source, fmt::format("a helix of {} turns: {} writes a helix by its end point, one turn at most",
                                         four_decimals(e.b / 360), w_.dialect()));
@@ -521,8 +566,9 @@ void Flattener::event(const Event& e) {
     }
     case EventKind::SelectTool: want_.tool = e.n; break;  // written with the change, or before the next move
     case EventKind::ChangeTool: {
-      // ISO's M06 ignores the tool in the spindle: such a change is not written.
-      if (conv_.tool_change_iso && loaded_ == e.n) break;
+      // ISO's M06 ignores the tool in the spindle, NC-110's changes it for none: such a
+      // change is not written (NC-110's corrector is, when it changes: corrector()).
+      if ((conv_.tool_change_iso || conv_.corrector_in_tool_word) && loaded_ == e.n) break;
       loaded_ = e.n;
       // A target whose M06 first takes the tool axis to the reference point moves
       // where the source did not, unless the tool is there already.
@@ -553,6 +599,7 @@ void Flattener::event(const Event& e) {
         sum += v;
       }
       want_.length_entry = any ? e.n : 0;
+      want_.length_axes = e.pos;
       want_.length_minus = sum < 0 && target_.offsets.count(e.n) && target_.offsets.at(e.n).length > 0;
       break;
     }

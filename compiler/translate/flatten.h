@@ -55,6 +55,8 @@ class Flattener final : public TraceSink {
   void sync_state(uint32_t source);
   void sync_spindle(uint32_t source);
   void feed_word(std::vector<OutWord>& words);
+  void corrector(uint32_t source);
+  void link(uint32_t source);
   void move(const Event& e);
   void arc_to(const Event& e, const AxisValues& end);
   void parabola(const Event& e);
@@ -94,6 +96,7 @@ class Flattener final : public TraceSink {
     int tool = -1;  // selected
     int length_entry = 0;  // tool length offset entry (0: none)
     bool length_minus = false;
+    AxisValues length_axes{};  // the offset on each axis, as the source's run applies it
     std::optional<Fn> dynamics;  // how blocks join (NC-110 G27-G29, pp G23/G24), once the source says
   };
   State want_;

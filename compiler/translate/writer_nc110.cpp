@@ -59,7 +59,9 @@ class Nc110Writer final : public Writer {
   std::string number(const OutWord& w) const override {
     switch (w.kind) {
       case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
-      case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
+      case Value::Count:  // T tool.corrector where the corrector is given
+        return w.letter == 'T' && w.offset >= 0 ? fmt::format("{}.{}", static_cast<long long>(w.value), w.offset)
+                                                : fmt::format("{}", static_cast<long long>(w.value));
       default: return decimal(w.value, decimals(w.letter), false);
     }
   }
