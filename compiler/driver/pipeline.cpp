@@ -360,12 +360,11 @@ class Stream final : public BlockSink {
     // The expressions made since the last time belong to the blocks just dropped
     // (the reader holds none of them when it calls): they go too, but a held block's,
     // the last made, which move down to take their place.
-    if (stopped_ || expressions_ == SIZE_MAX) {
-      if (!stopped_ && !held) expressions_ = program.exprs.size();
-      return;
+    if (stopped_) return;
+    if (expressions_ != SIZE_MAX) {
+      if (held) move_expressions(program, unit.blocks.front(), expressions_);
+      else program.exprs.resize(expressions_);
     }
-    if (held) move_expressions(program, unit.blocks.front(), expressions_);
-    else program.exprs.resize(expressions_);
     if (!held) expressions_ = program.exprs.size();
   }
 

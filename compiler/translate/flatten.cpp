@@ -308,12 +308,12 @@ void Flattener::corrector(uint32_t source) {
 // pp has no G43: its length link '&' adds (1) or takes away (2) entry D's length on
 // each of its axes, as the source's offset moves them (P-9.6): `D1 &10`, `&0` for none.
 void Flattener::link(uint32_t source) {
+  const auto entry = target_.offsets.find(want_.length_entry);
+  const double length = entry != target_.offsets.end() ? entry->second.length : 0;
   std::string digits;
   for (char axis : conv_.link_axes) {
     const int i = axis_index(axis);
     const double v = i >= 0 ? want_.length_axes[static_cast<size_t>(i)] : 0;
-    const auto entry = target_.offsets.find(want_.length_entry);
-    const double length = entry != target_.offsets.end() ? entry->second.length : 0;
     if (v != 0 && (i < 0 || length == 0 || std::fabs(std::fabs(mm(v, i)) - std::fabs(length)) > kSame)) {
       refuse(source, fmt::format("a tool length offset (entry {}) of another length than the target machine's entry {}",
                                  want_.length_entry, want_.length_entry));

@@ -2692,10 +2692,10 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
     const std::string text = what + (more ? fmt::format(" (and in {} more places)", more) : "");
     if (p->kind == Finding::Rounded)
       s.diags.report(DiagId::TranslateRounded, p->at, writer->dialect(), static_cast<int>(std::lround(-std::log10(writer->resolution()))),
-                     more ? fmt::format("this length and {} more are", more) : std::string("this length is"));
+                     rounded_these("length", more));
     else if (p->kind == Finding::RoundedRate)
       s.diags.report(DiagId::TranslateRoundedRate, p->at, writer->dialect(), what, writer->rate_decimals(what[0]),
-                     more ? fmt::format("this value and {} more are", more) : std::string("this value is"));
+                     rounded_these("value", more));
     else
       s.diags.report(p->kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
     refused |= p->kind == Finding::Refused;

@@ -57,9 +57,9 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
   for (const std::string& what : order) {
     const Seen& r = seen.at(what);
     if (r.kind == Finding::RoundedRate) {
-      const std::string these = r.more ? fmt::format("this value and {} more are", r.more) : std::string("this value is");
       report_at_block(s, module, r.source, DiagId::TranslateRoundedRate,
-                      diag_message(DiagId::TranslateRoundedRate, writer->dialect(), what, writer->rate_decimals(what[0]), these));
+                      diag_message(DiagId::TranslateRoundedRate, writer->dialect(), what, writer->rate_decimals(what[0]),
+                                   rounded_these("value", r.more)));
       continue;
     }
     const std::string text = what + (r.more ? fmt::format(" (and in {} more blocks)", r.more) : "");

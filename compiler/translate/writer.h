@@ -40,6 +40,12 @@ enum class Finding : uint8_t {
 // target writes (a machine keeps its feed no closer): more is another feed, and refused.
 inline constexpr double kRateRounding = 1e-2;
 
+// The subject of a rounding warning (NC4098, NC4099): "this length is", "this value
+// and 3 more are".
+inline std::string rounded_these(std::string_view what, size_t more) {
+  return more ? "this " + std::string(what) + " and " + std::to_string(more) + " more are" : "this " + std::string(what) + " is";
+}
+
 struct OutWord {
   char letter = 0;
   double value = 0;
