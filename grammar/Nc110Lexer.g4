@@ -62,6 +62,26 @@ A_BLANK        : [ \t]+ -> channel(HIDDEN) ;
 A_CYRILLIC     : [\u0400-\u04FF] -> type(CYRILLIC) ;
 A_INVALID      : . -> type(INVALID) ;
 
+// ---- GTL definition (§2.11.3): `l1 = X70 Y40, a150`, `c6=o1I-38J-35r10`, `p1=-l4,c3,s2`
+mode GTL;
+
+G_SLASH        : '/' -> type(SLASH) ;
+G_STRING       : '"' ~["\r\n]* '"' -> type(STRING) ;
+G_OPEN_STRING  : '"' ~["\r\n]* -> type(OPEN_STRING) ;
+G_HASH         : '#' -> type(HASH) ;
+G_AMP          : '&' -> type(AMP) ;
+G_BLOCK_NUMBER : 'N' [ \t]* [0-9]+ -> type(BLOCK_NUMBER) ;
+G_EREF         : 'E' [ \t]* [0-9]+ -> type(EREF) ;
+G_LETTER       : [A-Za-z] -> type(LETTER) ;
+G_NUMBER       : ([0-9]+ ('.' [0-9]*)? | '.' [0-9]+) -> type(NUMBER) ;
+G_PLUS         : '+' -> type(PLUS) ;
+G_MINUS        : '-' -> type(MINUS) ;
+G_EQUALS       : '=' -> type(EQUALS) ;
+G_COMMA        : ',' -> type(COMMA) ;
+G_BLANK        : [ \t]+ -> channel(HIDDEN) ;
+G_CYRILLIC     : [\u0400-\u04FF] -> type(CYRILLIC) ;
+G_INVALID      : . -> type(INVALID) ;
+
 // ---- Three-letter-code block (§2.13): the leading fields, then '(' ----------------
 mode TLC;
 

@@ -42,6 +42,12 @@ primary     : NUMBER                                     # numberPrimary
             | LPAREN expr RPAREN                         # groupPrimary
             ;
 
+// ---- GTL definition (§2.11.3) -----------------------------------------------------
+// The element and its index, '=', then its operands as words: the front end groups
+// them (`X70 Y40`, `I45 J30 r-15`, `m55 a60`, `-l4`, `s2`) and checks the form.
+gtlBlock    : leading LETTER wordValue? EQUALS gtlItem* EOF ;
+gtlItem     : COMMA | MINUS? LETTER wordValue? ;
+
 // ---- Three-letter-code block -------------------------------------------------------
 tlcBlock    : leading LPAREN code (COMMA operand)* RPAREN EOF ;
 code        : LETTER* ;

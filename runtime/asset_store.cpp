@@ -263,6 +263,12 @@ std::unique_ptr<Store> Store::open(const std::string& dir, const Options& option
 Store::Store(int dir, const Options& options) : dir_(dir), options_(options) {}
 Store::~Store() { ::close(dir_); }
 
+bool Store::prepared() const {
+  for (uint8_t d = 0; d < kDevices; ++d)
+    if (Fd dev{device(d)}; dev.fd >= 0) return true;
+  return false;
+}
+
 int Store::device(uint8_t d) const {
   if (d >= kDevices) return -1;
   return ::openat(dir_, device_name(d).c_str(), O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);

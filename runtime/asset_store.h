@@ -100,6 +100,8 @@ class Store {
   };
   // The sandbox at `dir`, or nothing and why.
   static std::unique_ptr<Store> open(const std::string& dir, const Options& options, std::string& why);
+  // Whether any device folder MP0..MP6 exists (`ncc files init` makes them).
+  bool prepared() const;
   ~Store();
   Store(const Store&) = delete;
   Store& operator=(const Store&) = delete;

@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "corner.h"
+#include "support/text.h"
+
+#include <fmt/format.h>
 
 namespace ncc {
 
@@ -19,7 +22,7 @@ double cross(const corner::Vec& a, const corner::Vec& b) { return a.x() * b.y() 
 
 struct CutterPath::State {
   using Vec = corner::Vec;
-  State(TraceSink& o, Report r, void* c) : out_(o), report_(r), context_(c) {}
+  State(TraceSink& o, Report r, void* c, CompRules rules) : out_(o), report_(r), context_(c), rules_(rules) {}
   void send(const Event& e);
   void event(const Event& e, const AxisValues* start);
   void begin(const Event& move, const corner::Element& el, const AxisValues& from);
@@ -32,6 +35,20 @@ struct CutterPath::State {
   TraceSink& out_;
   Report report_;
   void* context_;
+  CompRules rules_;
+  struct Corner {
+    bool fillet = true;
+    double size = 0;  // signed radius of a fillet, set-back of a chamfer
+    uint32_t source = 0;
+  };
+  std::optional<Corner> corner_;     // asked for between the waiting move and the next
+  std::optional<uint32_t> off_in_;   // NC-110: the block whose G40 the next block's move makes good
+  bool cut(corner::Element& el, Vec& end, Vec& next, std::optional<Event>& between);
+  // No compensation: G40, or (ISO D0) a radius of 0; NC-110's path with a radius of 0
+  // still cuts its corners r and b.
+  bool off(int side, double radius) const { return side == 0 || (radius <= 0 && rules_.zero_radius_off); }
+  // " (E-12)": the ISO alarm a rule is, where the dialect numbers them.
+  std::string alarm(const char* code) const { return rules_.iso_alarms ? fmt::format(" ({})", code) : std::string(); }
   int side_ = 0;       // 1 left (G41), 2 right (G42), 0 off
   double radius_ = 0;  // program units
   uint32_t switched_at_ = 0;  // the block whose CutterComp event set side_
@@ -74,14 +91,15 @@ struct CutterPath::State {
   Vec from_{0, 0};            // where its offset path starts
 };
 
-CutterPath::CutterPath(TraceSink& out, Report report, void* context) : s_(std::make_unique<State>(out, report, context)) {}
+CutterPath::CutterPath(TraceSink& out, Report report, void* context, CompRules rules)
+    : s_(std::make_unique<State>(out, report, context, rules)) {}
 CutterPath::~CutterPath() = default;
 void CutterPath::event(const Event& e, const AxisValues* start) { s_->event(e, start); }
 
 uint64_t CutterPath::held_bytes() const { return s_->held_.capacity() * sizeof(Event) + s_->held_text_; }
 size_t CutterPath::held_events() const { return s_->held_.size(); }
 
-bool CutterPath::passes_moves() const { return !s_->waiting_ && (s_->side_ == 0 || s_->radius_ <= 0); }
+bool CutterPath::passes_moves() const { return !s_->waiting_ && s_->off(s_->side_, s_->radius_); }
 
 void CutterPath::State::send(const Event& e) {
   if (waiting_) hold(e);
@@ -110,9 +128,16 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
     plane_ = e.plane;
   }
   if (e.kind == EventKind::CutterComp) {
+    // NC-110 §2.8.7: G40 stands in the profile's last block, whose move is still
+    // offset; the first move of a block after it leaves the path.
+    if (rules_.cancel_after && off(e.n, e.a) && side_ != 0 && waiting_) {
+      off_in_ = e.source;
+      send(e);
+      return;
+    }
     if (e.n != side_ || e.a != radius_) {
-      if (side_ == 0) right_angle_ = true;  // until a move of the same block shows otherwise
-      leaving_ = e.n == 0 || e.a <= 0;
+      if (side_ == 0) right_angle_ = !rules_.start_along;  // until a move of the same block shows otherwise
+      leaving_ = off(e.n, e.a);
       if (leaving_) leave_source_ = e.source;
       side_ = e.n;
       radius_ = e.a;
@@ -133,17 +158,24 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
     el.ccw = e.rotation > 0;
     el.sweep = e.b * kPi / 180;
   }
+  if (off_in_ && e.source != *off_in_ && in_plane(e, *start)) {
+    side_ = 0;
+    radius_ = 0;
+    switched_at_ = leave_source_ = *off_in_;
+    off_in_.reset();
+  }
   if (!in_plane(e, *start)) {
     // A move along the plane's normal keeps the offset it stands at.
     if (waiting_) hold(e);
     else out_.event(e);
     return;
   }
-  if (side_ == 0 || radius_ <= 0) {
+  if (off(side_, radius_)) {
     // G40 (or D0) with this move: it leaves from beside the last end (figure 32).
     if (waiting_) {
-      if (e.kind == EventKind::Arc && e.source != leave_source_)  // in G40's own block: the runtime's check
-        report_(context_, e.source, "cutter radius compensation cannot end on an arc (E-13): use a G00 or G01 move");
+      if (e.kind == EventKind::Arc && (rules_.cancel_after || e.source != leave_source_))  // in G40's own block: the runtime's check
+        report_(context_, e.source, rules_.cancel_after ? "the move after G40 leaves the compensated path: a G00 or G01 move (§2.8.7)"
+                                                        : "cutter radius compensation cannot end on an arc (E-13): use a G00 or G01 move");
       leave(false);
     }
     out_.event(e);
@@ -162,7 +194,8 @@ void CutterPath::State::begin(const Event& move, const corner::Element& el, cons
   // right angle to the offset of this move's start.
   if (move.source == switched_at_) right_angle_ = false;
   if (move.kind == EventKind::Arc && move.source != switched_at_)  // in G41/G42's own block: the runtime's check
-    report_(context_, move.source, "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move");
+    report_(context_, move.source, rules_.iso_alarms ? "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move"
+                                                     : "cutter radius compensation starts with a G00 or G01 move, not an arc (§2.8.7)");
   if (right_angle_) {
     const Vec entry = el.a + radius_ * normal(el, el.a, side_);
     const Plane p = move.kind == EventKind::Arc ? move.plane : plane_;
@@ -211,44 +244,115 @@ void CutterPath::State::end_waiting(const Vec& end) {
     }
 }
 
-void CutterPath::State::join(const Event& move, const corner::Element& el) {
+namespace {
+
+corner::Vec nearest(const std::vector<corner::Vec>& points, const corner::Vec& to) {
+  corner::Vec best = points.front();
+  for (const corner::Vec& q : points)
+    if ((q - to).norm() < (best - to).norm()) best = q;
+  return best;
+}
+
+}  // namespace
+
+// The corner a fillet or chamfer of its own block cuts (NC-110 r, b): the waiting move
+// ends and the next starts where the cut does, and the cut moves between them,
+// offset like them.
+bool CutterPath::State::cut(corner::Element& el, Vec& end, Vec& next, std::optional<Event>& between) {
+  const Corner c = *corner_;
+  const int side = waiting_side_;
+  const double r = waiting_radius_;
+  const std::string what = fmt::format("{}{}", c.fillet ? "the fillet r" : "the chamfer b", shortest(c.size));
+  std::string why;
+  auto k = corner::cut(element_, el, c.fillet, std::fabs(c.size), why);
+  if (!k) {
+    report_(context_, c.source, fmt::format("{} cannot join the moves before and after it: {}", what, why));
+    return false;
+  }
+  if (c.fillet && k->ccw != (c.size > 0)) {
+    report_(context_, c.source, fmt::format("{}: the path turns {} there, so its fillet is r{} (§2.8.7)", what,
+                                            k->ccw ? "counter-clockwise" : "clockwise", shortest(-c.size)));
+    return false;
+  }
+  element_.b = k->t1;
+  if (element_.arc) element_.sweep -= k->in_cut;
+  el.a = k->t2;
+  if (el.arc) el.sweep -= k->out_cut;
+  Event e{c.fillet ? EventKind::Arc : EventKind::Linear};
+  e.source = c.source;
+  if (c.fillet) {
+    // Tangent to both: square to them at its ends, about its own centre.
+    if ((side == 1) == k->ccw && std::fabs(c.size) < r - 1e-9) {
+      report_(context_, c.source, fmt::format("{} is smaller than the tool radius {}: the tool cannot follow it", what,
+                                              shortest(r)));
+      return false;
+    }
+    end = k->t1 + r * normal(element_, k->t1, side);
+    next = k->t2 + r * normal(el, k->t2, side);
+    e.plane = plane_;
+    e.centre[0] = k->centre.x();
+    e.centre[1] = k->centre.y();
+    e.a = (end - k->centre).norm();
+    e.b = k->fillet_sweep * 180 / kPi;
+    e.rotation = k->ccw ? 1 : -1;
+    if (e.a > 1e-9) between = e;  // a tool as large as the fillet turns on its centre
+    return true;
+  }
+  const corner::Element slope{k->t1, k->t2};
+  const int s = side == 1 ? 1 : -1;
+  auto in = corner::offsets_meet(element_, slope, r, s), out = corner::offsets_meet(slope, el, r, s);
+  end = in.empty() ? Vec(k->t1 + r * normal(element_, k->t1, side)) : nearest(in, k->t1);
+  next = out.empty() ? Vec(k->t2 + r * normal(el, k->t2, side)) : nearest(out, k->t2);
+  between = e;
+  return true;
+}
+
+void CutterPath::State::join(const Event& move, const corner::Element& programmed) {
+  corner::Element el = programmed;
   const Vec p = el.a;  // the programmed corner
   const int side = waiting_side_;
   const double r = waiting_radius_;
   const Vec n1 = normal(element_, p, side);
   Vec end = p + r * n1, next = end;
-  std::optional<Event> around;  // the arc around an outside corner
+  std::optional<Event> around;  // what joins the two offset moves at the corner
   const int u = plane_.u, v = plane_.v;
+  const bool same = side_ == side && radius_ == r;
   if (startup_) {
-    // Type A start-up: beside the next move's start.
+    // Start-up (Fanuc type A, NC-110 rule 6): beside the next move's start.
     end = next = p + radius_ * normal(el, p, side_);
-  } else if (side_ == side && radius_ == r) {
+    if (corner_) report_(context_, corner_->source, "a corner r or b joins two moves of the compensated path, not the approach to it (§2.8.7)");
+  } else if (same && corner_ && corner_->size != 0) {
+    if (!cut(el, end, next, around)) {
+      corner_.reset();
+      return abandon();
+    }
+  } else if (same) {
     const Vec d1 = corner::tangent(element_, p), d2 = corner::tangent(el, p);
     const double turn = cross(d1, d2);
     const bool inside = side == 1 ? turn > 1e-9 : turn < -1e-9;
     const bool straight = std::fabs(turn) <= 1e-9 && d1.dot(d2) > 0;
+    // Outside: round the corner (Fanuc type A; NC-110 r0), or where the offsets meet.
+    const auto points = straight ? std::vector<Vec>{} : corner::offsets_meet(element_, el, r, side == 1 ? 1 : -1);
+    const bool round = !straight && !inside && (rules_.round_outside || (corner_ && corner_->fillet) || points.empty());
     if (straight) {
       end = next = p + r * n1;
-    } else if (inside) {
+    } else if (inside || !round) {
       // The offset moves meet at their intersection nearest the corner.
-      auto points = corner::offsets_meet(element_, el, r, side == 1 ? 1 : -1);
       if (points.empty()) {
-        report_(context_, move.source, "cutter compensation: the offset paths of this move and the one before do not meet: a move shorter than the tool radius or an arc smaller than it (E-12)");
+        report_(context_, move.source, fmt::format("cutter compensation: the offset paths of this move and the one before do not meet: "
+                                                   "a move shorter than the tool radius or an arc smaller than it{}", alarm("E-12")));
+        corner_.reset();
         return abandon();
-      } else {
-        Vec best = points.front();
-        for (const Vec& q : points)
-          if ((q - p).norm() < (best - p).norm()) best = q;
-        end = next = best;
       }
+      end = next = nearest(points, p);
     } else {
-      // Outside: around the corner at the radius (§8.10, figure 31).
+      // Round the corner at the radius (§8.10, figure 31; NC-110 figure 2.21).
       end = p + r * n1;
       next = p + r * normal(el, p, side);
       // It turns the way the path turns away from the tool: clockwise beside a G41
       // path, counter-clockwise beside a G42 one (a reversal included).
       Event arc{EventKind::Arc};
-      arc.source = move.source;
+      arc.source = corner_ ? corner_->source : move.source;
       arc.plane = plane_;
       arc.centre[0] = p.x();
       arc.centre[1] = p.y();
@@ -262,16 +366,19 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
       around = arc;
     }
   }
+  corner_.reset();
   // A side or radius change (G41 <-> G42, a new D): the move ends beside its own end
   // and the next one starts there (§8.10, figure 34: only on straight moves, E-14).
   if (el.arc && el.ccw == (side_ == 1) && (el.a - el.c).norm() <= radius_ + 1e-9) {
     // An arc turning towards the tool: its offset radius shrinks to nothing (E-12).
-    report_(context_, move.source, "cutter compensation: the arc's radius is not larger than the tool radius on its inside (E-12)");
+    report_(context_, move.source, fmt::format("cutter compensation: the arc's radius is not larger than the tool radius on its inside{}",
+                                               alarm("E-12")));
     return abandon();
   }
   // §8.10 (E-12): an offset line that would run backwards cuts into the part.
   if (!element_.arc && !startup_ && (end - from_).dot(element_.b - element_.a) <= 0) {
-    report_(context_, move.source, "cutter compensation: the move before is shorter than the tool radius allows: its offset runs backwards (E-12)");
+    report_(context_, move.source, fmt::format("cutter compensation: the move before is shorter than the tool radius allows: its offset "
+                                               "runs backwards{}", alarm("E-12")));
     return abandon();
   }
   end_waiting(end);
@@ -279,7 +386,17 @@ void CutterPath::State::join(const Event& move, const corner::Element& el) {
     around->pos = last_move().pos;
     around->pos[u] = next.x();
     around->pos[v] = next.y();
-    hold(*around);
+    // A corner of its own block (NC-110 r, b) comes before what the blocks after it
+    // did; ISO's arc round a corner is the next move's.
+    size_t at = held_.size();
+    if (around->source != move.source)
+      for (size_t i = *waiting_ + 1; i < held_.size(); ++i)
+        if (held_[i].source != held_[*waiting_].source && held_[i].source != around->source) {
+          at = i;
+          break;
+        }
+    held_text_ += around->text.capacity();
+    held_.insert(held_.begin() + static_cast<std::ptrdiff_t>(at), *around);
   }
   send_held();
   waiting_.reset();
@@ -330,7 +447,10 @@ void CutterPath::resume() {
 }
 
 void CutterPath::finish(bool exit) {
-  if (s_->waiting_) s_->leave(exit);
+  // NC-110: a path that ends compensated stays beside its last point.
+  if (s_->waiting_) s_->leave(exit && !s_->rules_.cancel_after);
 }
+
+void CutterPath::corner(bool fillet, double size, uint32_t source) { s_->corner_ = State::Corner{fillet, size, source}; }
 
 }  // namespace ncc

@@ -16,16 +16,27 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
                  RuntimeIssues& issues)
     : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
       events_wanted_(trace.wants_events()), issues_(issues),
-      path_(trace, &Machine::path_report, this) {}
+      path_(trace, &Machine::path_report, this, comp_rules(semantics.conventions.cutter)) {
+  gtl_init();
+}
+
+// NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
+// move, G41/G42 in a block of their own started by the next move.
+CompRules Machine::comp_rules(CutterStyle style) {
+  if (style == CutterStyle::Nc110) return {false, true, true, false, false};
+  return {};
+}
 
 void Machine::path_report(void* self, uint32_t source, const std::string& what) {
   // An error of the path stops the run at the block being run, as any error does.
-  static_cast<Machine*>(self)->issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, what), source, -1, -1});
+  Machine& m = *static_cast<Machine*>(self);
+  const DiagId id = m.conv_.cutter == CutterStyle::Nc110 ? DiagId::CompPath : DiagId::ArcForm;
+  m.issue({id, diag_message(id, what), source, -1, -1});
 }
 
 void Machine::end_run(bool stopped_by_error) {
   if (holding_) release();
-  if (conv_.comp_path) path_.finish(!stopped_by_error);
+  if (conv_.comp_path()) path_.finish(!stopped_by_error);
 }
 
 void Machine::power_on() {
@@ -154,10 +165,10 @@ void Machine::emit(Event e) {
   // A block stops doing things at its first error: what it did before shows, the
   // rest does not (the machine's state still follows it in a dry run).
   if (block_.error || !wanted(e.kind)) return;
-  e.source = block_.request ? block_.request->source : 0;
+  e.source = source();
   // A move starts where the machine stands (it moves after its event); only the
   // cutter path needs to know.
-  if (!is_move(e.kind) || !conv_.comp_path) return out(e);
+  if (!is_move(e.kind) || !conv_.comp_path()) return out(e);
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
   out(e, &start);
 }
@@ -169,7 +180,9 @@ bool Machine::block_has(Fn fn) const {
   return false;
 }
 
-uint64_t Machine::held_bytes() const { return path_.held_bytes() + held_.capacity() * sizeof(Event) + spline_bytes(); }
+uint64_t Machine::held_bytes() const {
+  return path_.held_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
+}
 
 uint64_t Machine::spline_bytes() const {
   return spline_.points.capacity() * sizeof(AxisValues) + spline_.sources.capacity() * sizeof(uint32_t);
@@ -188,7 +201,7 @@ void Machine::out(const Event& e, const AxisValues* start) {
 }
 
 void Machine::to_path(const Event& e, const AxisValues* start) {
-  if (conv_.comp_path) path_.event(e, start);
+  if (conv_.comp_path()) path_.event(e, start);
   else trace_.event(e);
 }
 
@@ -245,7 +258,7 @@ void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
-  if (conv_.comp_path && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
+  if (conv_.comp_path() && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
   if (auto it = tool_offsets_.find(offset_number_); it != tool_offsets_.end()) e.a = to_program(it->second.radius);
   emit(e);
 }
@@ -498,6 +511,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     }
     case Fn::GtlOpen:
     case Fn::GtlClose: modal_.gtl = call.fn == Fn::GtlOpen; break;
+    case Fn::GtlDefine: block_.gtl_define = call.arg; break;
     case Fn::OriginMachine:
       if (!cycle_active()) block_.machine_frame = true;
       break;
@@ -784,7 +798,8 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   check_profile_rules();
   // 2. Registers.
   registers();
-  flush_compensation();
+  // G20 G40: the profile's last moves come first, then the compensation ends.
+  if (!(gtl_open() && block_has(Fn::GtlClose))) flush_compensation();
   if (failed()) return BlockResult::Error;
   // 3. Auxiliary functions that start before the motion (Table 7), in written order.
   apply_codes(Timing::Before);
@@ -799,7 +814,7 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   }
   const size_t block_from = held_.size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
-  const bool zeroed = conv_.comp_path &&
+  const bool zeroed = conv_.comp_path() &&
                       (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
                       (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
   if (zeroed) path_.suspend();
@@ -871,6 +886,45 @@ void Machine::apply_codes(Timing timing) {
 
 void Machine::action() {
   if (block_.operands) return;
+  if (block_.gtl_define >= 0) return gtl_define(static_cast<uint16_t>(block_.gtl_define));
+  // NC-110 §2.8.7 rule 2: no M, H, S or T inside a compensated profile.
+  if (conv_.cutter == CutterStyle::Nc110 && block_.comp_before != 0 && modal_.comp != 0 && !block_.error)
+    for (char l : {'M', 'H', 'S', 'T'})
+      if (has(l))
+        return report(DiagId::CompPath, l, fmt::format("{} stands outside the compensated profile: between G41/G42 and G40 no "
+                                                         "block has M, H, S or T (§2.8.7)", l));
+  if (modal_.gtl || gtl_open() || block_has(Fn::GtlOpen) || block_has(Fn::GtlClose)) return gtl_block();
+  // NC-110 §2.9: u v w correct the axis the block programs, not under G41/G42.
+  for (int k = 0; k < 3; ++k) {
+    const char factor = "uvw"[k];
+    if (!has(factor)) continue;
+    const int axis = k == 0 ? modal_.plane.u : k == 1 ? modal_.plane.v : modal_.plane.w;
+    const std::string shown = std::string(1, factor) + shortest(word(factor));
+    if (modal_.comp != 0)
+      return report(DiagId::CompPath, factor, fmt::format("{} corrects a point by the tool's radius; G41/G42 does that already: "
+                                                            "not both (§2.9)", shown));
+    if (axis < 0 || !has(kAxisLetters[axis]))
+      return report(DiagId::CompPath, factor, fmt::format("{} corrects {}, the {} of the plane {}, which this block does not program (§2.9)",
+                                                            shown, axis < 0 ? std::string("the axis") : std::string(1, kAxisLetters[axis]),
+                                                            k == 0 ? "abscissa" : k == 1 ? "ordinate" : "normal", plane_name(modal_.plane)));
+  }
+  // Outside a profile (G21 ... G20): the words of its blocks (§2.11.8, §2.11.9).
+  for (char l : {'p', 'l', 'c', 's', 'r', 'b'}) {
+    if (!has(l) || (l == 'r' && block_has(Fn::MeasureHole))) continue;
+    if (l == 'r' || l == 'b') {
+      // §2.8.7: a corner of a compensated path, in a block of its own.
+      const std::string shown = std::string(1, l) + shortest(word(l));
+      if (conv_.cutter != CutterStyle::Nc110 || modal_.comp == 0)
+        return report(DiagId::CompPath, l, fmt::format("{} joins two moves under G41/G42 or two elements of a GTL profile: "
+                                                         "neither is in force (§2.8.7)", shown));
+      if (has_axis_word() || has('r') == has('b'))
+        return report(DiagId::CompPath, l, fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
+      if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
+      return path_.corner(l == 'r', word(l), block_.request->source);
+    }
+    return report(DiagId::GtlProfile, l, fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
+                                                     l == 's' ? std::string("s2") : std::string(1, l) + shortest(word(l))));
+  }
   const bool axes = has_axis_word();
   if (conv_.fanuc_rules) arc_block_rules();
   if (block_.measure != Fn::Count) {
@@ -1014,7 +1068,7 @@ void Machine::finish() {
              corner_->source, corner_->slot, -1});
       release();
     }
-    if (conv_.comp_path) path_.finish();
+    if (conv_.comp_path()) path_.finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
     const ResetState before{modal_, frame_, position_offset_, limited_, zones_, tolerance_, turning_};
@@ -1085,6 +1139,7 @@ void Machine::emit_reset(const ResetState& before) {
 }
 
 void Machine::end_of_unit(uint32_t source) {
+  gtl_unit_end();
   if (corner_) {
     issues_.issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
                    corner_->source, corner_->slot, -1});

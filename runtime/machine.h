@@ -13,6 +13,7 @@
 #include <bitset>
 #include <deque>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -131,6 +132,9 @@ class Machine {
   // variable cannot take is reported at `source`.
   double system(SysRef ref) const;
   bool set_system(SysRef ref, double value, uint32_t source);
+  // NC-110 FEP, FEL, FEC (§2.12): field 1..3 of GTL element `index` of kind (gtl::Kind);
+  // false if it is not defined.
+  bool gtl_field(int kind, double index, double field, double& out) const;
   // Values the last block measured, by index of the result space (NC-110 G72-G74).
   std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
   // What the runtime holds that grows with the blocks a run makes (the run's memory
@@ -255,6 +259,7 @@ class Machine {
     int comp_before = 0;          // the cutter compensation when the block started
     AxisValues length_before{};   // ... and the tool length offset
     double radius_before = 0;     // ... and the cutter radius
+    int gtl_define = -1;          // NC-110: a GTL definition of this shape (gtl::Shape::pack)
   };
 
   // Words.
@@ -283,19 +288,21 @@ class Machine {
   double program_axis(int axis, double v) const;
   AxisValues in_program_units(AxisValues v) const;
 
-  // Issues.
+  // Issues, and events, belong to the block being run, or to the one a deferred move
+  // belongs to (a GTL element's).
+  uint32_t source() const { return event_source_ ? *event_source_ : block_.request ? block_.request->source : 0; }
   template <typename... Args>
   void report(DiagId id, char word, const Args&... args) {
-    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, word ? letter_slot(word) : -1, -1});
+    issue({id, diag_message(id, args...), source(), word ? letter_slot(word) : -1, -1});
   }
   template <typename... Args>
   void report_slot(DiagId id, int slot, const Args&... args) {
-    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, slot, -1});
+    issue({id, diag_message(id, args...), source(), slot, -1});
   }
   // A problem with the code being applied (located at its word).
   template <typename... Args>
   void report_code(DiagId id, const Args&... args) {
-    issue({id, diag_message(id, args...), block_.request ? block_.request->source : 0, -1, block_.code});
+    issue({id, diag_message(id, args...), source(), -1, block_.code});
   }
   void issue(const RuntimeIssue& i) {
     issues_.issue(i);
@@ -317,7 +324,7 @@ class Machine {
   // cutter path (which follows every plane and compensation change, and moves while
   // it offsets them).
   bool wanted(EventKind kind) const {
-    return events_wanted_ || holding_ || (conv_.comp_path && (!is_move(kind) || !path_.passes_moves()));
+    return events_wanted_ || holding_ || (conv_.comp_path() && (!is_move(kind) || !path_.passes_moves()));
   }
   void plane_event();
   void path_event(int mode);
@@ -349,6 +356,7 @@ class Machine {
   AxisValues to_frame(const AxisValues& machine) const;    // undo it: program coordinates
   AxisValues target();                              // of this block's axis words, machine units
   AxisValues program_target();                      // the same, program coordinates
+  double tool_radius() const;                       // of the offset in force, mm
   bool has_axis_word() const;
   bool frame_function(FnCall call);                 // the NC-110 three-letter functions
   void origin_event();
@@ -379,6 +387,7 @@ class Machine {
   double block_seconds();
   void linear(const AxisValues& t);
   void arc(const AxisValues& t, bool clockwise);
+  void arc_move(const AxisValues& t, double centre_u, double centre_v, bool clockwise, char pu, char pw);
   void parabola(const AxisValues& t);
   void thread(const AxisValues& t);
   void thread_variable(const AxisValues& t);
@@ -391,6 +400,22 @@ class Machine {
   double spindle_rpm() const;
   void advance_clock(double seconds) { clock_ += seconds; }
   double feed_time(double length_mm);  // at the block's feed
+
+  // GTL (machine_gtl.cpp, NC-110 §2.11).
+  struct GtlState;
+  struct GtlDelete {
+    void operator()(GtlState* s) const;
+  };
+  std::unique_ptr<GtlState, GtlDelete> gtl_;
+  std::optional<uint32_t> event_source_;  // the block a deferred move belongs to
+  void gtl_init();
+  bool gtl_open() const;  // a profile is open
+  double gtl_tolerance() const;  // program units
+  void gtl_define(uint16_t shape);
+  void gtl_block();
+  void gtl_moves();
+  void gtl_unit_end();
+  uint64_t gtl_bytes() const;
 
   // Cycles (machine_cycles.cpp).
   void cycle();
@@ -449,6 +474,7 @@ class Machine {
   void to_path(const Event& e, const AxisValues* start);        // through the cutter path (ISO)
   void pass_on(size_t count);                 // the first `count` held events, on
   CutterPath path_;
+  static CompRules comp_rules(CutterStyle style);
   static void path_report(void* self, uint32_t source, const std::string& what);
   bool corner_requested() const;
   void corner_begin(const AxisValues& start);

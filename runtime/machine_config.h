@@ -106,6 +106,7 @@ struct MachineConfig {
   ProbeConfig probe;
   AssetConfig asset;
   uint8_t processes = 5;  // NC-110 chapter 4: the processes configured (PGCFIL), 1..5
+  double gtl_tolerance = 0.001;  // mm: NC-110 GTL points this close are one point (§2.11)
   uint32_t look_ahead = 64;  // blocks a process evaluates ahead of its motion (NC-110 §1.1.1, §2.16), 1..64
   // Bytes a process's runtime may hold back for later moves (Machine::held_bytes) before
   // the run stops (limits.run_memory_mib): a real program holds a few events.

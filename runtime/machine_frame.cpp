@@ -141,7 +141,19 @@ AxisValues Machine::program_target() {
     p[u] = ou + r * std::cos(a * kDegree);
     p[v] = ov + r * std::sin(a * kDegree);
   }
+  // NC-110 §2.9: u, v, w move the point the block programs on the plane's abscissa,
+  // ordinate and normal by the tool's radius times the factor (action() checks them).
+  for (int k = 0; k < 3; ++k) {
+    const char factor = "uvw"[k];
+    const int axis = k == 0 ? u : k == 1 ? v : modal_.plane.w;
+    if (has(factor) && axis >= 0 && has(kAxisLetters[axis])) p[axis] += tool_radius() * word(factor);
+  }
   return p;
+}
+
+double Machine::tool_radius() const {
+  auto it = tool_offsets_.find(offset_number_);
+  return it == tool_offsets_.end() ? 0 : it->second.radius;
 }
 
 bool Machine::position_in_range(int axis, double v) {
@@ -709,8 +721,8 @@ namespace ncc {
 
 bool Machine::comp_locked(bool changes) {
   // The offset path is made in the work coordinates of its moves: a change of units or
-  // of the frame would put two moves of it in different ones.
-  if (!conv_.comp_path || modal_.comp == 0 || !changes) return false;
+  // of the frame would put two moves of it in different ones (ISO E-xx).
+  if (conv_.cutter != CutterStyle::FanucA || modal_.comp == 0 || !changes) return false;
   report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
   return true;
 }

@@ -47,6 +47,8 @@ Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
   Event e{kind};
   AxisValues off = shown_origins();
   for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
+  for (int i = 0; i < kAxisCount; ++i)
+    if (t[i] != machine_[i]) e.moved |= static_cast<uint16_t>(1u << i);
   e.pos = in_program_units(e.pos);
   // An endless rotary axis shows 0..359.9999 however far it has turned (NC-110 §2.8.4).
   for (int i = 0; i < kAxisCount; ++i)
@@ -238,6 +240,17 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     const Eigen::Vector2d along = (p1 - p0) / chord, left(-along.y(), along.x());
     centre = (p0 + p1) / 2 + ((clockwise == (r < 0)) ? 1 : -1) * h * left;
   }
+  arc_move(t, centre.x(), centre.y(), clockwise, pu, pw);
+}
+
+// The arc from where the machine stands to t about the centre (machine coordinates of
+// the plane); pu names the centre's word, pw the helix lead's, in messages.
+void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bool clockwise, char pu, char pw) {
+  const int u = modal_.plane.u, v = modal_.plane.v, w = modal_.plane.w;
+  const bool plane_words = conv_.centre_words == CentreWords::Plane;
+  const Eigen::Vector2d p0(machine_[u], machine_[v]);
+  const Eigen::Vector2d p1(t[u], t[v]);
+  const Eigen::Vector2d centre(centre_u, centre_v);
   const double r0 = (p0 - centre).norm();
   const double r1 = (p1 - centre).norm();
   if (r0 < kSamePoint) {

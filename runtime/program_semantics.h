@@ -47,6 +47,11 @@ enum class CentreWords : uint8_t { PerAxis, Plane };
 // The drilling axis of a canned cycle: the plane's normal, or the axis of the depth
 // word (NC-110 §2.8.9).
 
+// Cutter radius compensation: the trace shows the programmed path (GOST, pp: the
+// machine offsets it), or the tool centre's by ISO's rules (Fanuc type A, §8.10) or
+// NC-110's (§2.8.7, runtime/cutter_path.h CompRules).
+enum class CutterStyle : uint8_t { Programmed, FanucA, Nc110 };
+
 // Word conventions: which address carries what, and how to read it. Addresses are
 // letters; 0 means "none".
 constexpr uint8_t kNoSpace = 255;
@@ -89,7 +94,8 @@ struct Conventions {
   double initial_feed = 0;          // the feed in force at the start (0: none until F is programmed)
   bool fanuc_rules = false;         // ISO E-08..E-27: what G51/G68, G91 and cutter compensation forbid
   bool corners = false;             // ISO ,C and ,R (the second C and R words): a chamfer or fillet after the move
-  bool comp_path = false;           // ISO: the trace shows the tool centre's path under G41/G42
+  CutterStyle cutter = CutterStyle::Programmed;  // what G41/G42 do to the path the trace shows
+  bool comp_path() const { return cutter != CutterStyle::Programmed; }
   char peck_factor_word = 0;        // G83: the factor on the peck, down to
   char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
   char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)

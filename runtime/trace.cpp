@@ -125,13 +125,14 @@ class TextSink final : public BufferedSink {
   }
 
  private:
-  // X Y Z always; another axis of the machine once it has been away from zero.
-  std::string position(const AxisValues& p) {
+  // X Y Z always; another axis of the machine once it has been away from zero or has
+  // moved (an endless rotary axis turning to B0 shows as B0).
+  std::string position(const AxisValues& p, uint16_t moved = 0) {
     std::string s;
     for (int i = 0; i < kAxisCount; ++i) {
       if (i >= 3) {
         if (!has_axis(kAxisLetters[i])) continue;
-        if (p[i] != 0) shown_[i] = true;
+        if (p[i] != 0 || (moved >> i & 1)) shown_[i] = true;
         if (!shown_[i]) continue;
       }
       if (!s.empty()) s += ' ';
@@ -152,11 +153,11 @@ class TextSink final : public BufferedSink {
       case EventKind::SpindleOn: return e.n > 0 ? "spindle cw" : "spindle ccw";
       case EventKind::SpindleStop: return "spindle stop";
       case EventKind::SpindleOrient: return "spindle orient " + four_decimals(e.a);
-      case EventKind::Rapid: return "rapid " + position(e.pos);
-      case EventKind::Linear: return "linear " + position(e.pos);
+      case EventKind::Rapid: return "rapid " + position(e.pos, e.moved);
+      case EventKind::Linear: return "linear " + position(e.pos, e.moved);
       case EventKind::Arc:
         return fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", e.rotation > 0 ? "ccw" : "cw",
-                           plane_name(e.plane), position(e.pos), kAxisLetters[e.plane.u], four_decimals(e.centre[0]),
+                           plane_name(e.plane), position(e.pos, e.moved), kAxisLetters[e.plane.u], four_decimals(e.centre[0]),
                            kAxisLetters[e.plane.v], four_decimals(e.centre[1]), four_decimals(e.a), four_decimals(e.b));
       case EventKind::Parabola:
         return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), four_decimals(e.control[0]),

@@ -85,6 +85,7 @@ struct Event {
   int n = 0;
   double a = 0, b = 0, c = 0;
   int rotation = 0;
+  uint16_t moved = 0;   // a move: bit i, axis i moves (an endless rotary axis may end where it began)
   Plane plane;
   AxisValues pos{};
   double centre[2] = {0, 0};

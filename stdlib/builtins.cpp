@@ -99,10 +99,11 @@ bool eval_builtin(Builtin b, const double* a, double& out, std::string_view& why
     case Builtin::GtlLine:
     case Builtin::GtlPoint:
     case Builtin::GtlCircle: {
-      // Element numbers are positive whole numbers; the fields are 1..3 (a point has 2).
+      // Element numbers are whole numbers 0..255 (§2.11.2); the fields are 1..3 (a
+      // point has 2). Their values are the runtime's: "undefined" asks it.
       int fields = b == Builtin::GtlPoint ? 2 : 3;
-      if (!(a[0] >= 1 && a[0] == std::trunc(a[0]))) {
-        why = "element numbers (1, 2, ...)";
+      if (!(a[0] >= 0 && a[0] <= 255 && a[0] == std::trunc(a[0]))) {
+        why = "element numbers 0..255";
         return false;
       }
       if (!(a[1] >= 1 && a[1] <= fields && a[1] == std::trunc(a[1]))) {

@@ -392,6 +392,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     if (auto n = whole_in<uint32_t>(*v, 1, 64)) m.look_ahead = *n;
     else p.report_value(diags, "machine.look_ahead", "must be a whole number of blocks from 1 to 64");
   }
+  if (auto v = p.number("machine.gtl_tolerance", diags)) {
+    if (*v > 0 && *v <= 1) m.gtl_tolerance = *v;
+    else p.report_value(diags, "machine.gtl_tolerance", "must be a distance in mm greater than 0 and at most 1");
+  }
   if (auto v = p.number("limits.run_memory_mib", diags)) {
     if (auto n = whole_in<uint64_t>(*v, 1, 1 << 20)) m.run_memory = *n << 20;
     else p.report_value(diags, "limits.run_memory_mib", "must be a whole number of MiB from 1 to 1048576");

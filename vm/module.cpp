@@ -76,7 +76,7 @@ void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.f64(c.initial_feed);
   w.u8(c.fanuc_rules);
   w.u8(c.corners);
-  w.u8(c.comp_path);
+  w.u8(static_cast<uint8_t>(c.cutter));
   w.u8(c.cycle_two_levels);
   w.u8(c.cycle_defines_only);
   w.u8(c.cycle_needs_cancel);
@@ -247,7 +247,7 @@ bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   c.initial_feed = r.f64();
   c.fanuc_rules = r.u8();
   c.corners = r.u8();
-  c.comp_path = r.u8();
+  c.cutter = static_cast<CutterStyle>(std::min<uint8_t>(r.u8(), 2));
   c.cycle_two_levels = r.u8();
   c.cycle_defines_only = r.u8();
   c.cycle_needs_cancel = r.u8();

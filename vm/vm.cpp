@@ -340,7 +340,13 @@ RunStatus Vm::resume() {
         for (int i = arity - 1; i >= 0; --i) args[i] = pop();
         double r = 0;
         std::string_view why;
-        if (!eval_builtin(b, args, r, why)) {
+        bool ok = eval_builtin(b, args, r, why);
+        // FEP, FEL, FEC read the runtime's GTL store (their arguments checked).
+        if (!ok && why == "undefined") {
+          const int kind = b == Builtin::GtlPoint ? 1 : b == Builtin::GtlLine ? 2 : 3;  // gtl::Kind
+          ok = machine_.gtl_field(kind, args[0], args[1], r);
+        }
+        if (!ok) {
           if (why == "undefined")
             return fail(pc, DiagId::GtlElementUndefined, b == Builtin::GtlLine ? 'l' : b == Builtin::GtlPoint ? 'p' : 'c',
                         shortest(args[0]));

@@ -97,6 +97,9 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
       count_several(w);  // what it is comes at run time; that it is a word, now
       continue;
     }
+    // An operand of a code (a three-letter code's, a GTL definition's) follows its
+    // code's rules, not its letter's.
+    if (w.slot >= operand_slot(0) && w.slot <= operand_slot(kOperandSlots - 1)) continue;
     char letter = w.address.size() == 1 ? w.address[0] : 0;
     auto addr = rules.tables->addresses.find(letter);
     // The second word of a letter that may stand twice (NC-110 R1 R2) counts as it.

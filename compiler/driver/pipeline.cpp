@@ -236,6 +236,7 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
         s.diags.report(DiagId::FileUnreadable, {}, settings.files, why);
         return cannot_start();
       }
+      if (!store->prepared()) s.diags.report(DiagId::FilesUnprepared, {}, settings.files);
     }
     if (!settings.input.empty() && !read_answers(s, m, settings.input, answers, setup.plc)) return cannot_start();
     setup.options.input = &answers;

@@ -44,7 +44,7 @@ Flattener::Flattener(Writer& writer, const ProgramSemantics& source, const Machi
   for (uint16_t i : source.power_on)
     for (const FnCall& c : source.codes[i].calls)
       if (c.fn == Fn::WorkOffset) want_.work_offset = c.arg;
-  comp_path_ = source.conventions.comp_path;
+  comp_path_ = source.conventions.comp_path();
   if (source.conventions.initial_feed > 0) feed_programmed_ = source.conventions.initial_feed;  // ISO iso.initial_feed
 }
 

@@ -559,6 +559,14 @@ void Structured::write_words(const std::vector<std::string>& words) {
 // of its own before or after the motion, with the S and T words it needs; so do M
 // codes the target does not take in one block (ISO M03 and M06).
 void Structured::translated_machine() {
+  // NC-110 GTL (§2.11): geometric elements and the profiles made of them, one refusal
+  // for all of them; the flattened translation writes the path a run makes.
+  const bool opens = block_has(Fn::GtlOpen);
+  if (opens || in_gtl_ || block_has(Fn::GtlDefine) || block_has(Fn::GtlClose)) {
+    in_gtl_ = (in_gtl_ || opens) && !block_has(Fn::GtlClose);
+    return fail(block_->range, fmt::format("GTL geometry (§2.11): {} has no geometric elements or profiles; "
+                                           "--flatten writes the path a run makes", w_.dialect()));
+  }
   std::vector<Mapped> codes;
   const auto motion_code = [](const Mapped& c) {
     const auto& calls = c.code.entry->desc.calls;
@@ -1777,13 +1785,17 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} || desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
       !target_code(desc.calls, desc.scope))
     return timed_dwell(w, desc, out);
-  // ISO's G41/G42 move the tool's centre off the path (cutter_path.cpp); the others'
-  // runs keep to the programmed path.
-  if (src_.comp_path != dst_.comp_path && std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) {
+  // ISO's and NC-110's G41/G42 move the tool's centre off the path by their own rules
+  // (cutter_path.h); the others' runs keep to the programmed path.
+  if (src_.cutter != dst_.cutter && std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) {
         return c.fn == Fn::CompLeft || c.fn == Fn::CompRight;
-      }))
+      })) {
+    if (src_.comp_path() && dst_.comp_path())
+      return fail(w.range, fmt::format("{}: cutter compensation turns outside corners and ends by other rules in {} than in {}",
+                                       desc.name, p_->dialect, w_.dialect()));
     return fail(w.range, fmt::format("{}: cutter compensation moves the tool's centre off the path in {}, not in {}", desc.name,
-                                     src_.comp_path ? p_->dialect : w_.dialect(), src_.comp_path ? w_.dialect() : p_->dialect));
+                                     src_.comp_path() ? p_->dialect : w_.dialect(), src_.comp_path() ? w_.dialect() : p_->dialect));
+  }
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
       // A target that reads the source's words has its cycles too (LinuxCNC's are

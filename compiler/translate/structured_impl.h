@@ -232,6 +232,7 @@ class Structured {
   bool needs_whole_ = false;
   ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
   bool in_main_ = false;               // the unit being written is the main program
+  bool in_gtl_ = false;                // between an NC-110 G21 and its G20 (a GTL profile)
   bool operand_words_ = false;         // the block's words are its code's operands (UAO, a dwell, a frame)
   bool offset_selected_ = false;       // the main program has selected a work offset
   bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did

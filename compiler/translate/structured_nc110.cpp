@@ -304,8 +304,8 @@ class Nc110Structured final : public Structured {
   }
 
   // NC-110 shows texts and values (DIS). A value not right after a text shows as
-  // NAME=value: a text that says that name before such a value is the reader's, and
-  // left to it.
+  // NAME=value (apart from an item before it): a text that says that before such a
+  // value is the reader's, and left to it.
   void display(const ir::Stmt& s) override {
     std::string text = "(DIS";
     bool after_text = false;  // the item written last is a text
@@ -317,9 +317,10 @@ class Nc110Structured final : public Structured {
         continue;
       }
       const std::string& shown = p_->texts[e.text];
+      // ("NAME=" first; " NAME=" apart from an item before it.)
       const bool names_next = !after_text && i + 1 < s.items.size() &&
                               p_->exprs[s.items[i + 1].value].op != ir::ExprOp::String &&
-                              shown == expr(s.items[i + 1].value, kOr) + "=";
+                              shown == (i == 0 ? "" : " ") + expr(s.items[i + 1].value, kOr) + "=";
       if (names_next) continue;
       text += "," + quoted(shown);
       after_text = true;

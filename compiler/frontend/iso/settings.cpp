@@ -84,7 +84,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.tool_change_iso = true;               // §8.31
   c.fanuc_rules = true;                   // §8.8-§8.31 (E-08..E-27)
   c.corners = true;                       // §8.3
-  c.comp_path = true;                     // §8.10
+  c.cutter = CutterStyle::FanucA;        // §8.10
   c.tool_change_retract = true;
   if (auto v = p.boolean("iso.tool_change_retract", diags)) c.tool_change_retract = *v;
   if (auto v = p.number("iso.initial_feed", diags)) {

@@ -446,8 +446,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       if (letter_o(0) && pieces.size() == 1) return fail("the letter O where the digit 0 is meant");
       if (pieces.size() == 2 && type(0) == Nc110Lexer::LETTER && type(1) == Nc110Lexer::DIGITS && adjacent(1) &&
           pieces[0].text.size() == 1 && kGtlElements.find(pieces[0].text[0]) != std::string_view::npos) {
-        report_gtl(op.range, op.text);
-        return std::nullopt;
+        return fail(fmt::format("{} is a GTL element, not a value: FEP, FEL and FEC read its numbers (§2.12)", op.text));
       }
       if (type(0) == Nc110Lexer::LETTER) {
         bool ok = false;
@@ -728,8 +727,8 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       break;
     }
     case Action::Display: {
-      // Items one after the other; a value alone shows as NAME=value (§2.13.6.1,
-      // decision 20); a text has at most 32 characters.
+      // Items one after the other; a value alone shows as NAME=value, apart from an item
+      // before it (§2.13.6.1, decision 37); a text has at most 32 characters.
       s = ir::Stmt(ir::StmtKind::Display, block_.range);
       for (size_t i = 0; i < ops.size(); ++i) {
         const Operand& op = ops[i];
@@ -746,8 +745,9 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
           s.items.push_back({string_expr(op.text, op.range), op.type});  // as written
           continue;
         }
+        // A value after another item stands apart from it: "E10=5 E40=2.5".
         if (i == 0 || program_.exprs[ops[i - 1].value].op != ir::ExprOp::String)
-          s.items.push_back({string_expr(op.text + "=", op.range), op.type});
+          s.items.push_back({string_expr((i == 0 ? "" : " ") + op.text + "=", op.range), op.type});
         s.items.push_back({op.value, op.type});
       }
       break;

@@ -12,8 +12,7 @@ namespace {
 
 constexpr size_t kMaxBlockLength = 128;  // characters (§2.4.4)
 constexpr std::string_view kLowerCase = "abcdlmoprstuvw";  // Table 2.1
-constexpr std::string_view kGtlLetters = "oplcadms";
-constexpr std::string_view kCompensationLetters = "buvw";
+constexpr std::string_view kDefinitionLetters = "oadm";  // of GTL definitions only (§2.11.3)
 
 bool blank(char c) { return c == ' ' || c == '\t'; }
 
@@ -103,10 +102,13 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
           const uint32_t cp = c >= 0x80 ? decode_utf8(text, 0).code_point : c;
           // Typographic quotes come with texts copied from word processors.
           bool quote = cp == 0x201C || cp == 0x201D || cp == 0x201E || cp == 0xAB || cp == 0xBB;
+          // ... and dashes with numbers ("X–10").
+          bool dash = (cp >= 0x2010 && cp <= 0x2015) || cp == 0x2212;
           size_t length = 0;
           r_.diags_.report(DiagId::CharInvalid, range,
                            c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
                            : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
+                           : dash  ? fmt::format("'{}' (U+{:04X}, a typographic dash: a minus is written '-')", text, cp)
                                    : describe_char(text, 0, length));
         }
         return;
@@ -163,11 +165,6 @@ bool Reader::second_instruction(size_t at) {
   diags_.report(DiagId::OneInstruction, {file_, line_no_, static_cast<uint32_t>(start + 1), line_no_, static_cast<uint32_t>(end + 1)},
                 fmt::format("{}, '{}'", what, line_.substr(start, end - start)));
   return true;
-}
-
-void Reader::report_gtl(const SourceRange& range, std::string_view text, std::string_view what) {
-  diags_.report(DiagId::Unsupported, range, fmt::format("the GTL {} {}", what, text), "GTL geometry (§2.11)");
-  block_.has_errors = true;
 }
 
 void Reader::report_cyrillic(const SourceRange& range, const std::string& letter) {
@@ -276,13 +273,17 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   }
   size_t body = skip_leading(line, first);
   const Kind kind = body < line.size() && line[body] == '(' ? Kind::Code
+                    : gtl_definition(line, body)             ? Kind::Gtl
                     : has_equals(line.substr(body))          ? Kind::Assign
                                                              : Kind::Iso;
   kind_ = kind;
 
   input_.load(decoded_);
   lexer_.setInputStream(&input_);
-  size_t mode = kind == Kind::Iso ? size_t{Nc110Lexer::DEFAULT_MODE} : kind == Kind::Assign ? size_t{Nc110Lexer::ASSIGN} : size_t{Nc110Lexer::TLC};
+  size_t mode = kind == Kind::Iso      ? size_t{Nc110Lexer::DEFAULT_MODE}
+                : kind == Kind::Assign ? size_t{Nc110Lexer::ASSIGN}
+                : kind == Kind::Gtl    ? size_t{Nc110Lexer::GTL}
+                                       : size_t{Nc110Lexer::TLC};
   lexer_.setMode(mode);
   tokens_.setTokenSource(&lexer_);
   // The tokens first: a block beyond the limits of nesting and length is not parsed.
@@ -307,13 +308,13 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
       else iso_block(ctx);
       break;
     }
+    case Kind::Gtl: {
+      auto* ctx = parser_.gtlBlock();
+      if (block_.has_errors) leading(ctx->leading(), true);
+      else gtl_block(ctx);
+      break;
+    }
     case Kind::Assign: {
-      // A GTL definition (`p2 = X10 Y25`, `c1=I15 J15 r5`, `l1=c1,c2`, §2.11) is
-      // reported as a whole; its leading fields are still read.
-      if (size_t n = gtl_definition(line, body)) {
-        report_gtl({file_, line_no, static_cast<uint32_t>(body + 1), line_no, static_cast<uint32_t>(body + n + 1)},
-                   line.substr(body, n));
-      }
       auto* ctx = parser_.assignBlock();
       if (block_.has_errors) leading(ctx->leading(), true);
       else assign_block(ctx);
@@ -558,11 +559,11 @@ void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
   if (letter >= 'a' && letter <= 'z') {
     if (kLowerCase.find(letter) == std::string_view::npos)
       return fail(DiagId::AddressUnknown, fmt::format("lower-case '{}'", letter));
-    if (kGtlLetters.find(letter) != std::string_view::npos)
-      return report_gtl(r, shown, "word");
-    if (kCompensationLetters.find(letter) != std::string_view::npos)
-      return fail(DiagId::Unsupported, fmt::format("'{}'", shown), "cutter radius compensation (§2.8.7, §2.9)");
+    if (kDefinitionLetters.find(letter) != std::string_view::npos)
+      return fail(DiagId::GtlWord, shown, letter == 'o' ? ": an origin is defined as o1 = X.. Y.. a.." : "");
   }
+  if (letter == 's' && !(v && v->eref.empty() && !v->sign && v->number == "2"))
+    return fail(DiagId::GtlSyntax, "s2 takes the second solution; the first is taken without s (§2.8.6)");
   if (letter == 'N') return fail(DiagId::LeadingFieldOrder, "the block number N comes first in the block, with its digits");
   if (letter == 'E') return fail(DiagId::ParameterNumber, s_.e_count - 1);
   auto entry = s_.tables.addresses.find(letter);
@@ -698,12 +699,16 @@ void Reader::check_iso_block() {
   if (measure && !result)
     fail(measure->range, fmt::format("{} needs the E parameter its results go to, e.g. E40",
                                      program_.semantics.codes[measure->code].name));
-  if (radius && !hole) {
-    diags_.report(DiagId::Unsupported, radius->range, fmt::format("'r{}' outside G73", radius->text),
-                  "cutter radius compensation (§2.8.7)");
-    block_.has_errors = true;
+  // r beside a measuring code other than G73 is a fillet in a block that measures.
+  if (radius && measure && !hole)
+    fail(radius->range, fmt::format("r is the nominal radius of the hole G73 measures; {} takes none",
+                                    program_.semantics.codes[measure->code].name));
+  if (hole && !radius) {
+    bool upper = false;
+    for (const ir::Word& w : block_.words) upper = upper || w.address == "R";
+    fail(measure->range, upper ? "G73 needs the nominal radius of the hole in the lower-case r; R is a cycle's level"
+                               : "G73 needs the nominal radius of the hole in r");
   }
-  if (hole && !radius) fail(measure->range, "G73 needs the nominal radius of the hole in r");
   if (measure && result) {
     const std::string name = program_.semantics.codes[measure->code].name;
     if (!hole && (axes < 1 || axes > 3))

@@ -2,7 +2,8 @@
 // apart first (§2.5), then lexed in the mode of its block type and parsed by the
 // ANTLR grammar (grammar/Nc110*.g4); the visitor code here turns the parse tree
 // into IR and reports what the grammar cannot say (reader.cpp: leading fields and
-// ISO blocks; expressions.cpp: assignments; codes.cpp: three-letter codes).
+// ISO blocks; expressions.cpp: assignments; codes.cpp: three-letter codes; gtl.cpp:
+// GTL definitions).
 #pragma once
 
 #include <antlr4-runtime.h>
@@ -47,7 +48,7 @@ class Reader {
   const std::vector<CallSite>& calls() const { return calls_; }
 
  private:
-  enum class Kind { Iso, Assign, Code };
+  enum class Kind { Iso, Assign, Code, Gtl };
   Kind kind_ = Kind::Iso;  // of the block being read
 
   // Lines and tokens.
@@ -117,12 +118,13 @@ class Reader {
 
   // codes.cpp: three-letter codes.
   void code_block(Nc110Parser::TlcBlockContext* ctx);
+  void gtl_block(Nc110Parser::GtlBlockContext* ctx);
+  std::optional<ir::ExprId> gtl_value(char letter, bool minus, Nc110Parser::WordValueContext* v, SourceRange r);
   void code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignature& sig, SourceRange code_range);
   struct Piece;
   struct Operand;
   // GTL geometry (§2.11) is later work: an element (`c1`) or a definition (`c1=...`)
   // is reported as not supported.
-  void report_gtl(const SourceRange& range, std::string_view text, std::string_view what = "element");
   // Reports a second instruction starting at byte `at` of the line, if there is one.
   bool second_instruction(size_t at);
   // A Cyrillic letter where a Latin one is read: NC1027 naming its Latin twin, if any.

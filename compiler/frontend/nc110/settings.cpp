@@ -281,6 +281,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.cycle_needs_cancel = true;
   c.pitch_change_word = 'I';
   c.corrector_in_tool_word = true;
+  c.cutter = CutterStyle::Nc110;  // §2.8.7: the trace shows the tool centre's path
   c.max_call_depth = 2;
   c.result_space = 0;  // E
   c.arc_tolerance = 0.01;

@@ -15,7 +15,9 @@ import zlib
 
 HEADER = 16
 # Opcodes, numbered in the order vm/opcodes.h lists them.
-OPCODES = re.findall(r"^  X\((\w+),", open(os.path.join(os.path.dirname(__file__), "../../../vm/opcodes.h")).read(), re.M)
+# (The opcode list only: the operand kinds before it are an X-macro too.)
+_HEADER_TEXT = open(os.path.join(os.path.dirname(__file__), "../../../vm/opcodes.h")).read()
+OPCODES = re.findall(r"^  X\((\w+),", _HEADER_TEXT[_HEADER_TEXT.index("#define NCC_OPCODES"):], re.M)
 NOP, CONST_DEC, NEG, DIV, CALL1, CODE, WORD_DEC, WORD_POP, CALL_ENTRY = (
     OPCODES.index(name) for name in ("Nop", "ConstDec", "Neg", "Div", "Call1", "Code", "WordDec", "WordPop", "CallEntry"))
 SQRT = 7  # stdlib/builtins.h

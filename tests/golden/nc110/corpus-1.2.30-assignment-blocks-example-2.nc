@@ -5,8 +5,8 @@
 ; Corrected: the printed line 802 merges two blocks and puts a blank in the label:
 ; "LAB 1" E51 = -0.00000124 +5/E35 = FEL(37,1). §2.12 prints them as two blocks with
 ; "LAB1" (L7727, L7733), as here (the as-printed line: corpus-1.2.30-as-printed.nc).
-; DIS blocks added. The '/' block reads the GTL line l37, which is undefined until GTL
-; exists (decision 10): with USB = 1 (the default) the run stops there with NC4050; with
+; DIS blocks added. The '/' block reads the GTL line l37, which no block defines
+; (decision 71): with USB = 1 (the default) the run stops there with NC4050; with
 ; the block-skip switch on (variant .skip, USB = 0) it is skipped and all values show.
 "LAB1" E51 = -0.00000124 +5
 (DIS,E51)

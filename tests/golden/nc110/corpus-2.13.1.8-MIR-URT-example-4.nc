@@ -2,10 +2,14 @@
 ; Fig. 2.117, seed lines 8294-8318). Corrected: N104 is printed (URT,O) with the Latin
 ; letter O for the digit 0 (both renderings; decision 19 makes it NC3018, as in
 ; corpus-2.13.1.2-UOT-example-as-printed).
-; The example rotates a GTL profile (c1 l1 c2 l2 c3 l3) six times by 60 degrees; GTL
-; geometry is later work. Checks: each GTL definition (N81-N86) and GTL word (N92,
-; N94-N99, N101) is NC3034 at the element, so nothing runs; the other blocks (G41/G40,
-; the RPT/URT part N89-N90, N102-N104) have no error.
+; The example rotates a GTL profile (c1 l1 c2 l2 c3 l3) six times by 60 degrees: a
+; triangle with round corners, closed (last element c1), travelled counter-clockwise;
+; G41 puts the "MILL D=8" (profile nc110-mills: radius 4) inside, so the corners' circles
+; of radius 5 shrink to 1. Checked by hand: l1 = c1,c2 touches c1 at (16.970, 10.402)
+; (the tangent at the centres' direction (35, 15)); moved 4 to its left it starts at
+; X15.3939 Y14.0809, where N92 goes and every pass's c1 ends; N100's Z0 comes after
+; the last element's move, before G20 (§2.11.8.4). Each pass is the first turned by
+; E26 about the origin (URT applies when the profile runs, decision 65).
 N75 (DIS,"MILL D=8")
 N81  c1=I15 J15 r5
 N82  c2=I50 J30 r5

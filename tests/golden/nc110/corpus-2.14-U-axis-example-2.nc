@@ -4,9 +4,13 @@
 ; values: N10 S500 F100; N12 (UIO,X10,Y20,Z30); N13 is printed "G X Y 8" (a letter is
 ; lost in both renderings): Z8 here; N29 "..." is dropped.
 ; Profile frame-uaxis: origin 15 and tool T20.20 of the head.
-; Checks: the GTL definitions (N3-N9), the GTL words (p1, l1..l5, p2) and the corner
-; words b5 and r-15 (cutter radius compensation) are later work: NC3034 at each, so
-; nothing runs; the DPI, UAO, UIO blocks and the Z-U moves have no error.
+; Checks (decisions 65-70): an open GTL profile from p1 to p2 under G41 with T20.20's
+; radius 0.8, with a chamfer b5 and a fillet r-15, in diameters as programmed
+; (decision 75). By hand: N16 starts square to l1 (at -135 deg) on its left:
+; (0.566, 185.434); l2 moved 0.8 to its left is U179.2, l3 Z-49.2, l5 U99.2; the
+; chamfer from (Z-45, U180) to (Z-50, U175) moved meets U179.2 at Z-44.669 and Z-49.2 at
+; U174.669; the fillet r-15 (clockwise, about Z-65 U125.062, tangent to l3 and l4) grows
+; to 15.8; N24 ends square to l5 at p2: Z-100 U99.2; N25 leaves it.
 N1 (DIS,".................")
 N2 (DPI,Z,U)
 N3 p1 = Z U186
