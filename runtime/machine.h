@@ -502,6 +502,7 @@ class Machine {
   bool turning_ = false;                // CTL
   uint32_t locked_ = 0;                 // M10/M12: axes that must not move
   bool profile_running_ = false;        // a G27/G28 profile is running: no M, S or T
+  bool graphic_cleared_ = false;        // CLG since the last UCG (DCG comes after it)
   Spline spline_;
   uint64_t spline_bytes() const;  // of its points (held_bytes)
   size_t next_contact_ = 0;             // the simulated probe's next contact

@@ -615,6 +615,39 @@ bool Machine::frame_function(FnCall call) {
       }
       break;
     }
+    // §2.13.7: the graphic display, events a picture of the run can draw.
+    case Fn::GraphicField: {
+      auto mode = whole(0, 1, 3, "the display mode");
+      // Two axes with their limits (pairs), and the third one, marked, alone.
+      std::vector<int> pairs;
+      std::optional<int> third;
+      for (int a : listed) {
+        if (has_slot(second_slot(kAxisLetters[a]))) pairs.push_back(a);
+        else third = a;
+      }
+      if (!mode || pairs.size() != 2) break;
+      if (modal_.comp != 0) {
+        report_code(DiagId::GraphicDisplay, "UCG comes before tool radius compensation is switched on");
+        break;
+      }
+      std::string field = fmt::format("field mode {}", *mode);
+      for (int a : pairs)
+        field += fmt::format(" {}{}..{}", kAxisLetters[a], four_decimals(program_axis(a, value(a))),
+                             four_decimals(program_axis(a, axis_units(a, slot_value(second_slot(kAxisLetters[a]))))));
+      if (third) field += fmt::format(" marks {}", kAxisLetters[*third]);
+      graphic_cleared_ = false;
+      text_event(EventKind::Graphic, field, block_.request->source);
+      break;
+    }
+    case Fn::GraphicClear:
+      graphic_cleared_ = true;
+      text_event(EventKind::Graphic, "clear", block_.request->source);
+      break;
+    case Fn::GraphicOff:
+      if (!graphic_cleared_) report_code(DiagId::GraphicOrder, "DCG comes after CLG: the display is cleared before it is switched off");
+      graphic_cleared_ = false;
+      text_event(EventKind::Graphic, "off", block_.request->source);
+      break;
     case Fn::DwellSeconds:
       if (auto t = operand(0)) {
         if (*t < 0 || *t > 32) report_slot(DiagId::DwellTime, operand_slot(0), shortest(*t), "must lie between 0 and 32 s");

@@ -71,6 +71,7 @@ enum class EventKind : uint8_t {
                      // n = 1: a text answered, after a line break in text
   Screen,            // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
   Sync,              // text: what a process did with the others: "restart process 2", "wait for process 1" (NC-110 chapter 4)
+  Graphic,           // text: the graphic display (NC-110 UCG, CLG, DCG): "field mode 2 X100..150 Y50..250", "clear", "off"
 };
 
 inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }

@@ -692,6 +692,7 @@ void Flattener::event(const Event& e) {
     case EventKind::Input: refuse(e.source, "operator input (INP)"); break;
     case EventKind::Screen: refuse(e.source, "the user screen (SCR, DEF, OUT)"); break;
     case EventKind::Sync: refuse(e.source, "a process statement (EXE, REL, WAI, SND)"); break;
+    case EventKind::Graphic: drop(e.source, "the graphic display of the path (UCG, CLG, DCG)"); break;
     case EventKind::Aux: refuse(e.source, "auxiliary function " + e.text + " of the machine's logic"); break;
     case EventKind::CompLoad: refuse(e.source, "loading a compensation entry (G93)"); break;
     case EventKind::Tolerance: refuse(e.source, "an in-position tolerance (DTL)"); break;

@@ -31,6 +31,7 @@ std::string kind_name(OperandKind k) {
     case OperandKind::Zone: return "a zone number 1..3";
     case OperandKind::Turning: return "the letter T";
     case OperandKind::Condition: return "an end condition 0..3";
+    case OperandKind::Mode: return "a display mode 1..3";
     case OperandKind::Channel: return "a channel 0..255";
     case OperandKind::Structure: return "a record structure 0..255";
     case OperandKind::Record: return "a record 1..32767";
@@ -66,6 +67,7 @@ struct NumericOperand {
 constexpr NumericOperand kNumericOperands[] = {
     {OperandKind::Origin, 0, 99, true, "IN"},       {OperandKind::Count, 0, 99, true, "BY"},
     {OperandKind::Zone, 1, 3, true, "BY"},          {OperandKind::Condition, 0, 3, true, "BY"},
+    {OperandKind::Mode, 1, 3, true, "BY"},
     {OperandKind::Angle, -99999.9999, 99999.9999, false, "RE"},
     {OperandKind::Factor, 0.0001, 99999.9999, false, "RE"},
     {OperandKind::Seconds, 0, 32, false, "LR"},
@@ -262,6 +264,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Count:
     case OperandKind::Zone:
     case OperandKind::Condition:
+    case OperandKind::Mode:
     case OperandKind::Angle:
     case OperandKind::Factor:
     case OperandKind::Seconds:
@@ -639,6 +642,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
   };
   switch (sig.action) {
     case Action::Function: {
+      if (sig.fn == Fn::GraphicField && block_.sync != '#') diags_.report(DiagId::GraphicSync, code_range);
       // The code, then its operands as words: an axis list at the axes' slots, axis
       // values there too (a pair's second one at the second slots), the rest at the
       // operand slots in order (word_slots.h).

@@ -17,6 +17,7 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       {"count", OperandKind::Count},         {"program", OperandKind::Program}, {"label", OperandKind::Label},
       {"comparand", OperandKind::Comparand}, {"item", OperandKind::Item},       {"seconds", OperandKind::Seconds},
       {"zone", OperandKind::Zone},           {"turning", OperandKind::Turning}, {"condition", OperandKind::Condition},
+      {"mode", OperandKind::Mode},
       {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
       {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
       {"binding", OperandKind::Binding},     {"prompt", OperandKind::Prompt},   {"target", OperandKind::Target},

@@ -19,6 +19,7 @@ namespace ncc::nc110 {
 // What an operand of a three-letter code is (three_letter_codes.tsv).
 enum class OperandKind : uint8_t {
   Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition,
+  Mode,  // UCG's display mode (§2.13.7.1)
   Channel, Structure, Record, Records, File, Access, Binding,  // ASSET (chapter 5)
   Prompt, Target, Field, Row, Column, Format, Switch, Attribute,  // INP, SCR, DEF, OUT (§5.5, §5.6)
   Process, Wait  // EXE, SND, WAI (chapter 4)

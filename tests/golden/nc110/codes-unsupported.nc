@@ -1,20 +1,16 @@
 ; The three-letter codes of the parts of the manual ncc does not implement yet: tool life (TOF,
-; §2.13.10), tool correctors (RQU RQP, §2.13.8), probe settings (DPT, §2.13.9), graphics (UCG CLG
-; DCG, §2.13.7) and virtual axes (UAV, §2.17). (ASSET files: asset-operands; INP: corpus-5.5-INP,
-; inp-errors; the user screen: screen-errors; processes: process-operands.)
+; §2.13.10), tool correctors (RQU RQP, §2.13.8), probe settings (DPT, §2.13.9) and virtual axes
+; (UAV, §2.17). (ASSET files: asset-operands; INP: corpus-5.5-INP, inp-errors; the user screen:
+; screen-errors; processes: process-operands; the graphic display: graphic-display.)
 ; docs/dialects/nc110.md: they parse and are reported as not supported yet (NC3034 at the code, with
 ; the meaning of three_letter_codes.tsv); their operands are not read. First each code alone, then
 ; each as the manual writes it (seed lines in the comments), with leading fields where it has them.
 ; The first block ends the run (M30): the blocks below are read and checked, not run (§2.15).
-; Known problem: the .out cites CLG §2.13.7.3, UAV §2.13.11.
 M30
 (TOF)
 (RQU)
 (RQP)
 (DPT)
-(UCG)
-(CLG)
-(DCG)
 (UAV)
 ; seed line 10442
 "A3" N2101 (TOF,13)
@@ -26,9 +22,5 @@ N88 # (RQU,1,1,ZE30)
 N32  (RQP,30,30,ZE35)
 ; seed line 10133
 (DPT,10,12,1000)
-; seed line 9778
-N8  (CLG)
-; seed line 9779
-N9  (DCG)
 ; seed line 10952
 (UAV, 1, XC, UV, E40)
