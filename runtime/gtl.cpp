@@ -142,6 +142,9 @@ size_t Shape::value_count() const {
 }
 
 std::string form_error(const Shape& shape, bool s2) {
+  for (size_t i = 1; i < shape.ops.size(); ++i)
+    if (shape.ops[i - 1] == Operand::None && shape.ops[i] != Operand::None)
+      return "the definition's operands leave a gap: not a definition the compiler makes";
   const std::string sig = signature(shape);
   for (const Form& f : kForms) {
     if (f.target != shape.target || f.sig != sig) continue;
@@ -376,6 +379,8 @@ Result define(const Shape& shape, std::span<const double> values, const Store& s
               std::string_view axis_letters, int abscissa, int ordinate) {
   Reader in{values, store, axis_letters, abscissa, ordinate, 2, {}, {}, false};
   const bool s2 = values.size() > 1 && values[1] != 0;
+  // The compiler checked the form; a bytecode file may hold any shape.
+  if (std::string why = form_error(shape, s2); !why.empty()) return {std::nullopt, why};
   std::vector<Element> e;
   for (Operand op : shape.ops) {
     if (op == Operand::None) break;

@@ -45,6 +45,9 @@ double Machine::gtl_tolerance() const { return to_program(config_.gtl_tolerance)
 
 void Machine::gtl_define(uint16_t arg) {
   const gtl::Shape shape = gtl::Shape::unpack(arg);
+  // (A bytecode file may hold a shape the compiler does not make.)
+  if (std::string why = gtl::form_error(shape, false); !why.empty() || shape.value_count() > kOperandSlots)
+    return report(DiagId::GtlGeometry, 0, std::string(1, gtl::letter(shape.target)), why.empty() ? "too many operands" : why);
   std::vector<double> values;
   for (size_t i = 0; i < shape.value_count(); ++i) values.push_back(slot_value(operand_slot(static_cast<int>(i))));
   const char letter = gtl::letter(shape.target);

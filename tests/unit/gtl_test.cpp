@@ -74,6 +74,17 @@ TEST(GtlShape, PacksIntoTheFunctionArgument) {
   EXPECT_EQ(s.value_count(), 2u + 2 + 4 + 1);
 }
 
+TEST(GtlShape, AnyShapeOfAFileIsChecked) {
+  // A bytecode file may hold any argument: every one gives an element or a reason.
+  const Store store;
+  for (unsigned arg = 0; arg < (1u << 14); arg += 7) {
+    const Shape shape = Shape::unpack(static_cast<uint16_t>(arg));
+    const std::vector<double> values(shape.value_count(), 1);
+    const Result r = define(shape, values, store, {}, "XYZABCUVWPQD", 0, 1);
+    EXPECT_TRUE(r.element || !r.why.empty()) << arg;
+  }
+}
+
 TEST(GtlShape, FormsOfTheManual) {
   EXPECT_EQ(form_error(Def(Kind::Line).p(1).a(30).shape(), false), "");
   EXPECT_EQ(form_error(Def(Kind::Point).l(1).c(2).shape(), true), "");
