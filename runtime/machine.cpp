@@ -168,7 +168,7 @@ void Machine::emit(Event e) {
   e.source = source();
   // A move starts where the machine stands (it moves after its event); only the
   // cutter path needs to know.
-  if (!is_move(e.kind) || !conv_.comp_path()) return out(e);
+  if (!is_move(e.kind) || !conv_.comp_path() || path_.passes_moves()) return out(e);
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
   out(e, &start);
 }
@@ -894,37 +894,46 @@ void Machine::action() {
         return report(DiagId::CompPath, l, fmt::format("{} stands outside the compensated profile: between G41/G42 and G40 no "
                                                          "block has M, H, S or T (§2.8.7)", l));
   if (modal_.gtl || gtl_open() || block_has(Fn::GtlOpen) || block_has(Fn::GtlClose)) return gtl_block();
-  // NC-110 §2.9: u v w correct the axis the block programs, not under G41/G42.
-  for (int k = 0; k < 3; ++k) {
-    const char factor = "uvw"[k];
-    if (!has(factor)) continue;
-    const int axis = k == 0 ? modal_.plane.u : k == 1 ? modal_.plane.v : modal_.plane.w;
-    const std::string shown = std::string(1, factor) + shortest(word(factor));
-    if (modal_.comp != 0)
-      return report(DiagId::CompPath, factor, fmt::format("{} corrects a point by the tool's radius; G41/G42 does that already: "
-                                                            "not both (§2.9)", shown));
-    if (axis < 0 || !has(kAxisLetters[axis]))
-      return report(DiagId::CompPath, factor, fmt::format("{} corrects {}, the {} of the plane {}, which this block does not program (§2.9)",
-                                                            shown, axis < 0 ? std::string("the axis") : std::string(1, kAxisLetters[axis]),
-                                                            k == 0 ? "abscissa" : k == 1 ? "ordinate" : "normal", plane_name(modal_.plane)));
-  }
-  // Outside a profile (G21 ... G20): the words of its blocks (§2.11.8, §2.11.9).
-  for (char l : {'p', 'l', 'c', 's', 'r', 'b'}) {
-    if (!has(l) || (l == 'r' && block_has(Fn::MeasureHole))) continue;
-    if (l == 'r' || l == 'b') {
-      // §2.8.7: a corner of a compensated path, in a block of its own.
-      const std::string shown = std::string(1, l) + shortest(word(l));
-      if (conv_.cutter != CutterStyle::Nc110 || modal_.comp == 0)
-        return report(DiagId::CompPath, l, fmt::format("{} joins two moves under G41/G42 or two elements of a GTL profile: "
-                                                         "neither is in force (§2.8.7)", shown));
-      if (has_axis_word() || has('r') == has('b'))
-        return report(DiagId::CompPath, l, fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
-      if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
-      return path_.corner(l == 'r', word(l), block_.request->source);
+  // NC-110's lower-case words (most blocks have none): u v w, and a profile's outside one.
+  static const std::bitset<kWordSlots> kLowerCase = [] {
+    std::bitset<kWordSlots> b;
+    for (char l : std::string_view("uvwplcsrb")) b.set(static_cast<size_t>(letter_slot(l)));
+    return b;
+  }();
+  if ((block_.request->words->present & kLowerCase).any()) {
+    // NC-110 §2.9: u v w correct the axis the block programs, not under G41/G42.
+    for (int k = 0; k < 3; ++k) {
+      const char factor = "uvw"[k];
+      if (!has(factor)) continue;
+      const int axis = k == 0 ? modal_.plane.u : k == 1 ? modal_.plane.v : modal_.plane.w;
+      const std::string shown = std::string(1, factor) + shortest(word(factor));
+      if (modal_.comp != 0)
+        return report(DiagId::CompPath, factor, fmt::format("{} corrects a point by the tool's radius; G41/G42 does that already: "
+                                                              "not both (§2.9)", shown));
+      if (axis < 0 || !has(kAxisLetters[axis]))
+        return report(DiagId::CompPath, factor, fmt::format("{} corrects {}, the {} of the plane {}, which this block does not program (§2.9)",
+                                                              shown, axis < 0 ? std::string("the axis") : std::string(1, kAxisLetters[axis]),
+                                                              k == 0 ? "abscissa" : k == 1 ? "ordinate" : "normal", plane_name(modal_.plane)));
     }
-    return report(DiagId::GtlProfile, l, fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
-                                                     l == 's' ? std::string("s2") : std::string(1, l) + shortest(word(l))));
+    // Outside a profile (G21 ... G20): the words of its blocks (§2.11.8, §2.11.9).
+    for (char l : {'p', 'l', 'c', 's', 'r', 'b'}) {
+      if (!has(l) || (l == 'r' && block_has(Fn::MeasureHole))) continue;
+      if (l == 'r' || l == 'b') {
+        // §2.8.7: a corner of a compensated path, in a block of its own.
+        const std::string shown = std::string(1, l) + shortest(word(l));
+        if (conv_.cutter != CutterStyle::Nc110 || modal_.comp == 0)
+          return report(DiagId::CompPath, l, fmt::format("{} joins two moves under G41/G42 or two elements of a GTL profile: "
+                                                           "neither is in force (§2.8.7)", shown));
+        if (has_axis_word() || has('r') == has('b'))
+          return report(DiagId::CompPath, l, fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
+        if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
+        return path_.corner(l == 'r', word(l), block_.request->source);
+      }
+      return report(DiagId::GtlProfile, l, fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
+                                                       l == 's' ? std::string("s2") : std::string(1, l) + shortest(word(l))));
+    }
   }
+
   const bool axes = has_axis_word();
   if (conv_.fanuc_rules) arc_block_rules();
   if (block_.measure != Fn::Count) {
