@@ -413,15 +413,17 @@ TEST(GtlProfile, Problems) {
     auto got = p.take_problem();
     return got ? std::to_string(got->tag) + ": " + got->what : std::string();
   };
+  // An element of the store, called in the block `tag`.
+  auto call = [&](Profile& p, Kind k, int n, size_t tag) { p.element(*s.find(k, n), {k, n}, false, tag); };
   EXPECT_EQ(problem([&](Profile& p) {
               p.open_at({0, 1}, 1, 0, 0, {});
-              p.element(*s.find(Kind::Line, 1), {Kind::Line, 1}, false, 2);
+              call(p, Kind::Line, 1, 2);
             }),
             "2: the profile's start point X0 Y1 does not lie on its first element l1 (§2.11.8.2)");
   EXPECT_EQ(problem([&](Profile& p) {
               p.open_at({0, 0}, 1, 0, 0, {});
-              p.element(*s.find(Kind::Line, 1), {Kind::Line, 1}, false, 2);
-              p.element(*s.find(Kind::Line, 2), {Kind::Line, 2}, false, 3);
+              call(p, Kind::Line, 1, 2);
+              call(p, Kind::Line, 2, 3);
             }),
             "3: l1 and l2 do not meet: join them with a fillet r (§2.11.9)");
   EXPECT_EQ(problem([&](Profile& p) {
@@ -431,19 +433,19 @@ TEST(GtlProfile, Problems) {
             "2: a profile does not start with a fillet: r comes between two elements (§2.11.9.2)");
   EXPECT_EQ(problem([&](Profile& p) {
               p.open_at({0, 0}, 1, 0, 0, {});
-              p.element(*s.find(Kind::Line, 1), {Kind::Line, 1}, false, 2);
+              call(p, Kind::Line, 1, 2);
               p.chamfer(1, 3);
-              p.element(*s.find(Kind::Circle, 1), {Kind::Circle, 1}, false, 4);
+              call(p, Kind::Circle, 1, 4);
             }),
             "3: a chamfer b joins two lines; c1 is a circle (§2.11.9.3)");
   EXPECT_EQ(problem([&](Profile& p) {
               p.open_at({0, 0}, 1, 1, 4, {});
-              p.element(*s.find(Kind::Circle, 1), {Kind::Circle, 1}, false, 2);
+              call(p, Kind::Circle, 1, 2);
             }),
             "2: the tool radius 4 is larger than the radius 3 of c1 on its inside: the tool cannot follow it");
   EXPECT_EQ(problem([&](Profile& p) {
               p.open_at({9, 0}, 1, 0, 0, {});
-              p.element(*s.find(Kind::Line, 1), {Kind::Line, 1}, false, 2);
+              call(p, Kind::Line, 1, 2);
               p.close_at({3, 0}, 3);
             }),
             "2: l1 would run against its direction, from X9 Y0 back to X3 Y0 (§2.11.1)");
