@@ -451,6 +451,10 @@ void CutterPath::finish(bool exit) {
   if (s_->waiting_) s_->leave(exit && !s_->rules_.cancel_after);
 }
 
+void CutterPath::leave() {
+  if (s_->waiting_) s_->leave(true);
+}
+
 void CutterPath::corner(bool fillet, double size, uint32_t source) { s_->corner_ = State::Corner{fillet, size, source}; }
 
 }  // namespace ncc

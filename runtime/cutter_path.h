@@ -48,6 +48,9 @@ class CutterPath {
   // The end of the run: a path still waiting leaves at a right angle (`exit`), or just
   // ends beside its last point (a run an error stopped).
   void finish(bool exit = true);
+  // A code that changes the axes under the path (NC-110 UAV): a move waiting leaves now,
+  // at a right angle back to its programmed end.
+  void leave();
   // The events held while a move waits for the next (a loop that never moves in the
   // plane makes them grow), and their bytes.
   size_t held_events() const;

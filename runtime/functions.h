@@ -24,6 +24,8 @@ enum class Fn : uint16_t {
 std::string_view fn_name(Fn fn);
 FnGroup fn_group(Fn fn);
 std::optional<Fn> fn_by_name(std::string_view name);
+// An NC-110 three-letter function: the block's words are its operands, not a move.
+constexpr bool takes_operands(Fn fn) { return fn >= Fn::OriginSelect && fn <= Fn::ProbeSettings; }
 
 // A function with its argument: offset(3), cycle(2) (index into the cycle table).
 struct FnCall {

@@ -223,12 +223,15 @@ void Profile::close_at(const Vec& end, size_t tag) {
       fail(tag, "the profile has no element between G21 and G20");
     } else if (connector_.kind != Connector::Kind::None) {
       fail(connector_.tag, "a profile does not end with a fillet or a chamfer: an element comes after it (§2.11.9)");
-    } else if ((end - start_).norm() < tol_.distance) {
-      fail(tag, "an open profile ends at another point than its start; a closed one names its last element in G21 (§2.11.8)");
     } else if (!on(current_->nominal, end)) {
       fail(tag, fmt::format("the profile's end point {} does not lie on its last element {} (§2.11.8.2)", at(end),
                             element_name(current_->id)));
     } else {
+      // §2.11.8.2 wants another point than the first; the manual's own §2.17.1.1 ends
+      // where it starts, and the path is as well defined: run it, and say so.
+      if ((end - start_).norm() < tol_.distance && !problem_)
+        problem_ = Problem{tag, "the open profile ends at its start point, where §2.11.8.2 wants another: a closed profile names "
+                                "its last element in G21 (§2.11.8.3)", true};
       move(*current_, end, beside(current_->nominal, end));
       flush(0, held_.size());
     }

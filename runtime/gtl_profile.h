@@ -63,6 +63,7 @@ class Profile {
   struct Problem {
     size_t tag = 0;
     std::string what;
+    bool warning = false;  // the profile goes on
   };
   std::optional<Problem> take_problem() { return std::exchange(problem_, std::nullopt); }
 

@@ -47,7 +47,9 @@ void Machine::power_on() {
   // select it on all axes (NC-110 §2.13.1.1).
   offsets_[0].axes = (1u << kAxisCount) - 1;
   tool_loaded_ = 0;
-  offset_number_ = 0;
+  select_offset(0);
+  probe_ = config_.probe;
+  unusable_.clear();
   block_skip_ = config_.block_skip;
   optional_stop_ = config_.optional_stop;
   reset_state();
@@ -73,6 +75,7 @@ void Machine::power_on() {
 }
 
 void Machine::reset_state() {
+  virtual_off();  // the end of the program cancels virtual axes
   // NC-110: the corrector of the tool in the spindle stays in force (§2.7.8, M30).
   const int length = conv_.corrector_in_tool_word ? modal_.length : 0;
   modal_ = Modal{};
@@ -89,7 +92,7 @@ void Machine::reset_state() {
   helix_pitch_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
-  if (!conv_.corrector_in_tool_word) offset_number_ = 0;
+  if (!conv_.corrector_in_tool_word) select_offset(0);
   spindle_direction_ = 0;
   cycle_ = {};
   parabola_middle_.reset();
@@ -259,7 +262,7 @@ void Machine::cutter_comp_event() {
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
   if (conv_.comp_path() && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
-  if (auto it = tool_offsets_.find(offset_number_); it != tool_offsets_.end()) e.a = to_program(it->second.radius);
+  e.a = to_program(offset_.radius);
   emit(e);
 }
 
@@ -456,7 +459,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       }
       tool_loaded_ = tool_selected_;
       // NC-110 §2.7.7: M06 brings the corrector T selected into force.
-      if (conv_.corrector_in_tool_word) offset_number_ = corrector_selected_;
+      if (conv_.corrector_in_tool_word) select_offset(corrector_selected_);
       event(EventKind::ChangeTool, tool_loaded_);
       break;
     case Fn::CoolantMist:
@@ -617,7 +620,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     default:
       // The three-letter functions (origins, transforms, limits, zones...): their
       // axis words are operands, not a move.
-      if (frame_function(call)) block_.operands = true;
+      if (frame_function(call) || tooling_function(call) || virtual_function(call)) block_.operands = true;
       break;
   }
 }
@@ -642,7 +645,7 @@ void Machine::registers() {
     emit(e);
   }
   if (auto tool = whole_number('T', "tool numbers")) {
-    tool_selected_ = *tool;
+    tool_selected_ = usable_tool(*tool);
     if (tool_selected_ != 0 && !config_.tools.count(tool_selected_)) report(DiagId::ToolUnknown, 'T', tool_selected_);
     Event e{EventKind::SelectTool};
     e.n = tool_selected_;
@@ -655,6 +658,10 @@ void Machine::registers() {
         report_slot(DiagId::OffsetUnknown, second_slot('T'), "corrector", shortest(corrector));
       else
         corrector_selected_ = *n;
+      // A sister in the programmed tool's place brings its own corrector, if it has one.
+      if (auto sister = config_.tools.find(tool_selected_); tool_selected_ != *tool && sister != config_.tools.end() &&
+                                                              sister->second.corrector)
+        corrector_selected_ = sister->second.corrector;
     }
   }
   // pp H, P: auxiliary functions the machine's logic carries out (H, then P).
@@ -674,7 +681,7 @@ void Machine::registers() {
       report(DiagId::OffsetUnknown, letter, "offset number", *number);
       continue;
     }
-    offset_number_ = *number;  // takes effect at once on an active compensation
+    select_offset(*number);  // takes effect at once on an active compensation
   }
 }
 
@@ -687,13 +694,11 @@ std::optional<int> Machine::whole_number(char letter, const char* what) {
 }
 
 Machine::Compensation Machine::compensation() const {
-  auto it = tool_offsets_.find(offset_number_);
-  const bool known = it != tool_offsets_.end();
-  const double radius = known ? it->second.radius : 0, length = known ? it->second.length : 0;
-  Compensation c{modal_.comp, modal_.comp ? radius : 0, {}};
+  const double length = offset_.length;
+  Compensation c{modal_.comp, modal_.comp ? offset_.radius : 0, {}};
   if (length == 0) return c;  // every block asks: keep the usual case short
   if (modal_.length != 0)
-    for (char axis : known && it->second.axis ? std::string(1, it->second.axis) : conv_.tool_offset_axes)
+    for (char axis : offset_.axis ? std::string(1, offset_.axis) : conv_.tool_offset_axes)
       c.length[axis_index(axis)] = modal_.length * length;
   // pp '&': per axis, 1 adds the length, 2 subtracts it.
   for (size_t i = 0; i < conv_.link_axes.size() && i < modal_.link.size(); ++i)
@@ -934,6 +939,7 @@ void Machine::action() {
     }
   }
 
+  if (virtual_axes_.mode != 0 && virtual_axes_programmed()) return;
   const bool axes = has_axis_word();
   if (conv_.fanuc_rules) arc_block_rules();
   if (block_.measure != Fn::Count) {

@@ -359,6 +359,17 @@ class Machine {
   double tool_radius() const;                       // of the offset in force, mm
   bool has_axis_word() const;
   bool frame_function(FnCall call);                 // the NC-110 three-letter functions
+  bool tooling_function(FnCall call);               // ... of the tool table and the probe (machine_tooling.cpp)
+  std::optional<int> whole_operand(int i, int lo, int hi, const char* what);  // operand i, reported unless whole in lo..hi
+  void select_offset(int n);                        // the corrector or offset entry n in force
+  int usable_tool(int tool);                        // tool, or the sister that replaces it once unusable
+  // NC-110 UAV (machine_virtual.cpp).
+  bool virtual_function(FnCall call);
+  void virtual_event(const std::string& what);
+  void virtual_off();                               // the real axes where the virtual ones took them
+  bool virtual_axes_programmed();                   // a driven axis programmed: reported
+  bool virtual_path(const std::vector<AxisValues>& path);  // mode 1: outside the minimum radius; C's turns
+  static constexpr double kChord = 1e-4;            // mm: the largest sagitta of the chords an arc's path checks use
   void origin_event();
   void transform_event();
   bool path_allowed(const std::vector<AxisValues>& path);  // a position's range, limits and protected zones
@@ -443,7 +454,8 @@ class Machine {
   Modal modal_;
   Frame frame_;
   std::map<int, WorkOffset> offsets_;  // the work offsets (NC-110 RQO changes them)
-  std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it)
+  std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it, NC-110 RQU changes it)
+  OffsetEntry offset_;                       // the entry in force: a change to the table takes effect when selected
   AxisValues base_origin_{};           // each axis' offsets_ value at frame_.base: origin() is hot
   void refresh_base_origin();          // after frame_.base or offsets_ change
   AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
@@ -506,6 +518,21 @@ class Machine {
   Spline spline_;
   uint64_t spline_bytes() const;  // of its points (held_bytes)
   size_t next_contact_ = 0;             // the simulated probe's next contact
+  ProbeConfig probe_;                   // the probe's distances and speed (DPT changes them)
+  std::map<int, std::string> unusable_; // tools declared unusable (TOF, RQU), and why
+  // UAV (§2.17-2.19): the program moves `virt`, `real` follow (mode 3: the masters
+  // `virt` are programmed, the slaves `real` follow).
+  struct VirtualAxes {
+    int mode = 0;                     // 0 none, 1 polar, 2 cylinder, 3 parallel, 4 rotation in space
+    std::vector<int> real, virt;
+    double value = 0;                 // mm: 1 the minimum radius, 2 the cylinder's radius
+    std::array<int, 3> master{};      // mode 3: each slave's master
+    std::array<int, 3> sign{1, 1, 1}; // mode 3: -1 mirrored; mode 1: [0] the side of X the tool started on
+    std::array<double, 9> rotation{}; // mode 4: real = R virtual, row-major
+    AxisValues saved{};               // machine positions at activation (the letters the virtual axes borrow)
+    AxisValues zero{};                // the origins at activation: the virtual and real axes' zeros
+    double angle = 0;                 // mode 1: how far C has turned, unwrapped, radians
+  } virtual_axes_;
 
   // Switches and system variables.
   bool block_skip_ = false;

@@ -34,12 +34,18 @@ std::string plane_name(const Plane& p);
 // the correctors of NC-110's T tool.corrector.
 struct ToolEntry {
   std::string description;
+  std::vector<int> sisters;  // NC-110 tool life (§2.13.10): the tools that replace it once unusable, in order
+  int corrector = 0;         // ... and the corrector a sister brings in place of the programmed one (0: that one)
 };
 
 struct OffsetEntry {
   double length = 0;
   double radius = 0;
   char axis = 0;  // the axis the length applies to (0: the dialect's)
+  // NC-110 §2.13.8: a corrector may keep the wear RQU adds up (c) and its maxima (m);
+  // beyond one, the tool is unusable. No maximum: the corrector keeps none.
+  double wear_length = 0, wear_diameter = 0;
+  std::optional<double> max_wear_length, max_wear_diameter;
 };
 
 // A work offset (GOST G54..G59) or an NC-110 origin (0..99): values of the axes it

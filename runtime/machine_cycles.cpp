@@ -411,7 +411,7 @@ void Machine::tap_feed(const AxisValues& t, bool out) {
 void Machine::measure() {
   const Fn fn = block_.measure;
   const std::string name = fn == Fn::MeasurePoint ? "G72" : fn == Fn::MeasureHole ? "G73" : "G74";
-  const ProbeConfig& probe = config_.probe;
+  const ProbeConfig& probe = probe_;
   const AxisValues start = machine_;
   // Where the values go: the block's E word (a code chosen at run time has none).
   const std::optional<uint32_t> e = has('E') ? whole_in<uint32_t>(word('E'), 0, 65535) : std::nullopt;
@@ -447,10 +447,7 @@ void Machine::measure() {
     rapid(start);
     report(DiagId::ProbeNoContact, 0, name, where(from), where(to));
   };
-  const double radius = [&] {
-    auto it = tool_offsets_.find(offset_number_);
-    return it == tool_offsets_.end() || fn == Fn::MeasureDeviation ? 0.0 : it->second.radius;
-  }();
+  const double radius = fn == Fn::MeasureDeviation ? 0.0 : offset_.radius;
   const std::string contact_name = fmt::format("the next probe contact (probe.contacts[{}])", index);
 
   if (fn == Fn::MeasureHole) {

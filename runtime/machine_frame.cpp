@@ -151,10 +151,7 @@ AxisValues Machine::program_target() {
   return p;
 }
 
-double Machine::tool_radius() const {
-  auto it = tool_offsets_.find(offset_number_);
-  return it == tool_offsets_.end() ? 0 : it->second.radius;
-}
+double Machine::tool_radius() const { return offset_.radius; }
 
 bool Machine::position_in_range(int axis, double v) {
   if (std::fabs(v) <= kMaxPosition) return true;
@@ -354,6 +351,7 @@ void Machine::load_compensation() {
   OffsetEntry& e = tool_offsets_[*entry];
   if (auto v = word_if(conv_.comp_length_word)) e.length = length_units(*v);
   if (auto v = word_if(conv_.comp_radius_word)) e.radius = length_units(*v);
+  if (*entry == offset_number_) offset_ = e;  // the entry in force: at once
   Event ev{EventKind::CompLoad};
   ev.n = *entry;
   ev.a = to_program(e.length);
@@ -378,13 +376,7 @@ void Machine::reference_approach() {
 bool Machine::frame_function(FnCall call) {
   // The operands: #1, #2... at the operand slots; axes at their letters' slots.
   auto operand = [&](int i) { return slot_if(operand_slot(i)); };
-  auto whole = [&](int i, int lo, int hi, const char* what) -> std::optional<int> {
-    auto v = operand(i);
-    if (!v) return std::nullopt;
-    const std::optional<int> n = whole_in(*v, lo, hi);
-    if (!n) report_slot(DiagId::OperandValue, operand_slot(i), what, shortest(*v), fmt::format("a whole number from {} to {}", lo, hi));
-    return n;
-  };
+  auto whole = [&](int i, int lo, int hi, const char* what) { return whole_operand(i, lo, hi, what); };
   std::vector<int> listed;  // the axes the operands name, in canonical order
   for (char letter : conv_.axes)
     if (has(letter)) {
@@ -689,6 +681,7 @@ bool Machine::frame_function(FnCall call) {
 // ---- Working limits and protected zones (NC-110 §2.13.5.3, §2.13.5.5) --------------
 
 bool Machine::path_allowed(const std::vector<AxisValues>& path) {
+  if (!virtual_path(path)) return false;
   // What target() has not refused (a cycle's levels, an arc's centre) is refused here.
   for (const AxisValues& p : path)
     for (int a = 0; a < kAxisCount; ++a)

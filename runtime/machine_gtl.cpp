@@ -223,8 +223,10 @@ void Machine::gtl_moves() {
     }
   }
   feed_ = feed;
-  if (auto problem = g.profile.take_problem())
-    issue({DiagId::GtlProfile, diag_message(DiagId::GtlProfile, problem->what), g.blocks[problem->tag - g.first_tag].source, -1, -1});
+  if (auto problem = g.profile.take_problem()) {
+    const DiagId id = problem->warning ? DiagId::GtlProfileEnd : DiagId::GtlProfile;
+    issue({id, diag_message(id, problem->what), g.blocks[problem->tag - g.first_tag].source, -1, -1});
+  }
   // The blocks no piece waits for any more.
   if (!g.profile.active()) {
     g.first_tag += g.blocks.size();

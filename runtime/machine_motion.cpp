@@ -20,7 +20,6 @@ constexpr double kTwoPi = 2 * std::numbers::pi;
 constexpr char kParameterOf[3] = {'I', 'J', 'K'};
 constexpr double kSamePoint = 1e-7;  // mm: end point equal to start point
 constexpr double kMaxTurns = 1e6;    // of one helix
-constexpr double kChord = 1e-4;      // mm: the largest sagitta of the chords limit checks use
 constexpr double kMaxDwellSeconds = 60;      // NC-110 TMR under G94 (§2.10.1)
 constexpr double kMaxDwellRevolutions = 30000;  //              under G95
 
@@ -340,7 +339,7 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
     return;
   }
   // The path for the limit checks: chords no farther than kChord from the arc.
-  if (std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; }) ||
+  if (virtual_axes_.mode == 1 || std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; }) ||
       std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; })) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
     const int chords = whole_in(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0), 1, 100000).value_or(1);

@@ -48,8 +48,9 @@ std::string event_name(EventKind kind) {
       "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
       "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
       "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input", "screen", "sync", "graphic"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::Graphic) + 1, "one name per event kind");
+      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input", "screen", "sync", "graphic",
+      "tooling", "virtual"};
+  static_assert(std::size(names) == static_cast<size_t>(EventKind::Virtual) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
 
@@ -237,6 +238,8 @@ class TextSink final : public BufferedSink {
       case EventKind::Screen: return "screen " + free_text(e.text);
       case EventKind::Sync: return "sync " + free_text(e.text);
       case EventKind::Graphic: return "graphic " + free_text(e.text);
+      case EventKind::Tooling: return "tooling " + free_text(e.text);
+      case EventKind::Virtual: return "virtual " + free_text(e.text);
     }
     return "?";
   }
@@ -386,7 +389,9 @@ class JsonlSink final : public BufferedSink {
       }
       case EventKind::Screen:
       case EventKind::Sync:
-      case EventKind::Graphic: s += R"(,"what":)" + quoted(e.text); break;
+      case EventKind::Graphic:
+      case EventKind::Tooling:
+      case EventKind::Virtual: s += R"(,"what":)" + quoted(e.text); break;
       case EventKind::CompLoad:
         s += fmt::format(R"(,"n":{})", e.n);
         num("length", e.a);
@@ -502,6 +507,8 @@ class CanonSink final : public BufferedSink {
       case EventKind::Screen: line(fmt::format("COMMENT(\"ncc: screen {}\")", json_escape(e.text))); break;
       case EventKind::Sync: line(fmt::format("COMMENT(\"ncc: sync {}\")", json_escape(e.text))); break;
       case EventKind::Graphic: line(fmt::format("COMMENT(\"ncc: graphic {}\")", json_escape(e.text))); break;
+      case EventKind::Tooling: line(fmt::format("COMMENT(\"ncc: tooling {}\")", json_escape(e.text))); break;
+      case EventKind::Virtual: line(fmt::format("COMMENT(\"ncc: virtual {}\")", json_escape(e.text))); break;
       case EventKind::CompLoad:
         line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
         break;

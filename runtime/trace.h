@@ -72,9 +72,16 @@ enum class EventKind : uint8_t {
   Screen,            // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
   Sync,              // text: what a process did with the others: "restart process 2", "wait for process 1" (NC-110 chapter 4)
   Graphic,           // text: the graphic display (NC-110 UCG, CLG, DCG): "field mode 2 X100..150 Y50..250", "clear", "off"
+  Tooling,           // text: the tool table or the probe changed (NC-110 RQU, RQP, TOF, DPT); n: what (kTooling*)
+  Virtual,           // text: virtual axes (NC-110 UAV): "polar X C as U V min radius 7.8782 at U80 V0 X80 C0", "off at ..."
 };
 
 inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }
+
+// What a Tooling event changed, and its text.
+constexpr int kToolingCorrector = 1;  // "corrector 1 tool 10 length 75.2 radius 5 [wear 0.2 0]"
+constexpr int kToolingUnusable = 2;   // "tool 10 unusable (TOF)", "tool 10 replaced by sister 110"
+constexpr int kToolingProbe = 3;      // "probe approach 10 safety 12 feed 600"
 
 struct Event {
   Event() = default;

@@ -431,6 +431,21 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     if (!n) continue;
     ToolEntry t;
     if (auto v = p.string("tools." + key + ".description", diags)) t.description = *v;
+    if (auto v = p.numbers("tools." + key + ".sisters", diags)) {
+      for (double d : *v) {
+        auto sister = whole_in(d, 1, 9999);
+        if (!sister || *sister == *n) {
+          p.report_value(diags, "tools." + key + ".sisters", "must list other tools, 1..9999");
+          t.sisters.clear();
+          break;
+        }
+        t.sisters.push_back(*sister);
+      }
+    }
+    if (auto v = p.number("tools." + key + ".corrector", diags)) {
+      if (auto c = whole_in(*v, 1, 9999)) t.corrector = *c;
+      else p.report_value(diags, "tools." + key + ".corrector", "must be a corrector 1..9999");
+    }
     m.tools[*n] = t;
   }
   for (const std::string& key : p.keys("offsets")) {
@@ -447,8 +462,18 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
       if (v->size() == 1 && axis_index((*v)[0]) >= 0) o.axis = (*v)[0];
       else p.report_value(diags, base + ".axis", "must be one axis letter");
     }
+    if (auto v = p.number(base + ".wear_length", diags)) o.wear_length = *v;
+    if (auto v = p.number(base + ".wear_diameter", diags)) o.wear_diameter = *v;
+    for (auto [key_name, max] : {std::pair{".max_wear_length", &o.max_wear_length}, {".max_wear_diameter", &o.max_wear_diameter}})
+      if (auto v = p.number(base + key_name, diags)) {
+        if (*v >= 0) *max = *v;
+        else p.report_value(diags, base + key_name, "must not be negative");
+      }
     m.offsets[*n] = o;
   }
+  for (const auto& [n, t] : m.tools)
+    if (t.corrector && !m.offsets.count(t.corrector))
+      p.report_value(diags, fmt::format("tools.{}.corrector", n), "must be a corrector of [offsets]");
   read_axes(p, m, diags);
   read_probe(p, m, diags);
   read_asset(p, m.asset, diags);

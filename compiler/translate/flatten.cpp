@@ -693,6 +693,12 @@ void Flattener::event(const Event& e) {
     case EventKind::Screen: refuse(e.source, "the user screen (SCR, DEF, OUT)"); break;
     case EventKind::Sync: refuse(e.source, "a process statement (EXE, REL, WAI, SND)"); break;
     case EventKind::Graphic: drop(e.source, "the graphic display of the path (UCG, CLG, DCG)"); break;
+    case EventKind::Tooling:
+      // A corrector changed is the target's offset table changed: it has no such statement.
+      if (e.n == kToolingCorrector) refuse(e.source, "a change to a tool corrector (RQU, RQP)");
+      else drop(e.source, "a tool declared unusable or the probe's settings (TOF, DPT)");
+      break;
+    case EventKind::Virtual: refuse(e.source, "virtual axes (UAV): the moves are the virtual axes'"); break;
     case EventKind::Aux: refuse(e.source, "auxiliary function " + e.text + " of the machine's logic"); break;
     case EventKind::CompLoad: refuse(e.source, "loading a compensation entry (G93)"); break;
     case EventKind::Tolerance: refuse(e.source, "an in-position tolerance (DTL)"); break;

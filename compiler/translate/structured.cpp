@@ -139,6 +139,7 @@ void Structured::stream(const ir::Program& program, const ir::Block& b, const ir
   }
   block_begun();
   pending_number_ = number_of(b);
+  pending_sync_ = sync_of(b);
   next_ = next;
   block(b);
   next_ = nullptr;
@@ -474,6 +475,7 @@ void Structured::line(std::string text) {
   std::string head = std::exchange(label_, {});
   if (pending_number_) head += (head.empty() ? "" : " ") + fmt::format("{}{}", main_number_ ? ':' : 'N', *pending_number_);
   pending_number_.reset();  // a skipped block's lines all start with '/'
+  if (pending_sync_) head += (head.empty() ? "" : " ") + std::string(1, std::exchange(pending_sync_, 0));
   text = std::exchange(then_, {}) + text;
   if (!head.empty() && !text.empty()) head += ' ';
   text = (skip_ ? "/" : "") + head + text;
@@ -1844,6 +1846,11 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
         std::find(calls.begin(), calls.end(), FnCall{Fn::LengthPlus}) != calls.end())
       out.back().later = length_offset(w.range);
   };
+  if (desc.calls == std::vector<FnCall>{{Fn::Aux}}) {
+    if (auto own = aux_code(desc.name)) return add(*own);
+    return fail(w.range, fmt::format("{} (aux), a function of the machine's logic: {} has no {} of that kind", desc.name,
+                                     w_.dialect(), desc.name));
+  }
   // One code of the same functions, else one code for each.
   if (auto one = target_code(desc.calls, desc.scope)) return add(*one);
   // A code that does more, where what it does more changes nothing here (GOST's G40
@@ -1910,7 +1917,10 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
              each.back().entry->desc.calls == std::vector<FnCall>{{Fn::ToolChange}})
       later = length_offset(w.range);
     else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
-    else return fail(w.range, fmt::format("{} ({}): {} has no code for it{}", desc.name, fn_name(c.fn), w_.dialect(), doing_more(c, desc.scope)));
+    else {
+      operand_words_ |= takes_operands(c.fn);  // refused with it
+      return fail(w.range, fmt::format("{} ({}): {} has no code for it{}", desc.name, fn_name(c.fn), w_.dialect(), doing_more(c, desc.scope)));
+    }
   }
   for (const Code& c : each) add(c);
   if (!later.empty()) {  // a block of its own after the M06's
@@ -2159,6 +2169,15 @@ std::optional<Structured::Code> Structured::target_code(const std::vector<FnCall
   if (calls.size() == 1 && calls[0].fn == Fn::ProgramEnd && !exact_code(calls, scope))
     return exact_code({{Fn::ProgramEndInformation}}, scope);
   return exact_code(calls, scope);
+}
+
+// An auxiliary function is the machine logic's own: the target's code of its name, if
+// that is one too (functions alone cannot tell two of them apart).
+std::optional<Structured::Code> Structured::aux_code(std::string_view name) const {
+  for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})
+    for (const auto& [number, entry] : *table)
+      if (entry.desc.name == name && entry.desc.calls == std::vector<FnCall>{{Fn::Aux}}) return Code{entry.letter, number, &entry};
+  return std::nullopt;
 }
 
 // The target's code that calls exactly `calls` (in any order); of two, not the one

@@ -86,6 +86,7 @@ class Structured {
   virtual void close_unit(const ir::Unit& u, bool main, bool returned) = 0;
   virtual void block_begun() {}  // a block's own state afresh (its scratch values), streamed or not
   virtual void before_block(size_t) {}
+  virtual char sync_of(const ir::Block&) const { return 0; }  // NC-110's '#' or '&', where the target writes it
   virtual void after_block(size_t) {}
   virtual void jump(const ir::Stmt& s) = 0;
   virtual void repeat_begin(const ir::Stmt& s) = 0;
@@ -217,6 +218,7 @@ class Structured {
   const bool target_polar_;  // ... polar coordinates (ISO's G16)
   const ir::Block* block_ = nullptr;
   std::optional<int> pending_number_;  // the block number the next line starts with
+  char pending_sync_ = 0;              // ... and NC-110's '#' or '&' after it
   bool main_number_ = false;           // ... written ':' (a GOST main block)
   std::string then_;                   // what the next line starts with after it (IF [c] THEN)
   std::string label_;                  // ... and before it (NC-110's "LABEL")
@@ -287,6 +289,7 @@ class Structured {
   void parameter(const ir::Word& w, std::vector<std::string>& words);
   std::string as_written(const ir::Word& w);
   std::optional<Code> exact_code(const std::vector<FnCall>& calls, Scope scope) const;
+  std::optional<Code> aux_code(std::string_view name) const;  // an auxiliary function's code of that name
   using Position = std::array<std::optional<double>, 3>;
   void centre(const ir::Word& w, const Position& start, std::vector<std::string>& words);
   void absolute_centre(const Position& start, std::vector<std::string>& out);

@@ -150,6 +150,8 @@ class Nc110Structured final : public Structured {
     for (int c = BY; c <= RE; ++c) class_used_[c] = 0;
   }
 
+  char sync_of(const ir::Block& b) const override { return b.sync; }  // the block waits for the motion, or does not
+
   void before_block(size_t i) override {
     const ir::Block& b = unit_->blocks[i];
     if (label_at_.count(i)) {
@@ -157,6 +159,7 @@ class Nc110Structured final : public Structured {
       forget();
     }
     pending_number_ = number_of(b);
+    pending_sync_ = sync_of(b);
     // An ISO jump target's number is its label: the label says it.
     if (p_->dialect == "iso" && label_at_.count(i) && b.number && b.label == fmt::format("N{}", *b.number)) pending_number_.reset();
     if ((b.skippable) && std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {

@@ -36,7 +36,7 @@ STATE_ONLY = frozenset((
     "cutter_comp", "work_offset", "position_offset", "origin", "transform", "tolerance",
     "limits", "zone", "configuration", "comment", "message", "block", "path", "clamp",
     "override", "spindle_hold", "spindle_range", "diameter", "feed_reduction", "offset_load",
-    "comp_load", "input", "screen", "sync", "asset"))
+    "comp_load", "input", "screen", "sync", "asset", "graphic", "tooling", "virtual"))
 
 POINT_FIELDS = ("end", "centre", "control", "control1", "control2", "tool_offset")
 TOLERANCE_FIELDS = ("radius", "sweep", "pitch", "pitch_change", "phase", "orient")

@@ -32,6 +32,14 @@ std::string kind_name(OperandKind k) {
     case OperandKind::Turning: return "the letter T";
     case OperandKind::Condition: return "an end condition 0..3";
     case OperandKind::Mode: return "a display mode 1..3";
+    case OperandKind::Tool: return "a tool number 1..9999";
+    case OperandKind::Corrector: return "a corrector number 1..9999";
+    case OperandKind::Increment: return "an increment of the length (axis) or the diameter (K)";
+    case OperandKind::Distance: return "a distance in mm";
+    case OperandKind::Speed: return "a speed in mm/min";
+    case OperandKind::Virtual: return "a mode 0..4";
+    case OperandKind::Axes: return "axis letters";
+    case OperandKind::Value: return "a value";
     case OperandKind::Channel: return "a channel 0..255";
     case OperandKind::Structure: return "a record structure 0..255";
     case OperandKind::Record: return "a record 1..32767";
@@ -68,6 +76,9 @@ constexpr NumericOperand kNumericOperands[] = {
     {OperandKind::Origin, 0, 99, true, "IN"},       {OperandKind::Count, 0, 99, true, "BY"},
     {OperandKind::Zone, 1, 3, true, "BY"},          {OperandKind::Condition, 0, 3, true, "BY"},
     {OperandKind::Mode, 1, 3, true, "BY"},
+    {OperandKind::Tool, 1, 9999, true, "IN"},       {OperandKind::Corrector, 1, 9999, true, "IN"},
+    {OperandKind::Distance, 0.001, 9999.999, false, "LR"}, {OperandKind::Speed, 1, 99999, false, "LR"},
+    {OperandKind::Virtual, 0, 4, true, "BY"},       {OperandKind::Value, -99999.9999, 99999.9999, false, nullptr},
     {OperandKind::Angle, -99999.9999, 99999.9999, false, "RE"},
     {OperandKind::Factor, 0.0001, 99999.9999, false, "RE"},
     {OperandKind::Seconds, 0, 32, false, "LR"},
@@ -103,6 +114,7 @@ struct Reader::Operand {
   std::string first_text, second_text;  // an axis value as written: "-300"
   char axis = 0;
   std::string name, device;         // a label or a program
+  std::optional<uint32_t> parameter; // an axis value that is an E parameter: its index
   bool is_text = false;             // value is a String or a Text
   uint32_t chars = 0;               // of a Text
   VarType type = VarType::LongReal; // how DIS shows the value
@@ -189,10 +201,10 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     return true;
   };
   // An axis word: letter, then a value, an E parameter or nothing (zero).
-  auto axis_word = [&](char& axis, ir::ExprId& out, std::string& shown) -> bool {
+  auto axis_word = [&](char& axis, ir::ExprId& out, std::string& shown, bool or_diameter = false) -> bool {
     if (type(at) != Nc110Lexer::LETTER || !is_letter(pieces[at].text)) return fail("an axis letter comes first"), false;
     axis = pieces[at].text[0];
-    if (s_.conventions.axes.find(axis) == std::string::npos)
+    if (s_.conventions.axes.find(axis) == std::string::npos && !(or_diameter && axis == 'K'))
       return fail(fmt::format("{} is not an axis of this machine ({})", axis, s_.conventions.axes)), false;
     ++at;
     if (letter_o(at) && adjacent(at)) return fail("the letter O where the digit 0 is meant"), false;
@@ -207,6 +219,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       auto e = parameter_at();
       if (!e || !check_class(*e, {"RE", "LR"}, op.range, code)) return false;
       out = parameter_expr(*e, op.range);
+      op.parameter = e;
       return true;
     }
     std::string written;
@@ -265,6 +278,12 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Zone:
     case OperandKind::Condition:
     case OperandKind::Mode:
+    case OperandKind::Tool:
+    case OperandKind::Corrector:
+    case OperandKind::Distance:
+    case OperandKind::Speed:
+    case OperandKind::Virtual:
+    case OperandKind::Value:
     case OperandKind::Angle:
     case OperandKind::Factor:
     case OperandKind::Seconds:
@@ -298,6 +317,28 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     }
     case OperandKind::Dim:
       if (!axis_word(op.axis, op.value, op.first_text)) return std::nullopt;
+      break;
+    case OperandKind::Axes: {
+      // UAV: letters written together, "XC", each an axis once; they travel packed,
+      // a hex digit each (the axis' index + 1), the first lowest.
+      bool ok = false;
+      op.name = letters_and_digits(ok);
+      if (!ok || op.name.empty() || op.name.size() > 4 || op.name.find_first_of("0123456789") != std::string::npos)
+        return fail("1 to 4 axis letters written together, as XC");
+      uint32_t packed = 0;
+      for (size_t i = 0; i < op.name.size(); ++i) {
+        const char a = op.name[i];
+        if (s_.conventions.axes.find(a) == std::string::npos) return fail(fmt::format("{} is not an axis of this machine ({})", a, s_.conventions.axes));
+        if (op.name.find(a) != i) return fail(fmt::format("{} is written twice", a));
+        packed |= static_cast<uint32_t>(axis_index(a) + 1) << (4 * i);
+      }
+      op.value = program_.number(packed, op.range);
+      break;
+    }
+    case OperandKind::Increment:
+      // RQU, RQP (§2.13.8): the length's axis and its increment, or K and the
+      // diameter's; nothing after the letter is 0 ("(RQU,10,1,ZE30,K)").
+      if (!axis_word(op.axis, op.value, op.first_text, true)) return std::nullopt;
       break;
     case OperandKind::Pair: {
       char second = 0;
@@ -497,6 +538,62 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
   return op;
 }
 
+bool Reader::virtual_operands(const CodeSignature& sig, const std::vector<Operand>& ops, SourceRange code_range) {
+  // UAV (§2.17-2.19): what follows the mode depends on it.
+  auto fail = [&](const Operand& op, const std::string& why) {
+    diags_.report(DiagId::OperandKind, op.range, op.text, kind_name(op.kind), sig.code, why);
+    block_.has_errors = true;
+    return false;
+  };
+  const ir::Expr& m = program_.exprs[ops[0].value];
+  if (m.op != ir::ExprOp::Number) return fail(ops[0], "the mode is written as a number: the operands after it depend on it");
+  struct Form {
+    size_t real_lo, real_hi, virt_lo, virt_hi, values;
+    const char* written;
+  };
+  static constexpr Form kForms[] = {{0, 0, 0, 0, 0, "(UAV,0)"},
+                                    {2, 2, 2, 2, 1, "(UAV,1,XC,UV,r): a linear and a rotary axis, two virtual axes, the minimum radius"},
+                                    {1, 1, 1, 1, 1, "(UAV,2,C,V,n): a rotary axis, a virtual axis, the cylinder's radius"},
+                                    {1, 3, 1, 4, 2, "(UAV,3,VWU,XYZ,123,212): 1-3 slaves, 1-4 masters, each slave's master, each slave's mirror"},
+                                    {3, 3, 3, 3, 3, "(UAV,4,XYZ,UVW,a1,a2,a3): three real axes, three virtual axes, three angles"}};
+  const auto mode = static_cast<size_t>(m.number);
+  const Form& form = kForms[mode];
+  const size_t expected = mode == 0 ? 1 : 3 + form.values;
+  if (ops.size() != expected) {
+    if (ops.size() > expected) return fail(ops[expected], fmt::format("mode {} is written {}", mode, form.written));
+    diags_.report(DiagId::OperandMissing, code_range, sig.code, fmt::format("the operands of mode {}: {}", mode, form.written));
+    block_.has_errors = true;
+    return false;
+  }
+  if (mode == 0) return true;
+  const Operand& real = ops[1];
+  const Operand& virt = ops[2];
+  if (real.name.size() < form.real_lo || real.name.size() > form.real_hi) return fail(real, fmt::format("mode {} is written {}", mode, form.written));
+  if (virt.name.size() < form.virt_lo || virt.name.size() > form.virt_hi) return fail(virt, fmt::format("mode {} is written {}", mode, form.written));
+  for (char a : virt.name)
+    if (real.name.find(a) != std::string::npos) return fail(virt, fmt::format("{} stands in both lists", a));
+  if (mode != 3) return true;
+  // The digit strings: one digit a slave, a master's place 1..masters, a mirror 1 or 2.
+  for (size_t k = 0; k < 2; ++k) {
+    const Operand& op = ops[3 + k];
+    const std::string digits = program_.exprs[op.value].op == ir::ExprOp::Number ? op.text : std::string();
+    const char top = k == 0 ? static_cast<char>('0' + virt.name.size()) : '2';
+    const bool ok = digits.size() == real.name.size() &&
+                    std::all_of(digits.begin(), digits.end(), [&](char c) { return c >= '1' && c <= top; });
+    if (!ok)
+      return fail(op, fmt::format("{} digits, one a slave, each 1 to {} ({})", real.name.size(), top,
+                                  k == 0 ? "the place of its master in the list" : "1 normal, 2 mirrored"));
+  }
+  return true;
+}
+
+bool Reader::measured(const std::vector<Operand>& operands) const {
+  return std::all_of(operands.begin(), operands.end(), [&](const Operand& op) {
+    if (op.kind != OperandKind::Increment || op.first_text.empty()) return true;  // "K": 0
+    return op.parameter && *op.parameter < measured_.size() && measured_[*op.parameter];
+  });
+}
+
 void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
   leading(ctx->leading(), true);
   SourceRange code_range = ctx->code()->LETTER().empty() ? range(ctx->LPAREN()) : range(ctx->code());
@@ -521,11 +618,6 @@ void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
     return;
   }
   const CodeSignature& sig = it->second;
-  if (sig.action == Action::Unsupported) {
-    diags_.report(DiagId::Unsupported, code_range, fmt::format("({})", code), sig.meaning);
-    block_.has_errors = true;
-    return;
-  }
   code_operands(ctx, sig, code_range);
   // A loop's begin or end stays when its operands are wrong (reported), so that the
   // loops around it still pair up; the loop runs no time.
@@ -625,11 +717,13 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
   std::map<char, const Operand*> axes;
   for (const Operand& op : matched) {
     if (!op.axis || op.kind == OperandKind::Turning) continue;
-    if (!axes.emplace(op.axis, &op).second) {
+    if (axes.emplace(op.axis, &op).second) continue;
+    if (op.axis == 'K' && op.kind == OperandKind::Increment)  // K is no axis
+      diags_.report(DiagId::OperandKind, op.range, op.text, kind_name(op.kind), code, "K, the diameter's increment, is given twice");
+    else
       diags_.report(DiagId::AxisTwice, op.range, op.axis, code);
-      block_.has_errors = true;
-      return;
-    }
+    block_.has_errors = true;
+    return;
   }
   code_action(sig, matched, code_range);
 }
@@ -643,6 +737,19 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
   switch (sig.action) {
     case Action::Function: {
       if (sig.fn == Fn::GraphicField && block_.sync != '#') diags_.report(DiagId::GraphicSync, code_range);
+      if (sig.fn == Fn::VirtualAxes && !virtual_operands(sig, ops, code_range)) return;
+      if (sig.fn == Fn::CorrectorRequalify || sig.fn == Fn::CorrectorModify) {
+        // One length (a corrector has one) and one diameter.
+        const Operand* length = nullptr;
+        for (const Operand& op : ops)
+          if (op.kind == OperandKind::Increment && op.axis != 'K') {
+            if (length)
+              return fail(DiagId::OperandKind, op.range, op.text, kind_name(op.kind), sig.code,
+                          fmt::format("a corrector has one length: {} and {} both give it", length->axis, op.axis));
+            length = &op;
+          }
+        if (sig.fn == Fn::CorrectorRequalify && block_.sync != '#' && !measured(ops)) diags_.report(DiagId::RequalifySync, code_range);
+      }
       // The code, then its operands as words: an axis list at the axes' slots, axis
       // values there too (a pair's second one at the second slots), the rest at the
       // operand slots in order (word_slots.h).
@@ -654,7 +761,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         const Operand& op = ops[i];
         const OperandItem& item = sig.operands[std::min(i, sig.operands.size() - 1)];
         bool listed_axis = op.kind == OperandKind::Axis && item.repeat != '1';
-        if (op.kind == OperandKind::Dim || op.kind == OperandKind::Pair || listed_axis) {
+        if (op.kind == OperandKind::Dim || op.kind == OperandKind::Pair || op.kind == OperandKind::Increment || listed_axis) {
           add_word(op.axis, letter_slot(op.axis), listed_axis ? program_.number(0, op.range) : op.value, op.first_text,
                    op.range);
           if (op.kind == OperandKind::Pair) add_word(op.axis, second_slot(op.axis), op.second, op.second_text, op.range);
@@ -823,7 +930,6 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         s.label = ops[0].name;
       }
       break;
-    case Action::Unsupported: return;
   }
   block_.stmts.push_back(s);
 }

@@ -195,8 +195,9 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
       }
       default: {
         const int axis = axis_index(letter);
+        if (letter == 'O') return fail(r, "the letter O where the digit 0 is meant: a GTL definition has no O (§2.11.3)");
         if (axis < 0 || letter == 'E') {
-          fail(r, fmt::format("'{}' is not a word of a GTL definition: it takes X Y (the plane's axes), I J, m, a, r, d, "
+          fail(r, fmt::format("'{}' is not a word of a GTL definition: it takes the plane's two axes (X Y, U V...), I J, m, a, r, d, "
                               "o, p, l, c and s2 (§2.11.3)", letter));
           return;
         }

@@ -105,8 +105,10 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
           // ... and dashes with numbers ("X–10").
           bool dash = (cp >= 0x2010 && cp <= 0x2015) || cp == 0x2212;
           size_t length = 0;
+          const std::string keyboard = text == "," ? r_.keyboard_form(range.col - 1) : std::string();
           r_.diags_.report(DiagId::CharInvalid, range,
-                           c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
+                           !keyboard.empty()      ? fmt::format("',' (\"{0},\" is how the keyboard takes a code; a program writes it in parentheses: ({0},...))", keyboard)
+                           : c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
                            : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
                            : dash  ? fmt::format("'{}' (U+{:04X}, a typographic dash: a minus is written '-')", text, cp)
                                    : describe_char(text, 0, length));
@@ -116,14 +118,35 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
         if (text[0] == ';') r_.diags_.report(DiagId::CommentInline, {range.file, range.line, range.col, range.line, range.col + 1});
         else r_.diags_.report(DiagId::OneInstruction, range, fmt::format("words after a three-letter code, '{}'", text));
         return;
-      default:
-        if (!r_.second_instruction(range.col - 1)) r_.diags_.report(DiagId::SyntaxError, range, fmt::format("'{}'", text));
+      default: {
+        if (r_.second_instruction(range.col - 1)) return;
+        // "C- X80": a sign without its digits before the token (an OCR's C0).
+        std::string_view before = r_.line_.substr(0, range.col - 1);
+        while (!before.empty() && before.back() == ' ') before.remove_suffix(1);
+        const bool sign_alone = before.size() >= 2 && (before.back() == '-' || before.back() == '+') &&
+                                std::isalpha(static_cast<unsigned char>(before[before.size() - 2]));
+        r_.diags_.report(DiagId::SyntaxError, range,
+                         sign_alone ? fmt::format("'{}' ('{}' has a sign and no value)", text, before.substr(before.size() - 2))
+                                    : fmt::format("'{}'", text));
+      }
     }
   }
 
  private:
   Reader& r_;
 };
+
+std::string Reader::keyboard_form(size_t comma) const {
+  // "DPT, 10, 12, 1000" (§2.15.1.1): a code typed at the keyboard, without parentheses.
+  std::string_view before = line_.substr(0, comma);
+  while (!before.empty() && before.back() == ' ') before.remove_suffix(1);
+  if (before.size() < 3) return {};
+  std::string_view code = before.substr(before.size() - 3);
+  std::string_view rest = before.substr(0, before.size() - 3);
+  while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
+  const bool numbered = rest.empty() || (rest[0] == 'N' && rest.find_first_not_of("0123456789", 1) == std::string_view::npos);
+  return numbered && s_.codes.count(std::string(code)) ? std::string(code) : std::string();
+}
 
 bool Reader::second_instruction(size_t at) {
   // §2.5: a block holds one instruction. A syntax error where a second one starts
@@ -722,6 +745,8 @@ void Reader::check_iso_block() {
     }
     for (uint32_t e = first; e <= last && e < s_.e_count; ++e)
       if (!check_class(e, {"LR"}, result->range, fmt::format("the result of {}", name))) break;
+    if (measured_.size() <= last) measured_.resize(last + 1);
+    for (uint32_t e = first; e <= last; ++e) measured_[e] = true;
     // Where each axis' value goes: E<first> for the axis written first (§1.2.33:
     // `G 72 Z200 X50 E32` stores Z in E32, X in E33), at the axis' second slot.
     if (!hole) {

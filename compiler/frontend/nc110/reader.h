@@ -131,6 +131,12 @@ class Reader {
   void report_cyrillic(const SourceRange& range, const std::string& letter);
   std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind, const std::string& code);
   void code_action(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);
+  // Every value of RQU's increments is an E parameter a measuring cycle above stores.
+  bool measured(const std::vector<Operand>& operands) const;
+  bool virtual_operands(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);  // UAV's, by mode
+  // The three-letter code a line starts with before the comma at `comma`, typed as at
+  // the keyboard ("DPT, 10, 12, 1000"), or "".
+  std::string keyboard_form(size_t comma) const;
 
   const Settings& s_;
   ir::Program& program_;
@@ -156,6 +162,7 @@ class Reader {
   ir::Block block_;
   std::string last_operand_;  // the last word of the block that is not a G word, as written
   std::vector<CallSite> calls_;
+  std::vector<bool> measured_;  // E parameters G72-G74 blocks above store their results in
 };
 
 }  // namespace ncc::nc110

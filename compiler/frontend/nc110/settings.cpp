@@ -17,7 +17,9 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
       {"count", OperandKind::Count},         {"program", OperandKind::Program}, {"label", OperandKind::Label},
       {"comparand", OperandKind::Comparand}, {"item", OperandKind::Item},       {"seconds", OperandKind::Seconds},
       {"zone", OperandKind::Zone},           {"turning", OperandKind::Turning}, {"condition", OperandKind::Condition},
-      {"mode", OperandKind::Mode},
+      {"mode", OperandKind::Mode},           {"tool", OperandKind::Tool},       {"corrector", OperandKind::Corrector},
+      {"increment", OperandKind::Increment}, {"distance", OperandKind::Distance}, {"speed", OperandKind::Speed},
+      {"virtual", OperandKind::Virtual},     {"axes", OperandKind::Axes},       {"value", OperandKind::Value},
       {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
       {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
       {"binding", OperandKind::Binding},     {"prompt", OperandKind::Prompt},   {"target", OperandKind::Target},
@@ -89,8 +91,7 @@ void read_codes(Settings& s, Diagnostics& diags) {
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {
           {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat}, {"@call", Action::Call},
-          {"@call_range", Action::CallRange}, {"@jump", Action::Jump}, {"@display", Action::Display}, {"@input", Action::Input},
-          {"@unsupported", Action::Unsupported}};
+          {"@call_range", Action::CallRange}, {"@jump", Action::Jump}, {"@display", Action::Display}, {"@input", Action::Input}};
       auto it = kActions.find(action);
       ok = ok && it != kActions.end();
       if (it != kActions.end()) code.action = it->second;

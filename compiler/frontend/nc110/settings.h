@@ -20,6 +20,8 @@ namespace ncc::nc110 {
 enum class OperandKind : uint8_t {
   Origin, Axis, Dim, Pair, Angle, Factor, Count, Program, Label, Comparand, Item, Seconds, Zone, Turning, Condition,
   Mode,  // UCG's display mode (§2.13.7.1)
+  Tool, Corrector, Increment, Distance, Speed,  // TOF, RQU, RQP, DPT (§2.13.8-2.13.10)
+  Virtual, Axes, Value,  // UAV (§2.17-2.19)
   Channel, Structure, Record, Records, File, Access, Binding,  // ASSET (chapter 5)
   Prompt, Target, Field, Row, Column, Format, Switch, Attribute,  // INP, SCR, DEF, OUT (§5.5, §5.6)
   Process, Wait  // EXE, SND, WAI (chapter 4)
@@ -44,7 +46,7 @@ struct OperandItem {
 
 // What a three-letter code does: call a runtime function with its operands, or a
 // statement of the program's flow.
-enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Input, Screen, Process, Unsupported };
+enum class Action : uint8_t { Function, Repeat, EndRepeat, Call, CallRange, Jump, JumpIf, Display, Asset, Input, Screen, Process };
 
 struct CodeSignature {
   std::string code;
