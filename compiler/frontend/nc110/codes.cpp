@@ -587,6 +587,12 @@ bool Reader::virtual_operands(const CodeSignature& sig, const std::vector<Operan
   return true;
 }
 
+void Reader::unsynced(const std::string& code, SourceRange at, const char* why) {
+  auto it = std::find_if(unsynced_.begin(), unsynced_.end(), [&](const Unsynced& u) { return u.code == code; });
+  if (it == unsynced_.end()) unsynced_.push_back({code, at, why, 0});
+  else ++it->more;
+}
+
 bool Reader::measured(const std::vector<Operand>& operands) const {
   return std::all_of(operands.begin(), operands.end(), [&](const Operand& op) {
     if (op.kind != OperandKind::Increment || op.first_text.empty()) return true;  // "K": 0
@@ -736,7 +742,13 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
   };
   switch (sig.action) {
     case Action::Function: {
-      if (sig.fn == Fn::GraphicField && block_.sync != '#') diags_.report(DiagId::GraphicSync, code_range);
+      // §2.13.6.2, §2.13.7.1, §2.13.8: these need the motion before them done ('#', §2.16).
+      if (block_.sync != '#') {
+        if (sig.fn == Fn::DwellSeconds) unsynced(sig.code, code_range, "dwells once the motion before it ends");
+        if (sig.fn == Fn::GraphicField) unsynced(sig.code, code_range, "in a program waits for the motion before it");
+        if (sig.fn == Fn::CorrectorRequalify && !measured(ops))
+          unsynced(sig.code, code_range, "changes the corrector while the moves before it still run, with values no measuring cycle stores");
+      }
       if (sig.fn == Fn::VirtualAxes && !virtual_operands(sig, ops, code_range)) return;
       if (sig.fn == Fn::CorrectorRequalify || sig.fn == Fn::CorrectorModify) {
         // One length (a corrector has one) and one diameter.
@@ -748,7 +760,6 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
                           fmt::format("a corrector has one length: {} and {} both give it", length->axis, op.axis));
             length = &op;
           }
-        if (sig.fn == Fn::CorrectorRequalify && block_.sync != '#' && !measured(ops)) diags_.report(DiagId::RequalifySync, code_range);
       }
       // The code, then its operands as words: an axis list at the axes' slots, axis
       // values there too (a pair's second one at the second slots), the rest at the

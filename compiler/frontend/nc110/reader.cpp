@@ -249,6 +249,8 @@ void Reader::run(ir::Unit& unit) {
     read_line(l, n);
     if (sink_) sink_->take(program_, *unit_);
   }
+  for (const Unsynced& u : unsynced_)
+    diags_.report(DiagId::SyncNeeded, u.at, u.code, u.why, u.more ? fmt::format(" (and in {} more block{})", u.more, u.more == 1 ? "" : "s") : "");
 }
 
 void Reader::read_line(std::string_view line, uint32_t line_no) {

@@ -133,6 +133,16 @@ class Reader {
   void code_action(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);
   // Every value of RQU's increments is an E parameter a measuring cycle above stores.
   bool measured(const std::vector<Operand>& operands) const;
+  // A code that needs '#' without it: reported once a code, at the end of the file,
+  // with the count of the others.
+  void unsynced(const std::string& code, SourceRange at, const char* why);
+  struct Unsynced {
+    std::string code;
+    SourceRange at;
+    const char* why;
+    size_t more;
+  };
+  std::vector<Unsynced> unsynced_;
   bool virtual_operands(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);  // UAV's, by mode
   // The three-letter code a line starts with before the comma at `comma`, typed as at
   // the keyboard ("DPT, 10, 12, 1000"), or "".

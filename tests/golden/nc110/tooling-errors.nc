@@ -5,7 +5,8 @@
 ; N8, N9 operands missing; N10 a distance of 0; N12 the same from an E parameter, at
 ; run time; N14 a negative diameter (10 - 12); N15 the manual's ';' (a misprint for
 ; ','); line 17 the keyboard's form of DPT (§2.15.1.1); N16 Q is no axis here; N17 a
-; tool is whole. N1 and N2 also want # (their values are not measured); N13 has it.
+; tool is whole. N1 and N2 also want # (their values are not measured): one warning,
+; at N1, that counts N2; N13 has it.
 N1 (RQU,10,5,Z0.1)
 N2 (RQU,10,1,X0.1)
 N3 #(RQU,10,1,Z0.1,Y0.2)
