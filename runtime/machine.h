@@ -519,7 +519,11 @@ class Machine {
   uint64_t spline_bytes() const;  // of its points (held_bytes)
   size_t next_contact_ = 0;             // the simulated probe's next contact
   ProbeConfig probe_;                   // the probe's distances and speed (DPT changes them)
-  std::map<int, std::string> unusable_; // tools declared unusable (TOF, RQU), and why
+  struct Unusable {
+    std::string why;        // "TOF", "RQU: ..."
+    bool reported = false;  // selected with no sister left: said once
+  };
+  std::map<int, Unusable> unusable_;    // tools declared unusable
   // UAV (§2.17-2.19): the program moves `virt`, `real` follow (mode 3: the masters
   // `virt` are programmed, the slaves `real` follow).
   struct VirtualAxes {

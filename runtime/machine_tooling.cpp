@@ -2,6 +2,7 @@
 // correctors requalified (RQU, RQP), tools declared unusable (TOF) and replaced by
 // their sisters when selected, the measuring cycles' distances and speed (DPT).
 #include <cmath>
+#include <utility>
 
 #include "machine.h"
 #include "support/text.h"
@@ -39,7 +40,7 @@ int Machine::usable_tool(int tool) {
         text_event(EventKind::Tooling, fmt::format("tool {} replaced by sister {}", tool, sister), source(), kToolingUnusable);
         return sister;
       }
-  report(DiagId::ToolUnusable, 'T', tool, why->second);
+  if (!std::exchange(why->second.reported, true)) report(DiagId::ToolUnusable, 'T', tool, why->second.why);
   return tool;
 }
 
@@ -106,7 +107,7 @@ bool Machine::tooling_function(FnCall call) {
         why = fmt::format("corrector {}'s diameter wear {} is beyond {}", *n, four_decimals(to_program(e.wear_diameter)),
                           four_decimals(to_program(*e.max_wear_diameter)));
       if (why.empty()) break;
-      unusable_.emplace(*tool, "RQU: " + why);
+      unusable_.emplace(*tool, Unusable{"RQU: " + why});
       text_event(EventKind::Tooling, fmt::format("tool {} unusable (RQU: {})", *tool, why), source(), kToolingUnusable);
       break;
     }
@@ -114,7 +115,7 @@ bool Machine::tooling_function(FnCall call) {
       auto tool = whole_operand(0, 1, 9999, "the tool");
       if (!tool) break;
       if (!config_.tools.count(*tool)) report_slot(DiagId::ToolUnknown, operand_slot(0), *tool);
-      unusable_.emplace(*tool, "TOF");
+      unusable_.emplace(*tool, Unusable{"TOF"});
       text_event(EventKind::Tooling, fmt::format("tool {} unusable (TOF)", *tool), source(), kToolingUnusable);
       break;
     }

@@ -15,7 +15,8 @@
 ;   shown all the same (the label A1 follows N540).
 ; N560: T10.1 selects sister 110 with its corrector 11: length 80.
 ; N570: 0.5 of wear on corrector 11, beyond 0.4: tool 110 unusable too.
-; N580: T10 has no usable sister left: NC4105, and the run stops.
+; N580: T10 has no usable sister left: NC4105, and the run stops. `ncc check` goes on
+;   (tooling-requalify.check): N585's selection of tool 10 is not reported again.
 N1 T10.1 M6
 N2 (DPT,5,8,600)
 N170 GX100 Y100
@@ -42,4 +43,5 @@ N540 M00
 N560 T10.1 M6
 N570 # (RQU,110,11,Z0.5)
 N580 T10.1 M6
+N585 T10.1 M6
 N590 M30
