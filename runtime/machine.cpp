@@ -86,6 +86,7 @@ void Machine::reset_state() {
   local_offsets_.clear();
   intermediate_.reset();
   feed_.reset();
+  no_feed_reported_ = false;
   if (conv_.initial_feed > 0) feed_ = conv_.initial_feed;
   last_rotation_ = 0;
   initial_level_.reset();
@@ -348,7 +349,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::FeedPerRevolution: {
       int mode = call.fn == Fn::FeedInverseTime ? 0 : call.fn == Fn::FeedPerMinute ? 1 : 2;
       // F means something else in the new mode: it must be programmed again.
-      if (mode != modal_.feed_mode) feed_.reset();
+      if (mode != modal_.feed_mode) {
+        feed_.reset();
+        no_feed_reported_ = false;
+      }
       modal_.feed_mode = mode;
       event(EventKind::FeedMode, modal_.feed_mode);
       break;
@@ -634,6 +638,7 @@ void Machine::registers() {
     if (range[1] > 0 && !(word('F') >= range[0] && word('F') <= range[1]))
       report(DiagId::FeedRange, 'F', shortest(word('F')), kFeedModes[modal_.feed_mode], shortest(range[0]), shortest(range[1]));
     feed_ = word('F');
+    no_feed_reported_ = false;
     Event e{EventKind::FeedRate};
     e.a = *feed_;
     emit(e);

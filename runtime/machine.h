@@ -494,6 +494,7 @@ class Machine {
   void corner_codes();                        // E-06: what the block after a corner may hold
   void release();
   std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
+  bool no_feed_reported_ = false;  // NC4001 said for the blocks since the last F or feed mode
   std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
   double speed_ = 0;
   int tool_selected_ = 0;

@@ -2,7 +2,8 @@
 ; N117 as printed: "F60,S630" has a comma between the words (both renderings). The
 ; annotations after the blocks are dropped.
 ; Checks: the comma is an error at line 8, column 9, and the block is not read, so the
-; dry run finds no feed rate for the G1 moves N123 and N124 (NC4001); the corners r5
+; dry run finds no feed rate for the G1 moves N123 and N124 (NC4001, said once, at
+; N123); the corners r5
 ; and r-3 are cut as in corpus-2.14-U-axis-example-1.
 N116 (DIS,".....................")
 N117 F60,S630 T9.9 M6

@@ -3,7 +3,8 @@
 ; Expected:
 ;  N1 G01 before any F: NC4001 "linear interpolation needs a feed rate, but no F has been
 ;     programmed in this feed mode" (12:1).
-;  N2 G02 likewise: NC4001 "circular interpolation ..." (13:1).
+;  N2 G02 lacks the same F: not said again (NC4001 is said once until an F or another
+;     feed mode comes).
 ;  N5 after G95 the F of G94 no longer counts: NC4001 (16:1).
 ;  N6 the time word t under G95: NC4073 "the time word t is for feed per minute (G94)
 ;     only" (17:16, at t).
