@@ -75,11 +75,10 @@ bool Machine::virtual_function(FnCall call) {
     return true;
   };
   auto program = [&](int a) { return machine_[a] - origin(a); };
-  // The lists' lengths each mode takes (the compiler checked them).
-  static constexpr size_t kReal[5][2] = {{0, 0}, {2, 2}, {1, 1}, {1, 3}, {3, 3}};
-  static constexpr size_t kVirtual[5][2] = {{0, 0}, {2, 2}, {1, 1}, {1, 4}, {3, 3}};
+  // The lists' lengths the mode takes (the compiler checked them).
   const auto m = static_cast<size_t>(*mode);
-  if (real.size() < kReal[m][0] || real.size() > kReal[m][1] || virt.size() < kVirtual[m][0] || virt.size() > kVirtual[m][1])
+  const VirtualForm& form = kVirtualForms[m];
+  if (real.size() < form.real_lo || real.size() > form.real_hi || virt.size() < form.virt_lo || virt.size() > form.virt_hi)
     return fail(fmt::format("mode {} does not take the axes {} and {}", m, letters(real), letters(virt)));
   for (int a : virt)
     if (std::find(real.begin(), real.end(), a) != real.end()) return fail(fmt::format("{} stands in both lists", kAxisLetters[a]));

@@ -547,17 +547,8 @@ bool Reader::virtual_operands(const CodeSignature& sig, const std::vector<Operan
   };
   const ir::Expr& m = program_.exprs[ops[0].value];
   if (m.op != ir::ExprOp::Number) return fail(ops[0], "the mode is written as a number: the operands after it depend on it");
-  struct Form {
-    size_t real_lo, real_hi, virt_lo, virt_hi, values;
-    const char* written;
-  };
-  static constexpr Form kForms[] = {{0, 0, 0, 0, 0, "(UAV,0)"},
-                                    {2, 2, 2, 2, 1, "(UAV,1,XC,UV,r): a linear and a rotary axis, two virtual axes, the minimum radius"},
-                                    {1, 1, 1, 1, 1, "(UAV,2,C,V,n): a rotary axis, a virtual axis, the cylinder's radius"},
-                                    {1, 3, 1, 4, 2, "(UAV,3,VWU,XYZ,123,212): 1-3 slaves, 1-4 masters, each slave's master, each slave's mirror"},
-                                    {3, 3, 3, 3, 3, "(UAV,4,XYZ,UVW,a1,a2,a3): three real axes, three virtual axes, three angles"}};
   const auto mode = static_cast<size_t>(m.number);
-  const Form& form = kForms[mode];
+  const VirtualForm& form = kVirtualForms[mode];
   const size_t expected = mode == 0 ? 1 : 3 + form.values;
   if (ops.size() != expected) {
     if (ops.size() > expected) return fail(ops[expected], fmt::format("mode {} is written {}", mode, form.written));
