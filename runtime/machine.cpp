@@ -71,6 +71,13 @@ void Machine::power_on() {
       e.a = *feed_;
       trace_.event(e);
     }
+    // And where the work zero is: the positions that follow do not say.
+    if (modal_.work_offset != 0) {
+      Event e{EventKind::WorkOffset};
+      e.n = modal_.work_offset;
+      for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(modal_.work_offset, i));
+      trace_.event(e);
+    }
   }
 }
 
@@ -205,8 +212,9 @@ void Machine::out(const Event& e, const AxisValues* start) {
 }
 
 void Machine::to_path(const Event& e, const AxisValues* start) {
-  if (conv_.comp_path()) path_.event(e, start);
-  else trace_.event(e);
+  if (!conv_.comp_path()) return trace_.event(e);
+  if (is_move(e.kind) && !path_.passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
+  path_.event(e, start);
 }
 
 FnCall Machine::current(FnGroup group) const {

@@ -109,6 +109,10 @@ class TraceSink {
   virtual void flush() {}
   // False when every event is dropped: the runtime then builds none it need not.
   virtual bool wants_events() const { return true; }
+  // A move of the programmed path while cutter radius compensation offsets it (event()
+  // receives the tool centre's path), for a sink that draws both: the simulator's.
+  virtual void programmed(const Event&) {}
+  virtual bool wants_programmed() const { return false; }
 };
 
 class NullSink final : public TraceSink {
@@ -135,10 +139,40 @@ class ProcessSink final : public TraceSink {
     out_.event(stamped);
   }
   bool wants_events() const override { return out_.wants_events(); }
+  void programmed(const Event& e) override {
+    Event stamped = e;
+    stamped.process = process_;
+    out_.programmed(stamped);
+  }
+  bool wants_programmed() const override { return out_.wants_programmed(); }
 
  private:
   TraceSink& out_;
   uint8_t process_;
+};
+
+// Hands each event to two sinks (the simulator's tool path and a trace writer).
+class TeeSink final : public TraceSink {
+ public:
+  TeeSink(TraceSink& first, TraceSink& second) : first_(first), second_(second) {}
+  void event(const Event& e) override {
+    if (first_.wants_events()) first_.event(e);
+    if (second_.wants_events()) second_.event(e);
+  }
+  void flush() override {
+    first_.flush();
+    second_.flush();
+  }
+  bool wants_events() const override { return first_.wants_events() || second_.wants_events(); }
+  void programmed(const Event& e) override {
+    first_.programmed(e);
+    second_.programmed(e);
+  }
+  bool wants_programmed() const override { return first_.wants_programmed() || second_.wants_programmed(); }
+
+ private:
+  TraceSink& first_;
+  TraceSink& second_;
 };
 
 enum class TraceFormat { Text, Jsonl, Canon };
