@@ -1,17 +1,24 @@
-# ncc_embed_files(<output.cpp> <namespace> <file>...)
+# ncc_embed_files(<output.cpp> <namespace> [BASE <dir>] <file>...)
 #
-# Compiles data files (dialect tables, the default profile) into the binary, so ncc
-# runs without an installed data directory. Each file becomes an entry
-# {"relative/path", "contents"} in `embedded_files()`.
+# Compiles data files (dialect tables, the default profile, ncc view's page) into the
+# binary, so ncc runs without an installed data directory. Each file, named relative
+# to BASE (default: the calling directory), becomes an entry {"relative/path",
+# "contents"} in `embedded_files()`.
 function(ncc_embed_files output namespace)
-  set(files ${ARGN})
+  cmake_parse_arguments(PARSE_ARGV 2 EMBED "" "BASE" "")
+  set(base "${CMAKE_CURRENT_SOURCE_DIR}")
+  if(EMBED_BASE)
+    set(base "${EMBED_BASE}")
+  endif()
+  set(files ${EMBED_UNPARSED_ARGUMENTS})
+  list(TRANSFORM files PREPEND "${base}/" OUTPUT_VARIABLE paths)
   add_custom_command(
     OUTPUT "${output}"
     COMMAND ${CMAKE_COMMAND} -DOUTPUT=${output} -DNAMESPACE=${namespace}
-            -DBASE=${CMAKE_CURRENT_SOURCE_DIR} "-DFILES=${files}"
+            -DBASE=${base} "-DFILES=${files}"
             -P "${PROJECT_SOURCE_DIR}/cmake/EmbedFilesScript.cmake"
-    DEPENDS ${files} "${PROJECT_SOURCE_DIR}/cmake/EmbedFilesScript.cmake"
-    WORKING_DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}"
+    DEPENDS ${paths} "${PROJECT_SOURCE_DIR}/cmake/EmbedFilesScript.cmake"
+    WORKING_DIRECTORY "${base}"
     COMMENT "Embedding ${namespace} data files"
     VERBATIM)
 endfunction()

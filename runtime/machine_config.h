@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -64,6 +65,12 @@ struct AxisConfig {
   bool endless = false;     // Rotary: no end; positions show 0..360 and the sign of a target picks the way
   bool diameter = false;    // a lathe's cross axis programmed as a diameter
   double rapid = 10000;     // mm/min, degrees/min
+  // The cycle time's models (sim/timing.h, docs/profile.md): the fastest feed (the
+  // profile reader makes it `rapid` unless the profile gives it), the acceleration
+  // and the jerk, per mm or per degree.
+  double max_feed = 10000;      // mm/min, degrees/min
+  double acceleration = 2000;   // mm/s², degrees/s²
+  double jerk = 50000;          // mm/s³, degrees/s³
   double lower = -1e9, upper = 1e9;  // travel limits, machine coordinates
   double tolerance = 0.01;  // in-position tolerance (NC-110 DTL 0)
   double drive_error = 1;   // the largest tolerance a program may set (NC-110 DTL)
@@ -95,6 +102,23 @@ struct AssetConfig {
   uint64_t device_bytes = 1 << 20;  // the files of one device together, at most
 };
 
+// What the cycle time needs beyond the axes (sim/timing.h, docs/profile.md [motion]).
+struct MotionConfig {
+  double junction_deviation = 0.01;  // mm: how far a corner may be rounded at speed (grbl's)
+  double tool_change = 5;            // s per tool change, chip to chip
+  double spindle_acceleration = 4000;  // rpm/s: a start, stop or speed change takes |Δrpm| / this
+  // mm/min: the speed along the path, rapids and feeds (LinuxCNC's [TRAJ]
+  // MAX_LINEAR_VELOCITY); infinity: the axes alone limit it.
+  double max_velocity = std::numeric_limits<double>::infinity();
+};
+
+// The blank `ncc view` draws: a box, mm, in the coordinates the view shows (from the
+// first work zero the program selects; docs/profile.md [stock]).
+struct StockConfig {
+  bool set = false;
+  std::array<double, 3> min{}, max{};  // X Y Z
+};
+
 struct MachineConfig {
   std::string name = "default";
   std::map<int, WorkOffset> work_offsets;  // GOST G54..G59 = 1..6; NC-110 origins 0..99
@@ -111,6 +135,8 @@ struct MachineConfig {
   std::optional<Plane> turning_plane;      // NC-110 (CTL,T): the turning configuration's plane
   ProbeConfig probe;
   AssetConfig asset;
+  MotionConfig motion;
+  StockConfig stock;
   uint8_t processes = 5;  // NC-110 chapter 4: the processes configured (PGCFIL), 1..5
   double gtl_tolerance = 0.001;  // mm: NC-110 GTL points this close are one point (§2.11)
   uint32_t look_ahead = 64;  // blocks a process evaluates ahead of its motion (NC-110 §1.1.1, §2.16), 1..64

@@ -285,6 +285,14 @@ std::optional<int> table_number(const Profile& p, const std::string& table, cons
   return static_cast<int>(n);
 }
 
+// A number that must be greater than zero (a rate, a time, a distance).
+void read_positive(const Profile& p, const std::string& key, double& out, Diagnostics& diags) {
+  if (auto v = p.number(key, diags)) {
+    if (*v > 0) out = *v;
+    else p.report_value(diags, key, "must be greater than zero");
+  }
+}
+
 std::optional<Plane> plane_of(const std::string& text) {
   int u = text.size() == 2 ? axis_index(text[0]) : -1;
   int v = text.size() == 2 ? axis_index(text[1]) : -1;
@@ -309,14 +317,13 @@ void read_axes(const Profile& p, MachineConfig& m, Diagnostics& diags) {
       else if (*v == "indexing") a.kind = AxisKind::Indexing;
       else p.report_value(diags, base + ".kind", "must be linear, rotary or indexing");
     }
-    auto positive = [&](const char* key, double& out) {
-      if (auto v = p.number(base + "." + key, diags)) {
-        if (*v > 0) out = *v;
-        else p.report_value(diags, base + "." + key, "must be greater than zero");
-      }
-    };
+    auto positive = [&](const char* key, double& out) { read_positive(p, base + "." + key, out, diags); };
     positive("step", a.index_step);
     positive("rapid", a.rapid);
+    a.max_feed = a.rapid;  // a feed may be as fast as a rapid unless the profile says
+    positive("max_feed", a.max_feed);
+    positive("acceleration", a.acceleration);
+    positive("jerk", a.jerk);
     positive("tolerance", a.tolerance);
     positive("drive_error", a.drive_error);
     if (auto v = p.boolean(base + ".endless", diags)) a.endless = *v;
@@ -329,6 +336,43 @@ void read_axes(const Profile& p, MachineConfig& m, Diagnostics& diags) {
         p.report_value(diags, base + ".limits", "must be [lower, upper] with lower < upper");
       }
     }
+  }
+}
+
+void read_motion(const Profile& p, MotionConfig& motion, Diagnostics& diags) {
+  auto positive = [&](const char* key, double& out) { read_positive(p, std::string("motion.") + key, out, diags); };
+  positive("junction_deviation", motion.junction_deviation);
+  positive("tool_change", motion.tool_change);
+  positive("spindle_acceleration", motion.spindle_acceleration);
+  positive("max_velocity", motion.max_velocity);
+}
+
+// [stock] min and max: X, Y and Z each, min below max.
+void read_stock(const Profile& p, StockConfig& stock, Diagnostics& diags) {
+  if (!p.user_sets("stock")) return;
+  constexpr uint32_t kXYZ = 0b111;
+  AxisValues corner[2]{};
+  bool ok = true;
+  for (int i = 0; i < 2; ++i) {
+    const std::string key = i == 0 ? "stock.min" : "stock.max";
+    uint32_t given = 0;
+    if (!axis_values(p, key, corner[i], diags, &given)) ok = false;
+    else if (given != kXYZ) {
+      p.report_value(diags, key, "must give X, Y and Z in mm and no other axis, e.g. { X = 0.0, Y = 0.0, Z = -20.0 }");
+      ok = false;
+    }
+  }
+  if (!ok) return;
+  for (int axis = 0; axis < 3; ++axis)
+    if (!(corner[0][axis] < corner[1][axis])) {
+      p.report_value(diags, "stock.max", fmt::format("must be above stock.min on every axis ({}: {} is not above {})",
+                                                     kAxisLetters[axis], corner[1][axis], corner[0][axis]));
+      return;
+    }
+  stock.set = true;
+  for (int axis = 0; axis < 3; ++axis) {
+    stock.min[axis] = corner[0][axis];
+    stock.max[axis] = corner[1][axis];
   }
 }
 
@@ -347,12 +391,7 @@ void read_asset(const Profile& p, AssetConfig& asset, Diagnostics& diags) {
 
 void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
   ProbeConfig& probe = m.probe;
-  auto positive = [&](const char* key, double& out) {
-    if (auto v = p.number(std::string("probe.") + key, diags)) {
-      if (*v > 0) out = *v;
-      else p.report_value(diags, std::string("probe.") + key, "must be greater than zero");
-    }
-  };
+  auto positive = [&](const char* key, double& out) { read_positive(p, std::string("probe.") + key, out, diags); };
   positive("approach", probe.approach);
   positive("safety", probe.safety);
   positive("feed", probe.feed);
@@ -477,6 +516,8 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   read_axes(p, m, diags);
   read_probe(p, m, diags);
   read_asset(p, m.asset, diags);
+  read_motion(p, m.motion, diags);
+  read_stock(p, m.stock, diags);
   return m;
 }
 

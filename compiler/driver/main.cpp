@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <tuple>
 #include <cstring>
@@ -14,6 +16,9 @@
 #include <vector>
 
 #include "files.h"
+#include "progress.h"
+#include "regime.h"
+#include "simulate.h"
 #include "frontend/frontend.h"
 #include "pipeline.h"
 #include "translate/structured.h"
@@ -29,6 +34,7 @@ struct Command {
   std::string_view summary;
   std::string_view usage;
   std::string_view options;  // the command's own options, for --help
+  std::string_view shared = {};  // options it shares with others
 };
 
 constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110, pp, iso (default gost)
@@ -43,6 +49,17 @@ constexpr std::string_view kCommonOptions = R"(  --dialect NAME            sourc
   --error-limit N           stop after N errors (default 100, 0 = no limit)
   --color WHEN              auto | always | never (default auto)
   -h, --help                show this help
+)";
+
+// What a drawing's run takes of `ncc run`'s options.
+constexpr std::string_view kSimulationOptions = R"(  --block-skip              the block-skip switch is on: '/' parts are skipped
+  --optional-stop           the optional-stop switch is on: M01 stops
+  --start-block N           start at main block ':N' (GOST 20999 §2.6)
+  --max-steps N             stop after N steps (default: the program's blocks + 100000000)
+  --max-memory MIB          stop when the runtime holds more for later moves (default: the profile's
+                            limits.run_memory_mib, 256)
+  --files DIR               NC-110: the ASSET sandbox the run reads
+  --input FILE              NC-110: the operator's answers to INP
 )";
 
 constexpr Command kCommands[] = {
@@ -80,7 +97,26 @@ constexpr Command kCommands[] = {
   --input FILE              the operator's answers to NC-110 INP, a line each: a number, or ENTER;
                             and the PLC's signals a WAI waits for: SA12=1
   --screen                  after the trace, the NC-110 user screen as the run left it
+  --time                    the cycle time of the run: cutting and auxiliary, by each time model (feed,
+                            trapezoid, scurve; docs/simulator.md), instead of the trace; with --trace
+                            FILE --trace-frame machine, after it
+  --time-format F           text | json (default text)
 )"},
+    {"plot", "draw the tool path of a program (source or .ncb) as SVG", "ncc plot [options] FILE -o OUT.svg",
+     R"(  -o FILE                   the drawing to write ('-' = stdout)
+  --view V                  xy (from above, the default), xz (from the front), yz (from the right) or iso
+  --tolerance MM            the largest distance between an arc and the chords drawn for it where the view
+                            does not show it as an arc (default 0.001)
+  --size PX                 the drawing's longer side (default 1000)
+)", kSimulationOptions},
+    {"view", "write a page that shows the tool path in 3-D, block by block", "ncc view [options] FILE -o OUT.html",
+     R"(  -o FILE                   the page to write ('-' = stdout): one file, no network needed
+  --stock RANGES            the stock: X0:100,Y0:60,Z-20:0 (default: the profile's [stock], else the box
+                            round the cutting moves up to the work zero)
+  --grid MM                 the cell of the machined surface's height map (default: from the stock's size)
+  --tolerance MM            how far the drawn path may leave the tool's when moves are merged (default 0.01)
+)", kSimulationOptions},
+    {"regime", "compute spindle speed and feed from the tool and the material", "ncc regime [options]", ""},
     {"translate", "write a program in another dialect", "ncc translate [options] --to DIALECT [--flatten] FILE [-o OUT]",
      R"(  --to DIALECT              the target: gost, nc110, pp, iso or linuxcnc (RS274NGC as LinuxCNC 2.9 reads it)
   --flatten                 run the program and write the plain motion blocks it makes (docs/translate.md);
@@ -110,8 +146,8 @@ void print_main_help(std::FILE* out) {
 }
 
 void print_command_help(const Command& c) {
-  std::printf("usage: %s\n\n%s.\n\noptions:\n%s%s", std::string(c.usage).c_str(), std::string(c.summary).c_str(),
-              std::string(c.options).c_str(), std::string(kCommonOptions).c_str());
+  std::printf("usage: %s\n\n%s.\n\noptions:\n%s%s%s", std::string(c.usage).c_str(), std::string(c.summary).c_str(),
+              std::string(c.options).c_str(), std::string(c.shared).c_str(), std::string(kCommonOptions).c_str());
 }
 
 struct Options {
@@ -133,7 +169,20 @@ struct Options {
   std::string to;              // translate
   bool flatten = false;
   std::string target_machine;
+  bool time = false;  // run --time
+  bool time_json = false;
+  sim::View view = sim::View::XY;  // plot
+  std::optional<double> tolerance;  // plot, view
+  double size = 1000;
+  std::string stock;  // view
+  double grid = 0;
 };
+
+// A positive finite number of mm or px.
+bool parse_positive(const std::string& text, double& out) {
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), out);
+  return error == std::errc() && end == text.data() + text.size() && std::isfinite(out) && out > 0;
+}
 
 bool parse_number(const std::string& text, uint64_t& out) {
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos || text.size() > 19) return false;
@@ -143,6 +192,7 @@ bool parse_number(const std::string& text, uint64_t& out) {
 
 // Returns an error message, or "" when the arguments are good.
 std::string parse_args(const std::vector<std::string>& args, const Command& command, Options& o) {
+  bool trace_given = false;
   for (size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&](std::string& out) {
@@ -154,7 +204,9 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       std::string text;
       return value(text) && parse_number(text, out);
     };
-    auto allowed = [&](std::string_view option) { return command.options.find(option) != std::string_view::npos; };
+    auto allowed = [&](std::string_view option) {
+      return command.options.find(option) != std::string_view::npos || command.shared.find(option) != std::string_view::npos;
+    };
     std::string text;
     uint64_t n = 0;
     if (a == "--dialect") {
@@ -190,6 +242,7 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(o.output)) return "-o needs a file";
     } else if (a == "--trace" && allowed("--trace FILE")) {
       if (!value(o.trace)) return "--trace needs a file";
+      trace_given = true;
     } else if (a == "--trace-format" && allowed("--trace-format")) {
       if (!value(text)) return "--trace-format needs text, jsonl or canon";
       if (text == "text") o.trace_format = TraceFormat::Text;
@@ -223,6 +276,24 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(o.run.input)) return "--input needs a file";
     } else if (a == "--files" && allowed("--files DIR")) {
       if (!value(o.run.files)) return "--files needs a directory";
+    } else if (a == "--time" && allowed("--time ")) {
+      o.time = true;
+    } else if (a == "--time-format" && allowed("--time-format")) {
+      if (!value(text) || (text != "text" && text != "json")) return "--time-format must be text or json";
+      o.time_json = text == "json";
+    } else if (a == "--view" && allowed("--view")) {
+      if (!value(text) || !sim::parse_view(text, o.view)) return "--view must be xy, xz, yz or iso";
+    } else if (a == "--tolerance" && allowed("--tolerance")) {
+      double t = 0;
+      if (!value(text) || !parse_positive(text, t)) return "--tolerance needs a number of mm greater than 0";
+      o.tolerance = t;
+    } else if (a == "--size" && allowed("--size")) {
+      if (!value(text) || !parse_positive(text, o.size) || o.size < 100 || o.size > 100000)
+        return "--size needs a number of px, 100 to 100000";
+    } else if (a == "--stock" && allowed("--stock")) {
+      if (!value(o.stock)) return "--stock needs the ranges of X, Y and Z: X0:100,Y0:60,Z-20:0";
+    } else if (a == "--grid" && allowed("--grid")) {
+      if (!value(text) || !parse_positive(text, o.grid)) return "--grid needs a number of mm greater than 0";
     } else if (a == "--start-block" && allowed("--start-block")) {
       if (!number(n) || n > UINT32_MAX) return "--start-block needs a block number";
       o.run.start_block = static_cast<uint32_t>(n);
@@ -235,7 +306,17 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
     }
   }
   if (o.input.empty()) return "no input file";
-  if (o.command == "compile" && o.output.empty()) return "compile needs -o FILE";
+  if ((o.command == "compile" || o.command == "plot" || o.command == "view") && o.output.empty())
+    return o.command + " needs -o FILE";
+  // The time is measured in machine coordinates; a trace from the work zero would need
+  // a second run, and a second run would write the ASSET files again.
+  // `ncc run --time` prints the time alone. It is measured in machine coordinates; a
+  // trace from the work zero beside it would need a second run, and a second run
+  // would write the ASSET files again.
+  if (o.time && !trace_given) o.trace = "none";
+  if (o.time && o.trace != "none" && !o.run.trace_machine_frame)
+    return "--time with a trace needs --trace-frame machine";
+  if (o.time && o.trace == "none") o.run.trace_machine_frame = true;
   if (o.command == "translate" && o.to.empty()) return "translate needs --to DIALECT";
   return {};
 }
@@ -262,6 +343,7 @@ class Cli {
     if (o_.command == "run") return run(kind, file);
     if (o_.command == "disasm") return disasm(kind, file);
     if (o_.command == "translate") return translate(kind, file);
+    if (o_.command == "plot" || o_.command == "view") return draw(kind, file);
     return ir(kind, file);
   }
 
@@ -362,7 +444,20 @@ class Cli {
     NullSink none;
     auto writer = o_.trace == "none" ? nullptr
                                      : make_trace_writer(o_.trace_format, out, m->source_map, m->semantics.conventions.axes);
-    RunResult result = run_module(s_, *m, o_.run, writer ? *writer : static_cast<TraceSink&>(none));
+    TraceSink& trace = writer ? *writer : static_cast<TraceSink&>(none);
+    const bool on_terminal = out == stdout && isatty(STDOUT_FILENO);
+    RunResult result;
+    if (o_.time) {
+      auto sim = simulate(s_, *m, o_.run, "running " + o_.input, on_terminal, &trace);
+      if (!sim) return finish(kUsage, stderr);
+      result = sim->result;
+      writer.reset();
+      const std::string text = o_.time_json ? sim::time_json(sim->path, sim->times) : sim::time_text(sim->path, sim->times);
+      std::fwrite(text.data(), 1, text.size(), stdout);
+    } else {
+      Progress line("running " + o_.input, trace, on_terminal);
+      result = run_module(s_, *m, o_.run, line);
+    }
     writer.reset();
     if (o_.run.screen && !result.screen) std::fprintf(out, "--- screen off\n");
     if (o_.run.screen && result.screen) {
@@ -438,6 +533,53 @@ class Cli {
     return finish(kOk, stderr);
   }
 
+  // ncc plot, ncc view: what the program does up to its first error is drawn, and the
+  // errors are reported (a page lists them too).
+  int draw(FileKind kind, uint32_t file) {
+    std::optional<vm::Module> m;
+    if (kind == FileKind::Bytecode) {
+      int status = kOk;
+      if (!(m = module(kind, file, status))) return finish(status, stderr);
+    } else if (!(m = compile_source(s_, file, o_.dialect))) {
+      return finish(kUsage, stderr);
+    }
+    const std::string what = (o_.command == "plot" ? "plotting " : "viewing ") + o_.input;
+    auto sim = simulate(s_, *m, o_.run, what, false);
+    if (!sim) return finish(kUsage, stderr);
+    std::string text;
+    if (o_.command == "plot") {
+      sim::PlotInput in{&sim->path, block_labels(*m), o_.input, o_.view, o_.tolerance.value_or(0.001), o_.size};
+      text = sim::write_svg(in);
+    } else {
+      sim::ViewInput in = view_input(s_, *m, *sim);
+      in.title = o_.input;
+      in.tolerance = o_.tolerance.value_or(in.tolerance);
+      in.grid = o_.grid;
+      if (std::string why = stock_box(*sim, o_.stock, in.stock_min, in.stock_max); !why.empty()) {
+        std::fprintf(stderr, "ncc view: error: %s\n", why.c_str());
+        return kUsage;
+      }
+      sim::write_view(text, in);
+    }
+    if (!write_whole(o_.output, text)) return finish(kUsage, stderr);
+    return finish(sim->result.usage_error ? kUsage : sim->result.ok ? kOk : kProgramErrors, stderr);
+  }
+
+  // The whole file or nothing: a temporary file renamed into place.
+  bool write_whole(const std::string& path, std::string_view text) {
+    if (path == "-") return std::fwrite(text.data(), 1, text.size(), stdout) == text.size();
+    const std::string temp = path + ".tmp";
+    std::FILE* f = std::fopen(temp.c_str(), "wb");
+    bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+    ok = f && std::fclose(f) == 0 && ok;
+    ok = ok && std::rename(temp.c_str(), path.c_str()) == 0;
+    if (!ok) {
+      s_.diags.report(DiagId::FileUnwritable, {}, path, std::strerror(errno));
+      std::remove(temp.c_str());
+    }
+    return ok;
+  }
+
   int ir(FileKind kind, uint32_t file) {
     if (int st = source_only(kind)) return finish(st, stderr);
     auto program = analyse(s_, file, o_.dialect);
@@ -454,6 +596,7 @@ class Cli {
 
 int run_command(const Command& command, const std::vector<std::string>& rest) {
   if (command.name == "files") return files_command(rest);
+  if (command.name == "regime") return regime_command(rest);
   for (const std::string& a : rest)
     if (a == "-h" || a == "--help") {
       print_command_help(command);

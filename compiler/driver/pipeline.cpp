@@ -36,6 +36,8 @@ std::string quotable_file(const std::string& path) {
   return program_text(read_file(path, kQuoted, error).value_or(""));
 }
 
+}  // namespace
+
 // The module's source files as SourceManager indices (registered on first use). A
 // bytecode file names its sources by path; if one has gone, diagnostics still give
 // file:line:col, without the quoted line.
@@ -50,6 +52,8 @@ std::vector<uint32_t> source_files(Session& s, const vm::Module& m) {
   }
   return ids;
 }
+
+namespace {
 
 // Turns runtime issues into diagnostics at the block, or the word, they concern.
 // A loop meets the same problem again and again: each is reported once. The source

@@ -90,6 +90,9 @@ struct RunResult {
   uint64_t steps = 0;
   std::optional<std::vector<std::string>> screen;  // the NC-110 user screen at the end, a line a row (none: off)
 };
+// The module's source files as SourceManager indices, registered (and read, to quote
+// their lines) on first use.
+std::vector<uint32_t> source_files(Session& s, const vm::Module& m);
 // Reports a problem at a block of a module's source map (what a run finds).
 void report_at_block(Session& s, const vm::Module& module, uint32_t source, DiagId id, std::string message);
 // The profile a module runs with: --machine if given, else the one it was compiled with.
