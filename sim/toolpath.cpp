@@ -32,27 +32,28 @@ void ToolpathSink::event(const Event& e) {
   switch (e.kind) {
     case EventKind::Block:
       if (e.source < errors_.size() && errors_[e.source]) path_.stopped_at = e.source;
+      ++run_;
       break;
     case EventKind::Units: scale_ = e.n == 1 ? kInch : 1; break;
     case EventKind::FeedMode: feed_mode_ = e.n; break;
     case EventKind::FeedRate: feed_rate_ = e.a; break;
     case EventKind::FeedReduction: feed_reduced_ = e.n == 1; break;
     case EventKind::SpindleSpeed:
-      if (spindle_on_ && e.a != rpm_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, 0, 0, rpm_, e.a});
+      if (spindle_on_ && e.a != rpm_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, rpm_, e.a});
       rpm_ = e.a;
       break;
     case EventKind::SpindleOn:
-      if (!spindle_on_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, 0, 0, 0, rpm_});
+      if (!spindle_on_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, 0, rpm_});
       spindle_on_ = true;
       break;
     case EventKind::SpindleStop:
-      if (spindle_on_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, 0, 0, rpm_, 0});
+      if (spindle_on_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, rpm_, 0});
       spindle_on_ = false;
       break;
-    case EventKind::Dwell: path_.pauses.push_back({Pause::Kind::Dwell, e.process, count(), e.source, e.a}); break;
+    case EventKind::Dwell: path_.pauses.push_back({Pause::Kind::Dwell, e.process, count(), e.source, run_, e.a}); break;
     case EventKind::ChangeTool:
       tool_ = e.n;
-      path_.pauses.push_back({Pause::Kind::ToolChange, e.process, count(), e.source, 0, e.n});
+      path_.pauses.push_back({Pause::Kind::ToolChange, e.process, count(), e.source, run_, 0, e.n});
       if (auto it = machine_.offsets.find(e.n); it != machine_.offsets.end() && it->second.radius > 0)
         path_.tool_radii.push_back({e.n, it->second.radius});
       break;
@@ -66,7 +67,7 @@ void ToolpathSink::event(const Event& e) {
       break;
     case EventKind::Stop:
     case EventKind::End:
-      if (e.kind == EventKind::End || e.n != 2) path_.pauses.push_back({Pause::Kind::Stop, e.process, count(), e.source});
+      if (e.kind == EventKind::End || e.n != 2) path_.pauses.push_back({Pause::Kind::Stop, e.process, count(), e.source, run_});
       break;
     case EventKind::PathMode: exact_stop_ = e.n == 6; break;
     case EventKind::WorkOffset:
@@ -121,6 +122,7 @@ void ToolpathSink::add_move(const Event& e, bool programmed) {
   m.process = e.process;
   m.tool = tool_;
   m.source = e.source;
+  m.run = run_;
   m.start = at;
   m.end = scaled(e.pos);
   m.exact_stop = exact_stop_;

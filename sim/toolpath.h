@@ -27,6 +27,7 @@ struct Move {
   uint8_t process = 0;      // NC-110 chapter 4: the process that moved
   int tool = 0;             // the tool in the spindle (0: none)
   uint32_t source = 0;      // SourceMap::blocks index of the block that moved
+  uint32_t run = 0;         // which run of a block, counted from 1 (0: the run gave no block events)
   AxisValues start{}, end{};  // mm (linear axes), degrees (rotary)
   double feed = 0;          // mm/min the program asks for (0: a rapid, or no feed); a thread's from its pitch
   // Arc: the plane, the centre in its (u, v) axes, the radius, the sweep in degrees
@@ -51,6 +52,7 @@ struct Pause {
   uint8_t process = 0;  // NC-110 chapter 4: the process that paused
   uint32_t after = 0;
   uint32_t source = 0;
+  uint32_t run = 0;  // as Move::run
   double seconds = 0;
   int tool = 0;
   double rpm_from = 0, rpm_to = 0;
@@ -83,7 +85,8 @@ struct Toolpath {
 inline constexpr size_t kMaxMoves = 4'000'000;
 
 // Builds a Toolpath from the events of a run with the trace in machine coordinates
-// (RunSettings::trace_machine_frame): the positions are moved to the first work zero
+// (RunSettings::trace_machine_frame), and its block events (trace_blocks) to tell the
+// runs of one block apart (a loop's iterations): the positions are moved to the first work zero
 // the program selects, so that a program working in one offset shows its own
 // coordinates and one working in several shows each part where it is on the machine.
 // Inches become mm; parabolas and splines become chords within `chord_tolerance` mm.
@@ -115,6 +118,7 @@ class ToolpathSink final : public TraceSink {
   double feed_rate_ = 0, rpm_ = 0;
   bool feed_reduced_ = false, exact_stop_ = false, spindle_on_ = false, flushed_ = false;
   int tool_ = 0;
+  uint32_t run_ = 0;  // the block events so far
   AxisValues at_[8]{};  // where each process's tool stands; NC-110 has 5
   AxisValues programmed_at_[8]{};
   std::vector<bool> errors_;

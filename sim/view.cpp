@@ -159,7 +159,7 @@ bool moves_in_xyz_only(const Move& m) {
 }
 
 struct Step {
-  uint32_t source = 0;
+  uint32_t source = 0, run = 0;  // the block, and which run of it (Move::run)
   uint32_t first = 0, end = 0;  // its moves: PageData::order_ [first, end)
   uint32_t records = 0;
 };
@@ -224,11 +224,11 @@ class PageData {
       for (size_t k = 0; k < count; ++k) join_step(waiting[k]);
       waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(count));
     };
-    auto at = [&](uint32_t source) {
-      if (steps_.empty() || steps_.back().source != source) {
+    auto at = [&](uint32_t source, uint32_t run) {
+      if (steps_.empty() || steps_.back().source != source || steps_.back().run != run) {
         if (!steps_.empty() && waiting.size() > 16) take(waiting.size() - 16);  // not this one's, it seems
         const uint32_t here = static_cast<uint32_t>(order_.size());
-        steps_.push_back({source, here, here, 0});
+        steps_.push_back({source, run, here, here, 0});
       }
       size_t mine = 0;
       for (size_t k = 0; k < waiting.size(); ++k)
@@ -238,23 +238,23 @@ class PageData {
     size_t p = 0;
     auto pauses_before = [&](uint32_t move) {
       for (; p < pauses.size() && pauses[p].after <= move; ++p) {
-        at(pauses[p].source);
+        at(pauses[p].source, pauses[p].run);
         pause_step_.push_back(static_cast<uint32_t>(steps_.size()));
       }
     };
     for (uint32_t i = 0; i < moves.size(); ++i) {
       pauses_before(i);
       const Move& m = moves[i];
-      if (m.programmed && (steps_.empty() || steps_.back().source != m.source)) {
+      if (m.programmed && (steps_.empty() || steps_.back().source != m.source || steps_.back().run != m.run)) {
         waiting.push_back(i);
         continue;
       }
-      at(m.source);
+      at(m.source, m.run);
       join_step(i);
     }
     pauses_before(kNone);
     if (!waiting.empty()) {
-      if (steps_.empty()) at(moves[waiting.front()].source);
+      if (steps_.empty()) at(moves[waiting.front()].source, moves[waiting.front()].run);
       take(waiting.size());
     }
   }

@@ -25,14 +25,13 @@ std::optional<Simulation> simulate(Session& s, const vm::Module& m, RunSettings 
   sim::ToolpathSink sink(sim.path, sim.machine);
   sim.path.moves.reserve(m.source_map.size());  // a block a move, as CAM output has it
   if (!trace) {
-    // A drawing ends where the first block with errors starts.
+    // Block events tell a loop's iterations apart; a drawing ends where the first block
+    // with errors starts.
+    settings.trace_blocks = true;
     std::vector<bool> wrong;
     wrong.reserve(m.source_map.size());
     m.source_map.visit([&](const SourceBlock& b, const std::vector<WordPosition>&) { wrong.push_back(b.has_errors); });
-    if (std::find(wrong.begin(), wrong.end(), true) != wrong.end()) {
-      settings.trace_blocks = true;
-      sink.stop_at(std::move(wrong));
-    }
+    if (std::find(wrong.begin(), wrong.end(), true) != wrong.end()) sink.stop_at(std::move(wrong));
   }
   sim.path.axes = m.semantics.conventions.axes;
   NullSink none;

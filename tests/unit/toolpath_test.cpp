@@ -143,6 +143,7 @@ TEST(Toolpath, EndsAtTheFirstBlockWithErrorsAndWhenFull) {
   }
   EXPECT_EQ(path.moves.size(), 2u);
   EXPECT_EQ(path.stopped_at, 2u);
+  EXPECT_EQ(path.moves[1].run, 2u);  // the block events so far: a loop's iterations apart
 
   Toolpath small;
   ToolpathSink full(small, machine, 0.001, 3);
