@@ -98,13 +98,12 @@ double max_abs_sin(double from, double to) {
 Geometry straight(const Move& m, const MachineConfig& machine) {
   Geometry g;
   AxisValues delta{};
-  double linear = 0, rotary = 0;
+  g.rotary_only = true;
   for (size_t i = 0; i < delta.size(); ++i) {
     delta[i] = m.end[i] - m.start[i];
-    (machine.axes[i].kind == AxisKind::Linear ? linear : rotary) += delta[i] * delta[i];
+    if (delta[i] != 0 && machine.axes[i].kind == AxisKind::Linear) g.rotary_only = false;
   }
-  g.rotary_only = linear == 0;
-  g.length = std::sqrt(g.rotary_only ? rotary : linear);
+  g.length = move_length(m, machine);
   if (g.length == 0) return g;
   for (size_t i = 0; i < delta.size(); ++i) g.share[i] = std::abs(delta[i]) / g.length;
   g.start_dir = g.end_dir = unit(delta);
@@ -118,13 +117,9 @@ Geometry arc(const Move& m, const MachineConfig& machine) {
   if (!(in_plane > 0)) return straight(m, machine);
   Geometry g;
   AxisValues delta{};  // the axes other than the plane's move along linearly
-  double along = 0;
-  for (size_t i = 0; i < delta.size(); ++i) {
-    if (i == u || i == v) continue;
-    delta[i] = m.end[i] - m.start[i];
-    if (machine.axes[i].kind == AxisKind::Linear) along += delta[i] * delta[i];
-  }
-  g.length = std::sqrt(in_plane * in_plane + along);
+  for (size_t i = 0; i < delta.size(); ++i)
+    if (i != u && i != v) delta[i] = m.end[i] - m.start[i];
+  g.length = move_length(m, machine);
   g.radius = m.radius;
   g.plane_share = in_plane / g.length;
   g.plane_u = m.plane.u;

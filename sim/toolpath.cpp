@@ -15,6 +15,21 @@ bool is_linear(const MachineConfig& m, int axis) {
 
 }  // namespace
 
+double move_length(const Move& m, const MachineConfig& machine) {
+  const bool arc = m.kind == MoveKind::Arc && m.radius * m.sweep != 0;
+  double linear = 0, rotary = 0;
+  for (int i = 0; i < kAxisCount; ++i) {
+    if (arc && (i == m.plane.u || i == m.plane.v)) continue;
+    const double d = m.end[i] - m.start[i];
+    (is_linear(machine, i) ? linear : rotary) += d * d;
+  }
+  if (arc) {
+    const double in_plane = m.radius * std::fabs(m.sweep * M_PI / 180);
+    return std::sqrt(in_plane * in_plane + linear);
+  }
+  return std::sqrt(linear > 0 ? linear : rotary);
+}
+
 double Toolpath::tool_radius(int tool) const {
   for (auto it = tool_radii.rbegin(); it != tool_radii.rend(); ++it)
     if (it->first == tool) return it->second;
@@ -126,19 +141,11 @@ void ToolpathSink::add_move(const Event& e, bool programmed) {
   m.start = at;
   m.end = scaled(e.pos);
   m.exact_stop = exact_stop_;
-  // The linear axes' length; a move of rotary axes alone, in degrees (LinuxCNC's rule):
-  // what an inverse-time feed covers in its time.
-  auto straight_length = [&](const AxisValues& a, const AxisValues& b) {
-    double linear = 0, rotary = 0;
-    for (int i = 0; i < kAxisCount; ++i)
-      (is_linear(machine_, i) ? linear : rotary) += (b[i] - a[i]) * (b[i] - a[i]);
-    return std::sqrt(linear > 0 ? linear : rotary);
-  };
   switch (e.kind) {
     case EventKind::Rapid: m.kind = MoveKind::Rapid; break;
     case EventKind::Linear:
       m.kind = MoveKind::Line;
-      m.feed = feed(straight_length(m.start, m.end));
+      m.feed = feed(move_length(m, machine_));
       break;
     case EventKind::Thread:
       m.kind = MoveKind::Thread;
@@ -152,9 +159,7 @@ void ToolpathSink::add_move(const Event& e, bool programmed) {
       m.centre[1] = e.centre[1] * (is_linear(machine_, e.plane.v) ? scale_ : 1);
       m.radius = e.a * (u_linear ? scale_ : 1);
       m.sweep = e.rotation > 0 ? e.b : -e.b;
-      const double arc = m.radius * std::fabs(m.sweep) * M_PI / 180;
-      const double rise = e.plane.w >= 0 ? m.end[e.plane.w] - m.start[e.plane.w] : 0;
-      m.feed = feed(std::hypot(arc, rise));
+      m.feed = feed(move_length(m, machine_));
       break;
     }
     case EventKind::Parabola:
@@ -184,7 +189,7 @@ void ToolpathSink::add_move(const Event& e, bool programmed) {
           chord.end[i] = cubic ? s * s * s * p[0][i] + 3 * s * s * t * p[1][i] + 3 * s * t * t * p[2][i] + t * t * t * p[3][i]
                                : s * s * p[0][i] + 2 * s * t * p[1][i] + t * t * p[2][i];
         if (k == n) chord.end = m.end;
-        chord.feed = feed(straight_length(chord.start, chord.end));
+        chord.feed = feed(move_length(chord, machine_));
         path_.moves.push_back(chord);
         at = chord.end;
       }

@@ -80,6 +80,11 @@ struct Toolpath {
   double tool_radius(int tool) const;  // 0: unknown
 };
 
+// How far a move goes, mm: the linear axes' path (an arc's in its plane with the other
+// linear axes' travel), or the degrees of a move of rotary axes alone (LinuxCNC's
+// rule). What a feed covers; the time models' length.
+double move_length(const Move& m, const MachineConfig& machine);
+
 // The most moves a Toolpath keeps (about 1 GiB): a run that makes more, a loop that
 // never ends, ends its path there (Toolpath::full_at) and its drawing says so.
 inline constexpr size_t kMaxMoves = 4'000'000;

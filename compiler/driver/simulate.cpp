@@ -43,7 +43,7 @@ std::optional<Simulation> simulate(Session& s, const vm::Module& m, RunSettings 
     sim.result.ok = false;
   }
   line.stage(progress + ": timing");
-  for (sim::TimeModel model : {sim::TimeModel::Feed, sim::TimeModel::Trapezoid, sim::TimeModel::SCurve})
+  for (sim::TimeModel model : sim::kTimeModels)
     sim.times.push_back(sim::cycle_time(sim.path, sim.machine, model));
   return sim;
 }
