@@ -82,6 +82,28 @@ class RemainingPaths {
   virtual double remaining(int process, int axis) = 0;
 };
 
+// What a machine holds between blocks, for its host to show (the API's Run::state).
+struct MachineState {
+  AxisValues position{};  // as the trace gives it: the active work frame, the program's units
+  AxisValues machine{};   // machine coordinates, mm and degrees
+  bool inch = false;
+  bool absolute = true;
+  Plane plane;
+  int feed_mode = 1;  // 0 inverse time, 1 per minute, 2 per revolution
+  std::optional<double> feed;  // as programmed
+  double speed = 0;
+  int spindle = 0;  // 1 clockwise, -1 counter-clockwise, 0 stopped, 2 oriented
+  int tool = 0;     // in the spindle
+  int tool_selected = 0;
+  int work_offset = 0;  // 0: none
+  int cutter_comp = 0;  // 0 off, 1 left, 2 right
+  double cutter_radius = 0;
+  int length_offset = 0;  // 0 off, 1 plus, -1 minus
+  std::string motion;     // the code that set the motion mode ("G01"), "" before one
+  bool mist = false, flood = false;
+  double clock = 0;  // seconds of the run so far
+};
+
 class Machine {
  public:
   Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
@@ -145,6 +167,7 @@ class Machine {
   // The moves blocks made beyond their first (a cycle's holes and pecks): work a run's
   // step budget counts besides its blocks (--max-steps).
   uint64_t moves_beyond_first() const { return moves_beyond_first_; }
+  MachineState state() const;
 
  private:
   struct Modal {

@@ -59,6 +59,30 @@ Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
   return e;
 }
 
+MachineState Machine::state() const {
+  MachineState s;
+  s.position = motion_event(EventKind::Rapid, machine_).pos;
+  s.machine = machine_;
+  s.inch = modal_.inch;
+  s.absolute = modal_.absolute;
+  s.plane = modal_.plane;
+  s.feed_mode = modal_.feed_mode;
+  s.feed = feed_;
+  s.speed = speed_;
+  s.spindle = modal_.spindle;
+  s.tool = tool_loaded_;
+  s.tool_selected = tool_selected_;
+  s.work_offset = modal_.work_offset;
+  s.cutter_comp = modal_.comp;
+  s.cutter_radius = compensation().radius;
+  s.length_offset = modal_.length;
+  s.motion = motion_name_;
+  s.mist = modal_.mist;
+  s.flood = modal_.flood;
+  s.clock = clock_;
+  return s;
+}
+
 // ---- Time ---------------------------------------------------------------------------
 
 double Machine::spindle_rpm() const {

@@ -41,6 +41,8 @@ std::string axis_list(int mask) {
   return s;
 }
 
+}  // namespace
+
 std::string event_name(EventKind kind) {
   constexpr const char* names[] = {
       "units", "plane", "feed_mode", "feed_rate", "spindle_mode", "spindle_speed", "spindle_on", "spindle_stop",
@@ -53,6 +55,8 @@ std::string event_name(EventKind kind) {
   static_assert(std::size(names) == static_cast<size_t>(EventKind::Virtual) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
+
+namespace {
 
 // "read 1 record 3", and what went wrong: "error 11 (record not found)".
 std::string asset_text(const Event& e) {
@@ -247,6 +251,152 @@ class TextSink final : public BufferedSink {
   bool shown_[kAxisCount] = {};
 };
 
+void json_position(const Event& e, std::string_view axes, std::string& s) {
+  for (int i = 0; i < kAxisCount; ++i)
+    if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
+}
+
+void json_fields(const Event& e, std::string_view axes, std::string& s) {
+  auto num = [&](const char* key, double v) { s += fmt::format(R"(,"{}":{})", key, json_number(v)); };
+  auto str = [&](const char* key, std::string_view v) { s += fmt::format(R"(,"{}":"{}")", key, v); };
+  switch (e.kind) {
+    case EventKind::Units: str("units", e.n ? "inch" : "mm"); break;
+    case EventKind::Plane: str("plane", plane_name(e.plane)); break;
+    case EventKind::FeedMode:
+      str("mode", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
+      break;
+    case EventKind::FeedRate:
+    case EventKind::SpindleSpeed: num("value", e.a); break;
+    case EventKind::SpindleMode: str("mode", e.n ? "constant_surface" : "rpm"); break;
+    case EventKind::SpindleOn: str("direction", e.n > 0 ? "cw" : "ccw"); break;
+    case EventKind::SpindleOrient: num("angle", e.a); break;
+    case EventKind::Rapid:
+    case EventKind::Linear:
+    case EventKind::ToolLengthOffset:
+    case EventKind::PositionOffset:
+    case EventKind::OperatorMove: json_position(e, axes, s); break;
+    case EventKind::Arc: {
+      json_position(e, axes, s);
+      str("plane", plane_name(e.plane));
+      str("direction", e.rotation > 0 ? "ccw" : "cw");
+      s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[e.plane.u], json_number(e.centre[0]),
+                       kAxisLetters[e.plane.v], json_number(e.centre[1]));
+      num("radius", e.a);
+      num("sweep", e.b);
+      s += fmt::format(R"(,"rotation":{})", e.rotation);
+      break;
+    }
+    case EventKind::Parabola:
+      json_position(e, axes, s);
+      s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(e.control[0]),
+                       json_number(e.control[1]), json_number(e.control[2]));
+      break;
+    case EventKind::Thread:
+      json_position(e, axes, s);
+      num("pitch", e.a);
+      num("pitch_change", e.b);
+      if (e.c != 0) num("phase", e.c);
+      break;
+    case EventKind::Spline: {
+      json_position(e, axes, s);
+      auto point = [&](const char* key, const AxisValues& p) {
+        std::string inner;
+        for (int i = 0; i < kAxisCount; ++i)
+          if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos)
+            inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(p[i]));
+        s += fmt::format(R"(,"{}":{{{}}})", key, inner);
+      };
+      point("control1", e.control);
+      point("control2", e.control2);
+      break;
+    }
+    case EventKind::Origin: json_position(e, axes, s); break;
+    case EventKind::Transform: {
+      num("rotation", e.a);
+      str("mirror", axis_list(e.n));
+      std::string inner;
+      for (int i = 0; i < kAxisCount; ++i)
+        if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos)
+          inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(e.pos[i]));
+      s += fmt::format(R"(,"scale":{{{}}})", inner);
+      break;
+    }
+    case EventKind::Tolerance:
+    case EventKind::Limits:
+      for (int i = 0; i < kAxisCount; ++i) {
+        if (!(e.n & (1 << i))) continue;
+        if (e.kind == EventKind::Tolerance)
+          s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
+        else
+          s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[i], json_number(e.pos[i]), json_number(e.control[i]));
+      }
+      break;
+    case EventKind::Zone:
+      s += fmt::format(R"(,"zone":{})", e.rotation);
+      str("state", e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
+      if (e.n == 2)
+        for (int a : {e.plane.u, e.plane.v})
+          s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[a], json_number(e.pos[a]), json_number(e.control[a]));
+      break;
+    case EventKind::Configuration: str("configuration", e.n ? "turning" : "milling"); break;
+    case EventKind::Probe:
+      json_position(e, axes, s);
+      s += fmt::format(R"(,"contact":{})", e.n ? "true" : "false");
+      break;
+    case EventKind::SpindleRange: str("range", spindle_range(e.n)); break;
+    case EventKind::PartChange: break;
+    case EventKind::Dwell: num("seconds", e.a); break;
+    case EventKind::SelectTool:
+    case EventKind::ChangeTool: s += fmt::format(R"(,"tool":{})", e.n); break;
+    case EventKind::CutterComp:
+      str("side", e.n == 0 ? "off" : e.n == 1 ? "left" : "right");
+      num("radius", e.a);
+      break;
+    case EventKind::WorkOffset:
+      s += fmt::format(R"(,"index":{})", e.n);
+      json_position(e, axes, s);
+      break;
+    case EventKind::Coolant: str("coolant", kCoolants[e.n]); break;
+    case EventKind::OffsetLoad:
+      s += fmt::format(R"(,"n":{})", e.n);
+      json_position(e, axes, s);
+      break;
+    case EventKind::Diameter:
+    case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
+    case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
+    case EventKind::Block: break;
+    case EventKind::Asset:
+      s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n);
+      break;
+    case EventKind::Input: {
+      const auto [shown, answer] = input_parts(e);
+      s += R"(,"prompt":)" + quoted(shown);
+      if (e.n) s += R"(,"answer":)" + quoted(answer);
+      else num("answer", e.a);
+      break;
+    }
+    case EventKind::Screen:
+    case EventKind::Sync:
+    case EventKind::Graphic:
+    case EventKind::Tooling:
+    case EventKind::Virtual: s += R"(,"what":)" + quoted(e.text); break;
+    case EventKind::CompLoad:
+      s += fmt::format(R"(,"n":{})", e.n);
+      num("length", e.a);
+      num("radius", e.b);
+      break;
+    case EventKind::Clamp: str("clamp", kClamps[e.n]); break;
+    case EventKind::Override:
+    case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
+    case EventKind::PathMode: str("mode", kPathModes[e.n]); break;
+    case EventKind::Comment:
+    case EventKind::Message: s += R"(,"text":)" + quoted(e.text); break;
+    case EventKind::Stop: str("kind", kStopKinds[e.n]); break;
+    case EventKind::End: str("kind", e.n ? "information" : "program"); break;
+    case EventKind::SpindleStop: break;
+  }
+}
+
 class JsonlSink final : public BufferedSink {
  public:
   using BufferedSink::BufferedSink;
@@ -258,157 +408,11 @@ class JsonlSink final : public BufferedSink {
     if (e.process) s += fmt::format(R"(,"process":{})", e.process);
     if (b.has_number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', b.number);
     s += R"(,"event":")" + event_name(e.kind) + '"';
-    fields(e, s);
+    json_fields(e, axes_, s);
     line(s + "}");
   }
 
  private:
-  void pos(const Event& e, std::string& s) const {
-    for (int i = 0; i < kAxisCount; ++i)
-      if (i < 3 || has_axis(kAxisLetters[i])) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
-  }
-
-  void fields(const Event& e, std::string& s) const {
-    auto num = [&](const char* key, double v) { s += fmt::format(R"(,"{}":{})", key, json_number(v)); };
-    auto str = [&](const char* key, std::string_view v) { s += fmt::format(R"(,"{}":"{}")", key, v); };
-    switch (e.kind) {
-      case EventKind::Units: str("units", e.n ? "inch" : "mm"); break;
-      case EventKind::Plane: str("plane", plane_name(e.plane)); break;
-      case EventKind::FeedMode:
-        str("mode", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
-        break;
-      case EventKind::FeedRate:
-      case EventKind::SpindleSpeed: num("value", e.a); break;
-      case EventKind::SpindleMode: str("mode", e.n ? "constant_surface" : "rpm"); break;
-      case EventKind::SpindleOn: str("direction", e.n > 0 ? "cw" : "ccw"); break;
-      case EventKind::SpindleOrient: num("angle", e.a); break;
-      case EventKind::Rapid:
-      case EventKind::Linear:
-      case EventKind::ToolLengthOffset:
-      case EventKind::PositionOffset:
-      case EventKind::OperatorMove: pos(e, s); break;
-      case EventKind::Arc: {
-        pos(e, s);
-        str("plane", plane_name(e.plane));
-        str("direction", e.rotation > 0 ? "ccw" : "cw");
-        s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[e.plane.u], json_number(e.centre[0]),
-                         kAxisLetters[e.plane.v], json_number(e.centre[1]));
-        num("radius", e.a);
-        num("sweep", e.b);
-        s += fmt::format(R"(,"rotation":{})", e.rotation);
-        break;
-      }
-      case EventKind::Parabola:
-        pos(e, s);
-        s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(e.control[0]),
-                         json_number(e.control[1]), json_number(e.control[2]));
-        break;
-      case EventKind::Thread:
-        pos(e, s);
-        num("pitch", e.a);
-        num("pitch_change", e.b);
-        if (e.c != 0) num("phase", e.c);
-        break;
-      case EventKind::Spline: {
-        pos(e, s);
-        auto point = [&](const char* key, const AxisValues& p) {
-          std::string inner;
-          for (int i = 0; i < kAxisCount; ++i)
-            if (i < 3 || has_axis(kAxisLetters[i]))
-              inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(p[i]));
-          s += fmt::format(R"(,"{}":{{{}}})", key, inner);
-        };
-        point("control1", e.control);
-        point("control2", e.control2);
-        break;
-      }
-      case EventKind::Origin: pos(e, s); break;
-      case EventKind::Transform: {
-        num("rotation", e.a);
-        str("mirror", axis_list(e.n));
-        std::string inner;
-        for (int i = 0; i < kAxisCount; ++i)
-          if (i < 3 || has_axis(kAxisLetters[i]))
-            inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(e.pos[i]));
-        s += fmt::format(R"(,"scale":{{{}}})", inner);
-        break;
-      }
-      case EventKind::Tolerance:
-      case EventKind::Limits:
-        for (int i = 0; i < kAxisCount; ++i) {
-          if (!(e.n & (1 << i))) continue;
-          if (e.kind == EventKind::Tolerance)
-            s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
-          else
-            s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[i], json_number(e.pos[i]), json_number(e.control[i]));
-        }
-        break;
-      case EventKind::Zone:
-        s += fmt::format(R"(,"zone":{})", e.rotation);
-        str("state", e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
-        if (e.n == 2)
-          for (int a : {e.plane.u, e.plane.v})
-            s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[a], json_number(e.pos[a]), json_number(e.control[a]));
-        break;
-      case EventKind::Configuration: str("configuration", e.n ? "turning" : "milling"); break;
-      case EventKind::Probe:
-        pos(e, s);
-        s += fmt::format(R"(,"contact":{})", e.n ? "true" : "false");
-        break;
-      case EventKind::SpindleRange: str("range", spindle_range(e.n)); break;
-      case EventKind::PartChange: break;
-      case EventKind::Dwell: num("seconds", e.a); break;
-      case EventKind::SelectTool:
-      case EventKind::ChangeTool: s += fmt::format(R"(,"tool":{})", e.n); break;
-      case EventKind::CutterComp:
-        str("side", e.n == 0 ? "off" : e.n == 1 ? "left" : "right");
-        num("radius", e.a);
-        break;
-      case EventKind::WorkOffset:
-        s += fmt::format(R"(,"index":{})", e.n);
-        pos(e, s);
-        break;
-      case EventKind::Coolant: str("coolant", kCoolants[e.n]); break;
-      case EventKind::OffsetLoad:
-        s += fmt::format(R"(,"n":{})", e.n);
-        pos(e, s);
-        break;
-      case EventKind::Diameter:
-      case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
-      case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
-      case EventKind::Block: break;
-      case EventKind::Asset:
-        s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n);
-        break;
-      case EventKind::Input: {
-        const auto [shown, answer] = input_parts(e);
-        s += R"(,"prompt":)" + quoted(shown);
-        if (e.n) s += R"(,"answer":)" + quoted(answer);
-        else num("answer", e.a);
-        break;
-      }
-      case EventKind::Screen:
-      case EventKind::Sync:
-      case EventKind::Graphic:
-      case EventKind::Tooling:
-      case EventKind::Virtual: s += R"(,"what":)" + quoted(e.text); break;
-      case EventKind::CompLoad:
-        s += fmt::format(R"(,"n":{})", e.n);
-        num("length", e.a);
-        num("radius", e.b);
-        break;
-      case EventKind::Clamp: str("clamp", kClamps[e.n]); break;
-      case EventKind::Override:
-      case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
-      case EventKind::PathMode: str("mode", kPathModes[e.n]); break;
-      case EventKind::Comment:
-      case EventKind::Message: s += R"(,"text":)" + quoted(e.text); break;
-      case EventKind::Stop: str("kind", kStopKinds[e.n]); break;
-      case EventKind::End: str("kind", e.n ? "information" : "program"); break;
-      case EventKind::SpindleStop: break;
-    }
-  }
-
   uint64_t seq_ = 0;
 };
 
@@ -565,6 +569,12 @@ class CanonSink final : public BufferedSink {
 };
 
 }  // namespace
+
+std::string event_json(const Event& e, std::string_view axes) {
+  std::string s = R"({"event":")" + event_name(e.kind) + '"';
+  json_fields(e, axes, s);
+  return s + '}';
+}
 
 std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
                                              std::string axes) {

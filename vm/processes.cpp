@@ -46,6 +46,7 @@ Processes::Slot& Processes::slot(uint8_t n) {
   options.processes = this;
   options.process = n;
   options.slice = several_;
+  options.by_block = setup_.by_block;
   if (several_) options.look_ahead = setup_.config.look_ahead;
   s->vm = std::make_unique<Vm>(setup_.module, *s->machine, setup_.issues, options);
   s->machine->power_on();
@@ -53,6 +54,14 @@ Processes::Slot& Processes::slot(uint8_t n) {
 }
 
 bool Processes::run(size_t first) {
+  if (!begin(first)) return false;
+  Turn turn = Turn::Continue;
+  while (turn == Turn::Continue) turn = step();
+  finish(turn == Turn::Ended);
+  return turn == Turn::Ended;
+}
+
+bool Processes::begin(size_t first) {
   const auto& entries = setup_.module.entries;
   Slot& one = slot(1);
   one.entry = first;
@@ -71,68 +80,83 @@ bool Processes::run(size_t first) {
       s.vm->start(static_cast<uint32_t>(i));
       s.running = true;
     }
-  bool ok = true;
-  while (ok) {
-    // The process whose next block is evaluated first runs it (decision 63); one that
-    // still waits lets the next one try.
-    // (At most five: sorted in place, ties to the lower number, nothing allocated.)
-    std::pair<double, size_t> by_time[kMaxProcesses];
-    size_t count = 0;
-    for (size_t i = 0; i < slots_.size(); ++i)
-      if (slots_[i] && slots_[i]->running) by_time[count++] = {slots_[i]->vm->eval_time(), i};
-    if (count == 0) break;
-    for (size_t a = 1; a < count; ++a)
-      for (size_t b = a; b > 0 && by_time[b] < by_time[b - 1]; --b) std::swap(by_time[b], by_time[b - 1]);
-    std::span<const std::pair<double, size_t>> order(by_time, count);
-    bool progress = false;
-    for (auto [time, i] : order) {
-      Slot& s = *slots_[i];
-      current_ = static_cast<uint8_t>(i + 1);
-      const bool was_waiting = s.vm->waiting();
-      const uint32_t was_at = s.vm->pc();
-      const RunStatus status = s.vm->resume();
-      progress = status != RunStatus::Blocked || !was_waiting || s.vm->pc() != was_at;
-      switch (status) {
-        case RunStatus::Yield:
-        case RunStatus::Blocked: break;
-        case RunStatus::Error: ok = false; break;
-        case RunStatus::UnitEnded:
-          s.machine->end_of_unit(setup_.module.source_of(s.vm->pc()));
-          [[fallthrough]];
-        case RunStatus::ProgramEnd: s.running = i == 0 && next_program(s); break;
-        case RunStatus::EndOfInformation:
-        case RunStatus::Released: s.running = false; break;
-      }
-      if (!s.running) s.free_at = s.machine->clock();
-      if (progress || !ok) break;
+  return true;
+}
+
+Processes::Turn Processes::step() {
+  // The process whose next block is evaluated first runs it (decision 63); one that
+  // still waits lets the next one try.
+  // (At most five: sorted in place, ties to the lower number, nothing allocated.)
+  std::pair<double, size_t> by_time[kMaxProcesses];
+  size_t count = 0;
+  for (size_t i = 0; i < slots_.size(); ++i)
+    if (slots_[i] && slots_[i]->running) by_time[count++] = {slots_[i]->vm->eval_time(), i};
+  if (count == 0) return Turn::Ended;
+  for (size_t a = 1; a < count; ++a)
+    for (size_t b = a; b > 0 && by_time[b] < by_time[b - 1]; --b) std::swap(by_time[b], by_time[b - 1]);
+  std::span<const std::pair<double, size_t>> order(by_time, count);
+  for (auto [time, i] : order) {
+    Slot& s = *slots_[i];
+    current_ = static_cast<uint8_t>(i + 1);
+    const bool was_waiting = s.vm->waiting();
+    const uint32_t was_at = s.vm->pc();
+    const RunStatus status = s.vm->resume();
+    const bool progress = status != RunStatus::Blocked || !was_waiting || s.vm->pc() != was_at;
+    switch (status) {
+      case RunStatus::Yield:
+      case RunStatus::Blocked: break;
+      case RunStatus::Error: return Turn::Error;
+      case RunStatus::UnitEnded:
+        s.machine->end_of_unit(setup_.module.source_of(s.vm->pc()));
+        [[fallthrough]];
+      case RunStatus::ProgramEnd: s.running = i == 0 && next_program(s); break;
+      case RunStatus::EndOfInformation:
+      case RunStatus::Released: s.running = false; break;
     }
-    if (!ok) break;
+    if (!s.running) s.free_at = s.machine->clock();
     if (progress) {
       assume_ = false;
-      continue;
-    }
-    // No process can go on: the PLC's next signal, in the dry run a condition taken
-    // as met, else a deadlock.
-    Slot* waiter = nullptr;  // the first that waits for a condition
-    for (auto [time, i] : order)
-      if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->vm->pc()]) == Op::ProcWaitUntil) waiter = slots_[i].get();
-    if (waiter && !setup_.plc.empty()) {
-      const PlcWrite w = setup_.plc.front();
-      setup_.plc.pop_front();
-      // It comes once every process stopped, and shows at the first that waits for a condition.
-      for (auto [time, i] : order) shared_.written_at = std::max(shared_.written_at, time);
-      waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->vm->pc()));
-      waiter->vm->write_memory(w.space, w.format, w.index, w.value);
-    } else if (waiter && setup_.dry && !assume_) {
-      assume_ = true;
-    } else {
-      deadlock();
-      ok = false;
+      return Turn::Continue;
     }
   }
+  // No process can go on: the PLC's next signal, in the dry run a condition taken
+  // as met, else a deadlock.
+  Slot* waiter = nullptr;  // the first that waits for a condition
+  for (auto [time, i] : order)
+    if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->vm->pc()]) == Op::ProcWaitUntil) waiter = slots_[i].get();
+  if (waiter && !setup_.plc.empty()) {
+    const PlcWrite w = setup_.plc.front();
+    setup_.plc.pop_front();
+    // It comes once every process stopped, and shows at the first that waits for a condition.
+    for (auto [time, i] : order) shared_.written_at = std::max(shared_.written_at, time);
+    waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->vm->pc()));
+    waiter->vm->write_memory(w.space, w.format, w.index, w.value);
+  } else if (waiter && setup_.dry && !assume_) {
+    assume_ = true;
+  } else {
+    deadlock();
+    return Turn::Error;
+  }
+  return Turn::Continue;
+}
+
+void Processes::finish(bool ok) {
   for (const auto& s : slots_)
     if (s) s->machine->end_run(!ok);
-  return ok;
+}
+
+bool Processes::running() const {
+  return std::any_of(slots_.begin(), slots_.end(), [](const auto& s) { return s && s->running; });
+}
+
+const Machine* Processes::machine(uint8_t n) const {
+  return n >= 1 && n <= slots_.size() && slots_[n - 1] ? slots_[n - 1]->machine.get() : nullptr;
+}
+
+std::optional<uint32_t> Processes::next_source() const {
+  const Slot* one = slots_.empty() ? nullptr : slots_[0].get();
+  if (!one || !one->running) return std::nullopt;
+  return setup_.module.source_of(one->vm->pc());
 }
 
 // Programs run in the order of the medium, each after the previous one ended (M02);

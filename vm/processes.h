@@ -37,6 +37,7 @@ struct ProcessSetup {
   bool files = false;  // the statements act (a real run)
   asset::Channels::Settings channels = {};
   std::deque<PlcWrite> plc = {};
+  bool by_block = false;  // each step() runs one block (a host steps the run)
 };
 
 class Processes final : public ProcessHost, public RemainingPaths {
@@ -47,6 +48,16 @@ class Processes final : public ProcessHost, public RemainingPaths {
   // Runs entry `first` and the programs after it on the medium in process 1, and the
   // programs selected for other processes; false if an error stopped the run.
   bool run(size_t first);
+  // The same in steps, as a host drives a run: begin (false: it cannot start,
+  // reported), then step until it returns Ended or Error, then finish. With
+  // ProcessSetup::by_block a step runs one block.
+  enum class Turn { Continue, Ended, Error };
+  bool begin(size_t first);
+  Turn step();
+  void finish(bool ok);
+  const Machine* machine(uint8_t process) const;  // none before it runs
+  bool running() const;  // a process has a program to go on with
+  std::optional<uint32_t> next_source() const;     // the block process 1 runs next (none: it ended)
   uint64_t steps() const;
   const screen::UserScreen& user_screen() const { return shared_.screen; }
 

@@ -372,7 +372,7 @@ RunStatus Vm::resume() {
         if (machine_.block_skip()) p.pc = u32_at(operands);
         break;
       case Op::Step:
-        if (options_.slice && stepped) {
+        if ((options_.slice || options_.by_block) && stepped) {
           p.pc = pc;
           return RunStatus::Yield;
         }

@@ -57,6 +57,7 @@ struct VmOptions {
   ProcessHost* processes = nullptr;     // none: one process, which EXE, WAI and SND cannot leave
   uint8_t process = 0;                  // its number (0: the only one)
   bool slice = false;                   // resume() runs one block, then returns Yield
+  bool by_block = false;                // the same for a host that steps the run (only between blocks)
   // Blocks evaluated ahead of the motion (NC-110 §2.16: the look-ahead of a run of
   // several processes, where it shows); 0: each block once the motion before it ended.
   uint32_t look_ahead = 0;

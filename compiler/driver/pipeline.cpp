@@ -205,13 +205,26 @@ bool read_answers(Session& s, const vm::Module& m, const std::string& path, std:
   return s.diags.error_count() == errors;
 }
 
-RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry) {
-  RunResult result;
+}  // namespace
+
+// What a run holds besides its processes: the machine configuration, the reporter
+// of what it finds, the ASSET sandbox and the operator's answers.
+struct ModuleRun::Parts {
+  MachineConfig config;
+  std::unique_ptr<IssueReporter> reporter;
+  std::unique_ptr<asset::Store> store;
+  std::vector<vm::Answer> answers;
+  std::unique_ptr<vm::Processes> processes;
+};
+
+ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry,
+                     bool by_block)
+    : trace_(trace), parts_(std::make_unique<Parts>()) {
   const stdlib::Profile* profile = run_profile(s, m);
-  if (!profile) return cannot_start();
+  if (!profile) return;
   uint32_t errors = s.diags.error_count();
-  MachineConfig config = stdlib::load_machine_config(*profile, s.diags);
-  if (s.diags.error_count() != errors) return cannot_start();
+  MachineConfig& config = parts_->config = stdlib::load_machine_config(*profile, s.diags);
+  if (s.diags.error_count() != errors) return;
   if (settings.block_skip) config.block_skip = true;
   if (settings.optional_stop) config.optional_stop = true;
   config.trace_machine_frame = settings.trace_machine_frame;
@@ -219,32 +232,32 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
   const uint64_t blocks = m.source_map.size();
   options.max_steps = settings.max_steps.value_or(blocks + (dry ? kDryRunExtraSteps : kDefaultExtraSteps));
   options.max_memory = settings.max_memory ? *settings.max_memory << 20 : config.run_memory;
-  IssueReporter reporter(s, m, dry,
-                         diag_message(DiagId::DryRunBound, options.max_steps,
-                                      settings.max_steps ? std::string("--max-steps")
-                                                         : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
-                                                                       blocks, kDryRunExtraSteps)));
+  parts_->reporter = std::make_unique<IssueReporter>(
+      s, m, dry,
+      diag_message(DiagId::DryRunBound, options.max_steps,
+                   settings.max_steps ? std::string("--max-steps")
+                                      : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
+                                                    blocks, kDryRunExtraSteps)));
   options.trace_blocks = settings.trace_blocks;
-  vm::ProcessSetup setup{m, config, trace, reporter, options};
+  vm::ProcessSetup setup{m, config, trace, *parts_->reporter, options};
   setup.dry = dry;
+  setup.by_block = by_block;
   setup.processes = config.processes;
   // ASSET files (NC-110 chapter 5) in the sandbox of --files; a dry run leaves them
   // alone: they are the machine's, not the program's.
-  std::unique_ptr<asset::Store> store;
-  std::vector<vm::Answer> answers;
   if (!dry) {
     if (!settings.files.empty()) {
       std::string why;
-      store = asset::Store::open(settings.files, {.device_bytes = config.asset.device_bytes}, why);
-      if (!store) {
+      parts_->store = asset::Store::open(settings.files, {.device_bytes = config.asset.device_bytes}, why);
+      if (!parts_->store) {
         s.diags.report(DiagId::FileUnreadable, {}, settings.files, why);
-        return cannot_start();
+        return;
       }
-      if (!store->prepared()) s.diags.report(DiagId::FilesUnprepared, {}, settings.files);
+      if (!parts_->store->prepared()) s.diags.report(DiagId::FilesUnprepared, {}, settings.files);
     }
-    if (!settings.input.empty() && !read_answers(s, m, settings.input, answers, setup.plc)) return cannot_start();
-    setup.options.input = &answers;
-    setup.store = store.get();
+    if (!settings.input.empty() && !read_answers(s, m, settings.input, parts_->answers, setup.plc)) return;
+    setup.options.input = &parts_->answers;
+    setup.store = parts_->store.get();
     setup.files = true;
     setup.channels = {.channels = config.asset.channels, .structures = config.asset.structures};
   }
@@ -258,15 +271,65 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
       if (m.entries[i].name == name) first = i;  // the first on the medium
     if (first == m.entries.size()) {
       s.diags.report(DiagId::StartBlockNotFound, {}, *settings.start_block);
-      return cannot_start();
+      return;
     }
   }
-  vm::Processes processes(std::move(setup));
-  result.ok = processes.run(first);
-  trace.flush();
-  result.steps = processes.steps();
-  if (processes.user_screen().on()) result.screen = processes.user_screen().lines();
-  if (s.diags.has_errors()) result.ok = false;
+  parts_->processes = std::make_unique<vm::Processes>(std::move(setup));
+  if (parts_->processes->begin(first)) {
+    state_ = State::Running;
+  } else {
+    state_ = State::Error;
+    trace_.flush();
+  }
+}
+
+ModuleRun::~ModuleRun() = default;
+
+ModuleRun::State ModuleRun::step() {
+  if (state_ != State::Running) return state_;
+  switch (parts_->processes->step()) {
+    case vm::Processes::Turn::Continue: return parts_->processes->running() ? state_ : end(State::Ended);
+    case vm::Processes::Turn::Ended: return end(State::Ended);
+    case vm::Processes::Turn::Error: return end(State::Error);
+  }
+  return state_;
+}
+
+ModuleRun::State ModuleRun::stop() { return state_ == State::Running ? end(State::Stopped) : state_; }
+
+ModuleRun::State ModuleRun::end(State how) {
+  parts_->processes->finish(how == State::Ended);
+  trace_.flush();
+  return state_ = how;
+}
+
+uint64_t ModuleRun::steps() const { return parts_->processes ? parts_->processes->steps() : 0; }
+
+const Machine* ModuleRun::machine() const { return parts_->processes ? parts_->processes->machine(1) : nullptr; }
+
+std::optional<uint32_t> ModuleRun::next_block() const {
+  return state_ == State::Running ? parts_->processes->next_source() : std::nullopt;
+}
+
+const screen::UserScreen* ModuleRun::user_screen() const {
+  return parts_->processes ? &parts_->processes->user_screen() : nullptr;
+}
+
+void ModuleRun::report(uint32_t source, DiagId id, std::string message) {
+  parts_->reporter->issue({id, std::move(message), source});
+}
+
+namespace {
+
+RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry) {
+  ModuleRun run(s, m, settings, trace, dry);
+  if (run.state() == ModuleRun::State::NotStarted) return cannot_start();
+  ModuleRun::State state = run.state();
+  while (state == ModuleRun::State::Running) state = run.step();
+  RunResult result;
+  result.ok = state == ModuleRun::State::Ended && !s.diags.has_errors();
+  result.steps = run.steps();
+  if (run.user_screen()->on()) result.screen = run.user_screen()->lines();
   return result;
 }
 
@@ -446,6 +509,19 @@ class Stream final : public BlockSink {
 
 }  // namespace
 
+namespace {
+
+// A module runs only verified, whether it was loaded or compiled here: what the
+// compiler makes, the verifier checks as it checks a file (a failure is ncc's fault).
+std::optional<vm::Module> verified(Session& s, uint32_t file, vm::Module m) {
+  const std::string why = vm::verify(m);
+  if (why.empty()) return m;
+  s.diags.report(DiagId::BytecodeInvalid, {}, s.sources.file(file).path() + " (compiled)", why);
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect) {
   auto frontend = frontend_for(s, dialect);
   if (!frontend) return std::nullopt;
@@ -461,7 +537,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   stream.lowering.expect(s.sources.file(file).text().size());
   ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
-  return stream.lowering.finish(program, *s.profile);
+  return verified(s, file, stream.lowering.finish(program, *s.profile));
 }
 
 std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect, StreamObserver& observer,
@@ -472,7 +548,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   stream.lowering.expect(s.sources.file(file).text().size());
   rest = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(rest, frontend->rules(), s.diags, &stream.checks);
-  return stream.lowering.finish(rest, *s.profile);
+  return verified(s, file, stream.lowering.finish(rest, *s.profile));
 }
 
 std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect) {

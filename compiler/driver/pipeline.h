@@ -99,4 +99,33 @@ void report_at_block(Session& s, const vm::Module& module, uint32_t source, Diag
 const stdlib::Profile* module_profile(Session& s, const vm::Module& module);
 RunResult run_module(Session& s, const vm::Module& module, const RunSettings& settings, TraceSink& trace);
 
+// A run of a module that its caller drives a step at a time (the API's Run; run_module
+// runs one to the end). A step is a block with `by_block`, else as far as the run goes
+// before another process's turn.
+class ModuleRun {
+ public:
+  enum class State { NotStarted, Running, Ended, Stopped, Error };
+  // NotStarted when it cannot start (the profile, the start block, the sandbox or
+  // the input script: reported).
+  ModuleRun(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry = false,
+            bool by_block = false);
+  ~ModuleRun();
+  State state() const { return state_; }
+  State step();
+  State stop();  // ends it now: what the runtime holds back goes to the trace as it stands
+  uint64_t steps() const;
+  const Machine* machine() const;           // process 1's (none if it never started)
+  std::optional<uint32_t> next_block() const;  // the source block process 1 runs next
+  const screen::UserScreen* user_screen() const;
+  // A problem at a block, as the runtime reports one (once).
+  void report(uint32_t source, DiagId id, std::string message);
+
+ private:
+  struct Parts;
+  State end(State how);
+  TraceSink& trace_;
+  std::unique_ptr<Parts> parts_;
+  State state_ = State::NotStarted;
+};
+
 }  // namespace ncc
