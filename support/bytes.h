@@ -119,6 +119,12 @@ class ByteReader {
     }
     return fail();
   }
+  // Past `count` LEB128 numbers, unread (bytes known to hold them: a failure at the end).
+  void skip_varints(uint64_t count) {
+    for (; count > 0 && pos_ < data_.size(); ++pos_)
+      if (!(static_cast<uint8_t>(data_[pos_]) & 0x80)) --count;
+    if (count > 0) fail();
+  }
   int64_t svar() {
     uint64_t v = uvar();
     return static_cast<int64_t>(v >> 1) ^ -static_cast<int64_t>(v & 1);
