@@ -64,8 +64,8 @@ class NCC_API Run {
   Run& operator=(Run&&) noexcept;
   ~Run();
 
-  Status step();  // one block
-  Status run();   // to the end, an error or pause()
+  [[nodiscard]] Status step();  // one block
+  [[nodiscard]] Status run();   // to the end, an error or pause()
   // run() returns Paused after the block it is in; callable from another thread.
   void pause();
   Status stop();  // ends the run now; the host is told nothing more
@@ -74,7 +74,7 @@ class NCC_API Run {
   // Runs up to `block` without calling the host, then tells the host the modes in
   // force there (units, plane, feed, spindle, tool, offsets, coolant), and is ready
   // at it. Error if the run never reaches it (an error, or the end, before it).
-  Status restart_at(uint32_t block);
+  [[nodiscard]] Status restart_at(uint32_t block);
 
   Status status() const;
   std::optional<Block> next_block() const;  // the block step() runs next; none once over
