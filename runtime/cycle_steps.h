@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "program_semantics.h"
+#include "contract/program_semantics.h"
 
 namespace ncc::cycle {
 

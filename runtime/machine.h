@@ -19,12 +19,12 @@
 #include <utility>
 #include <vector>
 
+#include "contract/machine_config.h"
+#include "contract/program_semantics.h"
+#include "contract/system_vars.h"
 #include "cutter_path.h"
-#include "machine_config.h"
-#include "program_semantics.h"
 #include "support/diagnostics.h"
 #include "support/numbers.h"
-#include "system_vars.h"
 #include "trace.h"
 
 namespace ncc {
@@ -33,7 +33,7 @@ namespace cycle {
 struct Step;
 }
 
-// The words of one block by slot (word_slots.h); `present` marks those written.
+// The words of one block by slot (contract/word_slots.h); `present` marks those written.
 struct BlockWords {
   std::array<double, kWordSlots> value{};
   std::bitset<kWordSlots> present;
@@ -150,7 +150,7 @@ class Machine {
 
   // The block-skip switch: '/' blocks are skipped while it is on.
   bool block_skip() const { return block_skip_; }
-  // System variables (system_vars.def), read and written by the program; a value a
+  // System variables (contract/system_vars.def), read and written by the program; a value a
   // variable cannot take is reported at `source`.
   double system(SysRef ref) const;
   bool set_system(SysRef ref, double value, uint32_t source);

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <array>
 #include <cmath>
 #include <iterator>
 
@@ -11,19 +10,6 @@
 #include "support/text.h"
 
 namespace ncc {
-
-int axis_index(char letter) {
-  // A table: the runtime asks for every word of every block.
-  static constexpr auto kIndex = [] {
-    std::array<int8_t, 256> t{};
-    t.fill(-1);
-    for (size_t i = 0; i < kAxisLetters.size(); ++i) t[static_cast<uint8_t>(kAxisLetters[i])] = static_cast<int8_t>(i);
-    return t;
-  }();
-  return kIndex[static_cast<uint8_t>(letter)];
-}
-
-std::string plane_name(const Plane& p) { return {kAxisLetters[p.u], kAxisLetters[p.v]}; }
 
 namespace {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "machine_config.h"
-#include "source_map.h"
+#include "contract/machine_config.h"
+#include "contract/source_map.h"
 
 namespace ncc {
 

@@ -21,7 +21,7 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/machine_config.h"
+#include "contract/machine_config.h"
 #include "sim/toolpath.h"
 
 namespace ncc::sim {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/machine_config.h"
+#include "contract/machine_config.h"
 #include "runtime/trace.h"
 
 namespace ncc::sim {

@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/machine_config.h"
+#include "contract/machine_config.h"
 #include "support/diagnostics.h"
 
 namespace ncc::stdlib {

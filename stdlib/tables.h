@@ -10,7 +10,7 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/program_semantics.h"
+#include "contract/program_semantics.h"
 #include "support/diagnostics.h"
 
 namespace ncc::stdlib {

@@ -4,10 +4,10 @@
 
 #include "support/text.h"
 
+#include "contract/builtins.h"
+#include "contract/system_vars.h"
 #include "module.h"
 #include "opcodes.h"
-#include "stdlib/builtins.h"
-#include "runtime/system_vars.h"
 #include "support/diagnostics.h"
 
 namespace ncc::vm {

@@ -10,10 +10,10 @@
 #include <string_view>
 #include <vector>
 
-#include "runtime/program_semantics.h"
+#include "contract/program_semantics.h"
+#include "contract/variables.h"
 #include "runtime/trace.h"
 #include "support/diagnostics.h"
-#include "variables.h"
 
 namespace ncc::vm {
 

@@ -37,17 +37,17 @@ namespace ncc::vm {
   X(Number, 'k', 4, "index into the number constants")                                         \
   X(String, 's', 4, "index into the strings (an ASSET statement's: a file name, docs/asset.md)") \
   X(Code, 'c', 2, "index into the program's codes")                                             \
-  X(Slot, 'w', 1, "word slot (runtime/word_slots.h)")                                           \
+  X(Slot, 'w', 1, "word slot (contract/word_slots.h)")                                          \
   X(Target, 'j', 4, "code offset of an instruction")                                            \
   X(Entry, 'e', 2, "index into the entry points (ProcStart: a process entry; others: not one)") \
   X(Space, 'v', 1, "variable space (Load, Store, Arg, AssetBind: numbered; others: a memory)")  \
   X(Index, 'i', 4, "variable index, below the size of the space before it")                     \
-  X(Builtin, 'b', 1, "builtin function of the instruction's arity (stdlib/builtins.h)")         \
-  X(Format, 'f', 1, "memory format (variables.h)")                                              \
+  X(Builtin, 'b', 1, "builtin function of the instruction's arity (contract/builtins.h)")       \
+  X(Format, 'f', 1, "memory format (contract/variables.h)")                                     \
   X(Bytes, 'n', 1, "a count of bytes, 1..255")                                                  \
   X(Relation, 'q', 1, "a comparison: 1 =, 2 <, 3 >, 4 not =")                                   \
-  X(Type, 't', 1, "value type a value is shown as (variables.h), not Unavailable")              \
-  X(SysVar, 'y', 2, "system variable: its number << 8 | its index (runtime/system_vars.def)")  \
+  X(Type, 't', 1, "value type a value is shown as (contract/variables.h), not Unavailable")     \
+  X(SysVar, 'y', 2, "system variable: its number << 8 | its index (contract/system_vars.def)")  \
   X(LoopDepth, 'd', 1, "a repeat-loop depth (0: outside every loop)")                           \
   X(Rule, 'r', 1, "index into the program's value rules (ProgramSemantics::value_rules)")       \
   X(Places, 'p', 1, "decimal places 0..9, then")                                                \

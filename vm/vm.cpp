@@ -7,10 +7,10 @@
 #include <limits>
 #include <type_traits>
 
+#include "contract/builtins.h"
 #include "opcodes.h"
 #include "support/numbers.h"
 #include "support/text.h"
-#include "stdlib/builtins.h"
 
 namespace ncc::vm {
 

@@ -18,12 +18,12 @@
 
 #include <fmt/format.h>
 
-#include "runtime/program_semantics.h"
-#include "runtime/system_vars.h"
-#include "stdlib/builtins.h"
+#include "contract/builtins.h"
+#include "contract/program_semantics.h"
+#include "contract/system_vars.h"
+#include "contract/variables.h"
 #include "support/numbers.h"
 #include "support/source.h"
-#include "vm/variables.h"
 
 namespace ncc::ir {
 

@@ -12,8 +12,8 @@
 #include <optional>
 #include <string>
 
-#include "runtime/machine_config.h"
-#include "runtime/program_semantics.h"
+#include "contract/machine_config.h"
+#include "contract/program_semantics.h"
 #include "runtime/trace.h"
 #include "writer.h"
 

@@ -10,7 +10,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/word_slots.h"
+#include "contract/word_slots.h"
 #include "structured_impl.h"
 
 namespace ncc::translate {

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "contract/machine_config.h"
 #include "ir/ir.h"
-#include "runtime/machine_config.h"
 #include "writer.h"
 
 namespace ncc::cycle {

@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/system_vars.h"
+#include "contract/system_vars.h"
 #include "stdlib/tables.h"
 #include "structured_impl.h"
 

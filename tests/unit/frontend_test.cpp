@@ -2,8 +2,8 @@
 // and the data they read: dialect tables and machine profiles.
 #include <gtest/gtest.h>
 
+#include "contract/word_slots.h"
 #include "driver/pipeline.h"
-#include "runtime/word_slots.h"
 #include "stdlib/tables.h"
 
 namespace ncc {

@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
+#include "contract/program_semantics.h"
 #include "format.h"
-#include "runtime/program_semantics.h"
 #include "stdlib/profile.h"
 #include "stdlib/tables.h"
 

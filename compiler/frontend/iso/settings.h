@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "runtime/program_semantics.h"
-#include "runtime/system_vars.h"
+#include "contract/program_semantics.h"
+#include "contract/system_vars.h"
 #include "stdlib/profile.h"
 #include "stdlib/tables.h"
 

@@ -754,7 +754,7 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       }
       // The code, then its operands as words: an axis list at the axes' slots, axis
       // values there too (a pair's second one at the second slots), the rest at the
-      // operand slots in order (word_slots.h).
+      // operand slots in order (contract/word_slots.h).
       add_word(0, 0, program_.number(0, code_range), "", code_range, ir::WordKind::Code,
                program_code(program_, {sig.code, Scope::Modal, Timing::None, {{sig.fn}}}));
       block_.words.back().address = sig.code;

@@ -5,9 +5,9 @@
 // its argument and every value at the operand slots, in order.
 #include <fmt/format.h>
 
+#include "contract/machine_config.h"
 #include "reader.h"
 #include "runtime/gtl.h"
-#include "runtime/machine_config.h"
 
 namespace ncc::nc110 {
 

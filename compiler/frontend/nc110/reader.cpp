@@ -461,7 +461,7 @@ void Reader::add_word(char letter, int slot, ir::ExprId value, std::string text,
   ir::Word w;
   w.kind = kind;
   w.slot = static_cast<uint8_t>(slot);
-  // An operand of a three-letter code is shown by its slot: #1, X' (word_slots.h).
+  // An operand of a three-letter code is shown by its slot: #1, X' (contract/word_slots.h).
   w.address = letter == '#' || slot == second_slot(letter) ? slot_name(slot) : std::string(1, letter);
   w.text = std::move(text);
   w.value = value;

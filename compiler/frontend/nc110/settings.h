@@ -7,12 +7,12 @@
 #include <string>
 #include <vector>
 
+#include "contract/program_semantics.h"
+#include "contract/system_vars.h"
+#include "contract/variables.h"
 #include "ir/ir.h"
-#include "runtime/program_semantics.h"
-#include "runtime/system_vars.h"
 #include "stdlib/profile.h"
 #include "stdlib/tables.h"
-#include "vm/variables.h"
 
 namespace ncc::nc110 {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "runtime/program_semantics.h"
+#include "contract/program_semantics.h"
 #include "stdlib/profile.h"
 #include "stdlib/tables.h"
 

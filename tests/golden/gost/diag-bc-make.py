@@ -20,7 +20,7 @@ _HEADER_TEXT = open(os.path.join(os.path.dirname(__file__), "../../../vm/opcodes
 OPCODES = re.findall(r"^  X\((\w+),", _HEADER_TEXT[_HEADER_TEXT.index("#define NCC_OPCODES"):], re.M)
 NOP, CONST_DEC, NEG, DIV, CALL1, CODE, WORD_DEC, WORD_POP, CALL_ENTRY = (
     OPCODES.index(name) for name in ("Nop", "ConstDec", "Neg", "Div", "Call1", "Code", "WordDec", "WordPop", "CallEntry"))
-SQRT = 7  # stdlib/builtins.h
+SQRT = 7  # contract/builtins.h
 
 
 def with_crc(data):
