@@ -111,26 +111,6 @@ size_t record_length(const Layout& layout) {
   return n;
 }
 
-std::string FileName::text() const { return name + "/" + device_name(device); }
-
-std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device) {
-  FileName f;
-  f.device = default_device;
-  if (size_t slash = text.find('/'); slash != std::string_view::npos) {
-    std::string_view dev = text.substr(slash + 1);
-    if (dev.size() != 3 || !dev.starts_with("MP") || dev[2] < '0' || dev[2] >= '0' + kDevices) return std::nullopt;
-    f.device = static_cast<uint8_t>(dev[2] - '0');
-    text = text.substr(0, slash);
-  }
-  auto upper = [](char c) { return c >= 'A' && c <= 'Z'; };
-  auto digit = [](char c) { return c >= '0' && c <= '9'; };
-  if (text.empty() || text.size() > 6 || !upper(text[0])) return std::nullopt;
-  if (!std::all_of(text.begin(), text.end(), [&](char c) { return upper(c) || digit(c); })) return std::nullopt;
-  if (f.device >= kDevices) return std::nullopt;
-  f.name = std::string(text);
-  return f;
-}
-
 File blank_file(const Layout& layout, uint32_t records) {
   File f;
   f.layout = layout;

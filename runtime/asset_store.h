@@ -12,6 +12,8 @@
 #include <string_view>
 #include <vector>
 
+#include "contract/asset_files.h"
+
 namespace ncc::asset {
 
 // Table 5.2: what an ASSET statement leaves in IOSTA (0: it worked).
@@ -47,27 +49,11 @@ struct Field {
 };
 using Layout = std::vector<Field>;
 
-constexpr size_t kMaxFields = 17;      // a structure binds at most 17 variables (§5.3.2.2)
-constexpr size_t kMaxChars = 32;       // .32CH
-constexpr uint32_t kMaxRecords = 32767;
-constexpr uint8_t kDevices = 7;        // MP0..MP6
-
 // "IN", "RE", "LR", "5CH" (and back); a well-formed layout has 1..17 such fields.
 std::string field_text(const Field& f);
 std::optional<Field> parse_field(std::string_view text);
 bool well_formed(const Layout& layout);
 size_t record_length(const Layout& layout);
-
-// A file's name: one to six capitals and digits, a letter first (the manual says "at
-// most 6 characters" only, spec §6.4), on a device: "FILQ/MP3".
-struct FileName {
-  std::string name;
-  uint8_t device = 1;
-  std::string text() const;
-  bool operator==(const FileName&) const = default;
-};
-// `text` with or without "/MPn"; nothing when it is not a name a file may have.
-std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device);
 
 // A file's contents.
 struct File {

@@ -8,10 +8,10 @@
 #include <cstring>
 #include <unistd.h>
 
+#include "contract/asset_files.h"
 #include "contract/builtins.h"
 #include "contract/system_vars.h"
 #include "opcodes.h"
-#include "runtime/asset_store.h"
 #include "support/bytes.h"
 #include "support/text.h"
 

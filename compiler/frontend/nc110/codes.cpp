@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <charconv>
 
+#include "contract/asset_files.h"
 #include "reader.h"
-#include "runtime/asset_store.h"
 #include "support/text.h"
 
 namespace ncc::nc110 {
