@@ -5,14 +5,12 @@
 // are directed (§2.11.1): a line runs along `dir`, a circle counter-clockwise when its
 // radius is positive, clockwise when negative; "-l4", "-c2" reverse them.
 //
-// A definition reaches the runtime as a Shape (its target and the kinds of its
-// operands, packed into the argument of the gtl.define function) and the values of
-// its operands in written order (value_count() each).
+// A definition reaches the runtime as a Shape (contract/gtl_shape.h: its target and
+// the kinds of its operands, packed into the argument of the gtl.define function) and
+// the values of its operands in written order (value_count() each).
 #pragma once
 
 #include <Eigen/Core>
-#include <array>
-#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -21,13 +19,11 @@
 #include <utility>
 #include <vector>
 
+#include "contract/gtl_shape.h"
+
 namespace ncc::gtl {
 
 using Vec = Eigen::Vector2d;
-
-enum class Kind : uint8_t { Origin, Point, Line, Circle };
-char letter(Kind kind);  // o p l c
-constexpr int kMaxIndex = 255;  // §2.11.2: elements 0..255 of each kind
 
 struct Element {
   Kind kind = Kind::Point;
@@ -35,30 +31,6 @@ struct Element {
   Vec dir{1, 0};  // a line's direction and an origin's X axis: unit vectors
   double r = 0;   // a circle's signed radius
 };
-
-// What a definition is made of, in written order (§2.11.3).
-enum class Operand : uint8_t {
-  None,
-  PointRef, LineRef, CircleRef,  // p3, [-]l4, [-]c2: index, reversed (1) or not (0)
-  Coordinates,                   // [om] X.. Y..: origin (-1: none), axis, value, axis, value
-  Polar,                         // [om] m.. a..: origin, modulus, angle
-  Centre,                        // [om] I.. J.. r..: origin, abscissa, ordinate, radius
-  Angle, Radius, Distance,       // a.., r.., d..
-};
-int value_count(Operand op);
-
-// A definition's target and operands; its values are the target's index, 1 if `s2`
-// is written (else 0), then each operand's.
-struct Shape {
-  Kind target = Kind::Point;
-  std::array<Operand, 3> ops{};
-  uint16_t pack() const;
-  static Shape unpack(uint16_t arg);
-  size_t value_count() const;
-  bool operator==(const Shape&) const = default;
-};
-// Why the shape is none of the forms of §2.11.4-2.11.7 (with s2 when `s2`), or "".
-std::string form_error(const Shape& shape, bool s2);
 
 // The elements a program has defined, by kind and index.
 // The elements a program has defined, by kind and index. One whose definition failed

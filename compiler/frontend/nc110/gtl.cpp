@@ -1,13 +1,13 @@
 // GTL definitions (§2.11.3-2.11.7): `l1 = X70 Y40, a150`, `c6=o1I-38J-35r10`,
-// `p1 = -l4, c3, s2`. The words are grouped into the operands of runtime/gtl.h (a
-// point's coordinates, a circle's centre and radius, a reference, a scalar), the form
-// is checked, and the block becomes a machine action: gtl.define with the shape as
-// its argument and every value at the operand slots, in order.
+// `p1 = -l4, c3, s2`. The words are grouped into the operands of contract/gtl_shape.h
+// (a point's coordinates, a circle's centre and radius, a reference, a scalar), the
+// form is checked, and the block becomes a machine action: gtl.define with the shape
+// as its argument and every value at the operand slots, in order.
 #include <fmt/format.h>
 
+#include "contract/gtl_shape.h"
 #include "contract/machine_config.h"
 #include "reader.h"
-#include "runtime/gtl.h"
 
 namespace ncc::nc110 {
 
