@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "pipeline.h"
+#include "driver/pipeline.h"
 #include "sim/svg.h"
 #include "sim/timing.h"
 #include "sim/toolpath.h"

@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
+#include "driver/pipeline.h"
 #include "files.h"
+#include "frontend/frontend.h"
 #include "progress.h"
 #include "regime.h"
 #include "simulate.h"
-#include "frontend/frontend.h"
-#include "pipeline.h"
 #include "translate/structured.h"
 #include "translate/translate.h"
 
