@@ -1,6 +1,3 @@
-#include <algorithm>
-#include <tuple>
-
 #include "internal.h"
 
 namespace ncc::api {
@@ -45,11 +42,7 @@ Result<Program> failed(Session& s) { return Result<Program>(diagnostics_of(s)); 
 }  // namespace
 
 std::vector<Diagnostic> diagnostics_of(const Session& s) {
-  std::vector<ncc::Diagnostic> list = s.diags.all();
-  std::stable_sort(list.begin(), list.end(), [](const ncc::Diagnostic& a, const ncc::Diagnostic& b) {
-    auto key = [](const ncc::Diagnostic& d) { return std::tuple(!d.range.valid(), d.range.file, d.range.line, d.range.col); };
-    return key(a) < key(b);
-  });
+  const std::vector<ncc::Diagnostic> list = diagnostics_in_order(s);
   std::vector<Diagnostic> out;
   out.reserve(list.size());
   for (const ncc::Diagnostic& d : list) {

@@ -7,7 +7,6 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <tuple>
 #include <cstring>
 #include <fstream>
 #include <functional>
@@ -350,15 +349,7 @@ class Cli {
  private:
   // Prints the diagnostics and picks the exit status.
   int finish(int status, std::FILE* out) {
-    // In source order, whichever stage found them; those without a place go last.
-    std::vector<Diagnostic> list = s_.diags.all();
-    std::stable_sort(list.begin(), list.end(), [](const Diagnostic& a, const Diagnostic& b) {
-      auto key = [](const Diagnostic& d) {
-        return std::tuple(!d.range.valid(), d.range.file, d.range.line, d.range.col);
-      };
-      return key(a) < key(b);
-    });
-    std::string text = format_all(list, s_.sources, o_.diag_format, color_ && out == stderr);
+    std::string text = format_all(diagnostics_in_order(s_), s_.sources, o_.diag_format, color_ && out == stderr);
     std::fwrite(text.data(), 1, text.size(), out);
     if (status == kOk && s_.diags.has_errors()) status = kProgramErrors;
     return status;

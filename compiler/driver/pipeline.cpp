@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <deque>
 #include <set>
+#include <tuple>
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -334,6 +335,15 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
 }
 
 }  // namespace
+
+std::vector<Diagnostic> diagnostics_in_order(const Session& s) {
+  std::vector<Diagnostic> list = s.diags.all();
+  std::stable_sort(list.begin(), list.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    auto key = [](const Diagnostic& d) { return std::tuple(!d.range.valid(), d.range.file, d.range.line, d.range.col); };
+    return key(a) < key(b);
+  });
+  return list;
+}
 
 bool load_profile(Session& s, const std::string& path) {
   auto p = stdlib::Profile::load(s.sources, path, s.diags);

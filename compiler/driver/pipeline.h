@@ -27,6 +27,10 @@ struct Session {
   explicit Session(uint32_t error_limit = 100) : diags(error_limit) {}
 };
 
+// The session's diagnostics in source order, whichever stage found them; those
+// without a place last.
+std::vector<Diagnostic> diagnostics_in_order(const Session& s);
+
 // Loads the machine profile; path "" = the built-in default.
 bool load_profile(Session& s, const std::string& path);
 
