@@ -12,6 +12,11 @@
 
 namespace ncc::api {
 
+// The runtime's numbers for a feed mode (0 inverse time, 1 per minute, 2 per
+// revolution) and a cutter side (0 off, 1 left, 2 right), as the API names them.
+FeedMode feed_mode_of(int n);
+CutterSide cutter_side_of(int n);
+
 class HostSink final : public TraceSink {
  public:
   HostSink(MachineInterface& host, const SourceMap& map, std::string axes) : host_(host), map_(map), axes_(std::move(axes)) {}

@@ -152,7 +152,7 @@ State Run::state() const {
   out.units = s.inch ? Units::Inches : Units::Millimetres;
   out.absolute = s.absolute;
   out.plane = {s.plane.u, s.plane.v, s.plane.w};
-  out.feed_mode = s.feed_mode == 0 ? FeedMode::InverseTime : s.feed_mode == 2 ? FeedMode::PerRevolution : FeedMode::PerMinute;
+  out.feed_mode = feed_mode_of(s.feed_mode);
   out.feed = s.feed;
   out.spindle_speed = s.speed;
   if (s.spindle == 1) out.spindle = Direction::Clockwise;
@@ -160,7 +160,7 @@ State Run::state() const {
   out.tool = s.tool;
   out.tool_selected = s.tool_selected;
   out.work_offset = s.work_offset;
-  out.cutter_side = s.cutter_comp == 1 ? CutterSide::Left : s.cutter_comp == 2 ? CutterSide::Right : CutterSide::Off;
+  out.cutter_side = cutter_side_of(s.cutter_comp);
   out.cutter_radius = s.cutter_radius;
   out.tool_length_offset = s.length_offset;
   out.motion = s.motion;
