@@ -76,7 +76,9 @@ std::string call_name(EventKind k) {
 
 }  // namespace
 
-FeedMode feed_mode_of(int n) { return n == 0 ? FeedMode::InverseTime : n == 2 ? FeedMode::PerRevolution : FeedMode::PerMinute; }
+FeedMode feed_mode_of(int n) {
+  return n == 0 ? FeedMode::InverseTime : n == 2 ? FeedMode::PerRevolution : FeedMode::PerMinute;
+}
 
 CutterSide cutter_side_of(int n) { return n == 1 ? CutterSide::Left : n == 2 ? CutterSide::Right : CutterSide::Off; }
 
@@ -155,8 +157,7 @@ Reply HostSink::call(const Event& e, const Block& b) {
     case EventKind::Dwell: return h.dwell(b, e.a);
     case EventKind::Units: return h.units(b, e.n ? Units::Inches : Units::Millimetres);
     case EventKind::Plane: return h.plane(b, plane_of(e.plane));
-    case EventKind::FeedMode:
-      return h.feed_mode(b, feed_mode_of(e.n));
+    case EventKind::FeedMode: return h.feed_mode(b, feed_mode_of(e.n));
     case EventKind::FeedRate: return h.feed_rate(b, e.a);
     case EventKind::PathMode: return h.path_mode(b, static_cast<PathMode>(e.n));
     case EventKind::SpindleMode: return h.spindle_mode(b, e.n ? SpindleMode::ConstantSurfaceSpeed : SpindleMode::Rpm);
@@ -167,8 +168,7 @@ Reply HostSink::call(const Event& e, const Block& b) {
     case EventKind::SelectTool: return h.tool_select(b, e.n);
     case EventKind::ChangeTool: return h.tool_change(b, e.n);
     case EventKind::ToolLengthOffset: return h.tool_length_offset(b, axes_of(e.pos));
-    case EventKind::CutterComp:
-      return h.cutter_compensation(b, cutter_side_of(e.n), e.a);
+    case EventKind::CutterComp: return h.cutter_compensation(b, cutter_side_of(e.n), e.a);
     case EventKind::WorkOffset: return h.work_offset(b, e.n, axes_of(e.pos));
     case EventKind::PositionOffset: return h.position_offset(b, axes_of(e.pos));
     case EventKind::Coolant: return h.coolant(b, static_cast<Coolant>(e.n));

@@ -19,7 +19,8 @@ CutterSide cutter_side_of(int n);
 
 class HostSink final : public TraceSink {
  public:
-  HostSink(MachineInterface& host, const SourceMap& map, std::string axes) : host_(host), map_(map), axes_(std::move(axes)) {}
+  HostSink(MachineInterface& host, const SourceMap& map, std::string axes)
+      : host_(host), map_(map), axes_(std::move(axes)) {}
 
   void event(const Event& e) override;
   bool wants_events() const override { return !refusal_; }

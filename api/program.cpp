@@ -74,8 +74,8 @@ Result<Program> Program::compile_file(const std::string& path, const CompileOpti
   if (!options.profile.empty() && !load_profile(s, options.profile)) return failed(s);
   const auto input = read_input(s, path);
   if (!input) return failed(s);
-  std::optional<vm::Module> m = input->first == FileKind::Bytecode ? load_module(s, input->second)
-                                                                    : compiled(s, input->second, options.dialect);
+  std::optional<vm::Module> m =
+      input->first == FileKind::Bytecode ? load_module(s, input->second) : compiled(s, input->second, options.dialect);
   return program_of(s, std::move(m));
 }
 
@@ -84,7 +84,8 @@ Result<Program> Program::load(const std::string& path) {
   const auto input = read_input(s, path);
   if (!input) return failed(s);
   if (input->first != FileKind::Bytecode) {
-    s.diags.report(DiagId::BytecodeUnreadable, {}, path, "it does not start as one (Program::compile_file reads source)");
+    s.diags.report(DiagId::BytecodeUnreadable, {}, path,
+                   "it does not start as one (Program::compile_file reads source)");
     return failed(s);
   }
   return program_of(s, load_module(s, input->second));

@@ -12,7 +12,8 @@ MachineInterface::~MachineInterface() = default;
 
 struct Run::Impl {
   Impl(std::shared_ptr<const Program::Impl> p, MachineInterface& host, const RunOptions& o)
-      : program(std::move(p)), options(o), sink(host, program->module.source_map, program->module.semantics.conventions.axes) {
+      : program(std::move(p)), options(o),
+        sink(host, program->module.source_map, program->module.semantics.conventions.axes) {
     for (const auto& [path, text] : program->sources) session.sources.add(path, text);
   }
 
@@ -37,7 +38,8 @@ struct Run::Impl {
   Status after(ModuleRun::State state) {
     if (const auto& refused = sink.refusal(); refused && !reported_refusal) {
       reported_refusal = true;
-      run->report(refused->source, DiagId::MachineRefused, diag_message(DiagId::MachineRefused, refused->call, refused->reason));
+      run->report(refused->source, DiagId::MachineRefused,
+                  diag_message(DiagId::MachineRefused, refused->call, refused->reason));
       run->stop();
       return status = Status::Error;
     }
@@ -72,7 +74,8 @@ Run::~Run() = default;
 
 Result<Run> Run::start(const Program& program, MachineInterface& machine, const RunOptions& options) {
   auto impl = std::make_unique<Impl>(ProgramAccess::impl(program), machine, options);
-  if (!options.profile.empty() && !load_profile(impl->session, options.profile)) return Result<Run>(diagnostics_of(impl->session));
+  if (!options.profile.empty() && !load_profile(impl->session, options.profile))
+    return Result<Run>(diagnostics_of(impl->session));
   if (!impl->power_on()) return Result<Run>(diagnostics_of(impl->session));
   std::vector<Diagnostic> warnings = diagnostics_of(impl->session);
   return Result<Run>(Run(std::move(impl)), std::move(warnings));
@@ -126,7 +129,7 @@ Status Run::restart_at(uint32_t block) {
     what += fmt::format(" ({}:{})", b.file, b.line);
   }
   i.session.diags.report(DiagId::RestartNotReached, {}, what,
-                         block >= blocks                     ? fmt::format("the program has {} blocks", blocks)
+                         block >= blocks                    ? fmt::format("the program has {} blocks", blocks)
                          : state == ModuleRun::State::Error ? "an error stops the run before it"
                                                             : "the run ends before it");
   return i.status = Status::Error;

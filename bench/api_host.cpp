@@ -36,8 +36,7 @@ int main(int argc, char** argv) {
   if (!run) return 1;
   api::Status status;
   if (step) {
-    while ((status = run->step()) == api::Status::Ready) {
-    }
+    while ((status = run->step()) == api::Status::Ready) {}
   } else {
     status = run->run();
   }

@@ -31,13 +31,15 @@ struct Generated {
 Generated plain_program(int blocks) {
   std::string s = "%0001\nN0001 G90 G17 G01 X0 Y0 Z0 F1000. S1000 M03\n";
   for (int i = 1; i <= blocks; ++i)
-    s += fmt::format("N{:04} X{:.3f} Y{:.3f} Z{:.3f}\n", i % 10000, (i % 500) * 0.25, (i % 333) * 0.125, -(i % 7) * 0.5);
+    s +=
+        fmt::format("N{:04} X{:.3f} Y{:.3f} Z{:.3f}\n", i % 10000, (i % 500) * 0.25, (i % 333) * 0.125, -(i % 7) * 0.5);
   return {s + "N9999 M30\n"};
 }
 
 Generated arc_program(int blocks) {
   std::string s = "%0001\nN0001 G90 G17 G00 X10. Y0 Z0 F500.\n";
-  const char* moves[] = {"G03 X0 Y10. I-10. J0", "G03 X-10. Y0 I0 J-10.", "G03 X0 Y-10. I10. J0", "G03 X10. Y0 I0 J10."};
+  const char* moves[] = {"G03 X0 Y10. I-10. J0", "G03 X-10. Y0 I0 J-10.", "G03 X0 Y-10. I10. J0",
+                         "G03 X10. Y0 I0 J10."};
   for (int i = 1; i <= blocks; ++i) s += fmt::format("N{:04} {}\n", i % 10000, moves[(i - 1) % 4]);
   return {s + "N9999 M30\n"};
 }
@@ -81,7 +83,9 @@ Generated iso_plain(int blocks) { return plain_blocks(blocks, "iso", "G17 G21 G9
 Generated gost_plain(int blocks) {
   return plain_blocks(blocks, "gost", "%0001\nN0001 G90 G17 S1000 M03\n", "N{:04} ", "N9999 M30\n");
 }
-Generated pp_plain(int blocks) { return plain_blocks(blocks, "pp", "%1\nN1 G90 G17 S1000 M03\n", "N{} ", "N99999999 M30\n*\n"); }
+Generated pp_plain(int blocks) {
+  return plain_blocks(blocks, "pp", "%1\nN1 G90 G17 S1000 M03\n", "N{} ", "N99999999 M30\n*\n");
+}
 Generated nc110_plain(int blocks) { return plain_blocks(blocks, "nc110", "G17\nG90 S1000 M3\n", "", "M5\nM30\n"); }
 
 std::optional<ir::Program> front_end(Session& s, const Generated& g) {

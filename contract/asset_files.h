@@ -11,10 +11,10 @@
 
 namespace ncc::asset {
 
-constexpr size_t kMaxFields = 17;      // a structure binds at most 17 variables (§5.3.2.2)
-constexpr size_t kMaxChars = 32;       // .32CH
+constexpr size_t kMaxFields = 17;  // a structure binds at most 17 variables (§5.3.2.2)
+constexpr size_t kMaxChars = 32;   // .32CH
 constexpr uint32_t kMaxRecords = 32767;
-constexpr uint8_t kDevices = 7;        // MP0..MP6
+constexpr uint8_t kDevices = 7;  // MP0..MP6
 
 // A file's name: one to six capitals and digits, a letter first (the manual says "at
 // most 6 characters" only, spec §6.4), on a device: "FILQ/MP3".

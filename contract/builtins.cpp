@@ -8,9 +8,9 @@ namespace ncc {
 
 namespace {
 constexpr std::array<BuiltinInfo, static_cast<size_t>(Builtin::Count)> kBuiltins = {{
-    {"sin", 1}, {"cos", 1}, {"tan", 1}, {"asin", 1}, {"acos", 1}, {"atan", 1}, {"atan2", 2}, {"sqrt", 1},
-    {"abs", 1}, {"trunc", 1}, {"round", 1}, {"floor", 1}, {"ceil", 1}, {"exp", 1}, {"ln", 1},
-    {"gtl_line", 2}, {"gtl_point", 2}, {"gtl_circle", 2}, {"away", 1}, {"round_to", 2},
+    {"sin", 1},  {"cos", 1},      {"tan", 1},       {"asin", 1},       {"acos", 1},  {"atan", 1},     {"atan2", 2},
+    {"sqrt", 1}, {"abs", 1},      {"trunc", 1},     {"round", 1},      {"floor", 1}, {"ceil", 1},     {"exp", 1},
+    {"ln", 1},   {"gtl_line", 2}, {"gtl_point", 2}, {"gtl_circle", 2}, {"away", 1},  {"round_to", 2},
 }};
 constexpr double kDeg = std::numbers::pi / 180.0;
 

@@ -10,13 +10,30 @@
 namespace ncc {
 
 enum class Builtin : uint8_t {
-  Sin, Cos, Tan, Asin, Acos, Atan, Atan2, Sqrt, Abs, Trunc, Round, Floor, Ceil, Exp, Ln,
+  Sin,
+  Cos,
+  Tan,
+  Asin,
+  Acos,
+  Atan,
+  Atan2,
+  Sqrt,
+  Abs,
+  Trunc,
+  Round,
+  Floor,
+  Ceil,
+  Exp,
+  Ln,
   // NC-110 FEL, FEP, FEC (§2.12): field b of GTL line, point or circle a, which the
   // runtime holds: eval_builtin checks the arguments and answers "undefined".
-  GtlLine, GtlPoint, GtlCircle,
+  GtlLine,
+  GtlPoint,
+  GtlCircle,
   // Macro B FUP (away from zero: FUP[-1.2] = -2) and ROUND after an address: a to b
   // decimals, half away from zero.
-  Away, RoundTo,
+  Away,
+  RoundTo,
   Count
 };
 

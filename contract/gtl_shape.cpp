@@ -36,15 +36,16 @@ struct Form {
   bool s2;
 };
 constexpr Form kForms[] = {
-    {Kind::Origin, "Pa", false},
-    {Kind::Point, "P", false},   {Kind::Point, "LL", false},  {Kind::Point, "LC", true},   {Kind::Point, "CL", true},
-    {Kind::Point, "CC", true},
-    {Kind::Line, "PP", false},   {Kind::Line, "Pa", false},   {Kind::Line, "Ca", false},   {Kind::Line, "CC", false},
-    {Kind::Line, "CP", false},   {Kind::Line, "PC", false},   {Kind::Line, "Ld", false},
-    {Kind::Circle, "C", false},  {Kind::Circle, "Pr", false}, {Kind::Circle, "LLr", false}, {Kind::Circle, "LCr", false},
-    {Kind::Circle, "CLr", false}, {Kind::Circle, "PLr", false}, {Kind::Circle, "LPr", false}, {Kind::Circle, "CCr", false},
-    {Kind::Circle, "PCr", false}, {Kind::Circle, "CPr", false}, {Kind::Circle, "PPr", false}, {Kind::Circle, "PL", false},
-    {Kind::Circle, "PC", true},  {Kind::Circle, "PPP", false}, {Kind::Circle, "Cd", false},
+    {Kind::Origin, "Pa", false},  {Kind::Point, "P", false},    {Kind::Point, "LL", false},
+    {Kind::Point, "LC", true},    {Kind::Point, "CL", true},    {Kind::Point, "CC", true},
+    {Kind::Line, "PP", false},    {Kind::Line, "Pa", false},    {Kind::Line, "Ca", false},
+    {Kind::Line, "CC", false},    {Kind::Line, "CP", false},    {Kind::Line, "PC", false},
+    {Kind::Line, "Ld", false},    {Kind::Circle, "C", false},   {Kind::Circle, "Pr", false},
+    {Kind::Circle, "LLr", false}, {Kind::Circle, "LCr", false}, {Kind::Circle, "CLr", false},
+    {Kind::Circle, "PLr", false}, {Kind::Circle, "LPr", false}, {Kind::Circle, "CCr", false},
+    {Kind::Circle, "PCr", false}, {Kind::Circle, "CPr", false}, {Kind::Circle, "PPr", false},
+    {Kind::Circle, "PL", false},  {Kind::Circle, "PC", true},   {Kind::Circle, "PPP", false},
+    {Kind::Circle, "Cd", false},
 };
 
 std::string_view kind_name(Kind k) {
@@ -60,8 +61,12 @@ std::string_view kind_name(Kind k) {
 std::string class_words(std::string_view sig) {
   std::string out;
   for (size_t i = 0; i < sig.size(); ++i) {
-    std::string_view w = sig[i] == 'P' ? "a point" : sig[i] == 'L' ? "a line" : sig[i] == 'C' ? "a circle"
-                       : sig[i] == 'a' ? "an angle" : sig[i] == 'r' ? "a radius" : "a distance";
+    std::string_view w = sig[i] == 'P'   ? "a point"
+                         : sig[i] == 'L' ? "a line"
+                         : sig[i] == 'C' ? "a circle"
+                         : sig[i] == 'a' ? "an angle"
+                         : sig[i] == 'r' ? "a radius"
+                                         : "a distance";
     out += i == 0 ? "" : i + 1 == sig.size() ? " and " : ", ";
     out += w;
   }
@@ -140,11 +145,12 @@ std::string form_error(const Shape& shape, bool s2) {
     if (sig == "P" && shape.ops[0] == Operand::PointRef) break;
     if (sig == "C" && shape.ops[0] == Operand::CircleRef) break;
     if (s2 && !f.s2)
-      return fmt::format("s2 chooses the second of two solutions; {} defined by {} has one ({})", kind_name(shape.target),
-                         class_words(sig), section(shape.target));
+      return fmt::format("s2 chooses the second of two solutions; {} defined by {} has one ({})",
+                         kind_name(shape.target), class_words(sig), section(shape.target));
     return "";
   }
-  if (sig.empty()) return fmt::format("{} needs its definition after '=' ({})", kind_name(shape.target), section(shape.target));
+  if (sig.empty())
+    return fmt::format("{} needs its definition after '=' ({})", kind_name(shape.target), section(shape.target));
   return fmt::format("{} is not defined by {} ({})", kind_name(shape.target), class_words(sig), section(shape.target));
 }
 

@@ -12,17 +12,21 @@
 namespace ncc::gtl {
 
 enum class Kind : uint8_t { Origin, Point, Line, Circle };
-char letter(Kind kind);  // o p l c
+char letter(Kind kind);         // o p l c
 constexpr int kMaxIndex = 255;  // §2.11.2: elements 0..255 of each kind
 
 // What a definition is made of, in written order (§2.11.3).
 enum class Operand : uint8_t {
   None,
-  PointRef, LineRef, CircleRef,  // p3, [-]l4, [-]c2: index, reversed (1) or not (0)
-  Coordinates,                   // [om] X.. Y..: origin (-1: none), axis, value, axis, value
-  Polar,                         // [om] m.. a..: origin, modulus, angle
-  Centre,                        // [om] I.. J.. r..: origin, abscissa, ordinate, radius
-  Angle, Radius, Distance,       // a.., r.., d..
+  PointRef,
+  LineRef,
+  CircleRef,    // p3, [-]l4, [-]c2: index, reversed (1) or not (0)
+  Coordinates,  // [om] X.. Y..: origin (-1: none), axis, value, axis, value
+  Polar,        // [om] m.. a..: origin, modulus, angle
+  Centre,       // [om] I.. J.. r..: origin, abscissa, ordinate, radius
+  Angle,
+  Radius,
+  Distance,  // a.., r.., d..
 };
 int value_count(Operand op);
 

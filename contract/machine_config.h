@@ -61,19 +61,19 @@ enum class AxisKind : uint8_t { Linear, Rotary, Indexing };
 
 struct AxisConfig {
   AxisKind kind = AxisKind::Linear;  // A B C are rotary unless the profile says otherwise
-  double index_step = 1;    // Indexing: degrees per index (the program counts indexes)
-  bool endless = false;     // Rotary: no end; positions show 0..360 and the sign of a target picks the way
-  bool diameter = false;    // a lathe's cross axis programmed as a diameter
-  double rapid = 10000;     // mm/min, degrees/min
+  double index_step = 1;             // Indexing: degrees per index (the program counts indexes)
+  bool endless = false;              // Rotary: no end; positions show 0..360 and the sign of a target picks the way
+  bool diameter = false;             // a lathe's cross axis programmed as a diameter
+  double rapid = 10000;              // mm/min, degrees/min
   // The cycle time's models (sim/timing.h, docs/profile.md): the fastest feed (the
   // profile reader makes it `rapid` unless the profile gives it), the acceleration
   // and the jerk, per mm or per degree.
-  double max_feed = 10000;      // mm/min, degrees/min
-  double acceleration = 2000;   // mm/s², degrees/s²
-  double jerk = 50000;          // mm/s³, degrees/s³
+  double max_feed = 10000;           // mm/min, degrees/min
+  double acceleration = 2000;        // mm/s², degrees/s²
+  double jerk = 50000;               // mm/s³, degrees/s³
   double lower = -1e9, upper = 1e9;  // travel limits, machine coordinates
-  double tolerance = 0.01;  // in-position tolerance (NC-110 DTL 0)
-  double drive_error = 1;   // the largest tolerance a program may set (NC-110 DTL)
+  double tolerance = 0.01;           // in-position tolerance (NC-110 DTL 0)
+  double drive_error = 1;            // the largest tolerance a program may set (NC-110 DTL)
 };
 
 // The simulated probe of the measuring cycles (NC-110 G72-G74): what each probing
@@ -97,15 +97,15 @@ struct ProbeConfig {
 // NC-110 ASSET files (chapter 5): what the process characterisation (PGCFIL CHN, STR)
 // and the devices allow.
 struct AssetConfig {
-  uint32_t channels = 8;      // channels 1..channels
-  uint32_t structures = 16;   // record structures 1..structures
+  uint32_t channels = 8;            // channels 1..channels
+  uint32_t structures = 16;         // record structures 1..structures
   uint64_t device_bytes = 1 << 20;  // the files of one device together, at most
 };
 
 // What the cycle time needs beyond the axes (sim/timing.h, docs/profile.md [motion]).
 struct MotionConfig {
-  double junction_deviation = 0.01;  // mm: how far a corner may be rounded at speed (grbl's)
-  double tool_change = 5;            // s per tool change, chip to chip
+  double junction_deviation = 0.01;    // mm: how far a corner may be rounded at speed (grbl's)
+  double tool_change = 5;              // s per tool change, chip to chip
   double spindle_acceleration = 4000;  // rpm/s: a start, stop or speed change takes |Δrpm| / this
   // mm/min: the speed along the path, rapids and feeds (LinuxCNC's [TRAJ]
   // MAX_LINEAR_VELOCITY); infinity: the axes alone limit it.
@@ -123,23 +123,23 @@ struct MachineConfig {
   std::string name = "default";
   std::map<int, WorkOffset> work_offsets;  // GOST G54..G59 = 1..6; NC-110 origins 0..99
   std::map<int, ToolEntry> tools;
-  std::map<int, OffsetEntry> offsets;      // D/H offset numbers, NC-110 correctors
+  std::map<int, OffsetEntry> offsets;  // D/H offset numbers, NC-110 correctors
   std::array<AxisConfig, kAxisCount> axes = default_axes();
   AxisValues initial_position{};
-  AxisValues reference_position{};         // the machine's reference point (pp G30)
-  bool block_skip = false;                 // run-time switches
+  AxisValues reference_position{};  // the machine's reference point (pp G30)
+  bool block_skip = false;          // run-time switches
   bool optional_stop = false;
-  bool spindle_encoder = true;             // threading and rigid tapping need one
-  double max_rpm = 0;                      // constant cutting speed stays below (0: no limit)
-  double tap_min_travel = 0;               // mm a floating tap needs to speed up and slow down
-  std::optional<Plane> turning_plane;      // NC-110 (CTL,T): the turning configuration's plane
+  bool spindle_encoder = true;         // threading and rigid tapping need one
+  double max_rpm = 0;                  // constant cutting speed stays below (0: no limit)
+  double tap_min_travel = 0;           // mm a floating tap needs to speed up and slow down
+  std::optional<Plane> turning_plane;  // NC-110 (CTL,T): the turning configuration's plane
   ProbeConfig probe;
   AssetConfig asset;
   MotionConfig motion;
   StockConfig stock;
-  uint8_t processes = 5;  // NC-110 chapter 4: the processes configured (PGCFIL), 1..5
+  uint8_t processes = 5;         // NC-110 chapter 4: the processes configured (PGCFIL), 1..5
   double gtl_tolerance = 0.001;  // mm: NC-110 GTL points this close are one point (§2.11)
-  uint32_t look_ahead = 64;  // blocks a process evaluates ahead of its motion (NC-110 §1.1.1, §2.16), 1..64
+  uint32_t look_ahead = 64;      // blocks a process evaluates ahead of its motion (NC-110 §1.1.1, §2.16), 1..64
   // Bytes a process's runtime may hold back for later moves (Machine::held_bytes) before
   // the run stops (limits.run_memory_mib): a real program holds a few events.
   uint64_t run_memory = uint64_t{256} << 20;

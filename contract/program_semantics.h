@@ -74,37 +74,37 @@ struct Conventions {
   double lead_resolution = 0;
   bool m06_stops_spindle = false;
   std::string tool_offset_axes = "Z";
-  std::string axes = "XYZ";  // the machine's axes, in canonical order XYZABCUVWPQD
-  uint8_t max_call_depth = 0;  // subprogram calls that may be open at once; 0 = the VM's limit
+  std::string axes = "XYZ";         // the machine's axes, in canonical order XYZABCUVWPQD
+  uint8_t max_call_depth = 0;       // subprogram calls that may be open at once; 0 = the VM's limit
   uint8_t result_space = kNoSpace;  // the variable space measured values go to
   CentreWords centre_words = CentreWords::PerAxis;
-  char radius_word = 0;             // an arc by its radius: R+ up to 180 degrees, R- beyond
-  bool helix_by_end = false;        // a helix is given by its end point alone: no lead word (ISO)
-  bool cycle_two_levels = false;    // R, then R' (its second value): approach and return levels
-  bool cycle_defines_only = false;  // a cycle's own block stores it; the blocks after it drill
-  bool cycle_needs_cancel = false;  // a new cycle needs the active one cancelled first
-  bool fanuc_cycles = false;        // G98/G99 return, feed out to R then rapid, repeats (ISO)
-  std::string cycle_repeat_words;   // the words that repeat a cycle block (ISO "LK")
-  double peck_clearance = 0;        // ISO G83: the rapid back down stops this far above the depth reached (mm)
-  double chip_break_retract = 0;    // ISO G73: the retract after a peck (mm); 0 = back to the depth before it
-  int8_t boring_shift = 1;          // ISO G76/G87: Q shifts along the plane's first axis, + or -
-  bool tool_change_iso = false;     // ISO M06: ignored for the tool in the spindle; stops spindle and
-                                    // coolant, ends both compensations
-  bool tool_change_retract = false; // ... and first rapids the tool axis to the reference point
-  double initial_feed = 0;          // the feed in force at the start (0: none until F is programmed)
-  bool fanuc_rules = false;         // ISO E-08..E-27: what G51/G68, G91 and cutter compensation forbid
-  bool corners = false;             // ISO ,C and ,R (the second C and R words): a chamfer or fillet after the move
+  char radius_word = 0;              // an arc by its radius: R+ up to 180 degrees, R- beyond
+  bool helix_by_end = false;         // a helix is given by its end point alone: no lead word (ISO)
+  bool cycle_two_levels = false;     // R, then R' (its second value): approach and return levels
+  bool cycle_defines_only = false;   // a cycle's own block stores it; the blocks after it drill
+  bool cycle_needs_cancel = false;   // a new cycle needs the active one cancelled first
+  bool fanuc_cycles = false;         // G98/G99 return, feed out to R then rapid, repeats (ISO)
+  std::string cycle_repeat_words;    // the words that repeat a cycle block (ISO "LK")
+  double peck_clearance = 0;         // ISO G83: the rapid back down stops this far above the depth reached (mm)
+  double chip_break_retract = 0;     // ISO G73: the retract after a peck (mm); 0 = back to the depth before it
+  int8_t boring_shift = 1;           // ISO G76/G87: Q shifts along the plane's first axis, + or -
+  bool tool_change_iso = false;      // ISO M06: ignored for the tool in the spindle; stops spindle and
+                                     // coolant, ends both compensations
+  bool tool_change_retract = false;  // ... and first rapids the tool axis to the reference point
+  double initial_feed = 0;           // the feed in force at the start (0: none until F is programmed)
+  bool fanuc_rules = false;          // ISO E-08..E-27: what G51/G68, G91 and cutter compensation forbid
+  bool corners = false;              // ISO ,C and ,R (the second C and R words): a chamfer or fillet after the move
   CutterStyle cutter = CutterStyle::Programmed;  // what G41/G42 do to the path the trace shows
   bool comp_path() const { return cutter != CutterStyle::Programmed; }
-  char peck_factor_word = 0;        // G83: the factor on the peck, down to
-  char peck_minimum_word = 0;       //      the smallest peck (NC-110 K, J)
-  char tap_pitch_word = 0;          // tapping with a spindle encoder: the pitch (NC-110 K)
+  char peck_factor_word = 0;            // G83: the factor on the peck, down to
+  char peck_minimum_word = 0;           //      the smallest peck (NC-110 K, J)
+  char tap_pitch_word = 0;              // tapping with a spindle encoder: the pitch (NC-110 K)
   bool corrector_in_tool_word = false;  // T tool.corrector: the corrector takes effect at M06
-  bool mirror_toggles = false;      // a mirror code on a mirrored axis turns it back
+  bool mirror_toggles = false;          // a mirror code on a mirrored axis turns it back
   // pp.
-  char diameter_axis = 0;           // the axis a diameter code (G74) programs as a diameter
-  std::string link_axes;            // the axes of the digits of the length link '&', in order
-  std::string aux_words;            // addresses the machine's logic takes as auxiliary functions (H P)
+  char diameter_axis = 0;                           // the axis a diameter code (G74) programs as a diameter
+  std::string link_axes;                            // the axes of the digits of the length link '&', in order
+  std::string aux_words;                            // addresses the machine's logic takes as auxiliary functions (H P)
   char comp_length_word = 0, comp_radius_word = 0;  // what loads a compensation entry (pp G93)
   // The feeds F may give in each feed mode (inverse time, per minute, per revolution):
   // lo, hi; 0, 0 = any.
@@ -140,11 +140,11 @@ struct ProgramSemantics {
   std::vector<CyclePattern> cycles;
   std::vector<uint16_t> power_on;  // indices into codes, applied in order
   Conventions conventions;
-  std::vector<std::string> system_names;  // the dialect's name of each SysVar ("TMR"), for messages
-  std::vector<std::string> builtin_names; // ... of each Builtin ("SQR"); empty: its own name
-  std::vector<NumberedCode> numbered;     // the codes a program may select at run time
-  std::vector<CodePair> incompatible;     // codes that must not share a block
-  std::vector<ValueRule> value_rules;     // for Check
+  std::vector<std::string> system_names;   // the dialect's name of each SysVar ("TMR"), for messages
+  std::vector<std::string> builtin_names;  // ... of each Builtin ("SQR"); empty: its own name
+  std::vector<NumberedCode> numbered;      // the codes a program may select at run time
+  std::vector<CodePair> incompatible;      // codes that must not share a block
+  std::vector<ValueRule> value_rules;      // for Check
 };
 
 }  // namespace ncc

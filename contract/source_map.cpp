@@ -43,7 +43,8 @@ namespace {
 // One block after the block on line `line` (and its words, if asked); false if the
 // bytes are not one. Bytes the map has checked (`trusted`) are skipped, not read,
 // where no words are asked for: a run asks for every block it reports at.
-bool decode_block(ByteReader& r, uint32_t line, SourceBlock& b, std::vector<WordPosition>* words, bool trusted = false) {
+bool decode_block(ByteReader& r, uint32_t line, SourceBlock& b, std::vector<WordPosition>* words,
+                  bool trusted = false) {
   bool ok = true;
   b.file = r.var32(ok);
   b.line = r.delta32(line, ok);
@@ -58,7 +59,7 @@ bool decode_block(ByteReader& r, uint32_t line, SourceBlock& b, std::vector<Word
   b.number = b.has_number ? r.var32(ok) : 0;
   const uint64_t n = r.uvar();
   if (n * 5 > r.remaining()) return false;  // each word takes at least 5 bytes
-  if (!words && trusted) {  // a slot and four numbers each
+  if (!words && trusted) {                  // a slot and four numbers each
     for (uint64_t k = 0; k < n; ++k) {
       r.u8();
       r.skip_varints(4);

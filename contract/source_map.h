@@ -64,8 +64,8 @@ class SourceMap {
   // Decodes the block at `c` (its words too, if asked) and moves `c` past it.
   SourceBlock decode(Cursor& c, std::vector<WordPosition>* words) const;
   Cursor seek(uint32_t i) const;
-  void checkpoint();            // before a block is appended
-  void added(uint32_t line);    // after it, on `line`
+  void checkpoint();          // before a block is appended
+  void added(uint32_t line);  // after it, on `line`
 
   std::string bytes_;
   ByteWriter block_;  // the block being added

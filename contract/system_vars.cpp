@@ -41,7 +41,8 @@ std::optional<std::string_view> sys_value_error(SysRef ref, double value) {
       if (ref.index == 0) return "it is the clock, read-only";
       [[fallthrough]];
     case SysVar::TotalTime:
-      if (!(std::fabs(value) <= std::numeric_limits<float>::max())) return "it is a real (RE), at most 3.4E38 in magnitude";
+      if (!(std::fabs(value) <= std::numeric_limits<float>::max()))
+        return "it is a real (RE), at most 3.4E38 in magnitude";
       break;
     case SysVar::AssetStatus: return "it is read-only";
     case SysVar::BlockEnable:

@@ -35,14 +35,14 @@ constexpr uint32_t mem_size(MemFormat f) {
 }
 
 struct VarSpace {
-  std::string name;  // "E", "R", "#", "SA"
+  std::string name;   // "E", "R", "#", "SA"
   uint32_t size = 0;  // variables, or bytes of a memory
   struct Range {
     uint32_t first = 0;
     VarType type = VarType::LongReal;
   };
-  std::vector<Range> types;  // the type of index i is that of the last range with first <= i
-  bool memory = false;       // byte-addressed: read and written through a MemFormat
+  std::vector<Range> types;            // the type of index i is that of the last range with first <= i
+  bool memory = false;                 // byte-addressed: read and written through a MemFormat
   MemFormat format = MemFormat::Byte;  // a memory's, where a reference names none (NC-110 SA: BL)
   // The first `locals` variables are local to a call: each call starts with them
   // reset, and the caller's values come back on return (pp: all; Macro B: #0-#33).
@@ -50,7 +50,7 @@ struct VarSpace {
   // Variables start vacant (Macro B <vacant>, a quiet NaN) rather than 0, and
   // variable 0 is always vacant (#0).
   bool vacant = false;
-  double limit = 0;          // LongReal values must stay below this magnitude (0 = no limit)
+  double limit = 0;  // LongReal values must stay below this magnitude (0 = no limit)
 
   VarType type_of(uint32_t index) const {
     VarType t = VarType::LongReal;

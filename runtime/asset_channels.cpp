@@ -10,15 +10,19 @@ bool OpenFiles::can_open(const FileName& name, bool write) const {
 
 void OpenFiles::opened(const FileName& name, bool write) {
   Opens& o = open_[name.text()];
-  if (write) o.writer = true;
-  else ++o.readers;
+  if (write)
+    o.writer = true;
+  else
+    ++o.readers;
 }
 
 void OpenFiles::closed(const FileName& name, bool write) {
   auto it = open_.find(name.text());
   if (it == open_.end()) return;
-  if (write) it->second.writer = false;
-  else if (it->second.readers > 0) --it->second.readers;
+  if (write)
+    it->second.writer = false;
+  else if (it->second.readers > 0)
+    --it->second.readers;
   if (!it->second.writer && it->second.readers == 0) open_.erase(it);
 }
 
@@ -82,13 +86,13 @@ Code Channels::read(uint32_t channel, uint32_t structure, std::optional<uint32_t
   out.clear();
   for (size_t i = 0; i < o->file.layout.size(); ++i)
     out.push_back(o->file.layout[i].type == FieldType::Chars ? Value{0, std::string(chars(o->file, r, i))}
-                                                              : Value{number(o->file, r, i), {}});
+                                                             : Value{number(o->file, r, i), {}});
   o->next = r + 1;
   return Code::Ok;
 }
 
-Code Channels::write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, const std::vector<Value>& values,
-                     uint32_t* at) {
+Code Channels::write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record,
+                     const std::vector<Value>& values, uint32_t* at) {
   Open* o = nullptr;
   if (Code c = channel_file(channel, o); c != Code::Ok) return c;
   auto s = structures_.find(structure);

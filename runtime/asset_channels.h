@@ -41,8 +41,8 @@ struct Value {
 class Channels {
  public:
   struct Settings {
-    uint32_t channels = 8;    // PGCFIL CHN: channels 1..channels
-    uint32_t structures = 16; // PGCFIL STR: structures 1..structures
+    uint32_t channels = 8;     // PGCFIL CHN: channels 1..channels
+    uint32_t structures = 16;  // PGCFIL STR: structures 1..structures
     uint8_t default_device = 1;
   };
   // `store` null: ASSET is not configured (every statement: code 18).
@@ -54,14 +54,14 @@ class Channels {
   const Settings& settings() const { return settings_; }
   // DER: false when `structure` is not 1..structures or the layout is not one.
   bool define(uint32_t structure, const Layout& layout);
-  Code open(uint32_t channel, const FileName& name, bool write);                                 // OPN
+  Code open(uint32_t channel, const FileName& name, bool write);  // OPN
   // RED and WRT; `at`, when given, takes the record they went to.
   Code read(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, std::vector<Value>& out,
             uint32_t* at = nullptr);
   Code write(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, const std::vector<Value>& values,
              uint32_t* at = nullptr);
-  Code close(uint32_t channel);  // CLO n
-  Code close_all();              // CLO
+  Code close(uint32_t channel);                                             // CLO n
+  Code close_all();                                                         // CLO
   Code create(uint32_t structure, const FileName& name, uint32_t records);  // CRE
   Code remove(const FileName& name);                                        // CAN
 
@@ -69,8 +69,8 @@ class Channels {
   struct Open {
     FileName name;
     bool write = false;
-    File file;             // as it is on the device
-    uint32_t next = 1;     // the record a RED or WRT without a number takes
+    File file;          // as it is on the device
+    uint32_t next = 1;  // the record a RED or WRT without a number takes
   };
   Code channel_file(uint32_t channel, Open*& open);
   Code record_of(const Open& open, std::optional<uint32_t> record, uint32_t& r) const;

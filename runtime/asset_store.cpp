@@ -4,14 +4,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <dirent.h>
 #include <algorithm>
 #include <bit>
-#include <cmath>
-#include <limits>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
-#include <dirent.h>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -58,12 +58,25 @@ Code code_of_errno(int e) { return e == ENOSPC || e == EDQUOT ? Code::Overflow :
 }  // namespace
 
 std::string_view meaning(Code c) {
-  static constexpr std::string_view kText[] = {
-      "no error",         "channel already open or still closed", "invalid channel number", "no permitted channel",
-      "file not found",   "file already exists",                  "illegal operation",      "file already open",
-      "file not open",    "protected file",                       "format error",           "record not found",
-      "hardware error",   "end of file",                          "logical I/O error",      "invalid device",
-      "record structure not defined", "memory overflow",          "ASSET area not configured"};
+  static constexpr std::string_view kText[] = {"no error",
+                                               "channel already open or still closed",
+                                               "invalid channel number",
+                                               "no permitted channel",
+                                               "file not found",
+                                               "file already exists",
+                                               "illegal operation",
+                                               "file already open",
+                                               "file not open",
+                                               "protected file",
+                                               "format error",
+                                               "record not found",
+                                               "hardware error",
+                                               "end of file",
+                                               "logical I/O error",
+                                               "invalid device",
+                                               "record structure not defined",
+                                               "memory overflow",
+                                               "ASSET area not configured"};
   return kText[static_cast<size_t>(c)];
 }
 
@@ -305,7 +318,8 @@ Code Store::write(const FileName& name, const File& f, bool fresh) {
     uint64_t used = size;
     for (const FileName& other : list(name.device)) {
       struct stat st;
-      if (other.name != name.name && ::fstatat(dev.fd, (other.name + std::string(kSuffix)).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
+      if (other.name != name.name &&
+          ::fstatat(dev.fd, (other.name + std::string(kSuffix)).c_str(), &st, AT_SYMLINK_NOFOLLOW) == 0)
         used += static_cast<uint64_t>(st.st_size);
     }
     if (used > options_.device_bytes) return Code::Overflow;

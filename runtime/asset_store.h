@@ -93,7 +93,7 @@ class Store {
   Store& operator=(const Store&) = delete;
 
   Code load(const FileName& name, File& f) const;
-  Code create(const FileName& name, const File& f);  // 5 if it exists
+  Code create(const FileName& name, const File& f);   // 5 if it exists
   Code replace(const FileName& name, const File& f);  // 4 unless it exists
   Code remove(const FileName& name);
   // The files of a device, by name (an unconnected device has none).

@@ -30,15 +30,16 @@ std::optional<Vec> along_arc(const Element& e, const Vec& from, double d, bool b
   angle = 2 * std::asin(d / (2 * r));
   const double turn = (e.ccw != backwards) ? angle : -angle;
   const Vec v = from - e.c;
-  return Vec(e.c.x() + v.x() * std::cos(turn) - v.y() * std::sin(turn), e.c.y() + v.x() * std::sin(turn) + v.y() * std::cos(turn));
+  return Vec(e.c.x() + v.x() * std::cos(turn) - v.y() * std::sin(turn),
+             e.c.y() + v.x() * std::sin(turn) + v.y() * std::cos(turn));
 }
 
 // The points at distance `size` on the side `side` (+1 left of travel) of an element:
 // a line shifted, or the arc's circle grown or shrunk.
 struct Offset {
   bool circle = false;
-  Vec p, d;        // line: a point and its direction
-  Vec c{0, 0};     // circle: centre and radius
+  Vec p, d;     // line: a point and its direction
+  Vec c{0, 0};  // circle: centre and radius
   double r = 0;
 };
 Offset offset(const Element& e, double size, int side) {
@@ -73,7 +74,8 @@ std::vector<Vec> intersect(const Offset& a, const Offset& b) {
   } else {
     const Vec d = b.c - a.c;
     const double dist = d.norm();
-    if (dist < kEps || a.r <= 0 || b.r <= 0 || dist > a.r + b.r + kEps || dist < std::fabs(a.r - b.r) - kEps) return out;
+    if (dist < kEps || a.r <= 0 || b.r <= 0 || dist > a.r + b.r + kEps || dist < std::fabs(a.r - b.r) - kEps)
+      return out;
     const double x = (dist * dist + a.r * a.r - b.r * b.r) / (2 * dist);
     const double h = std::sqrt(std::max(a.r * a.r - x * x, 0.0));
     const Vec m = a.c + d * (x / dist), n = left(d / dist);

@@ -28,7 +28,7 @@ struct Cut {
   bool fillet = false;
   Vec centre{0, 0};
   bool ccw = false;
-  double fillet_sweep = 0;  // radians
+  double fillet_sweep = 0;                   // radians
   double in_fraction = 1, out_fraction = 0;  // where T1 and T2 lie along their elements (0..1)
 };
 

@@ -41,20 +41,20 @@ struct CutterPath::State {
     double size = 0;  // signed radius of a fillet, set-back of a chamfer
     uint32_t source = 0;
   };
-  std::optional<Corner> corner_;     // asked for between the waiting move and the next
-  std::optional<uint32_t> off_in_;   // NC-110: the block whose G40 the next block's move makes good
+  std::optional<Corner> corner_;    // asked for between the waiting move and the next
+  std::optional<uint32_t> off_in_;  // NC-110: the block whose G40 the next block's move makes good
   bool cut(corner::Element& el, Vec& end, Vec& next, std::optional<Event>& between);
   // No compensation: G40, or (ISO D0) a radius of 0; NC-110's path with a radius of 0
   // still cuts its corners r and b.
   bool off(int side, double radius) const { return side == 0 || (radius <= 0 && rules_.zero_radius_off); }
   // " (E-12)": the ISO alarm a rule is, where the dialect numbers them.
   std::string alarm(const char* code) const { return rules_.iso_alarms ? fmt::format(" ({})", code) : std::string(); }
-  int side_ = 0;       // 1 left (G41), 2 right (G42), 0 off
-  double radius_ = 0;  // program units
-  uint32_t switched_at_ = 0;  // the block whose CutterComp event set side_
-  uint32_t leave_source_ = 0; // the block a right-angle leave belongs to
-  bool leaving_ = false;      // compensation went off; the waiting move has not left yet
-  bool suspended_ = false;    // G28, G29, G53, a cycle: moves go as programmed
+  int side_ = 0;               // 1 left (G41), 2 right (G42), 0 off
+  double radius_ = 0;          // program units
+  uint32_t switched_at_ = 0;   // the block whose CutterComp event set side_
+  uint32_t leave_source_ = 0;  // the block a right-angle leave belongs to
+  bool leaving_ = false;       // compensation went off; the waiting move has not left yet
+  bool suspended_ = false;     // G28, G29, G53, a cycle: moves go as programmed
   bool in_plane(const Event& e, const AxisValues& start) const {
     const int u = e.kind == EventKind::Arc ? e.plane.u : plane_.u, v = e.kind == EventKind::Arc ? e.plane.v : plane_.v;
     return e.kind == EventKind::Arc || std::hypot(e.pos[u] - start[u], e.pos[v] - start[v]) > 1e-9;
@@ -84,11 +84,11 @@ struct CutterPath::State {
     drop_held();
   }
   std::optional<size_t> waiting_;
-  corner::Element element_;   // its programmed element
+  corner::Element element_;  // its programmed element
   int waiting_side_ = 0;
   double waiting_radius_ = 0;
-  bool startup_ = false;      // the start-up line: it ends beside the next move's start
-  Vec from_{0, 0};            // where its offset path starts
+  bool startup_ = false;  // the start-up line: it ends beside the next move's start
+  Vec from_{0, 0};        // where its offset path starts
 };
 
 CutterPath::CutterPath(TraceSink& out, Report report, void* context, CompRules rules)
@@ -102,8 +102,10 @@ size_t CutterPath::held_events() const { return s_->held_.size(); }
 bool CutterPath::passes_moves() const { return !s_->waiting_ && s_->off(s_->side_, s_->radius_); }
 
 void CutterPath::State::send(const Event& e) {
-  if (waiting_) hold(e);
-  else out_.event(e);
+  if (waiting_)
+    hold(e);
+  else
+    out_.event(e);
 }
 
 corner::Vec CutterPath::State::normal(const corner::Element& el, const Vec& at, int side) const {
@@ -166,16 +168,20 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
   }
   if (!in_plane(e, *start)) {
     // A move along the plane's normal keeps the offset it stands at.
-    if (waiting_) hold(e);
-    else out_.event(e);
+    if (waiting_)
+      hold(e);
+    else
+      out_.event(e);
     return;
   }
   if (off(side_, radius_)) {
     // G40 (or D0) with this move: it leaves from beside the last end (figure 32).
     if (waiting_) {
-      if (e.kind == EventKind::Arc && (rules_.cancel_after || e.source != leave_source_))  // in G40's own block: the runtime's check
-        report_(context_, e.source, rules_.cancel_after ? "the move after G40 leaves the compensated path: a G00 or G01 move (§2.8.7)"
-                                                        : "cutter radius compensation cannot end on an arc (E-13): use a G00 or G01 move");
+      if (e.kind == EventKind::Arc &&
+          (rules_.cancel_after || e.source != leave_source_))  // in G40's own block: the runtime's check
+        report_(context_, e.source,
+                rules_.cancel_after ? "the move after G40 leaves the compensated path: a G00 or G01 move (§2.8.7)"
+                                    : "cutter radius compensation cannot end on an arc (E-13): use a G00 or G01 move");
       leave(false);
     }
     out_.event(e);
@@ -194,8 +200,9 @@ void CutterPath::State::begin(const Event& move, const corner::Element& el, cons
   // right angle to the offset of this move's start.
   if (move.source == switched_at_) right_angle_ = false;
   if (move.kind == EventKind::Arc && move.source != switched_at_)  // in G41/G42's own block: the runtime's check
-    report_(context_, move.source, rules_.iso_alarms ? "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move"
-                                                     : "cutter radius compensation starts with a G00 or G01 move, not an arc (§2.8.7)");
+    report_(context_, move.source,
+            rules_.iso_alarms ? "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move"
+                              : "cutter radius compensation starts with a G00 or G01 move, not an arc (§2.8.7)");
   if (right_angle_) {
     const Vec entry = el.a + radius_ * normal(el, el.a, side_);
     const Plane p = move.kind == EventKind::Arc ? move.plane : plane_;
@@ -270,8 +277,9 @@ bool CutterPath::State::cut(corner::Element& el, Vec& end, Vec& next, std::optio
     return false;
   }
   if (c.fillet && k->ccw != (c.size > 0)) {
-    report_(context_, c.source, fmt::format("{}: the path turns {} there, so its fillet is r{} (§2.8.7)", what,
-                                            k->ccw ? "counter-clockwise" : "clockwise", shortest(-c.size)));
+    report_(context_, c.source,
+            fmt::format("{}: the path turns {} there, so its fillet is r{} (§2.8.7)", what,
+                        k->ccw ? "counter-clockwise" : "clockwise", shortest(-c.size)));
     return false;
   }
   element_.b = k->t1;
@@ -283,8 +291,8 @@ bool CutterPath::State::cut(corner::Element& el, Vec& end, Vec& next, std::optio
   if (c.fillet) {
     // Tangent to both: square to them at its ends, about its own centre.
     if ((side == 1) == k->ccw && std::fabs(c.size) < r - 1e-9) {
-      report_(context_, c.source, fmt::format("{} is smaller than the tool radius {}: the tool cannot follow it", what,
-                                              shortest(r)));
+      report_(context_, c.source,
+              fmt::format("{} is smaller than the tool radius {}: the tool cannot follow it", what, shortest(r)));
       return false;
     }
     end = k->t1 + r * normal(element_, k->t1, side);
@@ -320,7 +328,9 @@ void CutterPath::State::join(const Event& move, const corner::Element& programme
   if (startup_) {
     // Start-up (Fanuc type A, NC-110 rule 6): beside the next move's start.
     end = next = p + radius_ * normal(el, p, side_);
-    if (corner_) report_(context_, corner_->source, "a corner r or b joins two moves of the compensated path, not the approach to it (§2.8.7)");
+    if (corner_)
+      report_(context_, corner_->source,
+              "a corner r or b joins two moves of the compensated path, not the approach to it (§2.8.7)");
   } else if (same && corner_ && corner_->size != 0) {
     if (!cut(el, end, next, around)) {
       corner_.reset();
@@ -339,8 +349,10 @@ void CutterPath::State::join(const Event& move, const corner::Element& programme
     } else if (inside || !round) {
       // The offset moves meet at their intersection nearest the corner.
       if (points.empty()) {
-        report_(context_, move.source, fmt::format("cutter compensation: the offset paths of this move and the one before do not meet: "
-                                                   "a move shorter than the tool radius or an arc smaller than it{}", alarm("E-12")));
+        report_(context_, move.source,
+                fmt::format("cutter compensation: the offset paths of this move and the one before do not meet: "
+                            "a move shorter than the tool radius or an arc smaller than it{}",
+                            alarm("E-12")));
         corner_.reset();
         return abandon();
       }
@@ -371,14 +383,17 @@ void CutterPath::State::join(const Event& move, const corner::Element& programme
   // and the next one starts there (§8.10, figure 34: only on straight moves, E-14).
   if (el.arc && el.ccw == (side_ == 1) && (el.a - el.c).norm() <= radius_ + 1e-9) {
     // An arc turning towards the tool: its offset radius shrinks to nothing (E-12).
-    report_(context_, move.source, fmt::format("cutter compensation: the arc's radius is not larger than the tool radius on its inside{}",
-                                               alarm("E-12")));
+    report_(context_, move.source,
+            fmt::format("cutter compensation: the arc's radius is not larger than the tool radius on its inside{}",
+                        alarm("E-12")));
     return abandon();
   }
   // §8.10 (E-12): an offset line that would run backwards cuts into the part.
   if (!element_.arc && !startup_ && (end - from_).dot(element_.b - element_.a) <= 0) {
-    report_(context_, move.source, fmt::format("cutter compensation: the move before is shorter than the tool radius allows: its offset "
-                                               "runs backwards{}", alarm("E-12")));
+    report_(context_, move.source,
+            fmt::format("cutter compensation: the move before is shorter than the tool radius allows: its offset "
+                        "runs backwards{}",
+                        alarm("E-12")));
     return abandon();
   }
   end_waiting(end);
@@ -455,6 +470,8 @@ void CutterPath::leave() {
   if (s_->waiting_) s_->leave(true);
 }
 
-void CutterPath::corner(bool fillet, double size, uint32_t source) { s_->corner_ = State::Corner{fillet, size, source}; }
+void CutterPath::corner(bool fillet, double size, uint32_t source) {
+  s_->corner_ = State::Corner{fillet, size, source};
+}
 
 }  // namespace ncc

@@ -23,9 +23,9 @@ struct Step {
   // NC-110's tap in and out, moves the machine makes its own way (Machine::tap_feed()).
   enum class Kind : uint8_t { Rapid, Feed, Over, Dwell, Spindle, Manual, Tap, TapOut };
   Kind kind = Kind::Rapid;
-  double level = 0;       // a move: where along the drilling axis
-  double shift = 0;       // a move: off the hole along the plane's first axis (G76, G87)
-  double seconds = 0;     // Dwell
+  double level = 0;              // a move: where along the drilling axis
+  double shift = 0;              // a move: off the hole along the plane's first axis (G76, G87)
+  double seconds = 0;            // Dwell
   Fn spindle = Fn::SpindleStop;  // Spindle: the code the machine applies ...
   bool always = false;           // ... even where the spindle runs (or stands) so already
 };
@@ -36,7 +36,7 @@ struct Step {
 struct Hole {
   double initial = 0;  // the level the cycle mode began at (ISO) or the hole begins at (GOST, pp)
   double current = 0;
-  double level = 0;    // R
+  double level = 0;  // R
   double bottom = 0;
   std::optional<double> peck;  // mm: ISO's Q, GOST's and pp's peck word
   double dwell = 0;            // seconds at the bottom

@@ -1,9 +1,9 @@
 #include "gtl.h"
 
-#include <Eigen/Geometry>
-#include <cmath>
 #include <fmt/format.h>
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include "support/numbers.h"
@@ -156,9 +156,10 @@ struct Reader {
     const double index = next();
     const bool reverse = next() != 0;
     auto n = whole_in(index, 0, kMaxIndex);
-    if (!n) return fail(fmt::format("{}{} is not an element: the index is a whole number 0..{}", letter(kind),
-                                    shortest(index), kMaxIndex)),
-                  std::nullopt;
+    if (!n)
+      return fail(fmt::format("{}{} is not an element: the index is a whole number 0..{}", letter(kind),
+                              shortest(index), kMaxIndex)),
+             std::nullopt;
     const Element* e = store.find(kind, *n);
     names.push_back((reverse ? "-" : "") + name(kind, *n));
     silent = silent || (!e && store.failed(kind, *n));
@@ -173,8 +174,10 @@ struct Reader {
     if (index < 0) return true;
     auto n = whole_in(index, 0, kMaxIndex);
     const Element* o = n ? store.find(Kind::Origin, *n) : nullptr;
-    if (!o) return fail(n ? fmt::format("{} is not defined before this block", name(Kind::Origin, *n))
-                          : fmt::format("o{} is not an origin: the index is a whole number 0..{}", shortest(index), kMaxIndex));
+    if (!o)
+      return fail(
+          n ? fmt::format("{} is not defined before this block", name(Kind::Origin, *n))
+            : fmt::format("o{} is not an origin: the index is a whole number 0..{}", shortest(index), kMaxIndex));
     turn = Eigen::Rotation2Dd(std::atan2(o->dir.y(), o->dir.x()));
     zero = o->at;
     return true;
@@ -189,10 +192,12 @@ struct Reader {
       const int axis = static_cast<int>(next());
       const double v = next();
       const int k = axis == abscissa ? 0 : axis == ordinate ? 1 : -1;
-      const char l = axis >= 0 && static_cast<size_t>(axis) < axis_letters.size() ? axis_letters[static_cast<size_t>(axis)] : '?';
+      const char l =
+          axis >= 0 && static_cast<size_t>(axis) < axis_letters.size() ? axis_letters[static_cast<size_t>(axis)] : '?';
       if (k < 0)
         return fail(fmt::format("{} is not an axis of the plane {}{}: a point is given by the plane's two axes", l,
-                                axis_letters[static_cast<size_t>(abscissa)], axis_letters[static_cast<size_t>(ordinate)])),
+                                axis_letters[static_cast<size_t>(abscissa)],
+                                axis_letters[static_cast<size_t>(ordinate)])),
                std::nullopt;
       if (seen[k]) return fail(fmt::format("{} is written twice", l)), std::nullopt;
       seen[k] = true;
@@ -291,7 +296,8 @@ Result define(const Shape& shape, std::span<const double> values, const Store& s
         const Element& c = point_first ? e[1] : e[0];
         const Vec between = c.at - p.at;
         const double d = between.norm();
-        if (d < std::fabs(c.r) - tol.distance) return fail("the point lies inside the circle: no line through it touches the circle");
+        if (d < std::fabs(c.r) - tol.distance)
+          return fail("the point lies inside the circle: no line through it touches the circle");
         const double lambda = (point_first ? 1 : -1) * std::sqrt(std::max(0.0, d * d - c.r * c.r));
         const double alpha = angle_of(between) - std::atan2(c.r, lambda) / kDegree;
         return ok(line(p.at, direction(alpha)));
@@ -324,7 +330,8 @@ Result define(const Shape& shape, std::span<const double> values, const Store& s
         const double d = 2 * cross(b - a, c - a);
         if (std::fabs(d) < tol.distance * tol.distance) return fail("the three points lie on one line");
         const Vec centre = a + Vec((c - a).y() * (b - a).squaredNorm() - (b - a).y() * (c - a).squaredNorm(),
-                                   (b - a).x() * (c - a).squaredNorm() - (c - a).x() * (b - a).squaredNorm()) / d;
+                                   (b - a).x() * (c - a).squaredNorm() - (c - a).x() * (b - a).squaredNorm()) /
+                                   d;
         const double r = (a - centre).norm();
         return ok(circle(centre, cross(b - a, c - b) > 0 ? r : -r));
       }
@@ -337,8 +344,9 @@ Result define(const Shape& shape, std::span<const double> values, const Store& s
       }
       if (sig.size() == 3 && sig[2] == 'r') {
         Result c = tangent_circle(e[0], e[1], e[2].r, tol);
-        if (!c.element) c.why = fmt::format("no circle of radius {} runs from {} to {}: {}", shortest(e[2].r),
-                                            in.names[0], in.names[1], c.why);
+        if (!c.element)
+          c.why = fmt::format("no circle of radius {} runs from {} to {}: {}", shortest(e[2].r), in.names[0],
+                              in.names[1], c.why);
         return c;
       }
       break;

@@ -1,7 +1,7 @@
 #include "gtl_profile.h"
 
-#include <cmath>
 #include <fmt/format.h>
+#include <cmath>
 
 #include "support/text.h"
 
@@ -46,7 +46,8 @@ void Profile::open_at(const Vec& start, size_t tag, int side, double radius, Tol
   start_ = start;
 }
 
-void Profile::open_closed(const Element& last, ElementId id, bool s2, size_t tag, int side, double radius, Tolerance tol) {
+void Profile::open_closed(const Element& last, ElementId id, bool s2, size_t tag, int side, double radius,
+                          Tolerance tol) {
   open_at({0, 0}, tag, side, radius, tol);
   closed_ = true;
   last_ = call(last, id, s2, tag);
@@ -58,8 +59,9 @@ std::optional<Profile::Call> Profile::call(const Element& e, ElementId id, bool 
   Call c{e, offset(e, side_ * radius_), id, s2, tag};
   // (A tool of the circle's radius turns on its centre.)
   if (e.kind == Kind::Circle && std::fabs(c.path.r) >= tol_.distance && (c.path.r > 0) != (e.r > 0)) {
-    fail(tag, fmt::format("the tool radius {} is larger than the radius {} of {} on its inside: the tool cannot follow it",
-                          four_decimals(radius_), four_decimals(std::fabs(e.r)), element_name(id)));
+    fail(tag,
+         fmt::format("the tool radius {} is larger than the radius {} of {} on its inside: the tool cannot follow it",
+                     four_decimals(radius_), four_decimals(std::fabs(e.r)), element_name(id)));
     return std::nullopt;
   }
   return c;
@@ -75,13 +77,15 @@ std::optional<Profile::Junction> Profile::join(const Call& a, const Call& b, con
                                      element_name(a.nominal.kind == Kind::Circle ? a.id : b.id))),
              std::nullopt;
     auto corner = meet(a.nominal, b.nominal, tol_);
-    if (corner.empty()) return fail(c.tag, fmt::format("{} are parallel: there is no corner to chamfer", names)), std::nullopt;
+    if (corner.empty())
+      return fail(c.tag, fmt::format("{} are parallel: there is no corner to chamfer", names)), std::nullopt;
     j.exit_nominal = corner[0] - c.size * a.nominal.dir;
     j.entry_nominal = corner[0] + c.size * b.nominal.dir;
     j.exit = j.exit_nominal;
     j.entry = j.entry_nominal;
     if ((j.entry_nominal - j.exit_nominal).norm() >= tol_.distance && side_ != 0) {
-      const Element slope = offset({Kind::Line, j.exit_nominal, (j.entry_nominal - j.exit_nominal).normalized(), 0}, side_ * radius_);
+      const Element slope =
+          offset({Kind::Line, j.exit_nominal, (j.entry_nominal - j.exit_nominal).normalized(), 0}, side_ * radius_);
       auto in = meet(a.path, slope, tol_), out = meet(slope, b.path, tol_);
       if (!in.empty()) j.exit = in[0];
       if (!out.empty()) j.entry = out[0];
@@ -103,7 +107,8 @@ std::optional<Profile::Junction> Profile::join(const Call& a, const Call& b, con
     j.entry_nominal = contact(b.nominal, fillet.at, fillet.r);
     j.exit = beside(a.nominal, j.exit_nominal);
     j.entry = beside(b.nominal, j.entry_nominal);
-    if ((j.entry - j.exit).norm() >= tol_.distance) j.between = Piece{c.tag, true, true, j.entry, fillet.at, fillet.r > 0};
+    if ((j.entry - j.exit).norm() >= tol_.distance)
+      j.between = Piece{c.tag, true, true, j.entry, fillet.at, fillet.r > 0};
     return j;
   }
   // §2.11.9.1: where they meet, the second point with s2 on the first.
@@ -170,8 +175,9 @@ void Profile::element(const Element& e, ElementId id, bool s2, size_t tag) {
       first_id_ = id;
     } else {
       if (!on(e, start_))
-        return (void)fail(tag, fmt::format("the profile's start point {} does not lie on its first element {} (§2.11.8.2)",
-                                           at(start_), element_name(id)));
+        return (void)fail(tag,
+                          fmt::format("the profile's start point {} does not lie on its first element {} (§2.11.8.2)",
+                                      at(start_), element_name(id)));
       next->entry_nominal = start_;
       next->entry = beside(e, start_);
     }
@@ -198,15 +204,19 @@ void Profile::element(const Element& e, ElementId id, bool s2, size_t tag) {
 
 void Profile::fillet(double r, size_t tag) {
   if (!active_ || failed_) return;
-  if (!current_) return (void)fail(tag, "a profile does not start with a fillet: r comes between two elements (§2.11.9.2)");
-  if (connector_.kind != Connector::Kind::None) return (void)fail(tag, "two connections in a row: one r or b joins two elements");
+  if (!current_)
+    return (void)fail(tag, "a profile does not start with a fillet: r comes between two elements (§2.11.9.2)");
+  if (connector_.kind != Connector::Kind::None)
+    return (void)fail(tag, "two connections in a row: one r or b joins two elements");
   connector_ = {Connector::Kind::Fillet, r, tag, held_.size()};
 }
 
 void Profile::chamfer(double b, size_t tag) {
   if (!active_ || failed_) return;
-  if (!current_) return (void)fail(tag, "a profile does not start with a chamfer: b comes between two lines (§2.11.9.3)");
-  if (connector_.kind != Connector::Kind::None) return (void)fail(tag, "two connections in a row: one r or b joins two elements");
+  if (!current_)
+    return (void)fail(tag, "a profile does not start with a chamfer: b comes between two lines (§2.11.9.3)");
+  if (connector_.kind != Connector::Kind::None)
+    return (void)fail(tag, "two connections in a row: one r or b joins two elements");
   connector_ = {Connector::Kind::Chamfer, b, tag, held_.size()};
 }
 
@@ -230,8 +240,11 @@ void Profile::close_at(const Vec& end, size_t tag) {
       // §2.11.8.2 wants another point than the first; the manual's own §2.17.1.1 ends
       // where it starts, and the path is as well defined: run it, and say so.
       if ((end - start_).norm() < tol_.distance && !problem_)
-        problem_ = Problem{tag, "the open profile ends at its start point, where §2.11.8.2 wants another: a closed profile names "
-                                "its last element in G21 (§2.11.8.3)", true};
+        problem_ =
+            Problem{tag,
+                    "the open profile ends at its start point, where §2.11.8.2 wants another: a closed profile names "
+                    "its last element in G21 (§2.11.8.3)",
+                    true};
       move(*current_, end, beside(current_->nominal, end));
       flush(0, held_.size());
     }

@@ -102,12 +102,12 @@ class Profile {
   Tolerance tol_;
   size_t open_tag_ = 0;
   Vec start_{0, 0};
-  std::optional<Call> last_;          // a closed profile's last element, as G21 names it
-  std::optional<Junction> closing_;   // ... where it meets the first
+  std::optional<Call> last_;         // a closed profile's last element, as G21 names it
+  std::optional<Junction> closing_;  // ... where it meets the first
   ElementId first_id_{Kind::Line, -1};
-  std::optional<Call> current_;       // the element waiting for the next
+  std::optional<Call> current_;  // the element waiting for the next
   Connector connector_;
-  std::vector<size_t> held_;          // blocks waiting for the current element's move
+  std::vector<size_t> held_;  // blocks waiting for the current element's move
   std::vector<Piece> ready_;
   std::optional<Problem> problem_;
 };

@@ -9,7 +9,8 @@
 namespace ncc {
 
 namespace {
-constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (mm/min)", "feeds per revolution (mm/rev)"};
+constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (mm/min)",
+                                      "feeds per revolution (mm/rev)"};
 }  // namespace
 
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
@@ -139,7 +140,8 @@ double Machine::angle_degrees(double v) const {
 double Machine::axis_units(int axis, double v) const {
   const AxisConfig& a = config_.axes[static_cast<size_t>(axis)];
   switch (a.kind) {
-    case AxisKind::Linear: return length_units(modal_.diameter && kAxisLetters[axis] == conv_.diameter_axis ? v / 2 : v);
+    case AxisKind::Linear:
+      return length_units(modal_.diameter && kAxisLetters[axis] == conv_.diameter_axis ? v / 2 : v);
     case AxisKind::Rotary: return angle_degrees(v);
     case AxisKind::Indexing: return v * a.index_step;
   }
@@ -225,8 +227,9 @@ FnCall Machine::current(FnGroup group) const {
     case FnGroup::Distance: return {modal_.absolute ? Fn::DistanceAbsolute : Fn::DistanceIncremental};
     case FnGroup::Units: return {modal_.inch ? Fn::UnitsInch : Fn::UnitsMm};
     case FnGroup::FeedMode:
-      return {modal_.feed_mode == 0 ? Fn::FeedInverseTime : modal_.feed_mode == 1 ? Fn::FeedPerMinute
-                                                                                   : Fn::FeedPerRevolution};
+      return {modal_.feed_mode == 0   ? Fn::FeedInverseTime
+              : modal_.feed_mode == 1 ? Fn::FeedPerMinute
+                                      : Fn::FeedPerRevolution};
     case FnGroup::SpindleMode: return {modal_.constant_surface ? Fn::SpindleConstantSurface : Fn::SpindleRpm};
     case FnGroup::CutterComp: return {modal_.comp == 0 ? Fn::CompOff : modal_.comp == 1 ? Fn::CompLeft : Fn::CompRight};
     case FnGroup::ToolLength:
@@ -235,18 +238,23 @@ FnCall Machine::current(FnGroup group) const {
     case FnGroup::Cycle:
       return modal_.cycle < 0 ? FnCall{Fn::CycleCancel} : FnCall{Fn::Cycle, static_cast<uint16_t>(modal_.cycle)};
     case FnGroup::Spindle:
-      return {modal_.spindle == 1 ? Fn::SpindleCw : modal_.spindle == -1 ? Fn::SpindleCcw
-              : modal_.spindle == 2 ? Fn::SpindleOrient : Fn::SpindleStop};
+      return {modal_.spindle == 1    ? Fn::SpindleCw
+              : modal_.spindle == -1 ? Fn::SpindleCcw
+              : modal_.spindle == 2  ? Fn::SpindleOrient
+                                     : Fn::SpindleStop};
     case FnGroup::Override: return {modal_.override_enabled ? Fn::OverrideEnable : Fn::OverrideDisable};
     case FnGroup::SpindleHold: return {modal_.spindle_hold ? Fn::SpindleHoldOn : Fn::SpindleHoldOff};
     case FnGroup::Dynamics:
       if (modal_.dynamics < 0) break;  // never set: nothing to give back
-      return {modal_.dynamics == 0 ? Fn::DynamicsCornerSlowdown : modal_.dynamics == 1 ? Fn::DynamicsContinuous
-              : modal_.dynamics == 2 ? Fn::DynamicsPointToPoint : Fn::DynamicsSmooth};
+      return {modal_.dynamics == 0   ? Fn::DynamicsCornerSlowdown
+              : modal_.dynamics == 1 ? Fn::DynamicsContinuous
+              : modal_.dynamics == 2 ? Fn::DynamicsPointToPoint
+                                     : Fn::DynamicsSmooth};
     case FnGroup::Gtl: return {modal_.gtl ? Fn::GtlOpen : Fn::GtlClose};
     case FnGroup::SpindleRange:
-      return modal_.spindle_range > 0 ? FnCall{Fn::SpindleRangeForce, static_cast<uint16_t>(modal_.spindle_range)}
-                                      : FnCall{modal_.spindle_range < 0 ? Fn::SpindleRangeAuto : Fn::SpindleRangeCancel};
+      return modal_.spindle_range > 0
+                 ? FnCall{Fn::SpindleRangeForce, static_cast<uint16_t>(modal_.spindle_range)}
+                 : FnCall{modal_.spindle_range < 0 ? Fn::SpindleRangeAuto : Fn::SpindleRangeCancel};
     case FnGroup::Diameter: return {modal_.diameter ? Fn::DiameterOn : Fn::DiameterOff};
     case FnGroup::Helix: return {modal_.helix ? Fn::HelixOn : Fn::HelixOff};
     case FnGroup::FeedReduction: return {modal_.feed_reduced ? Fn::FeedReduced : Fn::FeedProgrammed};
@@ -311,7 +319,9 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       // NC-110 §2.8.1.3: inside a spline only G06 and the lead-out's G00/G01.
       if (spline_.active && spline_.points.size() > 1 && call.fn != Fn::MotionSpline && call.fn != Fn::MotionRapid &&
           call.fn != Fn::MotionLinear && emit_events)
-        report_code(DiagId::SplineStructure, fmt::format("{} cannot stand inside a spline: only G06 points and the G00 or G01 lead-out", block_.code_name));
+        report_code(DiagId::SplineStructure,
+                    fmt::format("{} cannot stand inside a spline: only G06 points and the G00 or G01 lead-out",
+                                block_.code_name));
       modal_.motion = call.fn;
       // ISO: a code of the motion group ends the canned cycle of an earlier block.
       if (conv_.fanuc_cycles && emit_events && modal_.cycle >= 0 && !block_.cycle_set) {
@@ -337,7 +347,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       // ISO §8.10 (E-10): the plane stays while cutter compensation is on, unless G40
       // in the same block (in any word order) ends it.
       if (emit_events && conv_.fanuc_rules && modal_.comp != 0 && block_.request &&
-          modal_.plane != kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2] && !block_has(Fn::CompOff)) {
+          modal_.plane != kPlanes[call.fn == Fn::PlaneXY   ? 0
+                                  : call.fn == Fn::PlaneZX ? 1
+                                                           : 2] &&
+          !block_has(Fn::CompOff)) {
         report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
         break;
       }
@@ -372,14 +385,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::CompOff:
     case Fn::CompLeft:
-    case Fn::CompRight:
-      modal_.comp = call.fn == Fn::CompOff ? 0 : call.fn == Fn::CompLeft ? 1 : 2;
-      break;
+    case Fn::CompRight: modal_.comp = call.fn == Fn::CompOff ? 0 : call.fn == Fn::CompLeft ? 1 : 2; break;
     case Fn::LengthOff:
     case Fn::LengthPlus:
-    case Fn::LengthMinus:
-      modal_.length = call.fn == Fn::LengthOff ? 0 : call.fn == Fn::LengthPlus ? 1 : -1;
-      break;
+    case Fn::LengthMinus: modal_.length = call.fn == Fn::LengthOff ? 0 : call.fn == Fn::LengthPlus ? 1 : -1; break;
     case Fn::WorkOffset:
       // pp G92: a G5 code in its block names the offset to load; it selects nothing.
       if (block_.offset_load) {
@@ -517,8 +526,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::DynamicsContinuous:
     case Fn::DynamicsPointToPoint:
     case Fn::DynamicsSmooth: {
-      int mode = call.fn == Fn::DynamicsCornerSlowdown ? 0 : call.fn == Fn::DynamicsContinuous ? 1
-               : call.fn == Fn::DynamicsPointToPoint ? 2 : 3;
+      int mode = call.fn == Fn::DynamicsCornerSlowdown ? 0
+                 : call.fn == Fn::DynamicsContinuous   ? 1
+                 : call.fn == Fn::DynamicsPointToPoint ? 2
+                                                       : 3;
       if (mode >= 2) profile_running_ = false;
       if (mode != modal_.dynamics) event(EventKind::PathMode, 4 + mode);
       modal_.dynamics = mode;
@@ -591,9 +602,12 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::HelixPitch:
       // pp G10 K: the pitch of the helices that follow (mm per turn).
       if (!emit_events) break;
-      if (!has('K')) report_code(DiagId::ArcForm, fmt::format("{} defines the helix pitch: K is missing", block_.code_name));
-      else if (word('K') <= 0) report(DiagId::ArcForm, 'K', fmt::format("the helix pitch K{} must be greater than zero", shortest(word('K'))));
-      else helix_pitch_ = word('K');
+      if (!has('K'))
+        report_code(DiagId::ArcForm, fmt::format("{} defines the helix pitch: K is missing", block_.code_name));
+      else if (word('K') <= 0)
+        report(DiagId::ArcForm, 'K', fmt::format("the helix pitch K{} must be greater than zero", shortest(word('K'))));
+      else
+        helix_pitch_ = word('K');
       break;
     case Fn::TransformCancel: {
       const bool shifted = frame_.shift != AxisValues{};
@@ -619,7 +633,8 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::FeedReduced:
     case Fn::FeedProgrammed:
-      if (modal_.feed_reduced != (call.fn == Fn::FeedReduced)) event(EventKind::FeedReduction, call.fn == Fn::FeedReduced);
+      if (modal_.feed_reduced != (call.fn == Fn::FeedReduced))
+        event(EventKind::FeedReduction, call.fn == Fn::FeedReduced);
       modal_.feed_reduced = call.fn == Fn::FeedReduced;
       break;
     case Fn::Aux: {
@@ -644,7 +659,8 @@ void Machine::registers() {
     // pp: what F may be depends on the feed mode (mm/min or mm/rev).
     const double* range = conv_.feed_limits[modal_.feed_mode];
     if (range[1] > 0 && !(word('F') >= range[0] && word('F') <= range[1]))
-      report(DiagId::FeedRange, 'F', shortest(word('F')), kFeedModes[modal_.feed_mode], shortest(range[0]), shortest(range[1]));
+      report(DiagId::FeedRange, 'F', shortest(word('F')), kFeedModes[modal_.feed_mode], shortest(range[0]),
+             shortest(range[1]));
     feed_ = word('F');
     no_feed_reported_ = false;
     Event e{EventKind::FeedRate};
@@ -672,8 +688,8 @@ void Machine::registers() {
       else
         corrector_selected_ = *n;
       // A sister in the programmed tool's place brings its own corrector, if it has one.
-      if (auto sister = config_.tools.find(tool_selected_); tool_selected_ != *tool && sister != config_.tools.end() &&
-                                                              sister->second.corrector)
+      if (auto sister = config_.tools.find(tool_selected_);
+          tool_selected_ != *tool && sister != config_.tools.end() && sister->second.corrector)
         corrector_selected_ = sister->second.corrector;
     }
   }
@@ -724,16 +740,19 @@ void Machine::link() {
   const double v = slot_value(kLinkSlot);
   const size_t n = std::min(conv_.link_axes.size(), modal_.link.size());
   std::array<uint8_t, 4> digits{};
-  const std::optional<uint32_t> all = whole_in<uint32_t>(v, 0, static_cast<uint32_t>(std::pow(10.0, static_cast<double>(n))) - 1);
+  const std::optional<uint32_t> all =
+      whole_in<uint32_t>(v, 0, static_cast<uint32_t>(std::pow(10.0, static_cast<double>(n))) - 1);
   bool ok = all.has_value();
   for (uint32_t rest = all.value_or(0), i = static_cast<uint32_t>(n); ok && i-- > 0; rest /= 10) {
     digits[i] = static_cast<uint8_t>(rest % 10);
     ok = digits[i] <= 2;
   }
   if (!ok) {
-    report_slot(DiagId::OperandValue, kLinkSlot, "the length link &", shortest(v),
-                fmt::format("at most {} digits, each 0, 1 or 2, for {} from the right (0 none, 1 plus, 2 minus the tool length)", n,
-                            conv_.link_axes));
+    report_slot(
+        DiagId::OperandValue, kLinkSlot, "the length link &", shortest(v),
+        fmt::format(
+            "at most {} digits, each 0, 1 or 2, for {} from the right (0 none, 1 plus, 2 minus the tool length)", n,
+            conv_.link_axes));
     return;
   }
   modal_.link = digits;
@@ -765,7 +784,8 @@ void Machine::check_profile_rules() {
     if (code.timing != Timing::None && !stops) words.push_back(code.name);
   }
   for (char letter : {'S', 'T'})
-    if (has(letter)) words.push_back(fmt::format("{}{}", letter, shortest(block_.request->words->value[letter_slot(letter)])));
+    if (has(letter))
+      words.push_back(fmt::format("{}{}", letter, shortest(block_.request->words->value[letter_slot(letter)])));
   if (words.empty()) return;
   std::string list = words[0];  // "M13", "M13 and S1200", "M03, S600 and T1"
   for (size_t i = 1; i < words.size(); ++i) list += (i + 1 == words.size() ? " and " : ", ") + words[i];
@@ -832,9 +852,10 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   }
   const size_t block_from = held_.size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
-  const bool zeroed = conv_.comp_path() &&
-                      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
-                      (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
+  const bool zeroed =
+      conv_.comp_path() &&
+      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
+      (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
   if (zeroed) path_.suspend();
   action();
   if (zeroed) path_.resume();
@@ -870,8 +891,12 @@ void Machine::check_dynamic_codes() {
         // A code chosen at run time is found among the words of its slot by its place.
         int nth = 0;
         for (size_t k = 0; k < j; ++k) nth += dynamic(k) && slot_of(r.codes[k]) == slot_of(r.codes[j]);
-        RuntimeIssue issue{p.function.empty() ? DiagId::CodesIncompatible : DiagId::MCodeConflict, "", r.source,
-                           dynamic(j) ? slot_of(r.codes[j]) : -1, dynamic(j) ? -1 : r.codes[j], dynamic(j) ? nth : 0};
+        RuntimeIssue issue{p.function.empty() ? DiagId::CodesIncompatible : DiagId::MCodeConflict,
+                           "",
+                           r.source,
+                           dynamic(j) ? slot_of(r.codes[j]) : -1,
+                           dynamic(j) ? -1 : r.codes[j],
+                           dynamic(j) ? nth : 0};
         issue.message = p.function.empty()
                             ? diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name)
                             : diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name, p.function);
@@ -888,7 +913,9 @@ void Machine::apply_codes(Timing timing) {
     if (code.timing != timing) continue;
     block_.code = request.codes[i];
     // Messages name a three-letter code as it is written: (DTL).
-    block_.code_name = !code.name.empty() && std::isdigit(static_cast<unsigned char>(code.name.back())) ? code.name : "(" + code.name + ")";
+    block_.code_name = !code.name.empty() && std::isdigit(static_cast<unsigned char>(code.name.back()))
+                           ? code.name
+                           : "(" + code.name + ")";
     for (const FnCall& call : code.calls) {
       // A block-only code's group comes back after the block (G53 works differently:
       // it only changes the frame of this block's words).
@@ -909,8 +936,10 @@ void Machine::action() {
   if (conv_.cutter == CutterStyle::Nc110 && block_.comp_before != 0 && modal_.comp != 0 && !block_.error)
     for (char l : {'M', 'H', 'S', 'T'})
       if (has(l))
-        return report(DiagId::CompPath, l, fmt::format("{} stands outside the compensated profile: between G41/G42 and G40 no "
-                                                         "block has M, H, S or T (§2.8.7)", l));
+        return report(DiagId::CompPath, l,
+                      fmt::format("{} stands outside the compensated profile: between G41/G42 and G40 no "
+                                  "block has M, H, S or T (§2.8.7)",
+                                  l));
   if (modal_.gtl || gtl_open() || block_has(Fn::GtlOpen) || block_has(Fn::GtlClose)) return gtl_block();
   // NC-110's lower-case words (most blocks have none): u v w, and a profile's outside one.
   static const std::bitset<kWordSlots> kLowerCase = [] {
@@ -926,12 +955,18 @@ void Machine::action() {
       const int axis = k == 0 ? modal_.plane.u : k == 1 ? modal_.plane.v : modal_.plane.w;
       const std::string shown = std::string(1, factor) + shortest(word(factor));
       if (modal_.comp != 0)
-        return report(DiagId::CompPath, factor, fmt::format("{} corrects a point by the tool's radius; G41/G42 does that already: "
-                                                              "not both (§2.9)", shown));
+        return report(DiagId::CompPath, factor,
+                      fmt::format("{} corrects a point by the tool's radius; G41/G42 does that already: "
+                                  "not both (§2.9)",
+                                  shown));
       if (axis < 0 || !has(kAxisLetters[axis]))
-        return report(DiagId::CompPath, factor, fmt::format("{} corrects {}, the {} of the plane {}, which this block does not program (§2.9)",
-                                                              shown, axis < 0 ? std::string("the axis") : std::string(1, kAxisLetters[axis]),
-                                                              k == 0 ? "abscissa" : k == 1 ? "ordinate" : "normal", plane_name(modal_.plane)));
+        return report(DiagId::CompPath, factor,
+                      fmt::format("{} corrects {}, the {} of the plane {}, which this block does not program (§2.9)",
+                                  shown, axis < 0 ? std::string("the axis") : std::string(1, kAxisLetters[axis]),
+                                  k == 0   ? "abscissa"
+                                  : k == 1 ? "ordinate"
+                                           : "normal",
+                                  plane_name(modal_.plane)));
     }
     // Outside a profile (G21 ... G20): the words of its blocks (§2.11.8, §2.11.9).
     for (char l : {'p', 'l', 'c', 's', 'r', 'b'}) {
@@ -940,15 +975,19 @@ void Machine::action() {
         // §2.8.7: a corner of a compensated path, in a block of its own.
         const std::string shown = std::string(1, l) + shortest(word(l));
         if (conv_.cutter != CutterStyle::Nc110 || modal_.comp == 0)
-          return report(DiagId::CompPath, l, fmt::format("{} joins two moves under G41/G42 or two elements of a GTL profile: "
-                                                           "neither is in force (§2.8.7)", shown));
+          return report(DiagId::CompPath, l,
+                        fmt::format("{} joins two moves under G41/G42 or two elements of a GTL profile: "
+                                    "neither is in force (§2.8.7)",
+                                    shown));
         if (has_axis_word() || has('r') == has('b'))
-          return report(DiagId::CompPath, l, fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
+          return report(DiagId::CompPath, l,
+                        fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
         if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
         return path_.corner(l == 'r', word(l), block_.request->source);
       }
-      return report(DiagId::GtlProfile, l, fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
-                                                       l == 's' ? std::string("s2") : std::string(1, l) + shortest(word(l))));
+      return report(DiagId::GtlProfile, l,
+                    fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
+                                l == 's' ? std::string("s2") : std::string(1, l) + shortest(word(l))));
     }
   }
 
@@ -961,14 +1000,16 @@ void Machine::action() {
   }
   // ISO §8.4: G04 shares its block with a move and dwells after it.
   const bool dwell_after = conv_.fanuc_rules && block_.dwell && axes;
-  if (!dwell_after && (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word)))) {
+  if (!dwell_after &&
+      (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word)))) {
     if (axes) report(DiagId::DwellWithMotion, 0);
     dwell();
     return;
   }
   if (block_.set_position) {
     // ISO §8.19: G92 written after a motion shifts once the motion is made.
-    for (char letter : conv_.axes) block_.set_position_after = block_.set_position_after || has_slot(second_slot(letter));
+    for (char letter : conv_.axes)
+      block_.set_position_after = block_.set_position_after || has_slot(second_slot(letter));
     if (!block_.set_position_after) {
       set_position();
       return;
@@ -1030,9 +1071,12 @@ void Machine::action() {
   }
   // NC-110 §2.8.16: G35 starts the move at the spindle's zero mark.
   if (block_.spindle_sync) {
-    if (modal_.motion == Fn::MotionRapid) report(DiagId::SpindleSync, 0, "G00 is the active motion");
-    else if (std::abs(modal_.spindle) != 1) report(DiagId::SpindleSync, 0, "the spindle is not turning");
-    else path_event(3);
+    if (modal_.motion == Fn::MotionRapid)
+      report(DiagId::SpindleSync, 0, "G00 is the active motion");
+    else if (std::abs(modal_.spindle) != 1)
+      report(DiagId::SpindleSync, 0, "the spindle is not turning");
+    else
+      path_event(3);
   }
   AxisValues t = target();
   // NC-110 §2.8.15: under G27/G28 a clamped axis cannot move in a feed move.
@@ -1092,7 +1136,8 @@ void Machine::finish() {
     if (parabola_middle_) report(DiagId::ParabolaPair, 0, "the program ended");
     if (spline_.active) report(DiagId::SplineStructure, 0, "the program ended inside a spline: (ESP) is missing");
     if (corner_) {
-      issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
+      issue({DiagId::CornerForm,
+             diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
              corner_->source, corner_->slot, -1});
       release();
     }
@@ -1133,7 +1178,8 @@ void Machine::emit_reset(const ResetState& before) {
   if (was.diameter != modal_.diameter) changed(EventKind::Diameter, modal_.diameter);
   if (was.feed_reduced != modal_.feed_reduced) changed(EventKind::FeedReduction, modal_.feed_reduced);
   flush_compensation();
-  if (was.work_offset != modal_.work_offset) apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
+  if (was.work_offset != modal_.work_offset)
+    apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
   if (before.position_offset != position_offset_) {
     Event e{EventKind::PositionOffset};
     emit(e);
@@ -1154,7 +1200,8 @@ void Machine::emit_reset(const ResetState& before) {
       e.n = 0;
       emit(e);
     }
-  if (std::any_of(before.limited.begin(), before.limited.end(), [](bool b) { return b; })) emit(Event{EventKind::Limits});
+  if (std::any_of(before.limited.begin(), before.limited.end(), [](bool b) { return b; }))
+    emit(Event{EventKind::Limits});
   Event tolerance{EventKind::Tolerance};
   for (int a = 0; a < kAxisCount; ++a)
     if (before.tolerance[a] != 0) {
@@ -1169,8 +1216,10 @@ void Machine::emit_reset(const ResetState& before) {
 void Machine::end_of_unit(uint32_t source) {
   gtl_unit_end();
   if (corner_) {
-    issues_.issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
-                   corner_->source, corner_->slot, -1});
+    issues_.issue(
+        {DiagId::CornerForm,
+         diag_message(DiagId::CornerForm, "the program ends: a feed move must follow a chamfer or fillet (E-04)"),
+         corner_->source, corner_->slot, -1});
     release();
   }
   if (!parabola_middle_ && !spline_.active) return;

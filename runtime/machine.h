@@ -50,7 +50,7 @@ struct BlockRequest {
   const uint16_t* codes = nullptr;  // indices into ProgramSemantics::codes, in written order
   size_t code_count = 0;
   const BlockWords* words = nullptr;
-  uint32_t source = 0;  // SourceMap::blocks index
+  uint32_t source = 0;         // SourceMap::blocks index
   uint64_t dynamic_codes = 0;  // bit i: codes[i] was chosen at run time; check it may share the block
 };
 
@@ -89,7 +89,7 @@ struct MachineState {
   bool inch = false;
   bool absolute = true;
   Plane plane;
-  int feed_mode = 1;  // 0 inverse time, 1 per minute, 2 per revolution
+  int feed_mode = 1;           // 0 inverse time, 1 per minute, 2 per revolution
   std::optional<double> feed;  // as programmed
   double speed = 0;
   int spindle = 0;  // 1 clockwise, -1 counter-clockwise, 0 stopped, 2 oriented
@@ -180,21 +180,22 @@ class Machine {
     int comp = 0;    // 0 off, 1 left, 2 right
     int length = 0;  // 0 off, 1 plus, -1 minus
     int work_offset = 0;
-    int cycle = -1;  // index into cycles; -1 = none
+    int cycle = -1;   // index into cycles; -1 = none
     int spindle = 0;  // 1 cw, -1 ccw, 0 stopped, 2 oriented
     bool mist = false, flood = false;
     int clamp = -1;  // -1 unknown
     int rotary_clamp = -1;
     bool override_enabled = true;
     bool spindle_hold = false;
-    int dynamics = -1;  // -1 none, 0 corner slow-down (G27), 1 continuous (G28), 2 point to point (G29), 3 smooth (pp G23)
+    int dynamics =
+        -1;  // -1 none, 0 corner slow-down (G27), 1 continuous (G28), 2 point to point (G29), 3 smooth (pp G23)
     bool gtl = false;
     int spindle_range = 0;  // 0 none forced, -1 automatic, 1..n forced
     // pp.
     bool diameter = false;  // the diameter axis programmed as a diameter (G74)
     bool helix = true;      // an arc may move its normal axis (pp: only under G09)
     bool coolant3 = false, coolant4 = false;
-    bool feed_reduced = false;  // M37: the feed is F / 100
+    bool feed_reduced = false;      // M37: the feed is F / 100
     std::array<uint8_t, 4> link{};  // '&': per axis of link_axes, 0 none, 1 plus, 2 minus the tool length
     // ISO.
     bool cycle_return_level = false;  // G99: canned cycles return to R, not the initial level
@@ -246,10 +247,10 @@ class Machine {
   struct Spline {
     bool active = false;
     int u = 0, v = 1, ends = 0;
-    bool lead_in = false;           // the lead-in move has been made
-    AxisValues lead_in_from{};      // where the lead-in started (its direction is the entry tangent)
-    std::vector<AxisValues> points; // machine coordinates: Q0 (the lead-in's end), then the G06 points
-    std::vector<uint32_t> sources;  // the block of each point
+    bool lead_in = false;            // the lead-in move has been made
+    AxisValues lead_in_from{};       // where the lead-in started (its direction is the entry tangent)
+    std::vector<AxisValues> points;  // machine coordinates: Q0 (the lead-in's end), then the G06 points
+    std::vector<uint32_t> sources;   // the block of each point
   };
 
   // One block being executed.
@@ -261,28 +262,28 @@ class Machine {
     bool dwell_end = false, machine_frame = false, spindle_sync = false, decelerate = false;
     Fn measure = Fn::Count;     // a measuring cycle of this block
     Compensation compensation;  // in effect when the block started (or last reported)
-    int stop = 0;       // 1 program stop, 2 optional stop taken, 3 skipped
-    int code = -1;      // the code being applied, for messages about it
+    int stop = 0;               // 1 program stop, 2 optional stop taken, 3 skipped
+    int code = -1;              // the code being applied, for messages about it
     std::string code_name;
-    int block_offset = -1;  // a block-only preset offset (G53): the frame of this block's targets
-    std::vector<FnCall> restore;  // modal functions to restore after a block-only code
-    bool moved = false;           // the block made a feed move
-    bool rapid_moved = false;     // ... a rapid move
-    uint32_t moves = 0;           // the moves it made
-    bool operands = false;        // a three-letter function took the block's words
-    bool reference = false;       // pp G30: the named axes go to the reference point
-    bool offset_load = false;     // pp G92: the axis words load a work offset
-    bool comp_load = false;       // pp G93: D names the compensation entry to load
-    int load_entry = -1;          // ... the one the block names (-1: the active one)
-    int reference_iso = 0;        // ISO G28 (1) and G29 (2)
-    bool local_offset = false;    // ISO G52: the axis words shift the work zero
+    int block_offset = -1;            // a block-only preset offset (G53): the frame of this block's targets
+    std::vector<FnCall> restore;      // modal functions to restore after a block-only code
+    bool moved = false;               // the block made a feed move
+    bool rapid_moved = false;         // ... a rapid move
+    uint32_t moves = 0;               // the moves it made
+    bool operands = false;            // a three-letter function took the block's words
+    bool reference = false;           // pp G30: the named axes go to the reference point
+    bool offset_load = false;         // pp G92: the axis words load a work offset
+    bool comp_load = false;           // pp G93: D names the compensation entry to load
+    int load_entry = -1;              // ... the one the block names (-1: the active one)
+    int reference_iso = 0;            // ISO G28 (1) and G29 (2)
+    bool local_offset = false;        // ISO G52: the axis words shift the work zero
     bool set_position_after = false;  // ISO G92 after a motion: its values are the second words
     bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
-    bool cycle_set = false;       // a cycle code stands in the block
-    int comp_before = 0;          // the cutter compensation when the block started
-    AxisValues length_before{};   // ... and the tool length offset
-    double radius_before = 0;     // ... and the cutter radius
-    int gtl_define = -1;          // NC-110: a GTL definition of this shape (gtl::Shape::pack)
+    bool cycle_set = false;                        // a cycle code stands in the block
+    int comp_before = 0;                           // the cutter compensation when the block started
+    AxisValues length_before{};                    // ... and the tool length offset
+    double radius_before = 0;                      // ... and the cutter radius
+    int gtl_define = -1;                           // NC-110: a GTL definition of this shape (gtl::Shape::pack)
   };
 
   // Words.
@@ -372,45 +373,46 @@ class Machine {
   double offset_value(int offset, int axis) const;  // machine units
   double origin(int axis) const;                    // of the active frame
   AxisValues origins() const;
-  AxisValues shown_origins() const;                 // what the trace's positions are from
-  AxisValues frame_offset(int work_offset) const;   // GOST: work offset + position offset
-  AxisValues target_frame() const;                  // the frame this block's words are in
+  AxisValues shown_origins() const;                        // what the trace's positions are from
+  AxisValues frame_offset(int work_offset) const;          // GOST: work offset + position offset
+  AxisValues target_frame() const;                         // the frame this block's words are in
   AxisValues to_machine(const AxisValues& program) const;  // apply the frame
   AxisValues to_frame(const AxisValues& machine) const;    // undo it: program coordinates
-  AxisValues target();                              // of this block's axis words, machine units
-  AxisValues program_target();                      // the same, program coordinates
-  double tool_radius() const;                       // of the offset in force, mm
+  AxisValues target();                                     // of this block's axis words, machine units
+  AxisValues program_target();                             // the same, program coordinates
+  double tool_radius() const;                              // of the offset in force, mm
   bool has_axis_word() const;
-  bool frame_function(FnCall call);                 // the NC-110 three-letter functions
-  bool tooling_function(FnCall call);               // ... of the tool table and the probe (machine_tooling.cpp)
-  std::optional<int> whole_operand(int i, int lo, int hi, const char* what);  // operand i, reported unless whole in lo..hi
-  void select_offset(int n);                        // the corrector or offset entry n in force
-  int usable_tool(int tool);                        // tool, or the sister that replaces it once unusable
+  bool frame_function(FnCall call);    // the NC-110 three-letter functions
+  bool tooling_function(FnCall call);  // ... of the tool table and the probe (machine_tooling.cpp)
+  std::optional<int> whole_operand(int i, int lo, int hi,
+                                   const char* what);  // operand i, reported unless whole in lo..hi
+  void select_offset(int n);                           // the corrector or offset entry n in force
+  int usable_tool(int tool);                           // tool, or the sister that replaces it once unusable
   // NC-110 UAV (machine_virtual.cpp).
   bool virtual_function(FnCall call);
   void virtual_event(const std::string& what);
-  void virtual_off();                               // the real axes where the virtual ones took them
-  bool virtual_axes_programmed();                   // a driven axis programmed: reported
+  void virtual_off();                                      // the real axes where the virtual ones took them
+  bool virtual_axes_programmed();                          // a driven axis programmed: reported
   bool virtual_path(const std::vector<AxisValues>& path);  // mode 1: outside the minimum radius; C's turns
-  static constexpr double kChord = 1e-4;            // mm: the largest sagitta of the chords an arc's path checks use
+  static constexpr double kChord = 1e-4;  // mm: the largest sagitta of the chords an arc's path checks use
   void origin_event();
   void transform_event();
   bool path_allowed(const std::vector<AxisValues>& path);  // a position's range, limits and protected zones
-  bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
+  bool position_in_range(int axis, double v);              // false (reported) beyond any machine's reach
   void set_position();
-  void load_offset();      // pp G92
-  void load_compensation();  // pp G93
-  void reference_approach();  // pp G30
-  void reference_return();    // ISO G28
-  void reference_leave();     // ISO G29
-  void set_local_offset();    // ISO G52
-  void length_zeroed(bool zero);  // ISO G28/G29: the length offset's event, zero or back
-  void scaling_on();          // ISO G51
-  void rotation_on();         // ISO G68
+  void load_offset();                              // pp G92
+  void load_compensation();                        // pp G93
+  void reference_approach();                       // pp G30
+  void reference_return();                         // ISO G28
+  void reference_leave();                          // ISO G29
+  void set_local_offset();                         // ISO G52
+  void length_zeroed(bool zero);                   // ISO G28/G29: the length offset's event, zero or back
+  void scaling_on();                               // ISO G51
+  void rotation_on();                              // ISO G68
   bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
-  bool comp_locked(bool changes);  // ISO: no frame or unit change while G41/G42 is on
-  bool block_has(Fn fn) const;     // a code of the block calls fn
-  void arc_block_rules();     // ISO E-11, E-13, E-14, E-15: what an arc block may change
+  bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
+  bool block_has(Fn fn) const;                     // a code of the block calls fn
+  void arc_block_rules();                          // ISO E-11, E-13, E-14, E-15: what an arc block may change
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
@@ -443,7 +445,7 @@ class Machine {
   std::unique_ptr<GtlState, GtlDelete> gtl_;
   std::optional<uint32_t> event_source_;  // the block a deferred move belongs to
   void gtl_init();
-  bool gtl_open() const;  // a profile is open
+  bool gtl_open() const;         // a profile is open
   double gtl_tolerance() const;  // program units
   void gtl_define(uint16_t shape);
   void gtl_block();
@@ -476,13 +478,13 @@ class Machine {
 
   Modal modal_;
   Frame frame_;
-  std::map<int, WorkOffset> offsets_;  // the work offsets (NC-110 RQO changes them)
+  std::map<int, WorkOffset> offsets_;        // the work offsets (NC-110 RQO changes them)
   std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it, NC-110 RQU changes it)
   OffsetEntry offset_;                       // the entry in force: a change to the table takes effect when selected
-  AxisValues base_origin_{};           // each axis' offsets_ value at frame_.base: origin() is hot
-  void refresh_base_origin();          // after frame_.base or offsets_ change
-  AxisValues machine_{};       // the controlled point, machine coordinates, mm / degrees
-  AxisValues position_offset_{};  // G92
+  AxisValues base_origin_{};                 // each axis' offsets_ value at frame_.base: origin() is hot
+  void refresh_base_origin();                // after frame_.base or offsets_ change
+  AxisValues machine_{};                     // the controlled point, machine coordinates, mm / degrees
+  AxisValues position_offset_{};             // G92
   std::map<int, AxisValues> local_offsets_;  // ISO G52: the local shift of each work offset
   std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
   double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
@@ -491,33 +493,33 @@ class Machine {
   // after it) until the next block's move shows where the corner is cut.
   struct Corner {
     bool fillet = false;
-    double size = 0;         // program units
-    uint32_t source = 0;     // the block that asks for it
-    int slot = 0;            // its word
-    size_t incoming = 0;     // index in held_ of the move it ends
-    AxisValues start{};      // where that move starts (trace coordinates)
-    bool inch = false;       // the units of its block
+    double size = 0;      // program units
+    uint32_t source = 0;  // the block that asks for it
+    int slot = 0;         // its word
+    size_t incoming = 0;  // index in held_ of the move it ends
+    AxisValues start{};   // where that move starts (trace coordinates)
+    bool inch = false;    // the units of its block
   };
   std::optional<Corner> corner_;
   std::vector<Event> held_;
   bool holding_ = false;
   uint64_t moves_beyond_first_ = 0;
-  AxisValues hold_start_{};                   // where the first held move starts
-  std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
+  AxisValues hold_start_{};                                     // where the first held move starts
+  std::optional<AxisValues> chained_start_;                     // a corner's T2, when the next move has a corner too
   void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
   void text_event(EventKind kind, const std::string& text, uint32_t source, int n = 0, double a = 0);
-  void to_path(const Event& e, const AxisValues* start);        // through the cutter path (ISO)
-  void pass_on(size_t count);                 // the first `count` held events, on
+  void to_path(const Event& e, const AxisValues* start);  // through the cutter path (ISO)
+  void pass_on(size_t count);                             // the first `count` held events, on
   CutterPath path_;
   static CompRules comp_rules(CutterStyle style);
   static void path_report(void* self, uint32_t source, const std::string& what);
   bool corner_requested() const;
   void corner_begin(const AxisValues& start);
   void corner_finish(bool another, size_t block_from);
-  void corner_codes();                        // E-06: what the block after a corner may hold
+  void corner_codes();  // E-06: what the block after a corner may hold
   void release();
-  std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
-  bool no_feed_reported_ = false;  // NC4001 said for the blocks since the last F or feed mode
+  std::optional<double> feed_;         // mm/min, mm/rev, or 1/min (inverse time) as programmed
+  bool no_feed_reported_ = false;      // NC4001 said for the blocks since the last F or feed mode
   std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
   double speed_ = 0;
   int tool_selected_ = 0;
@@ -534,38 +536,38 @@ class Machine {
   std::array<AxisValues, 2> limits_{};  // DLO: lower and upper, machine coordinates
   std::array<bool, kAxisCount> limited_{};
   std::array<Zone, 3> zones_;
-  AxisValues tolerance_{};              // DTL; 0 = the machine's
-  bool turning_ = false;                // CTL
-  uint32_t locked_ = 0;                 // M10/M12: axes that must not move
-  bool profile_running_ = false;        // a G27/G28 profile is running: no M, S or T
-  bool graphic_cleared_ = false;        // CLG since the last UCG (DCG comes after it)
+  AxisValues tolerance_{};        // DTL; 0 = the machine's
+  bool turning_ = false;          // CTL
+  uint32_t locked_ = 0;           // M10/M12: axes that must not move
+  bool profile_running_ = false;  // a G27/G28 profile is running: no M, S or T
+  bool graphic_cleared_ = false;  // CLG since the last UCG (DCG comes after it)
   Spline spline_;
   uint64_t spline_bytes() const;  // of its points (held_bytes)
-  size_t next_contact_ = 0;             // the simulated probe's next contact
-  ProbeConfig probe_;                   // the probe's distances and speed (DPT changes them)
+  size_t next_contact_ = 0;       // the simulated probe's next contact
+  ProbeConfig probe_;             // the probe's distances and speed (DPT changes them)
   struct Unusable {
     std::string why;        // "TOF", "RQU: ..."
     bool reported = false;  // selected with no sister left: said once
   };
-  std::map<int, Unusable> unusable_;    // tools declared unusable
+  std::map<int, Unusable> unusable_;  // tools declared unusable
   // UAV (§2.17-2.19): the program moves `virt`, `real` follow (mode 3: the masters
   // `virt` are programmed, the slaves `real` follow).
   struct VirtualAxes {
-    int mode = 0;                     // 0 none, 1 polar, 2 cylinder, 3 parallel, 4 rotation in space
+    int mode = 0;  // 0 none, 1 polar, 2 cylinder, 3 parallel, 4 rotation in space
     std::vector<int> real, virt;
-    double value = 0;                 // mm: 1 the minimum radius, 2 the cylinder's radius
-    std::array<int, 3> master{};      // mode 3: each slave's master
-    std::array<int, 3> sign{1, 1, 1}; // mode 3: -1 mirrored; mode 1: [0] the side of X the tool started on
-    std::array<double, 9> rotation{}; // mode 4: real = R virtual, row-major
-    AxisValues saved{};               // machine positions at activation (the letters the virtual axes borrow)
-    AxisValues zero{};                // the origins at activation: the virtual and real axes' zeros
-    double angle = 0;                 // mode 1: how far C has turned, unwrapped, radians
+    double value = 0;                  // mm: 1 the minimum radius, 2 the cylinder's radius
+    std::array<int, 3> master{};       // mode 3: each slave's master
+    std::array<int, 3> sign{1, 1, 1};  // mode 3: -1 mirrored; mode 1: [0] the side of X the tool started on
+    std::array<double, 9> rotation{};  // mode 4: real = R virtual, row-major
+    AxisValues saved{};                // machine positions at activation (the letters the virtual axes borrow)
+    AxisValues zero{};                 // the origins at activation: the virtual and real axes' zeros
+    double angle = 0;                  // mode 1: how far C has turned, unwrapped, radians
   } virtual_axes_;
 
   // Switches and system variables.
   bool block_skip_ = false;
   bool optional_stop_ = false;
-  double clock_ = 0;                   // seconds of the run so far
+  double clock_ = 0;  // seconds of the run so far
   RemainingPaths* remaining_paths_ = nullptr;
   struct Move {
     double from_t, to_t;

@@ -60,8 +60,11 @@ void Machine::iso_cycle() {
   const bool shifts = pattern.bottom == CyclePattern::Bottom::OrientShift;
   if (ok && pecks && !cycle_.peck) ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q"), false);
   if (ok && (pecks || (cycle_.peck && pattern.in != In::Feed && !shifts)) && cycle_.peck && *cycle_.peck <= 0)
-    ok = (report(DiagId::PeckNotPositive, 'Q', "peck depth", four_decimals(*cycle_.peck), "greater than zero", pattern.name), false);
-  if (ok && shifts && !cycle_.peck) ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q (the shift off the wall)"), false);
+    ok = (report(DiagId::PeckNotPositive, 'Q', "peck depth", four_decimals(*cycle_.peck), "greater than zero",
+                 pattern.name),
+          false);
+  if (ok && shifts && !cycle_.peck)
+    ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q (the shift off the wall)"), false);
   const double dwell = pattern.dwell && cycle_.dwell ? *cycle_.dwell : 0;
   if (ok && dwell < 0) ok = (report(DiagId::DwellNegative, 'P', four_decimals(dwell)), false);
   if (!ok || !need_feed(name.c_str(), hole)) {
@@ -80,8 +83,9 @@ void Machine::iso_cycle() {
   h.bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : h.level + length_units(*cycle_.depth);
   if (pattern.in == In::Back && h.bottom < h.level) {
     // §8.27: G87 bores from R up to Z, so Z lies above R.
-    report(DiagId::CycleDefinition, 0, fmt::format("canned cycle G87 bores upwards from R: the bottom {} must lie above R {}",
-                                                   four_decimals(to_program(h.bottom - off[d])), four_decimals(to_program(h.level - off[d]))));
+    report(DiagId::CycleDefinition, 0,
+           fmt::format("canned cycle G87 bores upwards from R: the bottom {} must lie above R {}",
+                       four_decimals(to_program(h.bottom - off[d])), four_decimals(to_program(h.level - off[d]))));
     move_to(hole);
     return;
   }
@@ -90,7 +94,8 @@ void Machine::iso_cycle() {
       h.peck = length_units(*cycle_.peck);
       const double count = std::ceil(std::fabs(h.bottom - h.level) / *h.peck - 1e-9);
       if (count > cycle::kMaxPecks) {
-        report(DiagId::CyclePecks, 'Q', pattern.name, four_decimals(count), four_decimals(*cycle_.peck), cycle::kMaxPecks);
+        report(DiagId::CyclePecks, 'Q', pattern.name, four_decimals(count), four_decimals(*cycle_.peck),
+               cycle::kMaxPecks);
         return;
       }
     }
@@ -117,7 +122,8 @@ void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues
     switch (s.kind) {
       case Kind::Rapid: rapid(p); break;
       case Kind::Feed: linear(p); break;
-      case Kind::Tap: case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut); break;
+      case Kind::Tap:
+      case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut); break;
       case Kind::Over:
         over = true;
         p = hole;
@@ -236,13 +242,16 @@ void Machine::nc110_cycle_registers(bool definition) {
     if (auto v = word_if(conv_.tap_pitch_word)) cycle_.pitch = length_units(*v);
 }
 
-
 bool Machine::nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written) {
   const std::string& name = pattern.name;
   if (written.size() != 1) {
-    report(DiagId::CycleDefinition, 0,
-           written.empty() ? fmt::format("{} needs the hole's depth: an axis word whose letter names the drilling axis", name)
-                           : fmt::format("the block of {} holds the depth and no other axis: the holes' positions come in the blocks after it", name));
+    report(
+        DiagId::CycleDefinition, 0,
+        written.empty()
+            ? fmt::format("{} needs the hole's depth: an axis word whose letter names the drilling axis", name)
+            : fmt::format(
+                  "the block of {} holds the depth and no other axis: the holes' positions come in the blocks after it",
+                  name));
     return false;
   }
   cycle_.axis = written[0];
@@ -323,8 +332,12 @@ void Machine::nc110_cycle() {
   const AxisValues position = to_machine(p);
   const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
   // The 1 mm G83 comes back is the machine's, whatever the scale (decision 53).
-  cycle::Pecks pecks{*cycle_.r1, *cycle_.bottom, cycle_.step.value_or(0),
-              kUnloadClearance / (frame_.transformed() ? frame_.scale[d] : 1.0), cycle_.factor, cycle_.minimum};
+  cycle::Pecks pecks{*cycle_.r1,
+                     *cycle_.bottom,
+                     cycle_.step.value_or(0),
+                     kUnloadClearance / (frame_.transformed() ? frame_.scale[d] : 1.0),
+                     cycle_.factor,
+                     cycle_.minimum};
   // Everything the hole needs is checked before the tool moves: a refused hole is
   // not drilled, and the tool is taken to be over it.
   auto refuse = [&] { move_to(position); };
@@ -341,9 +354,11 @@ void Machine::nc110_cycle() {
       return refuse();
     }
     if (pattern.out == CyclePattern::Out::Feed && system_value(SysVar::TapReturn) == 0) {
-      report(DiagId::CycleDefinition, 0,
-             fmt::format("{} would bring the tap out at {} = 0 % of the speed, so it would not come out: set it to 1..255 first",
-                         name, system_name({SysVar::TapReturn, 0})));
+      report(
+          DiagId::CycleDefinition, 0,
+          fmt::format(
+              "{} would bring the tap out at {} = 0 % of the speed, so it would not come out: set it to 1..255 first",
+              name, system_name({SysVar::TapReturn, 0})));
       return refuse();
     }
   }
@@ -356,7 +371,8 @@ void Machine::nc110_cycle() {
       return refuse();
     }
     if (*n > cycle::kMaxPecks) {
-      report(DiagId::CyclePecks, conv_.peck_word, name, std::isinf(*n) ? fmt::format("more than {}", cycle::kMaxPecks) : shortest(*n),
+      report(DiagId::CyclePecks, conv_.peck_word, name,
+             std::isinf(*n) ? fmt::format("more than {}", cycle::kMaxPecks) : shortest(*n),
              four_decimals(to_program(pecks.step)), cycle::kMaxPecks);
       return refuse();
     }
@@ -508,7 +524,8 @@ void Machine::measure() {
   double distance = 0;
   for (int i = 0; i < kAxisCount; ++i) distance += (nominal[i] - start[i]) * (nominal[i] - start[i]);
   distance = std::sqrt(distance);
-  if (distance < 1e-6) return setup(fmt::format("the nominal point {} is where the probe is: no direction to probe", where(nominal)));
+  if (distance < 1e-6)
+    return setup(fmt::format("the nominal point {} is where the probe is: no direction to probe", where(nominal)));
   if (contact && contact->kind == ProbeContact::Kind::Circle)
     return setup(fmt::format("{} is a circle; {} needs a point", contact_name, name));
   AxisValues dir{};

@@ -71,7 +71,8 @@ AxisValues Machine::to_machine(const AxisValues& p) const {
   if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
     const AxisValues& cs = frame_.scale_centre;
     const AxisValues& cr = frame_.rotation_centre;
-    for (int i = 0; i < kAxisCount; ++i) q[i] = cs[i] + (q[i] - cs[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
+    for (int i = 0; i < kAxisCount; ++i)
+      q[i] = cs[i] + (q[i] - cs[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
     const int u = modal_.plane.u, v = modal_.plane.v;
     if (frame_.rotation != 0) {
       const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
@@ -99,7 +100,8 @@ AxisValues Machine::to_frame(const AxisValues& m) const {
       q[u] = cr[u] + x * c + y * s;
       q[v] = cr[v] - x * s + y * c;
     }
-    for (int i = 0; i < kAxisCount; ++i) q[i] = cs[i] + (q[i] - cs[i]) / (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
+    for (int i = 0; i < kAxisCount; ++i)
+      q[i] = cs[i] + (q[i] - cs[i]) / (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
   }
   return q;
 }
@@ -200,7 +202,9 @@ AxisValues Machine::target() {
     if (at < 0) at += 360;
     double to = std::fmod(std::fabs(written), 360.0);
     double ahead = std::fmod(to - at + 360.0, 360.0);
-    double delta = written > 0 ? ahead : written < 0 ? (ahead == 0 ? 0 : ahead - 360) : (ahead <= 180 ? ahead : ahead - 360);
+    double delta = written > 0   ? ahead
+                   : written < 0 ? (ahead == 0 ? 0 : ahead - 360)
+                                 : (ahead <= 180 ? ahead : ahead - 360);
     t[i] = snap(from[i] + delta);
   }
   return t;
@@ -345,7 +349,8 @@ void Machine::load_compensation() {
   // pp G93 (decision 23): entry D takes the length and radius the block's words give.
   auto entry = whole_number('D', "compensation entries");
   if (!entry || *entry == 0) {
-    if (!block_.error) report(DiagId::OperandValue, 'D', "the compensation entry D", "missing", "in the block that loads it");
+    if (!block_.error)
+      report(DiagId::OperandValue, 'D', "the compensation entry D", "missing", "in the block that loads it");
     return;
   }
   OffsetEntry& e = tool_offsets_[*entry];
@@ -409,7 +414,8 @@ bool Machine::frame_function(FnCall call) {
           std::string declared;
           for (int i = 0; i < kAxisCount; ++i)
             if (record->second.axes & (1u << i)) declared += kAxisLetters[i];
-          report(DiagId::OriginAxis, kAxisLetters[a], *n, std::string(1, kAxisLetters[a]), declared.empty() ? "none" : declared);
+          report(DiagId::OriginAxis, kAxisLetters[a], *n, std::string(1, kAxisLetters[a]),
+                 declared.empty() ? "none" : declared);
           ok = false;
         }
       if (!ok) break;
@@ -453,15 +459,17 @@ bool Machine::frame_function(FnCall call) {
       for (int a : listed) {
         double v = word(kAxisLetters[a]);
         if (scale && !(v > 0)) {
-          report(DiagId::OperandValue, kAxisLetters[a], fmt::format("the scale factor of {}", kAxisLetters[a]), shortest(v),
-                 "greater than 0");
+          report(DiagId::OperandValue, kAxisLetters[a], fmt::format("the scale factor of {}", kAxisLetters[a]),
+                 shortest(v), "greater than 0");
           return true;
         }
         values[a] = scale ? v : axis_units(a, v);
       }
       (scale ? frame_.scale : frame_.shift) = values;
-      if (scale) transform_event();
-      else origin_event();
+      if (scale)
+        transform_event();
+      else
+        origin_event();
       break;
     }
     case Fn::Rotation:
@@ -471,7 +479,8 @@ bool Machine::frame_function(FnCall call) {
     case Fn::Scale: {
       auto factor = operand(0);
       if (factor && !(*factor >= 0.0001 && *factor <= 99999.9999)) {  // as a constant (Table 2.9)
-        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor), "from 0.0001 to 99999.9999");
+        report_slot(DiagId::OperandValue, operand_slot(0), "the scale factor", shortest(*factor),
+                    "from 0.0001 to 99999.9999");
         break;
       }
       // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on every linear axis of
@@ -492,7 +501,10 @@ bool Machine::frame_function(FnCall call) {
       auto u = whole(0, 0, kAxisCount - 1, "the abscissa axis"), v = whole(1, 0, kAxisCount - 1, "the ordinate axis");
       if (!u || !v || *u == *v) break;
       if (modal_.comp || modal_.gtl || modal_.cycle >= 0) {
-        report_code(DiagId::PlaneState, code, modal_.comp ? "cutter radius compensation" : modal_.gtl ? "a GTL profile" : "a canned cycle");
+        report_code(DiagId::PlaneState, code,
+                    modal_.comp  ? "cutter radius compensation"
+                    : modal_.gtl ? "a GTL profile"
+                                 : "a canned cycle");
         break;
       }
       // The normal: the axis along abscissa x ordinate, of the X/U, Y/V, Z/W family.
@@ -515,9 +527,11 @@ bool Machine::frame_function(FnCall call) {
         double v = value(a);
         const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
         if (v < 0 || v > cfg.drive_error) {
-          report(DiagId::ToleranceValue, kAxisLetters[a], four_decimals(program_axis(a, v)), std::string(1, kAxisLetters[a]),
+          report(DiagId::ToleranceValue, kAxisLetters[a], four_decimals(program_axis(a, v)),
+                 std::string(1, kAxisLetters[a]),
                  v < 0 ? std::string("must not be negative")
-                       : fmt::format("exceeds the drive error {} the machine allows", four_decimals(program_axis(a, cfg.drive_error))));
+                       : fmt::format("exceeds the drive error {} the machine allows",
+                                     four_decimals(program_axis(a, cfg.drive_error))));
           ok = false;
         }
       }
@@ -614,8 +628,10 @@ bool Machine::frame_function(FnCall call) {
       std::vector<int> pairs;
       std::optional<int> third;
       for (int a : listed) {
-        if (has_slot(second_slot(kAxisLetters[a]))) pairs.push_back(a);
-        else third = a;
+        if (has_slot(second_slot(kAxisLetters[a])))
+          pairs.push_back(a);
+        else
+          third = a;
       }
       if (!mode || pairs.size() != 2) break;
       if (modal_.comp != 0) {
@@ -636,14 +652,17 @@ bool Machine::frame_function(FnCall call) {
       text_event(EventKind::Graphic, "clear", block_.request->source);
       break;
     case Fn::GraphicOff:
-      if (!graphic_cleared_) report_code(DiagId::GraphicOrder, "DCG comes after CLG: the display is cleared before it is switched off");
+      if (!graphic_cleared_)
+        report_code(DiagId::GraphicOrder, "DCG comes after CLG: the display is cleared before it is switched off");
       graphic_cleared_ = false;
       text_event(EventKind::Graphic, "off", block_.request->source);
       break;
     case Fn::DwellSeconds:
       if (auto t = operand(0)) {
-        if (*t < 0 || *t > 32) report_slot(DiagId::DwellTime, operand_slot(0), shortest(*t), "must lie between 0 and 32 s");
-        else dwell_seconds(*t);
+        if (*t < 0 || *t > 32)
+          report_slot(DiagId::DwellTime, operand_slot(0), shortest(*t), "must lie between 0 and 32 s");
+        else
+          dwell_seconds(*t);
       }
       break;
     case Fn::SplineBegin: {
@@ -655,9 +674,8 @@ bool Machine::frame_function(FnCall call) {
         break;
       }
       if (*u != modal_.plane.u || *v != modal_.plane.v) {
-        report_code(DiagId::SplineStructure,
-                    fmt::format("the spline's axes {}{} must be those of the plane {}", kAxisLetters[*u], kAxisLetters[*v],
-                                plane_name(modal_.plane)));
+        report_code(DiagId::SplineStructure, fmt::format("the spline's axes {}{} must be those of the plane {}",
+                                                         kAxisLetters[*u], kAxisLetters[*v], plane_name(modal_.plane)));
         break;
       }
       spline_ = Spline{};
@@ -668,9 +686,11 @@ bool Machine::frame_function(FnCall call) {
       break;
     }
     case Fn::SplineEnd:
-      if (!spline_.active) report_code(DiagId::SplineStructure, "(ESP) without (BSP)");
+      if (!spline_.active)
+        report_code(DiagId::SplineStructure, "(ESP) without (BSP)");
       else if (spline_.lead_in && !spline_.points.empty())
-        report_code(DiagId::SplineStructure, "the spline has no lead-out: a G00 or G01 block with G40 comes before (ESP)");
+        report_code(DiagId::SplineStructure,
+                    "the spline has no lead-out: a G00 or G01 block with G40 comes before (ESP)");
       spline_ = Spline{};
       break;
     default: return false;
@@ -700,8 +720,10 @@ bool Machine::path_allowed(const std::vector<AxisValues>& path) {
     for (const AxisValues& p : path)
       if (outside(p[a]) > allowed && (!farthest || outside(p[a]) > outside((*farthest)[a]))) farthest = &p;
     if (farthest) {
-      report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]), four_decimals(program_axis(a, limits_[0][a] - origin(a))),
-             four_decimals(program_axis(a, limits_[1][a] - origin(a))), four_decimals(program_axis(a, (*farthest)[a] - origin(a))));
+      report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]),
+             four_decimals(program_axis(a, limits_[0][a] - origin(a))),
+             four_decimals(program_axis(a, limits_[1][a] - origin(a))),
+             four_decimals(program_axis(a, (*farthest)[a] - origin(a))));
       return false;
     }
   }
@@ -728,7 +750,8 @@ bool Machine::path_allowed(const std::vector<AxisValues>& path) {
         std::string box;
         for (int k = 0; k < 2; ++k) {
           int a = zone.axis[k];
-          box += fmt::format("{}{}{}..{}", k ? " " : "", kAxisLetters[a], four_decimals(program_axis(a, zone.lo[k] - origin(a))),
+          box += fmt::format("{}{}{}..{}", k ? " " : "", kAxisLetters[a],
+                             four_decimals(program_axis(a, zone.lo[k] - origin(a))),
                              four_decimals(program_axis(a, zone.hi[k] - origin(a))));
         }
         report(DiagId::ZoneEntered, 0, z + 1, box);
@@ -823,7 +846,8 @@ void Machine::rotation_on() {
       const double value = axis_units(axis, word(kAxisLetters[axis]));
       centre[axis] = modal_.absolute ? value : here[axis] + value;
     }
-  if (has('Z') && u != axis_index('Z') && v != axis_index('Z')) word('Z');  // §8.17 lists Z; the plane's normal has no use
+  if (has('Z') && u != axis_index('Z') && v != axis_index('Z'))
+    word('Z');  // §8.17 lists Z; the plane's normal has no use
   if (!has('R')) {
     report_code(DiagId::OperandValue, block_.code_name, "without R", "the angle in degrees");
     return;
@@ -833,7 +857,8 @@ void Machine::rotation_on() {
   const double angle = modal_.absolute ? word('R') : last_rotation_ + word('R');
   // The centre is a programmed point: under scaling it is scaled as the path is.
   for (int i = 0; i < kAxisCount; ++i)
-    centre[i] = frame_.scale_centre[i] + (centre[i] - frame_.scale_centre[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
+    centre[i] = frame_.scale_centre[i] +
+                (centre[i] - frame_.scale_centre[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
   frame_.rotation = angle;
   frame_.rotation_centre = centre;
   last_rotation_ = angle;
@@ -846,14 +871,18 @@ void Machine::arc_block_rules() {
   if (!arc || !has_axis_word()) return;
   // §8.11 (E-15): the length offset does not change on a helix.
   if (modal_.plane.w >= 0 && has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.length_before)
-    report(DiagId::ArcForm, 0, "the tool length offset cannot change in a helical move (E-15): change it on a straight move");
+    report(DiagId::ArcForm, 0,
+           "the tool length offset cannot change in a helical move (E-15): change it on a straight move");
   // §8.10: compensation starts and ends on a straight move (E-11, E-13; the path checks
   // the first move after a G41/G42/G40 of a block of its own), and changes side or
   // radius only there (E-14).
   const char* what = nullptr;
-  if (block_.comp_before == 0 && modal_.comp != 0) what = "cutter radius compensation cannot start on an arc (E-11)";
-  else if (block_.comp_before != 0 && modal_.comp == 0) what = "cutter radius compensation cannot end on an arc (E-13)";
-  else if (block_.comp_before != 0 && (modal_.comp != block_.comp_before || compensation().radius != block_.radius_before))
+  if (block_.comp_before == 0 && modal_.comp != 0)
+    what = "cutter radius compensation cannot start on an arc (E-11)";
+  else if (block_.comp_before != 0 && modal_.comp == 0)
+    what = "cutter radius compensation cannot end on an arc (E-13)";
+  else if (block_.comp_before != 0 &&
+           (modal_.comp != block_.comp_before || compensation().radius != block_.radius_before))
     what = "cutter radius compensation changes side or radius only on a straight move (E-14)";
   if (what) report(DiagId::ArcForm, 0, std::string(what) + ": use a G00 or G01 move");
 }

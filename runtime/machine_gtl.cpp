@@ -22,7 +22,7 @@ struct Machine::GtlState {
     std::optional<double> feed;
   };
   std::deque<Block> blocks;
-  size_t first_tag = 0;  // the tag of blocks.front()
+  size_t first_tag = 0;    // the tag of blocks.front()
   uint32_t opened_at = 0;  // the G21 block
   bool refused = false;    // a block of the profile failed: G20 ends it quietly
 };
@@ -36,7 +36,10 @@ bool Machine::gtl_open() const { return gtl_->profile.active(); }
 namespace {
 
 gtl::Kind kind_of(char letter) {
-  return letter == 'o' ? gtl::Kind::Origin : letter == 'p' ? gtl::Kind::Point : letter == 'l' ? gtl::Kind::Line : gtl::Kind::Circle;
+  return letter == 'o'   ? gtl::Kind::Origin
+         : letter == 'p' ? gtl::Kind::Point
+         : letter == 'l' ? gtl::Kind::Line
+                         : gtl::Kind::Circle;
 }
 
 }  // namespace
@@ -47,17 +50,19 @@ void Machine::gtl_define(uint16_t arg) {
   const gtl::Shape shape = gtl::Shape::unpack(arg);
   // (A bytecode file may hold a shape the compiler does not make.)
   if (std::string why = gtl::form_error(shape, false); !why.empty() || shape.value_count() > kOperandSlots)
-    return report(DiagId::GtlGeometry, 0, std::string(1, gtl::letter(shape.target)), why.empty() ? "too many operands" : why);
+    return report(DiagId::GtlGeometry, 0, std::string(1, gtl::letter(shape.target)),
+                  why.empty() ? "too many operands" : why);
   std::vector<double> values;
   for (size_t i = 0; i < shape.value_count(); ++i) values.push_back(slot_value(operand_slot(static_cast<int>(i))));
   const char letter = gtl::letter(shape.target);
   const auto index = whole_in(values[0], 0, gtl::kMaxIndex);
   if (!index) {
-    report_slot(DiagId::ValueRange, operand_slot(0), fmt::format("{}{}", letter, shortest(values[0])), std::string(1, letter),
-                "0", std::to_string(gtl::kMaxIndex));
+    report_slot(DiagId::ValueRange, operand_slot(0), fmt::format("{}{}", letter, shortest(values[0])),
+                std::string(1, letter), "0", std::to_string(gtl::kMaxIndex));
     return;
   }
-  gtl::Result r = gtl::define(shape, values, gtl_->store, gtl::Tolerance{gtl_tolerance()}, kAxisLetters, modal_.plane.u, modal_.plane.v);
+  gtl::Result r = gtl::define(shape, values, gtl_->store, gtl::Tolerance{gtl_tolerance()}, kAxisLetters, modal_.plane.u,
+                              modal_.plane.v);
   if (!r.element) {
     gtl_->store.fail(shape.target, *index);
     if (!r.why.empty()) report(DiagId::GtlGeometry, 0, fmt::format("{}{}", letter, *index), r.why);
@@ -94,8 +99,10 @@ void Machine::gtl_block() {
     report(DiagId::GtlProfile, word, why);
   };
   for (char f : {'u', 'v', 'w'})
-    if (has(f)) return refuse(f, fmt::format("{}{} corrects a point by the tool's radius; a GTL profile offsets its elements itself (§2.9)",
-                                             f, shortest(word(f))));
+    if (has(f))
+      return refuse(
+          f, fmt::format("{}{} corrects a point by the tool's radius; a GTL profile offsets its elements itself (§2.9)",
+                         f, shortest(word(f))));
   char element = 0;
   for (char l : {'p', 'l', 'c'})
     if (has(l)) {
@@ -106,7 +113,8 @@ void Machine::gtl_block() {
     }
   const bool fillet = has('r'), chamfer = has('b');
   if ((fillet || chamfer) && (element || opens || closes))
-    return refuse(fillet ? 'r' : 'b', "a fillet r or a chamfer b stands in a block of its own, between two elements (§2.11.9)");
+    return refuse(fillet ? 'r' : 'b',
+                  "a fillet r or a chamfer b stands in a block of its own, between two elements (§2.11.9)");
   if (fillet && chamfer) return refuse('b', "one connection joins two elements: r or b, not both");
   GtlState::Block block{block_.request->source, {}, 0, feed_};
   const AxisValues to = program_target();
@@ -124,7 +132,8 @@ void Machine::gtl_block() {
     for (char l : {'p', 'l', 'c', 's', 'r', 'b'})
       if (has(l)) word(l);
     if (closes) {
-      if (!g.profile.active() && !g.refused) report(DiagId::GtlProfile, 0, "G20 closes a GTL profile; none is open: G21 opens one (§2.11.8)");
+      if (!g.profile.active() && !g.refused)
+        report(DiagId::GtlProfile, 0, "G20 closes a GTL profile; none is open: G21 opens one (§2.11.8)");
       g.profile = gtl::Profile{};
       g.refused = false;
       flush_compensation();
@@ -155,21 +164,27 @@ void Machine::gtl_block() {
   const gtl::ElementId id{named ? named->kind : gtl::Kind::Point, index};
   if (opens) {
     if (!named)
-      return refuse(0, "G21 names the profile's first point p.. (an open profile) or its last element l.. or c.. "
-                       "(a closed one) (§2.11.8)");
+      return refuse(0,
+                    "G21 names the profile's first point p.. (an open profile) or its last element l.. or c.. "
+                    "(a closed one) (§2.11.8)");
     const Compensation c = compensation();
     const double radius = c.side ? to_program(c.radius) + system_value(SysVar::Allowance) : 0;
     const int side = c.side == 1 ? 1 : c.side == 2 ? -1 : 0;
     g.opened_at = block.source;
     if (conv_.comp_path()) path_.suspend();  // the profile offsets its elements itself
-    if (named->kind == gtl::Kind::Point) g.profile.open_at(named->at, tag, side, radius, gtl::Tolerance{gtl_tolerance()});
-    else g.profile.open_closed(*named, id, s2, tag, side, radius, gtl::Tolerance{gtl_tolerance()});
+    if (named->kind == gtl::Kind::Point)
+      g.profile.open_at(named->at, tag, side, radius, gtl::Tolerance{gtl_tolerance()});
+    else
+      g.profile.open_closed(*named, id, s2, tag, side, radius, gtl::Tolerance{gtl_tolerance()});
   } else if (closes) {
     if (!named)
-      return refuse(0, "G20 names the profile's last point p.. (an open profile) or its first element again "
-                       "(a closed one) (§2.11.8)");
-    if (named->kind == gtl::Kind::Point) g.profile.close_at(named->at, tag);
-    else g.profile.close_with(id, tag);
+      return refuse(0,
+                    "G20 names the profile's last point p.. (an open profile) or its first element again "
+                    "(a closed one) (§2.11.8)");
+    if (named->kind == gtl::Kind::Point)
+      g.profile.close_at(named->at, tag);
+    else
+      g.profile.close_with(id, tag);
     gtl_moves();
     flush_compensation();
     if (conv_.comp_path()) path_.resume();
@@ -236,7 +251,9 @@ void Machine::gtl_moves() {
 
 void Machine::gtl_unit_end() {
   if (!gtl_->profile.active()) return;
-  issue({DiagId::GtlProfile, diag_message(DiagId::GtlProfile, "the program ends inside the GTL profile G21 opens here: G20 closes it (§2.11.8)"),
+  issue({DiagId::GtlProfile,
+         diag_message(DiagId::GtlProfile,
+                      "the program ends inside the GTL profile G21 opens here: G20 closes it (§2.11.8)"),
          gtl_->opened_at, -1, -1});
   gtl_->profile = gtl::Profile{};
   gtl_->blocks.clear();

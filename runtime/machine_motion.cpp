@@ -18,9 +18,9 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kTwoPi = 2 * std::numbers::pi;
 // The interpolation parameter parallel to each linear axis (GOST Table 1).
 constexpr char kParameterOf[3] = {'I', 'J', 'K'};
-constexpr double kSamePoint = 1e-7;  // mm: end point equal to start point
-constexpr double kMaxTurns = 1e6;    // of one helix
-constexpr double kMaxDwellSeconds = 60;      // NC-110 TMR under G94 (§2.10.1)
+constexpr double kSamePoint = 1e-7;             // mm: end point equal to start point
+constexpr double kMaxTurns = 1e6;               // of one helix
+constexpr double kMaxDwellSeconds = 60;         // NC-110 TMR under G94 (§2.10.1)
 constexpr double kMaxDwellRevolutions = 30000;  //              under G95
 
 // The angle in [0, 2π).
@@ -121,8 +121,10 @@ double Machine::feed_time(double length) {
 double Machine::block_seconds() {
   if (!has('t')) return 0;
   const double t = word('t');
-  if (modal_.feed_mode != 1) report(DiagId::TimeWord, 't', "is for feed per minute (G94) only");
-  else if (t <= 0) report(DiagId::TimeWord, 't', "must be greater than 0");
+  if (modal_.feed_mode != 1)
+    report(DiagId::TimeWord, 't', "is for feed per minute (G94) only");
+  else if (t <= 0)
+    report(DiagId::TimeWord, 't', "must be greater than 0");
   return modal_.feed_mode == 1 && t > 0 ? t : 0;
 }
 
@@ -132,8 +134,10 @@ bool Machine::need_feed(const char* what, const AxisValues& t) {
     report(DiagId::InverseTimeNoFeed, 0);
   } else if (!feed_) {
     // Once until an F or another feed mode: the blocks after it lack the same F.
-    if (!std::exchange(no_feed_reported_, true)) report(DiagId::NoFeed, 0, what);
-    else block_.error = true;  // said already: the block's words stay unused quietly
+    if (!std::exchange(no_feed_reported_, true))
+      report(DiagId::NoFeed, 0, what);
+    else
+      block_.error = true;  // said already: the block's words stay unused quietly
   } else if (modal_.feed_mode == 2 && spindle_rpm() <= 0) {
     report(DiagId::FeedNoSpindle, 0, what);
   } else {
@@ -200,7 +204,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     report(DiagId::ArcForm, 0, why);
     move_to(t);
   };
-  if (radius_form && (has(pu) || has(pv))) return fail("an arc is given by its centre I J or by its radius R, not both");
+  if (radius_form && (has(pu) || has(pv)))
+    return fail("an arc is given by its centre I J or by its radius R, not both");
   if (!radius_form && (plane_words ? !(has(pu) && has(pv)) : !has(pu) && !has(pv))) {
     const char missing = has(pu) ? pv : has(pv) ? pu : 0;
     report(DiagId::ArcNoCentre, 0, clockwise ? "clockwise" : "counter-clockwise", plane_name(modal_.plane),
@@ -223,8 +228,8 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     }
     if (frame_.mirror[u] != frame_.mirror[v]) clockwise = !clockwise;
   }
-  const bool programmed_clockwise = clockwise != (frame_.transformed() && !block_.machine_frame &&
-                                                  frame_.mirror[u] != frame_.mirror[v]);
+  const bool programmed_clockwise =
+      clockwise != (frame_.transformed() && !block_.machine_frame && frame_.mirror[u] != frame_.mirror[v]);
   const AxisValues start_p = to_frame(machine_);
   const AxisValues end_p = to_frame(t);
   const Eigen::Vector2d q0(start_p[u], start_p[v]), q1(end_p[u], end_p[v]);
@@ -236,8 +241,9 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     double chord = (q1 - q0).norm();
     if (chord < kSamePoint) return fail("an arc by its radius cannot be a full circle: give its centre with I J");
     if (chord > 2 * std::fabs(r) + conv_.arc_tolerance)
-      return fail(fmt::format("the end point is {} away, more than the diameter {} of R{}", four_decimals(to_program(chord)),
-                              four_decimals(to_program(2 * std::fabs(r))), four_decimals(to_program(r))));
+      return fail(fmt::format("the end point is {} away, more than the diameter {} of R{}",
+                              four_decimals(to_program(chord)), four_decimals(to_program(2 * std::fabs(r))),
+                              four_decimals(to_program(r))));
     double h = std::sqrt(std::max(0.0, r * r - chord * chord / 4));
     Eigen::Vector2d along = (q1 - q0) / chord, left(-along.y(), along.x());
     double side = (programmed_clockwise == (r < 0)) ? 1 : -1;  // where it is programmed
@@ -300,8 +306,9 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
   // revolution: the pitch).
   const double dw = w >= 0 ? t[w] - machine_[w] : 0;
   if (std::fabs(dw) > kSamePoint && !modal_.helix) {
-    report(DiagId::ArcForm, kAxisLetters[w], fmt::format("{} is not in the {} plane of the arc, and the helix mode is off",
-                                                         kAxisLetters[w], plane_name(modal_.plane)));
+    report(DiagId::ArcForm, kAxisLetters[w],
+           fmt::format("{} is not in the {} plane of the arc, and the helix mode is off", kAxisLetters[w],
+                       plane_name(modal_.plane)));
     move_to(t);
     return;
   }
@@ -335,7 +342,8 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
                                 : fmt::format("{} rad", four_decimals(radians));
         };
         report(DiagId::HelixLead, pw,
-               plane_words ? fmt::format("helix pitch {}{}", pw, four_decimals(*lead)) : "helix lead " + four_decimals(*lead),
+               plane_words ? fmt::format("helix pitch {}{}", pw, four_decimals(*lead))
+                           : "helix lead " + four_decimals(*lead),
                four_decimals(to_program(dw)),
                per_radian == 0 ? std::string("infinitely many rad") : angle(std::fabs(dw / per_radian)), angle(sweep));
         move_to(t);
@@ -368,7 +376,8 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
   if (virtual_axes_.mode == 1 || std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; }) ||
       std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; })) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
-    const int chords = whole_in(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0), 1, 100000).value_or(1);
+    const int chords =
+        whole_in(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0), 1, 100000).value_or(1);
     // The fractions of the sweep: the chords' ends and where the arc is farthest
     // along u or v (the quarter turns from the start's angle, in the first and the
     // last turn: a helix repeats them in between).
@@ -472,8 +481,9 @@ void Machine::thread(const AxisValues& t) {
   bool ok = true;
   if (given.size() != 1) {
     report(DiagId::ThreadPitch, 0, listed(candidates, " or "),
-           given.empty() ? std::string("none is programmed")
-                         : fmt::format("{} {} programmed", listed(given, " and "), given.size() == 2 ? "are both" : "are all"));
+           given.empty()
+               ? std::string("none is programmed")
+               : fmt::format("{} {} programmed", listed(given, " and "), given.size() == 2 ? "are both" : "are all"));
     ok = false;
   }
   if (has('F')) {
@@ -552,7 +562,8 @@ void Machine::thread_variable(const AxisValues& t) {
   double length = 0;
   for (int i = 0; i < kAxisCount; ++i)
     if (is_linear(i))
-      length = std::max(length, std::fabs(t[i] - machine_[i]) / (config_.axes[static_cast<size_t>(i)].diameter ? 2 : 1));
+      length =
+          std::max(length, std::fabs(t[i] - machine_[i]) / (config_.axes[static_cast<size_t>(i)].diameter ? 2 : 1));
   if (ok && length < kSamePoint) {
     report(DiagId::ThreadNoTravel, 0, motion_name_);
     ok = false;
@@ -587,9 +598,10 @@ void Machine::thread_variable(const AxisValues& t) {
 void Machine::spline_point(const AxisValues& t) {
   if (!spline_.active || !spline_.lead_in || spline_.points.empty()) {
     report(DiagId::SplineStructure, 0,
-           !spline_.active   ? "G06 stands only between (BSP) and (ESP)"
-           : spline_.lead_in ? "G06 after the spline's lead-out: (ESP) comes first"
-                             : "G06 needs the lead-in first: a G00 or G01 block after (BSP) goes to the spline's start");
+           !spline_.active ? "G06 stands only between (BSP) and (ESP)"
+           : spline_.lead_in
+               ? "G06 after the spline's lead-out: (ESP) comes first"
+               : "G06 needs the lead-in first: a G00 or G01 block after (BSP) goes to the spline's start");
     return move_to(t);
   }
   if (!need_feed("spline interpolation", t)) return;
@@ -707,7 +719,8 @@ double Machine::timer_dwell() {
     }
     double rpm = spindle_rpm();
     if (value > 0 && rpm <= 0) {
-      report(DiagId::DwellTime, 0, fmt::format("{}={}", name, shortest(value)), "counts spindle revolutions (G95), and the spindle is not turning");
+      report(DiagId::DwellTime, 0, fmt::format("{}={}", name, shortest(value)),
+             "counts spindle revolutions (G95), and the spindle is not turning");
       return 0;
     }
     return value > 0 ? 60 * value / rpm : 0;
@@ -768,8 +781,10 @@ void Machine::corner_codes() {
       // A unit change would put the two moves in different units: ncc refuses it.
       if (!ok || (g == FnGroup::Units && (call.fn == Fn::UnitsInch) != corner_->inch))
         issue({DiagId::CornerForm,
-               diag_message(DiagId::CornerForm, fmt::format("{} cannot stand in the block after it ({})", sem_.codes[block_.request->codes[i]].name,
-                                                                  g == FnGroup::Units ? "ncc: a unit change across a corner" : "E-06")),
+               diag_message(
+                   DiagId::CornerForm,
+                   fmt::format("{} cannot stand in the block after it ({})", sem_.codes[block_.request->codes[i]].name,
+                               g == FnGroup::Units ? "ncc: a unit change across a corner" : "E-06")),
                block_.request->source, -1, static_cast<int>(block_.request->codes[i])});
     }
 }
@@ -778,7 +793,8 @@ void Machine::corner_begin(const AxisValues& start) {
   const bool fillet = has_slot(second_slot('R'));
   const int slot = second_slot(fillet ? 'R' : 'C');
   const double size = slot_value(slot);
-  const bool feed = modal_.motion == Fn::MotionLinear || modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
+  const bool feed =
+      modal_.motion == Fn::MotionLinear || modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (block_.error) return release();  // its block failed: reported already
   size_t incoming = held_.size(), moves = 0;
   for (size_t i = 0; i < held_.size(); ++i)
@@ -786,11 +802,11 @@ void Machine::corner_begin(const AxisValues& start) {
       incoming = i;
       ++moves;
     }
-  std::string why = !feed || modal_.cycle >= 0 ? "it follows a feed move G01, G02 or G03 only (E-03)"
+  std::string why = !feed || modal_.cycle >= 0     ? "it follows a feed move G01, G02 or G03 only (E-03)"
                     : moves > 1 && !chained_start_ ? "its block makes more than the one feed move it follows (E-03)"
-                    : modal_.polar            ? "it is not made in polar coordinates, G16 (E-07)"
-                    : incoming == held_.size() ? "its block makes no feed move (E-03)"
-                                               : "";
+                    : modal_.polar                 ? "it is not made in polar coordinates, G16 (E-07)"
+                    : incoming == held_.size()     ? "its block makes no feed move (E-03)"
+                                                   : "";
   if (!why.empty()) {
     report_slot(DiagId::CornerForm, slot, why);
     release();
@@ -815,7 +831,8 @@ void Machine::corner_finish(bool another, size_t block_from) {
   const int pu = modal_.plane.u, pv = modal_.plane.v;
   if (outgoing == held_.size() || !is_move(held_[outgoing]) ||
       (held_[outgoing].kind == EventKind::Linear &&
-       std::hypot(held_[outgoing].pos[pu] - held_[c.incoming].pos[pu], held_[outgoing].pos[pv] - held_[c.incoming].pos[pv]) < 1e-9))
+       std::hypot(held_[outgoing].pos[pu] - held_[c.incoming].pos[pu],
+                  held_[outgoing].pos[pv] - held_[c.incoming].pos[pv]) < 1e-9))
     return fail("the next block must make a feed move in the plane (E-04)");
   const int u = modal_.plane.u, v = modal_.plane.v;
   auto in_plane = [&](const AxisValues& p) { return corner::Vec(p[u], p[v]); };

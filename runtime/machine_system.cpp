@@ -11,7 +11,7 @@ namespace ncc {
 std::string Machine::system_name(SysRef ref) const {
   auto i = static_cast<size_t>(ref.var);
   std::string name = i < sem_.system_names.size() && !sem_.system_names[i].empty() ? sem_.system_names[i]
-                                                                                 : std::string(sys_name(ref.var));
+                                                                                   : std::string(sys_name(ref.var));
   if (sys_indices(ref.var) > 1) name += std::to_string(ref.index);
   return name;
 }
@@ -28,7 +28,8 @@ double Machine::system(SysRef ref) const {
       // Vacant (NaN) when no code of the program sets it.
       for (const CodeDesc& c : sem_.codes)
         if (!c.calls.empty() && c.calls.front() == now && c.name.size() > 1)
-          return parse_number<double>(std::string_view(c.name).substr(1)).value_or(std::numeric_limits<double>::quiet_NaN());
+          return parse_number<double>(std::string_view(c.name).substr(1))
+              .value_or(std::numeric_limits<double>::quiet_NaN());
       return std::numeric_limits<double>::quiet_NaN();
     }
     case SysVar::ModalWord:
@@ -58,7 +59,8 @@ double Machine::system(SysRef ref) const {
     // RMNpq: process p, axis q (1: X); a run of one process moves nothing while a
     // block is evaluated.
     case SysVar::RemainingPath:
-      return remaining_paths_ && ref.index % 10 >= 1 ? remaining_paths_->remaining(ref.index / 10, ref.index % 10 - 1) : 0;
+      return remaining_paths_ && ref.index % 10 >= 1 ? remaining_paths_->remaining(ref.index / 10, ref.index % 10 - 1)
+                                                     : 0;
     default: break;
   }
   auto it = system_.find(ref.packed());
@@ -68,8 +70,8 @@ double Machine::system(SysRef ref) const {
 
 bool Machine::set_system(SysRef ref, double value, uint32_t source) {
   auto fail = [&](const std::string& why) {
-    issues_.issue({DiagId::SystemValue, diag_message(DiagId::SystemValue, system_name(ref), shortest(value), why), source,
-                   -1, -1});
+    issues_.issue({DiagId::SystemValue, diag_message(DiagId::SystemValue, system_name(ref), shortest(value), why),
+                   source, -1, -1});
     return !stop_on_error_;  // a dry run goes on without the value
   };
   if (std::isnan(value)) return fail("the value is vacant");
@@ -77,12 +79,8 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
   switch (ref.var) {
     case SysVar::Timer:
     case SysVar::TotalTime: value = static_cast<float>(value); break;  // RE
-    case SysVar::BlockEnable:
-      block_skip_ = value == 0;
-      return true;
-    case SysVar::OptionalStop:
-      optional_stop_ = value == 1;
-      return true;
+    case SysVar::BlockEnable: block_skip_ = value == 0; return true;
+    case SysVar::OptionalStop: optional_stop_ = value == 1; return true;
     case SysVar::Alarm:
       issues_.issue({DiagId::Alarm, diag_message(DiagId::Alarm, shortest(value)), source, -1, -1});
       return false;

@@ -20,7 +20,9 @@ std::optional<int> Machine::whole_operand(int i, int lo, int hi, const char* wha
   auto v = slot_if(operand_slot(i));
   if (!v) return std::nullopt;
   const std::optional<int> n = whole_in(*v, lo, hi);
-  if (!n) report_slot(DiagId::OperandValue, operand_slot(i), what, shortest(*v), fmt::format("a whole number from {} to {}", lo, hi));
+  if (!n)
+    report_slot(DiagId::OperandValue, operand_slot(i), what, shortest(*v),
+                fmt::format("a whole number from {} to {}", lo, hi));
   return n;
 }
 
@@ -37,7 +39,8 @@ int Machine::usable_tool(int tool) {
   if (auto entry = config_.tools.find(tool); entry != config_.tools.end())
     for (int sister : entry->second.sisters)
       if (!unusable_.count(sister)) {
-        text_event(EventKind::Tooling, fmt::format("tool {} replaced by sister {}", tool, sister), source(), kToolingUnusable);
+        text_event(EventKind::Tooling, fmt::format("tool {} replaced by sister {}", tool, sister), source(),
+                   kToolingUnusable);
         return sister;
       }
   if (!std::exchange(why->second.reported, true)) report(DiagId::ToolUnusable, 'T', tool, why->second.why);
@@ -67,7 +70,8 @@ bool Machine::tooling_function(FnCall call) {
         if (!has(letter)) continue;
         if (letter != own) {
           report(DiagId::CorrectorValue, letter,
-                 fmt::format("{} adds to corrector {}'s length, which applies to {}: write {}, not {}", code, *n, own, own, letter));
+                 fmt::format("{} adds to corrector {}'s length, which applies to {}: write {}, not {}", code, *n, own,
+                             own, letter));
           return true;
         }
         const int a = axis_index(letter);
@@ -81,7 +85,8 @@ bool Machine::tooling_function(FnCall call) {
         if (value >= lo && value <= hi) return false;
         report(DiagId::CorrectorValue, word,
                fmt::format("{} would make corrector {}'s {} {}: it lies between {} and {}", code, *n, what,
-                           four_decimals(to_program(value)), four_decimals(to_program(lo)), four_decimals(to_program(hi))));
+                           four_decimals(to_program(value)), four_decimals(to_program(lo)),
+                           four_decimals(to_program(hi))));
         return true;
       };
       if (beyond(own, "length", e.length, -kMaxLength, kMaxLength) ||
@@ -94,9 +99,11 @@ bool Machine::tooling_function(FnCall call) {
         e.wear_diameter += diameter;
       }
       it->second = e;
-      std::string text = fmt::format("corrector {} tool {} length {} radius {}", *n, *tool, four_decimals(to_program(e.length)),
-                                     four_decimals(to_program(e.radius)));
-      if (wear) text += fmt::format(" wear {} {}", four_decimals(to_program(e.wear_length)), four_decimals(to_program(e.wear_diameter)));
+      std::string text = fmt::format("corrector {} tool {} length {} radius {}", *n, *tool,
+                                     four_decimals(to_program(e.length)), four_decimals(to_program(e.radius)));
+      if (wear)
+        text += fmt::format(" wear {} {}", four_decimals(to_program(e.wear_length)),
+                            four_decimals(to_program(e.wear_diameter)));
       text_event(EventKind::Tooling, text, source(), kToolingCorrector);
       if (!wear) break;
       std::string why;
@@ -104,8 +111,8 @@ bool Machine::tooling_function(FnCall call) {
         why = fmt::format("corrector {}'s length wear {} is beyond {}", *n, four_decimals(to_program(e.wear_length)),
                           four_decimals(to_program(*e.max_wear_length)));
       else if (e.max_wear_diameter && std::fabs(e.wear_diameter) > *e.max_wear_diameter + 1e-9)
-        why = fmt::format("corrector {}'s diameter wear {} is beyond {}", *n, four_decimals(to_program(e.wear_diameter)),
-                          four_decimals(to_program(*e.max_wear_diameter)));
+        why = fmt::format("corrector {}'s diameter wear {} is beyond {}", *n,
+                          four_decimals(to_program(e.wear_diameter)), four_decimals(to_program(*e.max_wear_diameter)));
       if (why.empty()) break;
       unusable_.emplace(*tool, Unusable{"RQU: " + why});
       text_event(EventKind::Tooling, fmt::format("tool {} unusable (RQU: {})", *tool, why), source(), kToolingUnusable);
@@ -122,7 +129,8 @@ bool Machine::tooling_function(FnCall call) {
     case Fn::ProbeSettings: {
       // mm and mm/min whatever G70/G71 say (§2.13.9).
       double values[3];
-      static constexpr const char* kWhat[] = {"the approach distance Qa", "the safety distance Qs", "the measuring speed Vm"};
+      static constexpr const char* kWhat[] = {"the approach distance Qa", "the safety distance Qs",
+                                              "the measuring speed Vm"};
       for (int i = 0; i < 3; ++i) {
         values[i] = slot_if(operand_slot(i)).value_or(0);
         const double lo = i < 2 ? 0.001 : 1, hi = i < 2 ? 9999.999 : 99999;
@@ -136,7 +144,8 @@ bool Machine::tooling_function(FnCall call) {
       probe_.safety = values[1];
       probe_.feed = values[2];
       text_event(EventKind::Tooling,
-                 fmt::format("probe approach {} safety {} feed {}", shortest(values[0]), shortest(values[1]), shortest(values[2])),
+                 fmt::format("probe approach {} safety {} feed {}", shortest(values[0]), shortest(values[1]),
+                             shortest(values[2])),
                  source(), kToolingProbe);
       break;
     }

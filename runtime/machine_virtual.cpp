@@ -58,8 +58,10 @@ bool Machine::virtual_function(FnCall call) {
     return true;
   }
   if (*mode == 0) {
-    if (va.mode == 0) report_code(DiagId::VirtualAxes, "(UAV,0) cancels virtual axes; none are active");
-    else virtual_off();
+    if (va.mode == 0)
+      report_code(DiagId::VirtualAxes, "(UAV,0) cancels virtual axes; none are active");
+    else
+      virtual_off();
     return true;
   }
   if (va.mode != 0) {
@@ -78,16 +80,20 @@ bool Machine::virtual_function(FnCall call) {
   // The lists' lengths the mode takes (the compiler checked them).
   const auto m = static_cast<size_t>(*mode);
   const VirtualForm& form = kVirtualForms[m];
-  if (real.size() < form.real_lo || real.size() > form.real_hi || virt.size() < form.virt_lo || virt.size() > form.virt_hi)
+  if (real.size() < form.real_lo || real.size() > form.real_hi || virt.size() < form.virt_lo ||
+      virt.size() > form.virt_hi)
     return fail(fmt::format("mode {} does not take the axes {} and {}", m, letters(real), letters(virt)));
   for (int a : virt)
-    if (std::find(real.begin(), real.end(), a) != real.end()) return fail(fmt::format("{} stands in both lists", kAxisLetters[a]));
+    if (std::find(real.begin(), real.end(), a) != real.end())
+      return fail(fmt::format("{} stands in both lists", kAxisLetters[a]));
   // The axes UAV joins cannot be mirrored, scaled or rotated: the mapping is between
   // plain coordinates.
   for (const std::vector<int>* list : {&real, &virt})
     for (int a : *list)
-      if (frame_.mirror[a] || frame_.scale[a] != 1 || (frame_.rotation != 0 && (a == modal_.plane.u || a == modal_.plane.v)))
-        return fail(fmt::format("{} is mirrored, scaled or rotated (MIR, SCF, URT): cancel that before UAV", kAxisLetters[a]));
+      if (frame_.mirror[a] || frame_.scale[a] != 1 ||
+          (frame_.rotation != 0 && (a == modal_.plane.u || a == modal_.plane.v)))
+        return fail(
+            fmt::format("{} is mirrored, scaled or rotated (MIR, SCF, URT): cancel that before UAV", kAxisLetters[a]));
   for (int a : virt)
     if (kind(a) != AxisKind::Linear || config_.axes[static_cast<size_t>(a)].diameter)
       return fail(fmt::format("the virtual axis {} is a linear axis, not a rotary or diametral one", kAxisLetters[a]));
@@ -110,8 +116,10 @@ bool Machine::virtual_function(FnCall call) {
         return fail(fmt::format("{} is the linear axis of the polar pair: it must be linear", kAxisLetters[real[0]]));
       if (kind(rotary) != AxisKind::Rotary) return fail(fmt::format("{} must be a rotary axis", kAxisLetters[rotary]));
       next.value = length_units(value(0));
-      if (*mode == 1 && next.value < 0) return fail(fmt::format("the minimum radius {} is negative", shortest(value(0))));
-      if (*mode == 2 && !(next.value > 0)) return fail(fmt::format("the cylinder's radius {} must be greater than 0", shortest(value(0))));
+      if (*mode == 1 && next.value < 0)
+        return fail(fmt::format("the minimum radius {} is negative", shortest(value(0))));
+      if (*mode == 2 && !(next.value > 0))
+        return fail(fmt::format("the cylinder's radius {} must be greater than 0", shortest(value(0))));
       // "The rotary axis is positioned at zero" when they are activated.
       if (std::fabs(program(rotary)) > 1e-9) {
         AxisValues t = machine_;
@@ -127,20 +135,25 @@ bool Machine::virtual_function(FnCall call) {
         next.angle = x < 0 ? kPi : 0;
         machine_[virt[0]] = next.zero[virt[0]] + x;
         machine_[virt[1]] = next.zero[virt[1]];
-        text = fmt::format("polar {} as {} min radius {}", letters(real), letters(virt), four_decimals(to_program(next.value)));
+        text = fmt::format("polar {} as {} min radius {}", letters(real), letters(virt),
+                           four_decimals(to_program(next.value)));
       } else {
         machine_[virt[0]] = next.zero[virt[0]];
-        text = fmt::format("cylinder {} as {} radius {}", kAxisLetters[rotary], kAxisLetters[virt[0]], four_decimals(to_program(next.value)));
+        text = fmt::format("cylinder {} as {} radius {}", kAxisLetters[rotary], kAxisLetters[virt[0]],
+                           four_decimals(to_program(next.value)));
       }
       break;
     }
     case 3: {
       // Parallel axes (§2.18): each slave follows its master, mirrored or not.
       for (int a : real)
-        if (std::fabs(program(a)) > 1e-9) return fail(fmt::format("the slave {} is not at 0: masters and slaves start at 0", kAxisLetters[a]));
+        if (std::fabs(program(a)) > 1e-9)
+          return fail(fmt::format("the slave {} is not at 0: masters and slaves start at 0", kAxisLetters[a]));
       for (int a : virt)
-        if (std::fabs(program(a)) > 1e-9) return fail(fmt::format("the master {} is not at 0: masters and slaves start at 0", kAxisLetters[a]));
-      uint32_t map = whole_in<uint32_t>(value(0), 1, 999).value_or(0), mirror = whole_in<uint32_t>(value(1), 1, 999).value_or(0);
+        if (std::fabs(program(a)) > 1e-9)
+          return fail(fmt::format("the master {} is not at 0: masters and slaves start at 0", kAxisLetters[a]));
+      uint32_t map = whole_in<uint32_t>(value(0), 1, 999).value_or(0),
+               mirror = whole_in<uint32_t>(value(1), 1, 999).value_or(0);
       text = "parallel";
       for (size_t k = real.size(); k-- > 0; map /= 10, mirror /= 10) {
         if (map % 10 < 1 || map % 10 > virt.size() || mirror % 10 < 1 || mirror % 10 > 2)
@@ -149,7 +162,8 @@ bool Machine::virtual_function(FnCall call) {
         next.sign[k] = mirror % 10 == 2 ? -1 : 1;
       }
       for (size_t k = 0; k < real.size(); ++k)
-        text += fmt::format(" {}={}{}", kAxisLetters[real[k]], next.sign[k] < 0 ? "-" : "", kAxisLetters[next.master[k]]);
+        text +=
+            fmt::format(" {}={}{}", kAxisLetters[real[k]], next.sign[k] < 0 ? "-" : "", kAxisLetters[next.master[k]]);
       break;
     }
     case 4: {
@@ -174,8 +188,8 @@ bool Machine::virtual_function(FnCall call) {
         for (int k = 0; k < 3; ++k) v += r[k][i] * program(real[static_cast<size_t>(k)]);
         machine_[virt[static_cast<size_t>(i)]] = next.zero[virt[static_cast<size_t>(i)]] + v;
       }
-      text = fmt::format("rotation {} as {} angles {} {} {}", letters(real), letters(virt), shortest(value(0)), shortest(value(1)),
-                         shortest(value(2)));
+      text = fmt::format("rotation {} as {} angles {} {} {}", letters(real), letters(virt), shortest(value(0)),
+                         shortest(value(1)), shortest(value(2)));
       break;
     }
     default: break;
@@ -190,7 +204,8 @@ void Machine::virtual_event(const std::string& what) {
   std::string text = what + " at";
   const VirtualAxes& va = virtual_axes_;
   for (const std::vector<int>* list : {&va.virt, &va.real})
-    for (int a : *list) text += fmt::format(" {}{}", kAxisLetters[a], four_decimals(program_axis(a, machine_[a] - origin(a))));
+    for (int a : *list)
+      text += fmt::format(" {}{}", kAxisLetters[a], four_decimals(program_axis(a, machine_[a] - origin(a))));
   text_event(EventKind::Virtual, text, source());
 }
 
@@ -235,8 +250,9 @@ bool Machine::virtual_axes_programmed() {
   for (int a : driven)
     if (has(kAxisLetters[static_cast<size_t>(a)])) {
       report(DiagId::VirtualAxes, kAxisLetters[static_cast<size_t>(a)],
-             fmt::format("{} follows {} (UAV mode {}): program {}, or cancel with (UAV,0)", kAxisLetters[static_cast<size_t>(a)],
-                         va.mode == 3 ? "its master" : "the virtual axes", va.mode, va.mode == 3 ? "the master" : letters(va.virt)));
+             fmt::format("{} follows {} (UAV mode {}): program {}, or cancel with (UAV,0)",
+                         kAxisLetters[static_cast<size_t>(a)], va.mode == 3 ? "its master" : "the virtual axes",
+                         va.mode, va.mode == 3 ? "the master" : letters(va.virt)));
       return true;
     }
   return false;
@@ -255,9 +271,10 @@ bool Machine::virtual_path(const std::vector<AxisValues>& path) {
       const double px = path[i - 1][u] - va.zero[u], py = path[i - 1][v] - va.zero[v];
       const double d = distance_to_segment(px, py, x, y);
       if (d < va.value - kChord) {
-        report(DiagId::VirtualAxes, 0,
-               fmt::format("the path passes {} from {}'s centre, inside the minimum radius {} (UAV)", four_decimals(to_program(d)),
-                           kAxisLetters[va.real[1]], four_decimals(to_program(va.value))));
+        report(
+            DiagId::VirtualAxes, 0,
+            fmt::format("the path passes {} from {}'s centre, inside the minimum radius {} (UAV)",
+                        four_decimals(to_program(d)), kAxisLetters[va.real[1]], four_decimals(to_program(va.value))));
         return false;
       }
     }

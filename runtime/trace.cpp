@@ -14,7 +14,7 @@ namespace ncc {
 namespace {
 
 constexpr const char* kStopKinds[] = {"program", "optional", "optional_skipped", "manual_retract"};
-constexpr const char* kPathModes[] = {"accelerate", "decelerate", "tapping", "spindle_sync",
+constexpr const char* kPathModes[] = {"accelerate",      "decelerate", "tapping",        "spindle_sync",
                                       "corner_slowdown", "continuous", "point_to_point", "smooth"};
 constexpr const char* kClamps[] = {"off", "on", "rotary_off", "rotary_on"};
 constexpr const char* kCoolants[] = {"off", "mist", "flood", "3", "4", "off_3_4"};
@@ -30,14 +30,24 @@ std::string axis_list(int mask) {
 }  // namespace
 
 std::string event_name(EventKind kind) {
-  constexpr const char* names[] = {
-      "units", "plane", "feed_mode", "feed_rate", "spindle_mode", "spindle_speed", "spindle_on", "spindle_stop",
-      "spindle_orient", "rapid", "linear", "arc", "parabola", "thread", "dwell", "tool_select", "tool_change",
-      "tool_length_offset", "cutter_comp", "work_offset", "position_offset", "coolant", "clamp", "override",
-      "spindle_hold", "path", "comment", "message", "stop", "operator_move", "end", "origin", "transform",
-      "tolerance", "limits", "zone", "configuration", "probe", "spline", "spindle_range", "part_change",
-      "offset_load", "diameter", "feed_reduction", "aux", "block", "comp_load", "asset", "input", "screen", "sync", "graphic",
-      "tooling", "virtual"};
+  constexpr const char* names[] = {"units",         "plane",          "feed_mode",
+                                   "feed_rate",     "spindle_mode",   "spindle_speed",
+                                   "spindle_on",    "spindle_stop",   "spindle_orient",
+                                   "rapid",         "linear",         "arc",
+                                   "parabola",      "thread",         "dwell",
+                                   "tool_select",   "tool_change",    "tool_length_offset",
+                                   "cutter_comp",   "work_offset",    "position_offset",
+                                   "coolant",       "clamp",          "override",
+                                   "spindle_hold",  "path",           "comment",
+                                   "message",       "stop",           "operator_move",
+                                   "end",           "origin",         "transform",
+                                   "tolerance",     "limits",         "zone",
+                                   "configuration", "probe",          "spline",
+                                   "spindle_range", "part_change",    "offset_load",
+                                   "diameter",      "feed_reduction", "aux",
+                                   "block",         "comp_load",      "asset",
+                                   "input",         "screen",         "sync",
+                                   "graphic",       "tooling",        "virtual"};
   static_assert(std::size(names) == static_cast<size_t>(EventKind::Virtual) + 1, "one name per event kind");
   return names[static_cast<int>(kind)];
 }
@@ -109,7 +119,7 @@ class TextSink final : public BufferedSink {
     const SourceBlock b = block(e);
     std::string s = e.process ? fmt::format("P{} ", e.process) : std::string();
     s += b.file == 0 ? fmt::format("{}", b.line)
-                                : fmt::format("{}:{}", printable(b.file < map_.files.size() ? map_.files[b.file] : "?"), b.line);
+                     : fmt::format("{}:{}", printable(b.file < map_.files.size() ? map_.files[b.file] : "?"), b.line);
     s += b.has_number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', b.number) : std::string(" - ");
     s += body(e);
     line(s);
@@ -148,8 +158,9 @@ class TextSink final : public BufferedSink {
       case EventKind::Linear: return "linear " + position(e.pos, e.moved);
       case EventKind::Arc:
         return fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", e.rotation > 0 ? "ccw" : "cw",
-                           plane_name(e.plane), position(e.pos, e.moved), kAxisLetters[e.plane.u], four_decimals(e.centre[0]),
-                           kAxisLetters[e.plane.v], four_decimals(e.centre[1]), four_decimals(e.a), four_decimals(e.b));
+                           plane_name(e.plane), position(e.pos, e.moved), kAxisLetters[e.plane.u],
+                           four_decimals(e.centre[0]), kAxisLetters[e.plane.v], four_decimals(e.centre[1]),
+                           four_decimals(e.a), four_decimals(e.b));
       case EventKind::Parabola:
         return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), four_decimals(e.control[0]),
                            four_decimals(e.control[1]), four_decimals(e.control[2]));
@@ -160,7 +171,8 @@ class TextSink final : public BufferedSink {
         return s;
       }
       case EventKind::Spline:
-        return fmt::format("spline {} control {} control {}", position(e.pos), position(e.control), position(e.control2));
+        return fmt::format("spline {} control {} control {}", position(e.pos), position(e.control),
+                           position(e.control2));
       case EventKind::Dwell: return "dwell " + four_decimals(e.a);
       case EventKind::SelectTool: return fmt::format("tool_select {}", e.n);
       case EventKind::ChangeTool: return fmt::format("tool_change {}", e.n);
@@ -239,7 +251,8 @@ class TextSink final : public BufferedSink {
 
 void json_position(const Event& e, std::string_view axes, std::string& s) {
   for (int i = 0; i < kAxisCount; ++i)
-    if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
+    if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos)
+      s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
 }
 
 void json_fields(const Event& e, std::string_view axes, std::string& s) {
@@ -274,8 +287,8 @@ void json_fields(const Event& e, std::string_view axes, std::string& s) {
     }
     case EventKind::Parabola:
       json_position(e, axes, s);
-      s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(e.control[0]),
-                       json_number(e.control[1]), json_number(e.control[2]));
+      s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(e.control[0]), json_number(e.control[1]),
+                       json_number(e.control[2]));
       break;
     case EventKind::Thread:
       json_position(e, axes, s);
@@ -351,14 +364,14 @@ void json_fields(const Event& e, std::string_view axes, std::string& s) {
     case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
     case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
     case EventKind::Block: break;
-    case EventKind::Asset:
-      s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n);
-      break;
+    case EventKind::Asset: s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n); break;
     case EventKind::Input: {
       const auto [shown, answer] = input_parts(e);
       s += R"(,"prompt":)" + quoted(shown);
-      if (e.n) s += R"(,"answer":)" + quoted(answer);
-      else num("answer", e.a);
+      if (e.n)
+        s += R"(,"answer":)" + quoted(answer);
+      else
+        num("answer", e.a);
       break;
     }
     case EventKind::Screen:
@@ -415,11 +428,15 @@ class CanonSink final : public BufferedSink {
     // The processes of a run take turns: each turn says whose calls follow.
     if (e.process != process_) line(fmt::format("COMMENT(\"ncc: process {}\")", process_ = e.process));
     switch (e.kind) {
-      case EventKind::Units: line(e.n ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)"); break;
+      case EventKind::Units:
+        line(e.n ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)");
+        break;
       case EventKind::Plane:
         // LinuxCNC names the ZX plane XZ and has no others.
         if (e.plane == kPlanes[0] || e.plane == kPlanes[1] || e.plane == kPlanes[2])
-          line(fmt::format("SELECT_PLANE(CANON_PLANE_{})", e.plane == kPlanes[0] ? "XY" : e.plane == kPlanes[1] ? "XZ" : "YZ"));
+          line(fmt::format("SELECT_PLANE(CANON_PLANE_{})", e.plane == kPlanes[0]   ? "XY"
+                                                           : e.plane == kPlanes[1] ? "XZ"
+                                                                                   : "YZ"));
         else
           line(fmt::format("COMMENT(\"ncc: plane {}\")", plane_name(e.plane)));
         break;
@@ -438,8 +455,8 @@ class CanonSink final : public BufferedSink {
       case EventKind::Linear: line(fmt::format("STRAIGHT_FEED({})", axes_list(e.pos, 0))); break;
       case EventKind::Arc:
         line(fmt::format("ARC_FEED({}, {}, {}, {}, {}, {}, {})", canon_number(e.pos[e.plane.u]),
-                         canon_number(e.pos[e.plane.v]), canon_number(e.centre[0]), canon_number(e.centre[1]), e.rotation,
-                         canon_number(e.plane.w >= 0 ? e.pos[e.plane.w] : 0), axes_list(e.pos, 3)));
+                         canon_number(e.pos[e.plane.v]), canon_number(e.centre[0]), canon_number(e.centre[1]),
+                         e.rotation, canon_number(e.plane.w >= 0 ? e.pos[e.plane.w] : 0), axes_list(e.pos, 3)));
         break;
       case EventKind::Parabola:
         line(fmt::format("PARABOLA_FEED({}, {}, {}, {})", canon_number(e.control[0]), canon_number(e.control[1]),
@@ -475,8 +492,10 @@ class CanonSink final : public BufferedSink {
           line("MIST_OFF()");
           line("FLOOD_OFF()");
         } else {
-          if (e.n <= 2) line(e.n == 1 ? "MIST_ON()" : "FLOOD_ON()");
-          else line(fmt::format("COMMENT(\"ncc: coolant {}\")", kCoolants[e.n]));
+          if (e.n <= 2)
+            line(e.n == 1 ? "MIST_ON()" : "FLOOD_ON()");
+          else
+            line(fmt::format("COMMENT(\"ncc: coolant {}\")", kCoolants[e.n]));
         }
         break;
       case EventKind::OffsetLoad:  // a table entry: what is in force shows when it is selected
@@ -491,7 +510,8 @@ class CanonSink final : public BufferedSink {
       case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", json_escape(asset_text(e)))); break;
       case EventKind::Input: {
         const auto [shown, answer] = input_parts(e);
-        line(fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(shown), e.n ? json_escape(answer) : canon_number(e.a)));
+        line(fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(shown),
+                         e.n ? json_escape(answer) : canon_number(e.a)));
         break;
       }
       case EventKind::Screen: line(fmt::format("COMMENT(\"ncc: screen {}\")", json_escape(e.text))); break;
@@ -500,7 +520,8 @@ class CanonSink final : public BufferedSink {
       case EventKind::Tooling: line(fmt::format("COMMENT(\"ncc: tooling {}\")", json_escape(e.text))); break;
       case EventKind::Virtual: line(fmt::format("COMMENT(\"ncc: virtual {}\")", json_escape(e.text))); break;
       case EventKind::CompLoad:
-        line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a), canon_number(e.b)));
+        line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a),
+                         canon_number(e.b)));
         break;
       case EventKind::Override:
         line(e.n ? "ENABLE_FEED_OVERRIDE()" : "DISABLE_FEED_OVERRIDE()");
@@ -522,7 +543,8 @@ class CanonSink final : public BufferedSink {
         line(fmt::format("COMMENT(\"ncc: operator move to {}\")", axes_list(e.pos, 0)));
         break;
       case EventKind::Spline:
-        line(fmt::format("CUBIC_FEED({}, {}, {})", axes_list(e.control, 0), axes_list(e.control2, 0), axes_list(e.pos, 0)));
+        line(fmt::format("CUBIC_FEED({}, {}, {})", axes_list(e.control, 0), axes_list(e.control2, 0),
+                         axes_list(e.pos, 0)));
         break;
       case EventKind::Probe: line(fmt::format("STRAIGHT_PROBE({})", axes_list(e.pos, 0))); break;
       case EventKind::Origin: line(fmt::format("SET_G5X_OFFSET(0, {})", axes_list(e.pos, 0))); break;
@@ -532,9 +554,7 @@ class CanonSink final : public BufferedSink {
       case EventKind::Zone:
       case EventKind::Configuration:
       case EventKind::SpindleRange:
-      case EventKind::PartChange:
-        line(fmt::format("COMMENT(\"ncc: {}\")", event_name(e.kind)));
-        break;
+      case EventKind::PartChange: line(fmt::format("COMMENT(\"ncc: {}\")", event_name(e.kind))); break;
     }
   }
 

@@ -15,13 +15,13 @@
 namespace ncc {
 
 enum class EventKind : uint8_t {
-  Units,             // n: 0 mm, 1 inch
-  Plane,             // plane
-  FeedMode,          // n: 0 inverse time, 1 per minute, 2 per revolution
-  FeedRate,          // a: rate in program units
-  SpindleMode,       // n: 0 rpm, 1 constant surface speed
-  SpindleSpeed,      // a
-  SpindleOn,         // n: 1 clockwise, -1 counter-clockwise
+  Units,         // n: 0 mm, 1 inch
+  Plane,         // plane
+  FeedMode,      // n: 0 inverse time, 1 per minute, 2 per revolution
+  FeedRate,      // a: rate in program units
+  SpindleMode,   // n: 0 rpm, 1 constant surface speed
+  SpindleSpeed,  // a
+  SpindleOn,     // n: 1 clockwise, -1 counter-clockwise
   SpindleStop,
   SpindleOrient,     // a: angle
   Rapid,             // pos
@@ -48,32 +48,32 @@ enum class EventKind : uint8_t {
   OperatorMove,      // pos: where the operator left the tool (manual retract)
   End,               // n: 0 end of program, 1 end of information
   // NC-110.
-  Origin,            // pos: the program zero in machine coordinates
-  Transform,         // a: rotation (degrees); n: mirrored axes (bit per axis); pos: scale per axis
-  Tolerance,         // n: the axes set (bit per axis); pos: their in-position tolerance
-  Limits,            // n: the axes limited (bit per axis); pos: lower, control: upper limits
-  Zone,              // rotation: zone number; n: 0 off, 1 on, 2 defined; plane: its axes; pos: lower, control: upper
-  Configuration,     // n: 0 milling, 1 turning
-  Probe,             // pos: where the probe stopped; n: 1 contact, 0 none
-  Spline,            // pos = end; control, control2: the cubic Bezier control points of the span
-  SpindleRange,      // n: 0 none forced, -1 automatic, 1.. forced
+  Origin,         // pos: the program zero in machine coordinates
+  Transform,      // a: rotation (degrees); n: mirrored axes (bit per axis); pos: scale per axis
+  Tolerance,      // n: the axes set (bit per axis); pos: their in-position tolerance
+  Limits,         // n: the axes limited (bit per axis); pos: lower, control: upper limits
+  Zone,           // rotation: zone number; n: 0 off, 1 on, 2 defined; plane: its axes; pos: lower, control: upper
+  Configuration,  // n: 0 milling, 1 turning
+  Probe,          // pos: where the probe stopped; n: 1 contact, 0 none
+  Spline,         // pos = end; control, control2: the cubic Bezier control points of the span
+  SpindleRange,   // n: 0 none forced, -1 automatic, 1.. forced
   PartChange,
   // pp.
-  OffsetLoad,        // n: the work offset loaded (0: G53's); pos: its values
-  Diameter,          // n: 1 diameter programming, 0 radius programming
-  FeedReduction,     // n: 1 the feed is F / 100, 0 as programmed
-  Aux,               // text: the auxiliary function the machine's logic carries out ("M23", "H5")
-  Block,             // a block starts (--trace-blocks)
-  CompLoad,          // n: the compensation entry loaded; a: its length; b: its radius
+  OffsetLoad,     // n: the work offset loaded (0: G53's); pos: its values
+  Diameter,       // n: 1 diameter programming, 0 radius programming
+  FeedReduction,  // n: 1 the feed is F / 100, 0 as programmed
+  Aux,            // text: the auxiliary function the machine's logic carries out ("M23", "H5")
+  Block,          // a block starts (--trace-blocks)
+  CompLoad,       // n: the compensation entry loaded; a: its length; b: its radius
   // NC-110 ASSET file I/O.
-  Asset,             // text: the statement ("read 1 record 3"); n: its code of table 5.2, 0 when it worked
-  Input,             // text: the prompt and the value offered; a: the operator's answer (NC-110 INP);
-                     // n = 1: a text answered, after a line break in text
-  Screen,            // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
-  Sync,              // text: what a process did with the others: "restart process 2", "wait for process 1" (NC-110 chapter 4)
-  Graphic,           // text: the graphic display (NC-110 UCG, CLG, DCG): "field mode 2 X100..150 Y50..250", "clear", "off"
-  Tooling,           // text: the tool table or the probe changed (NC-110 RQU, RQP, TOF, DPT); n: what (kTooling*)
-  Virtual,           // text: virtual axes (NC-110 UAV): "polar X C as U V min radius 7.8782 at U80 V0 X80 C0", "off at ..."
+  Asset,    // text: the statement ("read 1 record 3"); n: its code of table 5.2, 0 when it worked
+  Input,    // text: the prompt and the value offered; a: the operator's answer (NC-110 INP);
+            // n = 1: a text answered, after a line break in text
+  Screen,   // text: what the user screen did: "on", "off", "field 2 row 3 column 19 "0"" (NC-110 SCR, OUT)
+  Sync,     // text: what a process did with the others: "restart process 2", "wait for process 1" (NC-110 chapter 4)
+  Graphic,  // text: the graphic display (NC-110 UCG, CLG, DCG): "field mode 2 X100..150 Y50..250", "clear", "off"
+  Tooling,  // text: the tool table or the probe changed (NC-110 RQU, RQP, TOF, DPT); n: what (kTooling*)
+  Virtual,  // text: virtual axes (NC-110 UAV): "polar X C as U V min radius 7.8782 at U80 V0 X80 C0", "off at ..."
 };
 
 inline bool is_move(EventKind k) { return k == EventKind::Rapid || k == EventKind::Linear || k == EventKind::Arc; }
@@ -93,7 +93,7 @@ struct Event {
   int n = 0;
   double a = 0, b = 0, c = 0;
   int rotation = 0;
-  uint16_t moved = 0;   // a move: bit i, axis i moves (an endless rotary axis may end where it began)
+  uint16_t moved = 0;  // a move: bit i, axis i moves (an endless rotary axis may end where it began)
   Plane plane;
   AxisValues pos{};
   double centre[2] = {0, 0};

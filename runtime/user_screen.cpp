@@ -156,7 +156,8 @@ std::string UserScreen::show_with(uint32_t field, const Content& content) {
   if (it == fields_.end()) return fmt::format("field {} is not defined (DEF)", field);
   Field& f = it->second;
   if (content.is_text != !numeric(f.format))
-    return fmt::format("field {} is of format {} ({}): {}", field, static_cast<int>(f.format), kFormatNames[static_cast<int>(f.format)],
+    return fmt::format("field {} is of format {} ({}): {}", field, static_cast<int>(f.format),
+                       kFormatNames[static_cast<int>(f.format)],
                        content.is_text ? "a number goes there, not a text" : "a text goes there, not a number");
   if (content.is_text && utf8_length(content.text) > static_cast<size_t>(f.width))
     return fmt::format("field {} holds {} characters, not {}", field, f.width, utf8_length(content.text));

@@ -32,7 +32,7 @@ struct Content {
 
 class UserScreen {
  public:
-  static constexpr int kRows = 20;        // DEF's rows 1..20 (the manual's 19 × 78 frame is one short)
+  static constexpr int kRows = 20;  // DEF's rows 1..20 (the manual's 19 × 78 frame is one short)
   static constexpr int kColumns = 78;
   static constexpr int kFieldColumns = 64;  // DEF's columns 1..64
 
@@ -44,9 +44,9 @@ class UserScreen {
 
   // Each returns "" when done, else why not (the program's error).
   // DEF: field n at row, column, its width from `init` or `format` (table 5.3).
-  std::string define(uint32_t field, int row, int column, const std::optional<Content>& init, std::optional<Format> format,
-                     Attributes attributes);
-  std::string show(uint32_t field, bool inverse);                  // OUT n, OUT -n
+  std::string define(uint32_t field, int row, int column, const std::optional<Content>& init,
+                     std::optional<Format> format, Attributes attributes);
+  std::string show(uint32_t field, bool inverse);                 // OUT n, OUT -n
   std::string show_all();                                         // OUT: the fields not shown yet
   std::string show_with(uint32_t field, const Content& content);  // OUT n, value
   // The text of field n, as its prompt (INP with a field number).

@@ -155,8 +155,10 @@ CuttingTable parse_cutting_table(std::string_view name, std::string_view text, s
         what = "the cutting speeds must be positive, VC_MIN <= VC_MAX";
       if (what.empty() && (c[7] != "-" || c[8] != "-")) {
         auto f_min = positive(c[7]), f_max = positive(c[8]);
-        if (!f_min || !f_max || *f_min > *f_max) what = "the feeds must be positive, F_MIN <= F_MAX (or both \"-\")";
-        else r.has_feed = true, r.f_min = *f_min, r.f_max = *f_max;
+        if (!f_min || !f_max || *f_min > *f_max)
+          what = "the feeds must be positive, F_MIN <= F_MAX (or both \"-\")";
+        else
+          r.has_feed = true, r.f_min = *f_min, r.f_max = *f_max;
       }
       if (!what.empty()) {
         problem(row.line, what);
@@ -172,9 +174,12 @@ CuttingTable parse_cutting_table(std::string_view name, std::string_view text, s
   // Every key a row names is defined; a pair's rows do not overlap in diameter.
   std::erase_if(out.rows, [&](const CuttingRow& r) {
     std::string what;
-    if (!out.tool(r.tool)) what = fmt::format("unknown tool kind '{}'", r.tool);
-    else if (!out.material(r.material)) what = fmt::format("unknown material '{}'", r.material);
-    else if (!out.source(r.source)) what = fmt::format("unknown source '{}'", r.source);
+    if (!out.tool(r.tool))
+      what = fmt::format("unknown tool kind '{}'", r.tool);
+    else if (!out.material(r.material))
+      what = fmt::format("unknown material '{}'", r.material);
+    else if (!out.source(r.source))
+      what = fmt::format("unknown source '{}'", r.source);
     if (!what.empty()) problem(r.line, what);
     return !what.empty();
   });

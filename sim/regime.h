@@ -39,9 +39,9 @@ struct CuttingSource {
 struct CuttingRow {
   std::string tool, material;
   double d_min = 0, d_max = std::numeric_limits<double>::infinity();  // mm; equal: a value at one diameter
-  double vc_min = 0, vc_max = 0;  // m/min
-  bool has_feed = false;          // false: the source gives a speed only
-  double f_min = 0, f_max = 0;    // mm per tooth or per revolution, as the tool kind says
+  double vc_min = 0, vc_max = 0;                                      // m/min
+  bool has_feed = false;                                              // false: the source gives a speed only
+  double f_min = 0, f_max = 0;  // mm per tooth or per revolution, as the tool kind says
   std::string source, note;
   uint32_t line = 0;  // in the table file
 };
@@ -85,28 +85,28 @@ CuttingTable parse_cutting_table(std::string_view name, std::string_view text, s
 CuttingTable load_cutting_table(std::vector<std::string>& errors);
 
 struct RegimeInput {
-  double diameter = 0;     // mm
-  int teeth = 1;           // cutting edges; 1 for a feed per revolution
-  double vc = 0;           // m/min
-  double feed = 0;         // mm per tooth (or per revolution with teeth = 1)
-  double max_rpm = 0;      // the machine's limits; 0: none
-  double max_feed = 0;     // mm/min
+  double diameter = 0;  // mm
+  int teeth = 1;        // cutting edges; 1 for a feed per revolution
+  double vc = 0;        // m/min
+  double feed = 0;      // mm per tooth (or per revolution with teeth = 1)
+  double max_rpm = 0;   // the machine's limits; 0: none
+  double max_feed = 0;  // mm/min
 };
 
 struct Regime {
-  double rpm_wanted = 0;    // 1000 Vc / (pi D)
-  double rpm = 0;           // after --max-rpm
-  double vc = 0;            // the cutting speed at `rpm` (lower when clamped)
-  double feed_wanted = 0;   // feed * teeth * rpm, at the clamped rpm
-  double feed_rate = 0;     // Vf after --max-feed, mm/min
-  double feed = 0;          // per tooth (revolution) at `feed_rate` (lower when clamped)
+  double rpm_wanted = 0;   // 1000 Vc / (pi D)
+  double rpm = 0;          // after --max-rpm
+  double vc = 0;           // the cutting speed at `rpm` (lower when clamped)
+  double feed_wanted = 0;  // feed * teeth * rpm, at the clamped rpm
+  double feed_rate = 0;    // Vf after --max-feed, mm/min
+  double feed = 0;         // per tooth (revolution) at `feed_rate` (lower when clamped)
   bool rpm_clamped = false;
   bool feed_clamped = false;
 };
 
-double spindle_speed(double vc, double diameter);             // rpm
-double cutting_speed(double rpm, double diameter);            // m/min
-double feed_rate(double feed, int teeth, double rpm);         // mm/min
+double spindle_speed(double vc, double diameter);      // rpm
+double cutting_speed(double rpm, double diameter);     // m/min
+double feed_rate(double feed, int teeth, double rpm);  // mm/min
 Regime compute_regime(const RegimeInput& in);
 
 // The words of a block that sets the regime, "S3183 M3 F764": S is the rpm rounded

@@ -15,9 +15,9 @@ namespace ncc::sim {
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kMargin = 48;   // px round the drawing
-constexpr double kTop = 72;      // px above it: the title, and room for the axes' letters
-constexpr double kLegend = 40;   // px below it
+constexpr double kMargin = 48;  // px round the drawing
+constexpr double kTop = 72;     // px above it: the title, and room for the axes' letters
+constexpr double kLegend = 40;  // px below it
 // Okabe and Ito's colours that read on white, then two of Tol's: a colour a tool.
 constexpr std::array<std::string_view, 8> kColours = {"#0072b2", "#d55e00", "#009e73", "#cc79a7",
                                                       "#e69f00", "#56b4e9", "#882255", "#44aa99"};
@@ -126,9 +126,10 @@ class Writer {
         "font-family=\"sans-serif\" font-size=\"12\">\n",
         width, height);
     out_ += "<title>" + xml(in_.title) + "</title>\n";
-    out_ += "<style>path{fill:none;vector-effect:non-scaling-stroke;stroke-width:1.2}"
-            ".r{stroke-dasharray:5 4;stroke-width:.8;opacity:.7}.p{stroke:#444;stroke-width:.6;opacity:.6}"
-            ".d{stroke-width:6;stroke-linecap:round}";
+    out_ +=
+        "<style>path{fill:none;vector-effect:non-scaling-stroke;stroke-width:1.2}"
+        ".r{stroke-dasharray:5 4;stroke-width:.8;opacity:.7}.p{stroke:#444;stroke-width:.6;opacity:.6}"
+        ".d{stroke-width:6;stroke-linecap:round}";
     for (size_t i = 0; i < kColours.size(); ++i) out_ += fmt::format(".c{}{{stroke:{}}}", i, kColours[i]);
     out_ += "</style>\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
     // The path in mm, y up: the numbers are the trace's.
@@ -179,8 +180,10 @@ class Writer {
     const Point from = project_(m.start), to = project_(m.end);
     // A cut straight into the view (a drilled hole seen from above) shows as a dot.
     const bool into = m.kind != MoveKind::Arc && std::fabs(from.h - to.h) < 1e-9 && std::fabs(from.v - to.v) < 1e-9;
-    if (m.programmed) out_ += 'p';
-    else out_ += fmt::format("{}c{}", m.kind == MoveKind::Rapid ? "r " : into ? "d " : "", colour(m.tool));
+    if (m.programmed)
+      out_ += 'p';
+    else
+      out_ += fmt::format("{}c{}", m.kind == MoveKind::Rapid ? "r " : into ? "d " : "", colour(m.tool));
     out_ += "\" d=\"";
     point(out_, 'M', from);
     const int facing = m.kind == MoveKind::Arc ? project_.facing(m.plane) : 0;
@@ -221,7 +224,8 @@ class Writer {
       const Point d = axis_direction(in_.view, i);
       if (d.h == 0 && d.v == 0) continue;
       const Point end{zero.h + 40 * d.h, zero.v - 40 * d.v};
-      out_ += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\"/>", zero.h, zero.v, end.h, end.v);
+      out_ +=
+          fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\"/>", zero.h, zero.v, end.h, end.v);
       out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" stroke=\"none\" text-anchor=\"middle\">{}</text>\n",
                           zero.h + 50 * d.h, zero.v - 50 * d.v + 4, "XYZ"[i]);
     }
@@ -236,29 +240,34 @@ class Writer {
     }
     for (const auto& [n, p] : zeros) {
       const Point s = screen(p);
-      out_ += fmt::format("<g stroke=\"#666\"><circle cx=\"{0:.1f}\" cy=\"{1:.1f}\" r=\"3\" fill=\"none\"/>"
-                          "<text x=\"{2:.1f}\" y=\"{3:.1f}\" stroke=\"none\" fill=\"#666\">zero {4}</text></g>\n",
-                          s.h, s.v, s.h + 6, s.v - 6, n < 0 ? std::string("of the program") : std::to_string(n));
+      out_ += fmt::format(
+          "<g stroke=\"#666\"><circle cx=\"{0:.1f}\" cy=\"{1:.1f}\" r=\"3\" fill=\"none\"/>"
+          "<text x=\"{2:.1f}\" y=\"{3:.1f}\" stroke=\"none\" fill=\"#666\">zero {4}</text></g>\n",
+          s.h, s.v, s.h + 6, s.v - 6, n < 0 ? std::string("of the program") : std::to_string(n));
     }
     // The legend: tools, then what the lines mean; the scale at the right.
     const double y = height - kLegend / 2;
     double x = kMargin;
     out_ += "<g id=\"legend\">\n";
     for (int tool : tools_) {
-      out_ += fmt::format("<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"/>",
-                          x, y - 4, x + 16, y - 4, kColours[static_cast<size_t>(colours_[tool])]);
-      out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", x + 20, y, tool ? fmt::format("T{}", tool) : "no tool");
+      out_ += fmt::format(
+          "<line x1=\"{:.1f}\" y1=\"{:.1f}\" x2=\"{:.1f}\" y2=\"{:.1f}\" stroke=\"{}\" stroke-width=\"3\"/>", x, y - 4,
+          x + 16, y - 4, kColours[static_cast<size_t>(colours_[tool])]);
+      out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\">{}</text>\n", x + 20, y,
+                          tool ? fmt::format("T{}", tool) : "no tool");
       x += 64;
     }
-    out_ += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#000\" "
-                        "stroke-dasharray=\"5 4\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\">rapid</text>\n",
-                        x, y - 4, x + 24, x + 28, y);
+    out_ += fmt::format(
+        "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#000\" "
+        "stroke-dasharray=\"5 4\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\">rapid</text>\n",
+        x, y - 4, x + 24, x + 28, y);
     x += 72;
     if (std::any_of(in_.path->moves.begin(), in_.path->moves.end(), [](const Move& m) { return m.programmed; }))
-      out_ += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#444\" "
-                          "opacity=\".6\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\">programmed path (the coloured one: the "
-                          "tool centre's)</text>\n",
-                          x, y - 4, x + 24, x + 28, y);
+      out_ += fmt::format(
+          "<line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#444\" "
+          "opacity=\".6\"/><text x=\"{3:.1f}\" y=\"{4:.1f}\">programmed path (the coloured one: the "
+          "tool centre's)</text>\n",
+          x, y - 4, x + 24, x + 28, y);
     // A scale of 1, 2 or 5 times a power of ten, 60 to 150 px long.
     double step = std::pow(10.0, std::floor(std::log10(60 / scale_)));
     for (double f : {1.0, 2.0, 5.0, 10.0})
@@ -267,9 +276,10 @@ class Writer {
         break;
       }
     const double right = kMargin + (hi_.h - lo_.h) * scale_;
-    out_ += fmt::format("<g id=\"scale\"><line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#000\" "
-                        "stroke-width=\"2\"/><text x=\"{2:.1f}\" y=\"{3:.1f}\" text-anchor=\"end\">",
-                        std::max(kMargin, right - step * scale_), y + 6, std::max(kMargin + step * scale_, right), y - 2);
+    out_ += fmt::format(
+        "<g id=\"scale\"><line x1=\"{0:.1f}\" y1=\"{1:.1f}\" x2=\"{2:.1f}\" y2=\"{1:.1f}\" stroke=\"#000\" "
+        "stroke-width=\"2\"/><text x=\"{2:.1f}\" y=\"{3:.1f}\" text-anchor=\"end\">",
+        std::max(kMargin, right - step * scale_), y + 6, std::max(kMargin + step * scale_, right), y - 2);
     number(out_, step);
     out_ += in_.view == View::Iso ? " mm in the view's plane</text></g>\n" : " mm</text></g>\n";
     out_ += fmt::format("<text x=\"{:.1f}\" y=\"{:.1f}\" font-weight=\"bold\">{}</text>\n</g>\n", kMargin, 24.0,
@@ -289,11 +299,16 @@ class Writer {
   static std::string xml(std::string_view s) {
     std::string out;
     for (char c : s) {
-      if (c == '<') out += "&lt;";
-      else if (c == '>') out += "&gt;";
-      else if (c == '&') out += "&amp;";
-      else if (c == '"') out += "&quot;";
-      else out += c;
+      if (c == '<')
+        out += "&lt;";
+      else if (c == '>')
+        out += "&gt;";
+      else if (c == '&')
+        out += "&amp;";
+      else if (c == '"')
+        out += "&quot;";
+      else
+        out += c;
     }
     return out;
   }
@@ -302,7 +317,7 @@ class Writer {
   Projection project_;
   Point lo_{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   Point hi_{-std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
-  double scale_ = 1;  // px per mm
+  double scale_ = 1;            // px per mm
   std::map<int, int> colours_;  // tool -> colour, in the order tools appear
   std::vector<int> tools_;
   std::string out_;
@@ -311,11 +326,16 @@ class Writer {
 }  // namespace
 
 bool parse_view(std::string_view name, View& out) {
-  if (name == "xy") out = View::XY;
-  else if (name == "xz") out = View::XZ;
-  else if (name == "yz") out = View::YZ;
-  else if (name == "iso") out = View::Iso;
-  else return false;
+  if (name == "xy")
+    out = View::XY;
+  else if (name == "xz")
+    out = View::XZ;
+  else if (name == "yz")
+    out = View::YZ;
+  else if (name == "iso")
+    out = View::Iso;
+  else
+    return false;
   return true;
 }
 

@@ -65,12 +65,12 @@ constexpr double kPi = std::numbers::pi;
 
 // A move's path as the clock sees it.
 struct Geometry {
-  double length = 0;          // mm; degrees for a move of rotary axes alone
+  double length = 0;  // mm; degrees for a move of rotary axes alone
   bool rotary_only = false;
-  AxisValues share{};         // per axis: the largest |d axis / d length| on the move
+  AxisValues share{};                 // per axis: the largest |d axis / d length| on the move
   AxisValues start_dir{}, end_dir{};  // unit tangents over every axis (degrees as mm)
-  double radius = 0;          // an arc's (0: straight)
-  double plane_share = 0;     // an arc: the part of the path speed in its plane
+  double radius = 0;                  // an arc's (0: straight)
+  double plane_share = 0;             // an arc: the part of the path speed in its plane
   int plane_u = 0, plane_v = 1;
 };
 
@@ -127,7 +127,7 @@ Geometry arc(const Move& m, const MachineConfig& machine) {
   const double start = std::atan2(m.start[v] - m.centre[1], m.start[u] - m.centre[0]);
   const double lo = std::min(start, start + sweep), hi = std::max(start, start + sweep);
   for (size_t i = 0; i < delta.size(); ++i) g.share[i] = std::abs(delta[i]) / g.length;
-  g.share[u] = g.plane_share * max_abs_sin(lo, hi);                    // u' = −sin φ
+  g.share[u] = g.plane_share * max_abs_sin(lo, hi);                      // u' = −sin φ
   g.share[v] = g.plane_share * max_abs_sin(lo + kPi / 2, hi + kPi / 2);  // v' = cos φ
   auto tangent = [&](double angle) {
     AxisValues t = delta;
@@ -158,11 +158,11 @@ double along_path(const AxisValues& share, const MachineConfig& machine, Limit l
 
 // One move of a process, as the planner drives it.
 struct Segment {
-  double length = 0;   // mm (degrees)
-  double cruise = 0;   // mm/s: the fastest it may go
+  double length = 0;                 // mm (degrees)
+  double cruise = 0;                 // mm/s: the fastest it may go
   double accel = kInf, jerk = kInf;  // mm/s², mm/s³ along the path
-  double entry_limit = 0;  // mm/s at its start: the junction's speed; 0 where the machine stands
-  bool constant = false;   // a thread: at `cruise` throughout
+  double entry_limit = 0;            // mm/s at its start: the junction's speed; 0 where the machine stands
+  bool constant = false;             // a thread: at `cruise` throughout
 };
 
 // The speed a move may not exceed: the feed or the rapid rates, the axes' limits, and
@@ -175,8 +175,8 @@ double cruise_speed(const Move& m, const Geometry& g, const MachineConfig& machi
   double speed = per_minute / 60;
   if (model != TimeModel::Feed && g.radius > 0) {
     const auto& axes = machine.axes;
-    double plane_accel = std::min(axes[static_cast<size_t>(g.plane_u)].acceleration,
-                                  axes[static_cast<size_t>(g.plane_v)].acceleration);
+    double plane_accel =
+        std::min(axes[static_cast<size_t>(g.plane_u)].acceleration, axes[static_cast<size_t>(g.plane_v)].acceleration);
     speed = std::min(speed, std::sqrt(plane_accel * g.radius) / g.plane_share);
   }
   return speed;
@@ -213,8 +213,8 @@ std::vector<double> plan_trapezoid(const std::vector<Segment>& segments) {
   const size_t n = segments.size();
   std::vector<double> speed(n + 1, 0);  // at the start of each segment; speed[n] at the end
   for (size_t i = n; i-- > 0;)
-    speed[i] = segments[i].constant ? 0
-                                    : std::min(segments[i].entry_limit, Trapezoid::reach(speed[i + 1], segments[i]));
+    speed[i] =
+        segments[i].constant ? 0 : std::min(segments[i].entry_limit, Trapezoid::reach(speed[i + 1], segments[i]));
   for (size_t i = 0; i < n; ++i)
     if (!segments[i].constant) speed[i + 1] = std::min(speed[i + 1], Trapezoid::reach(speed[i], segments[i]));
   std::vector<double> duration(n);
@@ -410,7 +410,6 @@ std::vector<double> plan(const std::vector<Segment>& segments) {
 
 }  // namespace scurve
 
-
 double pause_seconds(const Pause& pause, const MachineConfig& machine) {
   switch (pause.kind) {
     case Pause::Kind::Dwell: return std::max(0.0, pause.seconds);
@@ -462,8 +461,10 @@ CycleTime cycle_time(const Toolpath& path, const MachineConfig& machine, TimeMod
     }
     for (size_t p = 0; p < moves_of.size(); ++p) {
       Lane& l = lane(static_cast<uint8_t>(p));
-      if (model == TimeModel::Feed) l.duration.reserve(moves_of[p]);
-      else l.segments.reserve(moves_of[p]);
+      if (model == TimeModel::Feed)
+        l.duration.reserve(moves_of[p]);
+      else
+        l.segments.reserve(moves_of[p]);
     }
   }
 

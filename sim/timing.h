@@ -32,8 +32,8 @@ inline constexpr TimeModel kTimeModels[] = {TimeModel::Feed, TimeModel::Trapezoi
 
 struct CycleTime {
   TimeModel model = TimeModel::Feed;
-  double cutting = 0;  // s: lines, arcs, threads at feed
-  double rapid = 0;    // s
+  double cutting = 0;                              // s: lines, arcs, threads at feed
+  double rapid = 0;                                // s
   double tool_change = 0, dwell = 0, spindle = 0;  // s
   double auxiliary() const { return rapid + tool_change + dwell + spindle; }
   double total() const { return cutting + auxiliary(); }

@@ -9,9 +9,7 @@ namespace {
 constexpr double kInch = 25.4;
 constexpr int kMaxChords = 4096;  // of one parabola or spline span: a bound on the path's size, far below any tolerance
 
-bool is_linear(const MachineConfig& m, int axis) {
-  return m.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear;
-}
+bool is_linear(const MachineConfig& m, int axis) { return m.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear; }
 
 }  // namespace
 
@@ -54,15 +52,18 @@ void ToolpathSink::event(const Event& e) {
     case EventKind::FeedRate: feed_rate_ = e.a; break;
     case EventKind::FeedReduction: feed_reduced_ = e.n == 1; break;
     case EventKind::SpindleSpeed:
-      if (spindle_on_ && e.a != rpm_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, rpm_, e.a});
+      if (spindle_on_ && e.a != rpm_)
+        path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, rpm_, e.a});
       rpm_ = e.a;
       break;
     case EventKind::SpindleOn:
-      if (!spindle_on_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, 0, rpm_});
+      if (!spindle_on_)
+        path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, 0, rpm_});
       spindle_on_ = true;
       break;
     case EventKind::SpindleStop:
-      if (spindle_on_) path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, rpm_, 0});
+      if (spindle_on_)
+        path_.pauses.push_back({Pause::Kind::Spindle, e.process, count(), e.source, run_, 0, 0, rpm_, 0});
       spindle_on_ = false;
       break;
     case EventKind::Dwell: path_.pauses.push_back({Pause::Kind::Dwell, e.process, count(), e.source, run_, e.a}); break;
@@ -82,7 +83,8 @@ void ToolpathSink::event(const Event& e) {
       break;
     case EventKind::Stop:
     case EventKind::End:
-      if (e.kind == EventKind::End || e.n != 2) path_.pauses.push_back({Pause::Kind::Stop, e.process, count(), e.source, run_});
+      if (e.kind == EventKind::End || e.n != 2)
+        path_.pauses.push_back({Pause::Kind::Stop, e.process, count(), e.source, run_});
       break;
     case EventKind::PathMode: exact_stop_ = e.n == 6; break;
     case EventKind::WorkOffset:
@@ -186,8 +188,9 @@ void ToolpathSink::add_move(const Event& e, bool programmed) {
         Move chord = m;
         chord.start = at;
         for (int i = 0; i < kAxisCount; ++i)
-          chord.end[i] = cubic ? s * s * s * p[0][i] + 3 * s * s * t * p[1][i] + 3 * s * t * t * p[2][i] + t * t * t * p[3][i]
-                               : s * s * p[0][i] + 2 * s * t * p[1][i] + t * t * p[2][i];
+          chord.end[i] =
+              cubic ? s * s * s * p[0][i] + 3 * s * s * t * p[1][i] + 3 * s * t * t * p[2][i] + t * t * t * p[3][i]
+                    : s * s * p[0][i] + 2 * s * t * p[1][i] + t * t * p[2][i];
         if (k == n) chord.end = m.end;
         chord.feed = feed(move_length(chord, machine_));
         path_.moves.push_back(chord);

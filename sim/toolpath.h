@@ -23,13 +23,13 @@ enum class MoveKind : uint8_t {
 
 struct Move {
   MoveKind kind = MoveKind::Line;
-  bool programmed = false;  // the programmed path under cutter compensation (drawn beside the tool centre's)
-  uint8_t process = 0;      // NC-110 chapter 4: the process that moved
-  int tool = 0;             // the tool in the spindle (0: none)
-  uint32_t source = 0;      // SourceMap::blocks index of the block that moved
-  uint32_t run = 0;         // which run of a block, counted from 1 (0: the run gave no block events)
+  bool programmed = false;    // the programmed path under cutter compensation (drawn beside the tool centre's)
+  uint8_t process = 0;        // NC-110 chapter 4: the process that moved
+  int tool = 0;               // the tool in the spindle (0: none)
+  uint32_t source = 0;        // SourceMap::blocks index of the block that moved
+  uint32_t run = 0;           // which run of a block, counted from 1 (0: the run gave no block events)
   AxisValues start{}, end{};  // mm (linear axes), degrees (rotary)
-  double feed = 0;          // mm/min the program asks for (0: a rapid, or no feed); a thread's from its pitch
+  double feed = 0;            // mm/min the program asks for (0: a rapid, or no feed); a thread's from its pitch
   // Arc: the plane, the centre in its (u, v) axes, the radius, the sweep in degrees
   // (negative clockwise seen from +w, beyond 360 for several turns).
   Plane plane;
@@ -72,10 +72,10 @@ struct Toolpath {
   std::vector<Pause> pauses;
   std::vector<OffsetChange> offsets;
   std::vector<std::pair<int, double>> tool_radii;  // tool, radius in mm: the profile's or the compensation's
-  AxisValues origin{};  // machine coordinates of the work zero the positions are measured from (mm)
+  AxisValues origin{};                 // machine coordinates of the work zero the positions are measured from (mm)
   std::optional<uint32_t> stopped_at;  // the block with errors the path ends before (ToolpathSink::stop_at)
   std::optional<uint32_t> full_at;     // the block whose move found the path full (kMaxMoves)
-  std::string axes;     // the letters the machine has (conventions.axes)
+  std::string axes;                    // the letters the machine has (conventions.axes)
 
   double tool_radius(int tool) const;  // 0: unknown
 };
@@ -118,12 +118,12 @@ class ToolpathSink final : public TraceSink {
   const MachineConfig& machine_;
   double chord_tolerance_;
   size_t max_moves_;
-  double scale_ = 1;  // mm per program unit
+  double scale_ = 1;   // mm per program unit
   int feed_mode_ = 1;  // FeedMode's n
   double feed_rate_ = 0, rpm_ = 0;
   bool feed_reduced_ = false, exact_stop_ = false, spindle_on_ = false, flushed_ = false;
   int tool_ = 0;
-  uint32_t run_ = 0;  // the block events so far
+  uint32_t run_ = 0;    // the block events so far
   AxisValues at_[8]{};  // where each process's tool stands; NC-110 has 5
   AxisValues programmed_at_[8]{};
   std::vector<bool> errors_;

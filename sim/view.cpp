@@ -55,11 +55,11 @@
 namespace ncc::sim {
 namespace {
 
-constexpr double kUnit = 1e-4;            // mm per integer of the page's positions
-constexpr size_t kLongestMerge = 64;      // moves in one record at most (the check is quadratic)
-constexpr double kMaxCells = 1e6;         // of the height map
+constexpr double kUnit = 1e-4;        // mm per integer of the page's positions
+constexpr size_t kLongestMerge = 64;  // moves in one record at most (the check is quadratic)
+constexpr double kMaxCells = 1e6;     // of the height map
 constexpr uint32_t kNone = std::numeric_limits<uint32_t>::max();
-constexpr size_t kFeedTable = 4096;       // feeds a record names by their entry (more: written out)
+constexpr size_t kFeedTable = 4096;  // feeds a record names by their entry (more: written out)
 
 std::string_view embedded(std::span<const view_files::EmbeddedFile> files, std::string_view path) {
   for (const auto& f : files)
@@ -94,8 +94,10 @@ void json_string(std::string& out, std::string_view s) {
       case '>': out += "\\u003e"; break;
       case '&': out += "\\u0026"; break;
       default:
-        if (c < 0x20 || c == 0x7f) out += fmt::format("\\u{:04x}", c);
-        else out += static_cast<char>(c);
+        if (c < 0x20 || c == 0x7f)
+          out += fmt::format("\\u{:04x}", c);
+        else
+          out += static_cast<char>(c);
     }
     ++i;
   }
@@ -135,7 +137,8 @@ double nice_at_least(double x) {
 }
 
 // Distance from p to the segment a-b.
-double segment_distance(const std::array<double, 3>& p, const std::array<double, 3>& a, const std::array<double, 3>& b) {
+double segment_distance(const std::array<double, 3>& p, const std::array<double, 3>& a,
+                        const std::array<double, 3>& b) {
   double d[3], w[3], dd = 0, wd = 0;
   for (int i = 0; i < 3; ++i) {
     d[i] = b[i] - a[i];
@@ -160,7 +163,7 @@ bool moves_in_xyz_only(const Move& m) {
 
 struct Step {
   uint32_t source = 0, run = 0;  // the block, and which run of it (Move::run)
-  uint32_t first = 0, end = 0;  // its moves: PageData::order_ [first, end)
+  uint32_t first = 0, end = 0;   // its moves: PageData::order_ [first, end)
   uint32_t records = 0;
 };
 
@@ -219,7 +222,7 @@ class PageData {
     const auto& pauses = path_.pauses;
     order_.reserve(moves.size());
     step_of_move_.assign(moves.size(), 0);
-    std::vector<uint32_t> waiting;  // programmed moves, in order
+    std::vector<uint32_t> waiting;   // programmed moves, in order
     auto take = [&](size_t count) {  // the first `count` waiting moves join the step open
       for (size_t k = 0; k < count; ++k) join_step(waiting[k]);
       waiting.erase(waiting.begin(), waiting.begin() + static_cast<std::ptrdiff_t>(count));
@@ -495,7 +498,8 @@ class PageData {
       for (int i = 0; i < 3; ++i) item += ',' + shortest(o.values[i]);
       add(offsets, item + ']');
     }
-    out_ += "],\"files\":" + files + "],\"tools_at\":" + tools + "],\"notes\":" + notes + "],\"offsets\":" + offsets + ']';
+    out_ +=
+        "],\"files\":" + files + "],\"tools_at\":" + tools + "],\"notes\":" + notes + "],\"offsets\":" + offsets + ']';
   }
 
   template <typename Add>
@@ -553,12 +557,12 @@ class PageData {
   std::vector<Step> steps_;
   std::vector<uint32_t> order_;         // the moves, step after step
   std::vector<uint32_t> step_of_move_;  // the step (from 1) of each move
-  std::vector<uint32_t> pause_step_;  // the step (from 1) of each pause
-  std::array<Units, 16> lanes_{};     // where each lane's last record ended
+  std::vector<uint32_t> pause_step_;    // the step (from 1) of each pause
+  std::array<Units, 16> lanes_{};       // where each lane's last record ended
   uint8_t process_ = 0;
   int tool_ = 0;
   double feed_ = 0;
-  std::vector<double> feeds_;             // the feed table, in the order first used
+  std::vector<double> feeds_;  // the feed table, in the order first used
   std::map<double, size_t> feed_index_;
   bool first_value_ = true;
   size_t records_ = 0;

@@ -28,12 +28,12 @@ struct ViewDiagnostic {
 
 struct ViewInput {
   const Toolpath* path = nullptr;
-  std::vector<CycleTime> times;           // one per model, from cycle_time()
-  std::vector<ViewBlock> blocks;          // indexed by Move::source and Pause::source
-  std::vector<ViewSource> sources;        // indexed by ViewBlock::file
+  std::vector<CycleTime> times;     // one per model, from cycle_time()
+  std::vector<ViewBlock> blocks;    // indexed by Move::source and Pause::source
+  std::vector<ViewSource> sources;  // indexed by ViewBlock::file
   std::vector<ViewDiagnostic> diagnostics;
   double stock_min[3] = {0, 0, 0}, stock_max[3] = {0, 0, 0};  // mm, the stock box (empty: none drawn)
-  std::string title;    // the file name
+  std::string title;                                          // the file name
   std::string dialect;
   double tolerance = 0.01;  // mm: straight moves of a block merge when no corner leaves their chord by more (0: none)
   double grid = 0;          // mm: height-map cell (0: from the stock's size; see view_grid)

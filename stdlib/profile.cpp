@@ -232,7 +232,8 @@ void Profile::report_unused(Diagnostics& diags, const std::vector<std::string_vi
   std::vector<std::string> leaves;
   collect_leaves(user_->table, "", leaves);
   for (const std::string& key : leaves) {
-    if (std::find(others.begin(), others.end(), std::string_view(key).substr(0, key.find('.'))) != others.end()) continue;
+    if (std::find(others.begin(), others.end(), std::string_view(key).substr(0, key.find('.'))) != others.end())
+      continue;
     // A key is used if it, a table holding it, or a key inside it was looked up.
     auto child = used_.lower_bound(key + ".");
     bool used = child != used_.end() && child->compare(0, key.size() + 1, key + ".") == 0;
@@ -251,8 +252,8 @@ void Profile::report_unused(Diagnostics& diags, const std::vector<std::string_vi
 namespace {
 
 // {X = 1, Y = 2}: the axes given and their values; `extra` keys may stand beside them.
-bool axis_values(const Profile& p, const std::string& key, AxisValues& out, Diagnostics& diags, uint32_t* given = nullptr,
-                 std::initializer_list<std::string_view> extra = {}) {
+bool axis_values(const Profile& p, const std::string& key, AxisValues& out, Diagnostics& diags,
+                 uint32_t* given = nullptr, std::initializer_list<std::string_view> extra = {}) {
   std::vector<std::string> keys = p.keys(key);
   bool ok = true;
   for (const std::string& letter : keys) {
@@ -288,8 +289,10 @@ std::optional<int> table_number(const Profile& p, const std::string& table, cons
 // A number that must be greater than zero (a rate, a time, a distance).
 void read_positive(const Profile& p, const std::string& key, double& out, Diagnostics& diags) {
   if (auto v = p.number(key, diags)) {
-    if (*v > 0) out = *v;
-    else p.report_value(diags, key, "must be greater than zero");
+    if (*v > 0)
+      out = *v;
+    else
+      p.report_value(diags, key, "must be greater than zero");
   }
 }
 
@@ -312,10 +315,14 @@ void read_axes(const Profile& p, MachineConfig& m, Diagnostics& diags) {
     }
     AxisConfig& a = m.axes[static_cast<size_t>(i)];
     if (auto v = p.string(base + ".kind", diags)) {
-      if (*v == "linear") a.kind = AxisKind::Linear;
-      else if (*v == "rotary") a.kind = AxisKind::Rotary;
-      else if (*v == "indexing") a.kind = AxisKind::Indexing;
-      else p.report_value(diags, base + ".kind", "must be linear, rotary or indexing");
+      if (*v == "linear")
+        a.kind = AxisKind::Linear;
+      else if (*v == "rotary")
+        a.kind = AxisKind::Rotary;
+      else if (*v == "indexing")
+        a.kind = AxisKind::Indexing;
+      else
+        p.report_value(diags, base + ".kind", "must be linear, rotary or indexing");
     }
     auto positive = [&](const char* key, double& out) { read_positive(p, base + "." + key, out, diags); };
     positive("step", a.index_step);
@@ -356,7 +363,8 @@ void read_stock(const Profile& p, StockConfig& stock, Diagnostics& diags) {
   for (int i = 0; i < 2; ++i) {
     const std::string key = i == 0 ? "stock.min" : "stock.max";
     uint32_t given = 0;
-    if (!axis_values(p, key, corner[i], diags, &given)) ok = false;
+    if (!axis_values(p, key, corner[i], diags, &given))
+      ok = false;
     else if (given != kXYZ) {
       p.report_value(diags, key, "must give X, Y and Z in mm and no other axis, e.g. { X = 0.0, Y = 0.0, Z = -20.0 }");
       ok = false;
@@ -365,8 +373,9 @@ void read_stock(const Profile& p, StockConfig& stock, Diagnostics& diags) {
   if (!ok) return;
   for (int axis = 0; axis < 3; ++axis)
     if (!(corner[0][axis] < corner[1][axis])) {
-      p.report_value(diags, "stock.max", fmt::format("must be above stock.min on every axis ({}: {} is not above {})",
-                                                     kAxisLetters[axis], corner[1][axis], corner[0][axis]));
+      p.report_value(diags, "stock.max",
+                     fmt::format("must be above stock.min on every axis ({}: {} is not above {})", kAxisLetters[axis],
+                                 corner[1][axis], corner[0][axis]));
       return;
     }
   stock.set = true;
@@ -380,8 +389,10 @@ void read_asset(const Profile& p, AssetConfig& asset, Diagnostics& diags) {
   auto whole = [&](const char* key, auto lo, auto hi, auto& out) {
     const std::string name = std::string("asset.") + key;
     if (auto v = p.number(name, diags)) {
-      if (auto n = whole_in<std::remove_reference_t<decltype(out)>>(*v, lo, hi)) out = *n;
-      else p.report_value(diags, name, fmt::format("must be a whole number from {} to {}", lo, hi));
+      if (auto n = whole_in<std::remove_reference_t<decltype(out)>>(*v, lo, hi))
+        out = *n;
+      else
+        p.report_value(diags, name, fmt::format("must be a whole number from {} to {}", lo, hi));
     }
   };
   whole("channels", 1u, 255u, asset.channels);
@@ -401,14 +412,19 @@ void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
     ProbeContact c;
     if (p.is_string(key)) {
       auto v = p.string(key, diags);
-      if (v && *v == "none") c.kind = ProbeContact::Kind::None;
-      else p.report_value(diags, key, "must be \"none\" or a table such as { X = 10.02 }");
+      if (v && *v == "none")
+        c.kind = ProbeContact::Kind::None;
+      else
+        p.report_value(diags, key, "must be \"none\" or a table such as { X = 10.02 }");
     } else if (!p.keys(key + ".centre").empty() || p.number(key + ".radius", diags)) {
       c.kind = ProbeContact::Kind::Circle;
       axis_values(p, key + ".centre", c.point, diags, &c.axes);
-      if (std::popcount(c.axes) != 2) p.report_value(diags, key + ".centre", "must give the centre's two coordinates, e.g. { X = 1, Y = 2 }");
-      if (auto r = p.number(key + ".radius", diags); r && *r > 0) c.radius = *r;
-      else p.report_value(diags, key + ".radius", "must be greater than zero");
+      if (std::popcount(c.axes) != 2)
+        p.report_value(diags, key + ".centre", "must give the centre's two coordinates, e.g. { X = 1, Y = 2 }");
+      if (auto r = p.number(key + ".radius", diags); r && *r > 0)
+        c.radius = *r;
+      else
+        p.report_value(diags, key + ".radius", "must be greater than zero");
     } else {
       axis_values(p, key, c.point, diags, &c.axes);
     }
@@ -424,29 +440,41 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   if (auto v = p.boolean("machine.block_skip", diags)) m.block_skip = *v;
   if (auto v = p.boolean("machine.optional_stop", diags)) m.optional_stop = *v;
   if (auto v = p.number("machine.processes", diags)) {
-    if (auto n = whole_in<uint8_t>(*v, 1, 5)) m.processes = *n;
-    else p.report_value(diags, "machine.processes", "must be a whole number from 1 to 5");
+    if (auto n = whole_in<uint8_t>(*v, 1, 5))
+      m.processes = *n;
+    else
+      p.report_value(diags, "machine.processes", "must be a whole number from 1 to 5");
   }
   if (auto v = p.number("machine.look_ahead", diags)) {
-    if (auto n = whole_in<uint32_t>(*v, 1, 64)) m.look_ahead = *n;
-    else p.report_value(diags, "machine.look_ahead", "must be a whole number of blocks from 1 to 64");
+    if (auto n = whole_in<uint32_t>(*v, 1, 64))
+      m.look_ahead = *n;
+    else
+      p.report_value(diags, "machine.look_ahead", "must be a whole number of blocks from 1 to 64");
   }
   if (auto v = p.number("machine.gtl_tolerance", diags)) {
-    if (*v > 0 && *v <= 1) m.gtl_tolerance = *v;
-    else p.report_value(diags, "machine.gtl_tolerance", "must be a distance in mm greater than 0 and at most 1");
+    if (*v > 0 && *v <= 1)
+      m.gtl_tolerance = *v;
+    else
+      p.report_value(diags, "machine.gtl_tolerance", "must be a distance in mm greater than 0 and at most 1");
   }
   if (auto v = p.number("limits.run_memory_mib", diags)) {
-    if (auto n = whole_in<uint64_t>(*v, 1, 1 << 20)) m.run_memory = *n << 20;
-    else p.report_value(diags, "limits.run_memory_mib", "must be a whole number of MiB from 1 to 1048576");
+    if (auto n = whole_in<uint64_t>(*v, 1, 1 << 20))
+      m.run_memory = *n << 20;
+    else
+      p.report_value(diags, "limits.run_memory_mib", "must be a whole number of MiB from 1 to 1048576");
   }
   if (auto v = p.boolean("machine.spindle_encoder", diags)) m.spindle_encoder = *v;
   if (auto v = p.number("machine.max_rpm", diags)) {
-    if (*v >= 0) m.max_rpm = *v;
-    else p.report_value(diags, "machine.max_rpm", "must not be negative");
+    if (*v >= 0)
+      m.max_rpm = *v;
+    else
+      p.report_value(diags, "machine.max_rpm", "must not be negative");
   }
   if (auto v = p.number("machine.tap_min_travel", diags)) {
-    if (*v >= 0) m.tap_min_travel = *v;
-    else p.report_value(diags, "machine.tap_min_travel", "must not be negative");
+    if (*v >= 0)
+      m.tap_min_travel = *v;
+    else
+      p.report_value(diags, "machine.tap_min_travel", "must not be negative");
   }
   if (auto v = p.string("machine.turning_plane", diags); v && !v->empty()) {
     m.turning_plane = plane_of(*v);
@@ -460,8 +488,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     WorkOffset w;
     if (!n || !axis_values(p, base, w.values, diags, &w.axes, {"unit"})) continue;
     if (auto unit = p.string(base + ".unit", diags)) {
-      if (*unit == "inch" || *unit == "mm") w.inch = *unit == "inch";
-      else p.report_value(diags, base + ".unit", "must be mm or inch");
+      if (*unit == "inch" || *unit == "mm")
+        w.inch = *unit == "inch";
+      else
+        p.report_value(diags, base + ".unit", "must be mm or inch");
     }
     m.work_offsets[*n] = w;
   }
@@ -482,8 +512,10 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
       }
     }
     if (auto v = p.number("tools." + key + ".corrector", diags)) {
-      if (auto c = whole_in(*v, 1, 9999)) t.corrector = *c;
-      else p.report_value(diags, "tools." + key + ".corrector", "must be a corrector 1..9999");
+      if (auto c = whole_in(*v, 1, 9999))
+        t.corrector = *c;
+      else
+        p.report_value(diags, "tools." + key + ".corrector", "must be a corrector 1..9999");
     }
     m.tools[*n] = t;
   }
@@ -494,19 +526,26 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
     std::string base = "offsets." + key;
     if (auto v = p.number(base + ".length", diags)) o.length = *v;
     if (auto v = p.number(base + ".radius", diags)) {
-      if (*v >= 0) o.radius = *v;
-      else p.report_value(diags, base + ".radius", "must not be negative");
+      if (*v >= 0)
+        o.radius = *v;
+      else
+        p.report_value(diags, base + ".radius", "must not be negative");
     }
     if (auto v = p.string(base + ".axis", diags)) {
-      if (v->size() == 1 && axis_index((*v)[0]) >= 0) o.axis = (*v)[0];
-      else p.report_value(diags, base + ".axis", "must be one axis letter");
+      if (v->size() == 1 && axis_index((*v)[0]) >= 0)
+        o.axis = (*v)[0];
+      else
+        p.report_value(diags, base + ".axis", "must be one axis letter");
     }
     if (auto v = p.number(base + ".wear_length", diags)) o.wear_length = *v;
     if (auto v = p.number(base + ".wear_diameter", diags)) o.wear_diameter = *v;
-    for (auto [key_name, max] : {std::pair{".max_wear_length", &o.max_wear_length}, {".max_wear_diameter", &o.max_wear_diameter}})
+    for (auto [key_name, max] :
+         {std::pair{".max_wear_length", &o.max_wear_length}, {".max_wear_diameter", &o.max_wear_diameter}})
       if (auto v = p.number(base + key_name, diags)) {
-        if (*v >= 0) *max = *v;
-        else p.report_value(diags, base + key_name, "must not be negative");
+        if (*v >= 0)
+          *max = *v;
+        else
+          p.report_value(diags, base + key_name, "must not be negative");
       }
     m.offsets[*n] = o;
   }

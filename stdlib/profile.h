@@ -26,8 +26,7 @@ class Profile {
   // with their location; the result is empty on error.
   static std::optional<Profile> load(SourceManager& sources, const std::string& path, Diagnostics& diags);
   // Parses profile text already in memory (e.g. stored in a bytecode file).
-  static std::optional<Profile> parse(SourceManager& sources, std::string name, std::string text,
-                                      Diagnostics& diags);
+  static std::optional<Profile> parse(SourceManager& sources, std::string name, std::string text, Diagnostics& diags);
 
   const std::string& name() const { return name_; }
   const std::string& text() const { return text_; }  // the user's text; "" for the default

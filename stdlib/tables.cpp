@@ -60,7 +60,8 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
     const auto& c = row.cells;
     AddressEntry a;
     a.letter = c[0].size() == 1 ? c[0][0] : 0;
-    bool ok = (a.letter >= 'A' && a.letter <= 'Z') || (a.letter >= 'a' && a.letter <= 'z') || a.letter == '&';  // pp's link
+    bool ok =
+        (a.letter >= 'A' && a.letter <= 'Z') || (a.letter >= 'a' && a.letter <= 'z') || a.letter == '&';  // pp's link
     ok = ok && pick(c[1],
                     {{"dimension", WordClass::Dimension},
                      {"angular", WordClass::Angular},
@@ -79,8 +80,11 @@ void read_addresses(const Table& table, std::map<char, AddressEntry>& out, Diagn
       repeat = "several";
     }
     ok = ok && pick(repeat,
-                    {{"once", Repeat::Once}, {"group", Repeat::Group}, {"several", Repeat::Several},
-                     {"feed", Repeat::Feed}, {"twice", Repeat::Twice}},
+                    {{"once", Repeat::Once},
+                     {"group", Repeat::Group},
+                     {"several", Repeat::Several},
+                     {"feed", Repeat::Feed},
+                     {"twice", Repeat::Twice}},
                     a.repeat);
     auto order = parse_number<int>(c[3]);
     ok = ok && order && (c.size() == 5 || c.size() == 7);
@@ -135,9 +139,9 @@ Table parse_table(std::string name, std::string_view text, size_t columns, Diagn
     } else if (!row.cells.empty()) {
       if (row.cells.size() < columns || row.cells.size() > max_columns)
         report(diags, table, line_no,
-               columns == max_columns ? fmt::format("expected {} columns, found {}", columns, row.cells.size())
-                                      : fmt::format("expected {} to {} columns, found {}", columns, max_columns,
-                                                    row.cells.size()));
+               columns == max_columns
+                   ? fmt::format("expected {} columns, found {}", columns, row.cells.size())
+                   : fmt::format("expected {} to {} columns, found {}", columns, max_columns, row.cells.size()));
       else
         table.rows.push_back(std::move(row));
     }
@@ -210,7 +214,8 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
     const auto& c = row.cells;
     CodeEntry e;
     e.letter = letter;
-    auto number = c[0].size() > 1 && c[0][0] == letter ? parse_number<int>(std::string_view(c[0]).substr(1)) : std::nullopt;
+    auto number =
+        c[0].size() > 1 && c[0][0] == letter ? parse_number<int>(std::string_view(c[0]).substr(1)) : std::nullopt;
     if (!number || *number < 0 || *number > 999) {
       report(diags, table, row.line, fmt::format("'{}' is not a {} code", c[0], letter));
       continue;
@@ -244,8 +249,8 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
     bool restorable = true;
     for (const FnCall& call : e.desc.calls) {
       FnGroup g = fn_group(call.fn);
-      restorable = restorable && g != FnGroup::Mist && g != FnGroup::Flood && g != FnGroup::Clamp &&
-                   g != FnGroup::RotaryClamp;
+      restorable =
+          restorable && g != FnGroup::Mist && g != FnGroup::Flood && g != FnGroup::Clamp && g != FnGroup::RotaryClamp;
     }
     if (e.desc.scope == Scope::Block && !restorable) {
       report(diags, table, row.line, "a block-only code cannot switch coolant or clamps: use a modal code");
@@ -276,12 +281,22 @@ DialectTables read_dialect_tables(std::string_view dialect, Diagnostics& diags) 
       CyclePattern p;
       p.name = c[0];
       using P = CyclePattern;
-      bool ok = pick(c[1], {{"feed", P::In::Feed}, {"peck", P::In::Peck}, {"spindle_feed", P::In::SpindleFeed},
-                            {"chip_break", P::In::ChipBreak}, {"tap_cw", P::In::TapCw}, {"tap_ccw", P::In::TapCcw},
-                            {"back", P::In::Back}}, p.in);
+      bool ok = pick(c[1],
+                     {{"feed", P::In::Feed},
+                      {"peck", P::In::Peck},
+                      {"spindle_feed", P::In::SpindleFeed},
+                      {"chip_break", P::In::ChipBreak},
+                      {"tap_cw", P::In::TapCw},
+                      {"tap_ccw", P::In::TapCcw},
+                      {"back", P::In::Back}},
+                     p.in);
       ok = ok && pick(c[2], {{"yes", true}, {"no", false}}, p.dwell);
-      ok = ok && pick(c[3], {{"-", P::Bottom::None}, {"reverse", P::Bottom::Reverse}, {"stop", P::Bottom::Stop},
-                             {"orient_shift", P::Bottom::OrientShift}}, p.bottom);
+      ok = ok && pick(c[3],
+                      {{"-", P::Bottom::None},
+                       {"reverse", P::Bottom::Reverse},
+                       {"stop", P::Bottom::Stop},
+                       {"orient_shift", P::Bottom::OrientShift}},
+                      p.bottom);
       ok = ok && pick(c[4], {{"rapid", P::Out::Rapid}, {"feed", P::Out::Feed}, {"manual", P::Out::Manual}}, p.out);
       if (!ok) {
         report(diags, *table, row.line, "malformed cycle row");
@@ -290,8 +305,10 @@ DialectTables read_dialect_tables(std::string_view dialect, Diagnostics& diags) 
       t.cycles.push_back(std::move(p));
     }
   }
-  if (auto table = load_table(dialect, "g_codes.tsv", 5, diags)) read_code_table(*table, 'G', t.cycles, t.g_codes, diags);
-  if (auto table = load_table(dialect, "m_codes.tsv", 6, diags)) read_code_table(*table, 'M', t.cycles, t.m_codes, diags);
+  if (auto table = load_table(dialect, "g_codes.tsv", 5, diags))
+    read_code_table(*table, 'G', t.cycles, t.g_codes, diags);
+  if (auto table = load_table(dialect, "m_codes.tsv", 6, diags))
+    read_code_table(*table, 'M', t.cycles, t.m_codes, diags);
   if (auto table = load_table(dialect, "power_on.tsv", 3, diags)) {
     for (const TableRow& row : table->rows) {
       auto& list = t.power_on[row.cells[0]];
@@ -306,7 +323,8 @@ DialectTables read_dialect_tables(std::string_view dialect, Diagnostics& diags) 
     if (auto table = load_table(dialect, "congruence.tsv", 2, diags)) {
       auto g_number = [&](const std::string& cell, uint32_t line) -> std::optional<int> {
         auto n = cell.size() > 1 && cell[0] == 'G' ? parse_number<int>(std::string_view(cell).substr(1)) : std::nullopt;
-        if (!n || !t.g_codes.count(*n)) report(diags, *table, line, fmt::format("'{}' is not a G code of the table", cell));
+        if (!n || !t.g_codes.count(*n))
+          report(diags, *table, line, fmt::format("'{}' is not a G code of the table", cell));
         return n && t.g_codes.count(*n) ? n : std::nullopt;
       };
       for (const TableRow& row : table->rows) {
@@ -327,8 +345,10 @@ DialectTables read_dialect_tables(std::string_view dialect, Diagnostics& diags) 
   }
   if (auto table = load_table(dialect, "citations.tsv", 2, diags)) {
     for (const TableRow& row : table->rows) {
-      if (auto id = diag_by_name(row.cells[0])) t.citations[*id] = row.cells[1];
-      else report(diags, *table, row.line, fmt::format("unknown diagnostic '{}'", row.cells[0]));
+      if (auto id = diag_by_name(row.cells[0]))
+        t.citations[*id] = row.cells[1];
+      else
+        report(diags, *table, row.line, fmt::format("unknown diagnostic '{}'", row.cells[0]));
     }
   }
   return t;

@@ -77,7 +77,7 @@ struct DialectTables {
   std::map<char, AddressEntry> addresses;
   // G codes that must not share a block (a compatibility matrix, NC-110 Table 2.4):
   // pairs of G numbers, both orders. Empty when the dialect has no matrix.
-  CodePairs incompatible;  // printed pairs and class pairs (add_class_pairs)
+  CodePairs incompatible;          // printed pairs and class pairs (add_class_pairs)
   CodePairs printed_incompatible;  // the matrix as the manual prints it
   std::map<int, CodeEntry> g_codes;
   std::map<int, CodeEntry> m_codes;

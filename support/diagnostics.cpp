@@ -63,14 +63,19 @@ Excerpt make_excerpt(std::string_view line, uint32_t col, uint32_t end_col) {
   if (begin > 0) e.text = "...";
   const size_t prefix = e.text.size();
   size_t width = 0, stop = begin;
-  for (; stop < line.size() && width < kWindow; ) {
+  for (; stop < line.size() && width < kWindow;) {
     const Printed p = printed_at(line, stop);
     const unsigned char c = static_cast<unsigned char>(line[stop]);
-    if (p.width == 4) e.text += fmt::format("\\x{:02X}", c);
-    else if (c < 0x20 || c == 0x7F) e.text += ' ';
-    else e.text.append(line.substr(stop, p.length));
-    if (stop < start) e.caret_col += p.width;
-    else if (stop < end) e.caret_len += p.width;
+    if (p.width == 4)
+      e.text += fmt::format("\\x{:02X}", c);
+    else if (c < 0x20 || c == 0x7F)
+      e.text += ' ';
+    else
+      e.text.append(line.substr(stop, p.length));
+    if (stop < start)
+      e.caret_col += p.width;
+    else if (stop < end)
+      e.caret_len += p.width;
     width += p.width;
     stop += p.length;
   }
@@ -120,7 +125,8 @@ uint32_t char_column(const SourceManager& sources, const SourceRange& r, uint32_
 
 std::string sarif_region(const SourceManager& sources, const SourceRange& r) {
   return fmt::format(R"({{"startLine":{},"startColumn":{},"endLine":{},"endColumn":{}}})", r.line,
-                     char_column(sources, r, r.col, r.line), r.end_line, char_column(sources, r, r.end_col, r.end_line));
+                     char_column(sources, r, r.col, r.line), r.end_line,
+                     char_column(sources, r, r.end_col, r.end_line));
 }
 
 std::string sarif_level(Severity s) {
@@ -188,7 +194,8 @@ std::string format_text(const Diagnostic& d, const SourceManager& sources, bool 
   std::string out;
   if (color)
     out = fmt::format("\033[1m{}: {}{}:\033[0m \033[1m{}\033[0m [{}]\n", location_text(d.range, sources),
-                      severity_color(d.severity), severity_name(d.severity), escape_invalid_utf8(d.message), diag_code(d.id));
+                      severity_color(d.severity), severity_name(d.severity), escape_invalid_utf8(d.message),
+                      diag_code(d.id));
   else
     out = fmt::format("{}: {}: {} [{}]\n", location_text(d.range, sources), severity_name(d.severity),
                       escape_invalid_utf8(d.message), diag_code(d.id));
@@ -223,8 +230,10 @@ std::string json_escape(std::string_view s, bool quotes) {
       case '\r': out += "\\r"; break;
       case '\t': out += "\\t"; break;
       default:
-        if (c < 0x20 || c == 0x7F) out += fmt::format("\\u{:04x}", c);
-        else out += static_cast<char>(c);
+        if (c < 0x20 || c == 0x7F)
+          out += fmt::format("\\u{:04x}", c);
+        else
+          out += static_cast<char>(c);
     }
   }
   return out;
@@ -253,19 +262,20 @@ std::string format_all(const std::vector<Diagnostic>& list, const SourceManager&
       std::vector<DiagId> rules;
       for (const Diagnostic& d : list)
         if (std::find(rules.begin(), rules.end(), d.id) == rules.end()) rules.push_back(d.id);
-      out += R"({"$schema":"https://json.schemastore.org/sarif-2.1.0.json","version":"2.1.0","runs":[{"tool":{"driver":{"name":"ncc","informationUri":"https://example.invalid/ncc","rules":[)";
+      out +=
+          R"({"$schema":"https://json.schemastore.org/sarif-2.1.0.json","version":"2.1.0","runs":[{"tool":{"driver":{"name":"ncc","informationUri":"https://example.invalid/ncc","rules":[)";
       for (size_t i = 0; i < rules.size(); ++i)
-        out += fmt::format(R"({}{{"id":"{}","name":"{}"}})", i ? "," : "", diag_code(rules[i]),
-                           diag_info(rules[i]).name);
+        out +=
+            fmt::format(R"({}{{"id":"{}","name":"{}"}})", i ? "," : "", diag_code(rules[i]), diag_info(rules[i]).name);
       out += "]}},\"columnKind\":\"unicodeCodePoints\",\"results\":[";
       for (size_t i = 0; i < list.size(); ++i) {
         const Diagnostic& d = list[i];
-        out += fmt::format(R"({}{{"ruleId":"{}","level":"{}","message":{{"text":"{}"}})", i ? "," : "",
-                           diag_code(d.id), sarif_level(d.severity), json_escape(d.message));
+        out += fmt::format(R"({}{{"ruleId":"{}","level":"{}","message":{{"text":"{}"}})", i ? "," : "", diag_code(d.id),
+                           sarif_level(d.severity), json_escape(d.message));
         if (d.range.valid() && d.range.file < sources.size())
-          out += fmt::format(
-              R"(,"locations":[{{"physicalLocation":{{"artifactLocation":{{"uri":"{}"}},"region":{}}}}}])",
-              json_escape(sources.file(d.range.file).path()), sarif_region(sources, d.range));
+          out +=
+              fmt::format(R"(,"locations":[{{"physicalLocation":{{"artifactLocation":{{"uri":"{}"}},"region":{}}}}}])",
+                          json_escape(sources.file(d.range.file).path()), sarif_region(sources, d.range));
         if (!d.notes.empty()) {
           out += R"(,"relatedLocations":[)";
           for (size_t k = 0; k < d.notes.size(); ++k) {

@@ -14,8 +14,7 @@ namespace ncc {
 // The whole number `v` is, if it lies in [lo, hi]; none for a fraction, a NaN, an
 // infinity or a value outside.
 template <std::integral T>
-  requires(!std::same_as<T, bool>)
-std::optional<T> whole_in(double v, T lo, T hi) {
+requires(!std::same_as<T, bool>) std::optional<T> whole_in(double v, T lo, T hi) {
   // T's whole range as doubles, both ends exact: [min, 2^digits).
   constexpr double kMin = static_cast<double>(std::numeric_limits<T>::min());
   constexpr double kEnd = 2.0 * static_cast<double>(std::numeric_limits<T>::max() / 2 + 1);

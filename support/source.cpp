@@ -48,11 +48,16 @@ std::optional<std::string> read_file(const std::string& path, const FileLimit& l
   }
   struct stat st;
   error = 0;
-  if (::fstat(fd, &st) != 0) error = errno;
-  else if (S_ISDIR(st.st_mode)) error = EISDIR;
-  else if (S_ISREG(st.st_mode) && static_cast<uint64_t>(st.st_size) > limit.bytes) error = EFBIG;
-  else if (!S_ISREG(st.st_mode) && limit.regular_only) error = EINVAL;
-  else if (::fcntl(fd, F_SETFL, 0) != 0) error = errno;  // reads wait again
+  if (::fstat(fd, &st) != 0)
+    error = errno;
+  else if (S_ISDIR(st.st_mode))
+    error = EISDIR;
+  else if (S_ISREG(st.st_mode) && static_cast<uint64_t>(st.st_size) > limit.bytes)
+    error = EFBIG;
+  else if (!S_ISREG(st.st_mode) && limit.regular_only)
+    error = EINVAL;
+  else if (::fcntl(fd, F_SETFL, 0) != 0)
+    error = errno;  // reads wait again
   std::string text;
   // A regular file's size is known: one allocation, read into; then whatever else
   // comes (a file that grew, a pipe) in pieces, up to one byte past the limit.
@@ -62,7 +67,8 @@ std::optional<std::string> read_file(const std::string& path, const FileLimit& l
   while (!error) {
     const bool room = have < text.size();
     if (!room) piece.resize(1 << 16);
-    const ssize_t n = room ? ::read(fd, text.data() + have, text.size() - have) : ::read(fd, piece.data(), piece.size());
+    const ssize_t n =
+        room ? ::read(fd, text.data() + have, text.size() - have) : ::read(fd, piece.data(), piece.size());
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) error = errno;
     if (n <= 0) break;

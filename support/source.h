@@ -20,9 +20,7 @@ struct SourceRange {
   uint32_t end_col = 0;  // exclusive
 
   bool valid() const { return line != 0; }
-  static SourceRange point(uint32_t file, uint32_t line, uint32_t col) {
-    return {file, line, col, line, col + 1};
-  }
+  static SourceRange point(uint32_t file, uint32_t line, uint32_t col) { return {file, line, col, line, col + 1}; }
 };
 
 class SourceFile {

@@ -19,7 +19,6 @@ static_assert(std::size(kFormatNames) == static_cast<size_t>(MemFormat::Count));
 constexpr std::string_view kTypeNames[] = {"long_real", "real", "byte", "integer", "long", "thousandths"};
 static_assert(std::size(kTypeNames) == kShownTypes);
 
-
 std::string source_text(const Module& m, uint32_t source) {
   if (source >= m.source_map.size()) return "?";
   const SourceBlock b = m.source_map.block(source);
@@ -80,7 +79,9 @@ std::string disassemble(const Module& m) {
   for (size_t i = 0; i < m.semantics.codes.size(); ++i) {
     const CodeDesc& c = m.semantics.codes[i];
     out += fmt::format(";   c{:<3} {:<6} {}{} {}\n", i, c.name, c.scope == Scope::Block ? "block" : "modal",
-                       c.timing == Timing::Before ? " before" : c.timing == Timing::After ? " after" : "",
+                       c.timing == Timing::Before  ? " before"
+                       : c.timing == Timing::After ? " after"
+                                                   : "",
                        calls_text(c));
   }
   out += "; power-on:";
@@ -118,7 +119,8 @@ std::string disassemble(const Module& m) {
       operands += operand_text(m, operand_kind(f), v, places);
     }
     // A name of ten letters or more keeps a blank before its operands.
-    out += fmt::format("{:5}  {:<10}{}{}\n", pc, info.name, info.name.size() >= 10 && !operands.empty() ? " " : "", operands);
+    out += fmt::format("{:5}  {:<10}{}{}\n", pc, info.name, info.name.size() >= 10 && !operands.empty() ? " " : "",
+                       operands);
     pc = at;
   }
   return out;

@@ -1,12 +1,12 @@
 #include "module.h"
 
-#include <algorithm>
-#include <cmath>
-#include <array>
-#include <map>
-#include <cerrno>
-#include <cstring>
 #include <unistd.h>
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <map>
 
 #include "contract/asset_files.h"
 #include "contract/builtins.h"
@@ -423,7 +423,8 @@ bool OperandRanges::fits_Number(uint32_t v) { return v < m_.numbers.size(); }
 // The ASSET statements name their file by a string: a name the store takes (the VM
 // prints it in the trace as it is).
 bool OperandRanges::fits_String(uint32_t v) {
-  const bool file = op_ == Op::AssetOpen || op_ == Op::AssetOpenWrite || op_ == Op::AssetCreate || op_ == Op::AssetDelete;
+  const bool file =
+      op_ == Op::AssetOpen || op_ == Op::AssetOpenWrite || op_ == Op::AssetCreate || op_ == Op::AssetDelete;
   return v < m_.strings.size() && (!file || asset::parse_file_name(m_.strings[v], 1));
 }
 bool OperandRanges::fits_Code(uint32_t v) { return v < m_.semantics.codes.size(); }
@@ -587,7 +588,8 @@ std::optional<Module> read_module(ModuleInput& in, const std::string& name, Diag
     return std::nullopt;
   }
   if (bytes.size() < kHeaderSize) {
-    diags.report(DiagId::BytecodeUnreadable, {}, name, fmt::format("it is shorter than the {}-byte header", kHeaderSize));
+    diags.report(DiagId::BytecodeUnreadable, {}, name,
+                 fmt::format("it is shorter than the {}-byte header", kHeaderSize));
     return std::nullopt;
   }
   ByteReader header(bytes.substr(4, kHeaderSize - 4));
@@ -617,11 +619,14 @@ std::optional<Module> read_module(ModuleInput& in, const std::string& name, Diag
     }
     ByteReader r({tag_size, sizeof tag_size});
     const uint32_t t = r.u32(), size = r.u32();
-    if (size > in.remaining()) problem = fmt::format("section {} is truncated", i);
+    if (size > in.remaining())
+      problem = fmt::format("section {} is truncated", i);
     else if (std::find(kSections.begin(), kSections.end(), t) == kSections.end())
       problem = fmt::format("unknown section '{}'", tag_name(t));
-    else if (seen[t]) problem = fmt::format("section '{}' appears twice", tag_name(t));
-    else if (i >= kSections.size() || kSections[i] != t) problem = fmt::format("section '{}' is out of order", tag_name(t));
+    else if (seen[t])
+      problem = fmt::format("section '{}' appears twice", tag_name(t));
+    else if (i >= kSections.size() || kSections[i] != t)
+      problem = fmt::format("section '{}' is out of order", tag_name(t));
     if (!problem.empty()) break;
     seen[t] = true;
     bool ok = false;
@@ -679,8 +684,7 @@ std::string verify(const Module& m) {
   if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
       !letter_ok(c.pitch_change_word) || !letter_ok(c.radius_word) || !letter_ok(c.peck_factor_word) ||
       !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word) || !letter_ok(c.comp_length_word) ||
-      !letter_ok(c.comp_radius_word) ||
-      !std::all_of(c.aux_words.begin(), c.aux_words.end(), letter_ok))
+      !letter_ok(c.comp_radius_word) || !std::all_of(c.aux_words.begin(), c.aux_words.end(), letter_ok))
     return "a convention names an address that is not a letter";
   if (c.diameter_axis && kAxisLetters.find(c.diameter_axis) == std::string_view::npos)
     return "the diameter axis is not an axis";
@@ -690,7 +694,8 @@ std::string verify(const Module& m) {
   for (const std::string* axes : {&c.axes, &c.tool_offset_axes, &c.link_axes})
     for (size_t i = 0; i < axes->size(); ++i)
       if (kAxisLetters.find((*axes)[i]) == std::string_view::npos || axes->find((*axes)[i]) != i)
-        return fmt::format("'{}' in \"{}\" is not an axis, or appears twice", printable(axes->substr(i, 1)), printable(*axes));
+        return fmt::format("'{}' in \"{}\" is not an axis, or appears twice", printable(axes->substr(i, 1)),
+                           printable(*axes));
   if (!(c.arc_tolerance >= 0 && std::isfinite(c.arc_tolerance)) ||
       !(c.lead_resolution >= 0 && std::isfinite(c.lead_resolution)) ||
       !(c.dwell_seconds_per_unit > 0 && std::isfinite(c.dwell_seconds_per_unit)))
@@ -718,23 +723,27 @@ std::string verify(const Module& m) {
       if (call.fn >= Fn::Count) return fmt::format("code {} calls unknown function {}", code.name, int(call.fn));
       if (call.fn == Fn::Cycle && call.arg >= s.cycles.size())
         return fmt::format("code {} names cycle {} of {}", code.name, call.arg, s.cycles.size());
-      if (call.fn == Fn::WorkOffset && call.arg > 99) return fmt::format("code {} names offset {}", code.name, call.arg);
+      if (call.fn == Fn::WorkOffset && call.arg > 99)
+        return fmt::format("code {} names offset {}", code.name, call.arg);
     }
   for (uint16_t i : s.power_on)
     if (i >= s.codes.size()) return fmt::format("power-on state names code {} of {}", i, s.codes.size());
   for (const NumberedCode& n : s.numbered)
     if (n.code >= s.codes.size() || n.slot >= kWordSlots) return "a numbered code names a code that does not exist";
   for (const CodePair& p : s.incompatible)
-    if (p.a >= s.codes.size() || p.b >= s.codes.size()) return "the compatibility matrix names a code that does not exist";
+    if (p.a >= s.codes.size() || p.b >= s.codes.size())
+      return "the compatibility matrix names a code that does not exist";
   for (const ValueRule& rule : s.value_rules)
-    if (!(rule.lo <= rule.hi) || !std::isfinite(rule.lo) || !std::isfinite(rule.hi)) return "a value rule has no values";
+    if (!(rule.lo <= rule.hi) || !std::isfinite(rule.lo) || !std::isfinite(rule.hi))
+      return "a value rule has no values";
   uint64_t variables = 0;
   for (const VarSpace& space : m.spaces) {
     variables += space.size;
     if (!(space.limit >= 0 && std::isfinite(space.limit))) return fmt::format("space {} has a bad limit", space.name);
     if (space.locals && space.memory) return fmt::format("memory {} cannot be local to a call", space.name);
     if (space.locals > space.size) return fmt::format("space {} has more local variables than variables", space.name);
-    if (space.vacant && (space.memory || space.size == 0)) return fmt::format("space {} cannot start vacant", space.name);
+    if (space.vacant && (space.memory || space.size == 0))
+      return fmt::format("space {} cannot start vacant", space.name);
   }
   if (variables > kMaxVariables) return fmt::format("the variable spaces hold more than {} values", kMaxVariables);
   if (c.result_space != kNoSpace && (c.result_space >= m.spaces.size() || m.spaces[c.result_space].memory))
@@ -754,7 +763,7 @@ std::string verify(const Module& m) {
   // Instructions: every opcode known, every operand in range.
   const std::vector<uint8_t>& code = m.code;
   std::vector<std::pair<uint32_t, uint32_t>> jumps;  // (pc, target)
-  std::vector<uint32_t> range_ends;                   // second targets of CallRange
+  std::vector<uint32_t> range_ends;                  // second targets of CallRange
   for (size_t pc = 0; pc < code.size();) {
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
     Op op = static_cast<Op>(code[pc]);
@@ -769,8 +778,10 @@ std::string verify(const Module& m) {
       if (!ranges.fits(operand_kind(f), v))
         return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
       if (operand_kind(f) == Operand::Target) {
-        if (op == Op::CallRange && ranges.targets == 2) range_ends.push_back(v);
-        else jumps.emplace_back(static_cast<uint32_t>(pc), v);
+        if (op == Op::CallRange && ranges.targets == 2)
+          range_ends.push_back(v);
+        else
+          jumps.emplace_back(static_cast<uint32_t>(pc), v);
       }
     }
     pc += size;
@@ -803,7 +814,9 @@ std::string verify(const Module& m) {
 
   // Every loop and every call passes a Step, so --max-steps bounds every run: a
   // jump backwards, and every entry point, lands on a Step.
-  auto at_boundary = [&](uint32_t pc) { return pc < code.size() && !std::binary_search(between.begin(), between.end(), pc); };
+  auto at_boundary = [&](uint32_t pc) {
+    return pc < code.size() && !std::binary_search(between.begin(), between.end(), pc);
+  };
   auto at_step = [&](uint32_t pc) { return at_boundary(pc) && code[pc] == static_cast<uint8_t>(Op::Step); };
   for (auto [from, to] : jumps) {
     if (!at_boundary(to)) return fmt::format("a jump goes to {}, which is not an instruction", to);
@@ -813,7 +826,8 @@ std::string verify(const Module& m) {
   for (const Entry& e : m.entries) {
     if (!at_step(e.pc)) return fmt::format("entry point {} does not start with a Step", printable(e.name));
     if ((e.processes & started) || e.processes >> kMaxProcesses || (e.processes && e.kind != EntryKind::Process))
-      return fmt::format("entry point {} starts in processes {:#x}, one of them taken or none of a process entry's", printable(e.name), e.processes);
+      return fmt::format("entry point {} starts in processes {:#x}, one of them taken or none of a process entry's",
+                         printable(e.name), e.processes);
     started |= e.processes;
   }
   for (uint32_t end : range_ends)

@@ -20,7 +20,7 @@ namespace ncc::vm {
 constexpr uint16_t kFormatVersion = 12;
 constexpr uint32_t kMaxStack = 256;
 constexpr uint64_t kMaxVariables = 1u << 24;  // all spaces together
-constexpr uint8_t kMaxProcesses = 5;           // NC-110 chapter 4
+constexpr uint8_t kMaxProcesses = 5;          // NC-110 chapter 4
 
 // A Process entry is a program that runs in a process of its own (NC-110 EXE, chapter 4).
 enum class EntryKind : uint8_t { Program, MainBlock, Subprogram, Process };

@@ -106,9 +106,7 @@ Processes::Turn Processes::step() {
       case RunStatus::Yield:
       case RunStatus::Blocked: break;
       case RunStatus::Error: return Turn::Error;
-      case RunStatus::UnitEnded:
-        s.machine->end_of_unit(setup_.module.source_of(s.vm->pc()));
-        [[fallthrough]];
+      case RunStatus::UnitEnded: s.machine->end_of_unit(setup_.module.source_of(s.vm->pc())); [[fallthrough]];
       case RunStatus::ProgramEnd: s.running = i == 0 && next_program(s); break;
       case RunStatus::EndOfInformation:
       case RunStatus::Released: s.running = false; break;
@@ -123,7 +121,8 @@ Processes::Turn Processes::step() {
   // as met, else a deadlock.
   Slot* waiter = nullptr;  // the first that waits for a condition
   for (auto [time, i] : order)
-    if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->vm->pc()]) == Op::ProcWaitUntil) waiter = slots_[i].get();
+    if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->vm->pc()]) == Op::ProcWaitUntil)
+      waiter = slots_[i].get();
   if (waiter && !setup_.plc.empty()) {
     const PlcWrite w = setup_.plc.front();
     setup_.plc.pop_front();
@@ -183,17 +182,20 @@ uint8_t Processes::number(double process, uint32_t pc, const char* what) {
   std::string why;
   const std::optional<uint8_t> n = whole_in<uint8_t>(process, 1, static_cast<uint8_t>(slots_.size()));
   if (!n)
-    why = fmt::format("{} names no process: the machine has processes 1 to {} (machine.processes)", what, slots_.size());
+    why =
+        fmt::format("{} names no process: the machine has processes 1 to {} (machine.processes)", what, slots_.size());
   else if (*n == current_)
     why = fmt::format("{} names the process that runs it", what);
   if (why.empty()) return *n;
-  setup_.issues.issue({DiagId::ProcessError, diag_message(DiagId::ProcessError, shortest(process), why), setup_.module.source_of(pc)});
+  setup_.issues.issue(
+      {DiagId::ProcessError, diag_message(DiagId::ProcessError, shortest(process), why), setup_.module.source_of(pc)});
   return 0;
 }
 
 // (A process a partner met already waits only to run again.)
 bool Processes::waits_at(const Slot& s, Op op, uint8_t partner) const {
-  return s.running && s.vm->waiting() && !s.delivered && static_cast<Op>(setup_.module.code[s.vm->pc()]) == op && s.vm->blocked_operand() == partner;
+  return s.running && s.vm->waiting() && !s.delivered && static_cast<Op>(setup_.module.code[s.vm->pc()]) == op &&
+         s.vm->blocked_operand() == partner;
 }
 
 // EXE: the program starts when its process is free (decision 63), at the time of
@@ -220,7 +222,9 @@ double Processes::remaining(int process, int axis) {
 
 // WAI n and SND n meet (a rendezvous, decision 63): whichever comes first waits for
 // the other; both go on, at the later of their times.
-ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) { return meet(process, pc, "(WAI)", Op::ProcSignal); }
+ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) {
+  return meet(process, pc, "(WAI)", Op::ProcSignal);
+}
 
 ProcessHost::Answer Processes::signal(double process, uint32_t pc) { return meet(process, pc, "(SND)", Op::ProcWait); }
 
@@ -258,14 +262,17 @@ void Processes::deadlock() {
     condition = condition || op == Op::ProcWaitUntil;
     // The process it waits for may run nothing, and never will.
     const double partner = s.vm->blocked_operand();
-    const bool idle = (op == Op::ProcWait || op == Op::ProcSignal) && partner >= 1 && partner <= static_cast<double>(slots_.size()) &&
+    const bool idle = (op == Op::ProcWait || op == Op::ProcSignal) && partner >= 1 &&
+                      partner <= static_cast<double>(slots_.size()) &&
                       !(slots_[static_cast<size_t>(partner) - 1] && slots_[static_cast<size_t>(partner) - 1]->running);
-    issue.notes.push_back({source, fmt::format("process {} waits here: {}{}", i + 1, s.vm->waits(),
-                                               idle ? fmt::format(" (process {} runs no program)", shortest(partner)) : "")});
+    issue.notes.push_back(
+        {source, fmt::format("process {} waits here: {}{}", i + 1, s.vm->waits(),
+                             idle ? fmt::format(" (process {} runs no program)", shortest(partner)) : "")});
   }
-  issue.message = diag_message(DiagId::Deadlock, condition ? "every process that runs waits, and the input script has no PLC signal left "
-                                                                       "(ncc run --input FILE: a line such as SA12=1)"
-                                                           : "every process that runs waits for another");
+  issue.message = diag_message(DiagId::Deadlock,
+                               condition ? "every process that runs waits, and the input script has no PLC signal left "
+                                           "(ncc run --input FILE: a line such as SA12=1)"
+                                         : "every process that runs waits for another");
   setup_.issues.issue(issue);
 }
 

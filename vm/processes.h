@@ -56,8 +56,8 @@ class Processes final : public ProcessHost, public RemainingPaths {
   Turn step();
   void finish(bool ok);
   const Machine* machine(uint8_t process) const;  // none before it runs
-  bool running() const;  // a process has a program to go on with
-  std::optional<uint32_t> next_source() const;     // the block process 1 runs next (none: it ended)
+  bool running() const;                           // a process has a program to go on with
+  std::optional<uint32_t> next_source() const;    // the block process 1 runs next (none: it ended)
   uint64_t steps() const;
   const screen::UserScreen& user_screen() const { return shared_.screen; }
 
@@ -69,10 +69,10 @@ class Processes final : public ProcessHost, public RemainingPaths {
 
  private:
   struct Slot;
-  Slot& slot(uint8_t n);                     // made (its machine powered on) at first use
+  Slot& slot(uint8_t n);                                          // made (its machine powered on) at first use
   uint8_t number(double process, uint32_t pc, const char* what);  // 0: not a process (reported)
   bool waits_at(const Slot& s, Op op, uint8_t partner) const;     // s is blocked at `op` naming `partner`
-  bool next_program(Slot& s);                 // process 1: the next program on the medium
+  bool next_program(Slot& s);                                     // process 1: the next program on the medium
   void deadlock();
   Answer meet(double process, uint32_t pc, const char* what, Op partner);
 
@@ -81,7 +81,7 @@ class Processes final : public ProcessHost, public RemainingPaths {
   SharedState shared_;
   asset::OpenFiles open_files_;
   std::vector<std::unique_ptr<Slot>> slots_;  // index = process number - 1
-  uint8_t current_ = 1;  // the process whose turn it is
+  uint8_t current_ = 1;                       // the process whose turn it is
   bool assume_ = false;
 };
 

@@ -54,7 +54,9 @@ double first_byte(double index, MemFormat f) {
   return f == MemFormat::Bit ? static_cast<double>(*i / 8) : static_cast<double>(*i) * mem_size(f);
 }
 // The bit in its byte of bit `index`, which first_byte() has found in the memory.
-uint32_t bit_of(double index) { return static_cast<uint32_t>(whole_in<uint64_t>(index, 0, UINT64_MAX).value_or(0) % 8); }
+uint32_t bit_of(double index) {
+  return static_cast<uint32_t>(whole_in<uint64_t>(index, 0, UINT64_MAX).value_or(0) % 8);
+}
 
 // How DIS shows a value of each type (NC-110 D20).
 std::string show(VarType type, double v) {
@@ -72,7 +74,8 @@ std::string show(VarType type, double v) {
 }  // namespace
 
 Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions options)
-    : m_(module), machine_(machine), issues_(issues), options_(options), shared_(options.shared ? *options.shared : own_) {
+    : m_(module), machine_(machine), issues_(issues), options_(options),
+      shared_(options.shared ? *options.shared : own_) {
   const bool fresh = shared_.memories.empty();
   for (const VarSpace& s : m_.spaces) {
     vars_.emplace_back(s.memory ? 0 : s.size, s.vacant ? kVacant : 0.0);
@@ -105,7 +108,8 @@ std::optional<uint32_t> Vm::variable(uint8_t space, double index, uint32_t pc) {
   if (!i)
     fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)),
          s.size ? fmt::format("{}: 0 to {}", s.name, s.size - 1) : fmt::format("{}, which has no variables", s.name));
-  else if (type_at(space, *i) == VarType::Unavailable) return (fail(pc, DiagId::VariableNumber, *i), std::nullopt);
+  else if (type_at(space, *i) == VarType::Unavailable)
+    return (fail(pc, DiagId::VariableNumber, *i), std::nullopt);
   return i;
 }
 
@@ -163,12 +167,13 @@ bool Vm::load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double&
 bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   double v = value;
-  static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real,
-                                       VarType::LongReal};
+  static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer,
+                                       VarType::Long, VarType::Real, VarType::LongReal};
   bool fits = f == MemFormat::Bit ? (v == 0 || v == 1) : convert_value(kTypes[static_cast<int>(f)], 0, v);
   if (!fits) {
     static constexpr const char* kNames[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
-    fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
+    fail(pc, DiagId::ValueOverflow, shortest(value),
+         fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
     return false;
   }
   uint8_t* p = bytes(space, first_byte(index, f), mem_size(f), pc);
@@ -216,7 +221,7 @@ void Vm::restore_locals(const std::vector<double>& saved) {
 void Vm::look_ahead() {
   const size_t n = options_.look_ahead;
   if (ends_.empty()) ends_.assign(n, 0);
-  const uint64_t k = steps_ + 1;  // this block, counted from 1
+  const uint64_t k = steps_ + 1;                     // this block, counted from 1
   if (k > 1) ends_[(k - 2) % n] = machine_.clock();  // the block before ended its motion then
   eval_ += kBlockCycle;
   if (k > n) eval_ = std::max(eval_, ends_[(k - 1) % n]);
@@ -231,7 +236,8 @@ size_t Vm::calls() const {
 // A jump that leaves the range being run ends it (NC-110 §2.13.2.3).
 void Vm::jump_to(uint32_t target) {
   Process& p = process_;
-  while (!p.frames.empty() && p.frames.back().range && (target < p.frames.back().start || target > p.frames.back().end)) {
+  while (!p.frames.empty() && p.frames.back().range &&
+         (target < p.frames.back().start || target > p.frames.back().end)) {
     if (p.loops.size() > p.frames.back().loops) p.loops.resize(p.frames.back().loops);
     p.frames.pop_back();
   }
@@ -300,9 +306,21 @@ RunStatus Vm::resume() {
       }
       case Op::Neg: st.back() = -st.back(); break;
       case Op::Not: st.back() = st.back() == 0; break;
-      case Op::Add: { double b = pop(); st.back() += b; break; }
-      case Op::Sub: { double b = pop(); st.back() -= b; break; }
-      case Op::Mul: { double b = pop(); st.back() *= b; break; }
+      case Op::Add: {
+        double b = pop();
+        st.back() += b;
+        break;
+      }
+      case Op::Sub: {
+        double b = pop();
+        st.back() -= b;
+        break;
+      }
+      case Op::Mul: {
+        double b = pop();
+        st.back() *= b;
+        break;
+      }
       case Op::Div: {
         double b = pop();
         if (b == 0) return fail(pc, DiagId::DivisionByZero);
@@ -323,15 +341,51 @@ RunStatus Vm::resume() {
         break;
       }
       // Two vacant values are equal (Macro B: `#1 EQ #0` is true when #1 is vacant).
-      case Op::Eq: { double b = pop(); st.back() = st.back() == b || (std::isnan(b) && std::isnan(st.back())); break; }
-      case Op::Ne: { double b = pop(); st.back() = !(st.back() == b || (std::isnan(b) && std::isnan(st.back()))); break; }
-      case Op::Lt: { double b = pop(); st.back() = st.back() < b; break; }
-      case Op::Le: { double b = pop(); st.back() = st.back() <= b; break; }
-      case Op::Gt: { double b = pop(); st.back() = st.back() > b; break; }
-      case Op::Ge: { double b = pop(); st.back() = st.back() >= b; break; }
-      case Op::And: { double b = pop(); st.back() = st.back() != 0 && b != 0; break; }
-      case Op::Or: { double b = pop(); st.back() = st.back() != 0 || b != 0; break; }
-      case Op::Xor: { double b = pop(); st.back() = (st.back() != 0) != (b != 0); break; }
+      case Op::Eq: {
+        double b = pop();
+        st.back() = st.back() == b || (std::isnan(b) && std::isnan(st.back()));
+        break;
+      }
+      case Op::Ne: {
+        double b = pop();
+        st.back() = !(st.back() == b || (std::isnan(b) && std::isnan(st.back())));
+        break;
+      }
+      case Op::Lt: {
+        double b = pop();
+        st.back() = st.back() < b;
+        break;
+      }
+      case Op::Le: {
+        double b = pop();
+        st.back() = st.back() <= b;
+        break;
+      }
+      case Op::Gt: {
+        double b = pop();
+        st.back() = st.back() > b;
+        break;
+      }
+      case Op::Ge: {
+        double b = pop();
+        st.back() = st.back() >= b;
+        break;
+      }
+      case Op::And: {
+        double b = pop();
+        st.back() = st.back() != 0 && b != 0;
+        break;
+      }
+      case Op::Or: {
+        double b = pop();
+        st.back() = st.back() != 0 || b != 0;
+        break;
+      }
+      case Op::Xor: {
+        double b = pop();
+        st.back() = (st.back() != 0) != (b != 0);
+        break;
+      }
       case Op::Call1:
       case Op::Call2: {
         Builtin b = static_cast<Builtin>(operands[0]);
@@ -348,14 +402,18 @@ RunStatus Vm::resume() {
         }
         if (!ok) {
           if (why == "undefined")
-            return fail(pc, DiagId::GtlElementUndefined, b == Builtin::GtlLine ? 'l' : b == Builtin::GtlPoint ? 'p' : 'c',
+            return fail(pc, DiagId::GtlElementUndefined,
+                        b == Builtin::GtlLine    ? 'l'
+                        : b == Builtin::GtlPoint ? 'p'
+                                                 : 'c',
                         shortest(args[0]));
           // The GTL functions' second argument is the field.
           bool field = b >= Builtin::GtlLine && !why.starts_with("element");
           // By the dialect's name of the function, as the program writes it.
           const auto& names = m_.semantics.builtin_names;
           const size_t i = static_cast<size_t>(b);
-          std::string_view name = i < names.size() && !names[i].empty() ? std::string_view(names[i]) : builtin_info(b).name;
+          std::string_view name =
+              i < names.size() && !names[i].empty() ? std::string_view(names[i]) : builtin_info(b).name;
           return fail(pc, DiagId::DomainError, shortest(args[field ? 1 : 0]), fmt::format("{} ({})", name, why));
         }
         st.push_back(r);
@@ -383,7 +441,8 @@ RunStatus Vm::resume() {
         if (options_.max_memory && machine_.held_bytes() > options_.max_memory)
           return fail(pc, DiagId::RunMemory, options_.max_memory >> 20, machine_.held_what());
         // A block that the block-skip switch skips whole (its JUMPSKIP follows) does not run.
-        if (options_.trace_blocks && !(p.pc < m_.code.size() && static_cast<Op>(code[p.pc]) == Op::JumpSkip && machine_.block_skip()))
+        if (options_.trace_blocks &&
+            !(p.pc < m_.code.size() && static_cast<Op>(code[p.pc]) == Op::JumpSkip && machine_.block_skip()))
           machine_.block_start(m_.source_of(pc));
         break;
       case Op::Sync:
@@ -413,9 +472,8 @@ RunStatus Vm::resume() {
         double v = pop();
         if (vacancy_ && std::isnan(v)) break;  // G#1 with #1 vacant: no code
         const auto& numbered = m_.semantics.numbered;
-        auto it = std::find_if(numbered.begin(), numbered.end(), [&](const NumberedCode& c) {
-          return c.slot == operands[0] && c.number == v;
-        });
+        auto it = std::find_if(numbered.begin(), numbered.end(),
+                               [&](const NumberedCode& c) { return c.slot == operands[0] && c.number == v; });
         // The word is found by its slot and its place among this block's (GE1 GE2).
         const int nth = static_cast<int>(std::count(dynamic_slots_.begin(), dynamic_slots_.end(), operands[0]));
         if (it == numbered.end()) {
@@ -450,7 +508,8 @@ RunStatus Vm::resume() {
         // Measured values the block stores (NC-110 G72-G74), where the dialect keeps them.
         for (auto [index, value] : machine_.take_results()) {
           if (m_.semantics.conventions.result_space == kNoSpace)
-            return fail(pc, DiagId::BytecodeInvalid, "program", "a measuring code in a dialect with no place for its values");
+            return fail(pc, DiagId::BytecodeInvalid, "program",
+                        "a measuring code in a dialect with no place for its values");
           if (!store(m_.semantics.conventions.result_space, index, value, pc)) return RunStatus::Error;
         }
         switch (result) {
@@ -480,8 +539,10 @@ RunStatus Vm::resume() {
       case Op::EndRepeat:
         if (p.loops.size() <= (p.frames.empty() ? 0 : p.frames.back().loops))
           return fail(pc, DiagId::BytecodeInvalid, "program", "an end of repeat without its repeat");
-        if (--p.loops.back().remaining > 0) p.pc = u32_at(operands);
-        else p.loops.pop_back();
+        if (--p.loops.back().remaining > 0)
+          p.pc = u32_at(operands);
+        else
+          p.loops.pop_back();
         break;
       case Op::Unloop: landing_depth_ = operands[0]; break;
       case Op::CallEntry:
@@ -490,8 +551,9 @@ RunStatus Vm::resume() {
           return fail(pc, DiagId::BytecodeInvalid, "program", "arguments to a call that keeps the caller's locals");
         const double count = pop();
         const std::optional<int64_t> n = whole_in<int64_t>(count, 1, kMaxCallCount);
-        if (!n) return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
-                            fmt::format("whole numbers from 1 to {}", kMaxCallCount));
+        if (!n)
+          return fail(pc, DiagId::ParameterValue, "the call count", shortest(count),
+                      fmt::format("whole numbers from 1 to {}", kMaxCallCount));
         uint32_t limit = m_.semantics.conventions.max_call_depth;
         if (p.frames.size() >= kMaxFrames || (limit && calls() >= limit))
           return fail(pc, DiagId::CallDepth, limit ? limit : kMaxFrames);
@@ -506,8 +568,10 @@ RunStatus Vm::resume() {
       case Op::Arg: {
         const VarSpace& s = m_.spaces[operands[0]];
         const uint32_t index = u32_at(operands + 1);
-        if (args_.size() >= 256) return fail(pc, DiagId::BytecodeInvalid, "program", "more than 256 arguments to a call");
-        if (index >= s.locals) return fail(pc, DiagId::BytecodeInvalid, "program", "an argument that is not a local variable");
+        if (args_.size() >= 256)
+          return fail(pc, DiagId::BytecodeInvalid, "program", "more than 256 arguments to a call");
+        if (index >= s.locals)
+          return fail(pc, DiagId::BytecodeInvalid, "program", "an argument that is not a local variable");
         double value = pop();
         // As a store would keep it (a vacant value only where variables may be vacant).
         if (!(s.vacant && std::isnan(value)) && !convert_value(type_at(operands[0], index), s.limit, value))
@@ -574,8 +638,17 @@ RunStatus Vm::resume() {
         if (p.loops.size() < operands[8])
           return fail(pc, DiagId::BytecodeInvalid, "program", "a range deeper in repeat loops than its call");
         // The range's code counts its loop depth from its first block's.
-        p.frames.push_back(
-            {p.pc, p.loops.size(), true, u32_at(operands), u32_at(operands + 4), p.loops.size() - operands[8], 0, 0, {}, false, {}});
+        p.frames.push_back({p.pc,
+                            p.loops.size(),
+                            true,
+                            u32_at(operands),
+                            u32_at(operands + 4),
+                            p.loops.size() - operands[8],
+                            0,
+                            0,
+                            {},
+                            false,
+                            {}});
         p.pc = u32_at(operands);
         break;
       case Op::RangeEnd:
@@ -665,24 +738,21 @@ RunStatus Vm::resume() {
           message_.append(reinterpret_cast<const char*>(b), operands[1]);
         }
         // A message is a line for the operator; a file that builds one without end is not.
-        if (message_.size() > 65536) return fail(pc, DiagId::BytecodeInvalid, "program", "a message longer than 64 KiB");
+        if (message_.size() > 65536)
+          return fail(pc, DiagId::BytecodeInvalid, "program", "a message longer than 64 KiB");
         break;
       }
       case Op::Message:
         machine_.message(message_, m_.source_of(pc));
         message_.clear();
         break;
-      case Op::End:
-        p.pc = pc;
-        return RunStatus::UnitEnded;
+      case Op::End: p.pc = pc; return RunStatus::UnitEnded;
       case Op::Count: return fail(pc, DiagId::BytecodeInvalid, "program", "an unknown opcode");
     }
   }
 }
 
-
 // ---- ASSET files (NC-110 chapter 5) ----------------------------------------------------
-
 
 bool Vm::asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc) {
   out.clear();
@@ -754,22 +824,27 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
       const bool in = f.memory ? f.format == MemFormat::Integer : t == VarType::Integer;
       const bool re = f.memory ? f.format == MemFormat::Real : t == VarType::Real;
       const bool lr = f.memory ? f.format == MemFormat::LongReal : t == VarType::LongReal;
-      if (f.chars) layout.push_back({asset::FieldType::Chars, f.chars});
-      else if (in || re || lr) layout.push_back(*asset::parse_field(in ? "IN" : re ? "RE" : "LR"));
-      else return stop(DiagId::AssetStructure, shortest(number), "a variable has no ASSET format (IN, RE, LR, kCH)");
+      if (f.chars)
+        layout.push_back({asset::FieldType::Chars, f.chars});
+      else if (in || re || lr)
+        layout.push_back(*asset::parse_field(in ? "IN" : re ? "RE" : "LR"));
+      else
+        return stop(DiagId::AssetStructure, shortest(number), "a variable has no ASSET format (IN, RE, LR, kCH)");
     }
     if (!options_.asset) return true;  // a dry run
     const uint32_t s = whole_operand(number, options_.asset->settings().structures);
     if (!options_.asset->define(s, layout))
       return stop(DiagId::AssetStructure, shortest(number),
-                  fmt::format("structures are 1..{} and hold 1..{} fields", options_.asset->settings().structures, asset::kMaxFields));
+                  fmt::format("structures are 1..{} and hold 1..{} fields", options_.asset->settings().structures,
+                              asset::kMaxFields));
     structures_[s] = std::move(fields);
     return true;
   }
   // The I/O statements: their operands, what they did, and the code (§5.4).
   double record = 0, second = 0, first = 0;
   if (op == Op::AssetReadAt || op == Op::AssetWriteAt) record = pop();
-  if (op == Op::AssetRead || op == Op::AssetReadAt || op == Op::AssetWrite || op == Op::AssetWriteAt || op == Op::AssetCreate)
+  if (op == Op::AssetRead || op == Op::AssetReadAt || op == Op::AssetWrite || op == Op::AssetWriteAt ||
+      op == Op::AssetCreate)
     second = pop();
   if (op != Op::AssetCloseAll && op != Op::AssetDelete) first = pop();
   if (!options_.asset) return true;  // a dry run: files are the machine's, not the program's
@@ -806,7 +881,9 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
         code = io.write(whole_operand(first, 255), s, r, values, &at);
       }
       what = fmt::format("{} {} structure {} record {}", reading ? "read" : "write", shortest(first), shortest(second),
-                         at ? std::to_string(at) : given ? shortest(record) : std::string("next"));
+                         at      ? std::to_string(at)
+                         : given ? shortest(record)
+                                 : std::string("next"));
       break;
     }
     case Op::AssetClose:
@@ -819,8 +896,10 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
       break;
     case Op::AssetCreate: {
       auto name = file();
-      what = fmt::format("create {} structure {} records {}", m_.strings[read_operand(operands, 4)], shortest(first), shortest(second));
-      code = name ? io.create(whole_operand(first, 255), *name, whole_operand(second, asset::kMaxRecords)) : asset::Code::Illegal;
+      what = fmt::format("create {} structure {} records {}", m_.strings[read_operand(operands, 4)], shortest(first),
+                         shortest(second));
+      code = name ? io.create(whole_operand(first, 255), *name, whole_operand(second, asset::kMaxRecords))
+                  : asset::Code::Illegal;
       break;
     }
     case Op::AssetDelete: {
@@ -833,10 +912,10 @@ bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
   }
   if (!machine_.asset_done(what, static_cast<int>(code), m_.source_of(pc)))
     return stop(DiagId::AssetError, what, static_cast<int>(code),
-                code == asset::Code::NotConfigured ? "ASSET area not configured (ncc run --files DIR gives one)" : asset::meaning(code));
+                code == asset::Code::NotConfigured ? "ASSET area not configured (ncc run --files DIR gives one)"
+                                                   : asset::meaning(code));
   return true;
 }
-
 
 // ---- Processes (NC-110 chapter 4) ------------------------------------------------------
 
@@ -860,12 +939,16 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
     double now = 0;
     if (!load_mem(operands[0], static_cast<MemFormat>(operands[1]), index, pc, now)) return ProcessHost::Answer::Error;
     const uint8_t relation = operands[2];
-    const bool holds = (relation == 1 ? now == value : relation == 2 ? now < value : relation == 3 ? now > value : now != value) ||
+    const bool holds = (relation == 1   ? now == value
+                        : relation == 2 ? now < value
+                        : relation == 3 ? now > value
+                                        : now != value) ||
                        (waiting_ && options_.processes && options_.processes->assume_met());
     if (!holds) st.insert(st.end(), {index, value});
     if (holds && waiting_) wait_until(shared_.written_at);  // it goes on once the memory is written
     const std::string& condition = m_.strings[u32_at(operands + 3)];
-    return answer(holds ? ProcessHost::Answer::Done : ProcessHost::Answer::Wait, condition + " holds", "wait until " + condition);
+    return answer(holds ? ProcessHost::Answer::Done : ProcessHost::Answer::Wait, condition + " holds",
+                  "wait until " + condition);
   }
   const double n = pop_value();
   const std::string process = shortest(n);
@@ -874,7 +957,8 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
     fail(pc, DiagId::ProcessError, process, "this run has one process");
   } else if (op == Op::ProcStart) {
     const uint16_t entry = u16_at(operands);
-    a = answer(options_.processes->start(n, entry, pc), fmt::format("start process {} {}", process, m_.entries[entry].name),
+    a = answer(options_.processes->start(n, entry, pc),
+               fmt::format("start process {} {}", process, m_.entries[entry].name),
                fmt::format("start process {} {}: waits until it is free", process, m_.entries[entry].name));
   } else if (op == Op::ProcWait) {
     a = answer(options_.processes->wait_for(n, pc), "restarted by process " + process, "wait for process " + process);
@@ -905,7 +989,9 @@ bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
   if (op == Op::InputField || op == Op::InputFieldText) {
     const double field = pop_value();
     auto shown = shared_.screen.text(whole_operand(field, 255));
-    if (!shown) return refuse(DiagId::ScreenError, fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
+    if (!shown)
+      return refuse(DiagId::ScreenError,
+                    fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
     prompt = *shown;
   } else {
     prompt = m_.strings[u32_at(operands + (text ? 2 : 0))];
@@ -928,7 +1014,7 @@ bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
   std::string typed = answer.text.value_or(now);
   if (typed.size() > chars)
     return refuse(DiagId::InputAnswer, fmt::format("\"{}\"", typed), fmt::format("{} bytes long", typed.size()),
-                fmt::format("a text of at most {} bytes", chars));
+                  fmt::format("a text of at most {} bytes", chars));
   typed.resize(chars, ' ');  // the rest of the field blank
   machine_.operator_input(prompt + shown, typed, m_.source_of(pc));
   std::copy(typed.begin(), typed.end(), memory);
@@ -972,8 +1058,10 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
       if (!field_content(op, operands, pc, init)) return false;
       const double attribute = pop(), format = pop(), column = pop(), row = pop(), field = pop();
       std::optional<screen::Format> f;
-      if (auto n = whole_in(format, 1, 7)) f = static_cast<screen::Format>(*n);
-      else if (format != 0) why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
+      if (auto n = whole_in(format, 1, 7))
+        f = static_cast<screen::Format>(*n);
+      else if (format != 0)
+        why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
       screen::Attributes a{attribute == 256, whole_in(attribute, 0, 255).value_or(-1)};
       // A row or column that is no whole number of six digits is 0, which define() refuses.
       const auto place = [](double v) { return whole_in<int>(v, -999999, 999999).value_or(0); };
@@ -1002,7 +1090,8 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
   }
   for (uint32_t n : shared_.screen.take_shown()) {
     const screen::Attributes a = shared_.screen.attributes(n);
-    std::string text = fmt::format("field {} row {} column {} \"{}\"", n, shared_.screen.row(n), shared_.screen.column(n), shared_.screen.rendered(n));
+    std::string text = fmt::format("field {} row {} column {} \"{}\"", n, shared_.screen.row(n),
+                                   shared_.screen.column(n), shared_.screen.rendered(n));
     if (a.inverse) text += " inverse";
     if (a.colour >= 0) text += fmt::format(" colour {}", a.colour);
     machine_.screen_event(text, source);

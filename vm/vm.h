@@ -21,7 +21,8 @@ struct SharedState {
   std::vector<std::vector<uint8_t>> memories;  // of the memory spaces (empty for the others)
   screen::UserScreen screen;
   size_t answers = 0;  // of VmOptions::input, taken
-  double written_at = 0;  // the latest time a process (or the PLC) wrote a memory: a WAI condition met goes on from there
+  double written_at =
+      0;  // the latest time a process (or the PLC) wrote a memory: a WAI condition met goes on from there
 };
 
 // The other processes of a run, as a process's EXE, WAI and SND meet them (NC-110
@@ -31,8 +32,8 @@ class ProcessHost {
   enum class Answer { Done, Wait, Error };  // Error: reported at the block
   virtual ~ProcessHost() = default;
   virtual Answer start(double process, uint32_t entry, uint32_t pc) = 0;  // EXE
-  virtual Answer wait_for(double process, uint32_t pc) = 0;              // WAI n
-  virtual Answer signal(double process, uint32_t pc) = 0;                // SND
+  virtual Answer wait_for(double process, uint32_t pc) = 0;               // WAI n
+  virtual Answer signal(double process, uint32_t pc) = 0;                 // SND
   // A WAI condition that no process meets is taken as met (the dry run of
   // `ncc check`, which cannot know the PLC).
   virtual bool assume_met() { return false; }
@@ -46,18 +47,18 @@ struct Answer {
 };
 
 struct VmOptions {
-  uint64_t max_steps = 0;  // steps before StepLimit: blocks, and moves beyond a block's first; 0 = no limit
-  uint64_t max_memory = 0;  // bytes the runtime may hold (Machine::held_bytes) before RunMemory; 0 = no limit
-  bool trace_blocks = false;  // a `block` event as each block starts
+  uint64_t max_steps = 0;            // steps before StepLimit: blocks, and moves beyond a block's first; 0 = no limit
+  uint64_t max_memory = 0;           // bytes the runtime may hold (Machine::held_bytes) before RunMemory; 0 = no limit
+  bool trace_blocks = false;         // a `block` event as each block starts
   asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect
   // The operator's answers to INP, in order; none: a dry run, every answer is the value
   // offered.
   std::vector<Answer>* input = nullptr;
-  SharedState* shared = nullptr;        // none: the VM's own
-  ProcessHost* processes = nullptr;     // none: one process, which EXE, WAI and SND cannot leave
-  uint8_t process = 0;                  // its number (0: the only one)
-  bool slice = false;                   // resume() runs one block, then returns Yield
-  bool by_block = false;                // the same for a host that steps the run (only between blocks)
+  SharedState* shared = nullptr;     // none: the VM's own
+  ProcessHost* processes = nullptr;  // none: one process, which EXE, WAI and SND cannot leave
+  uint8_t process = 0;               // its number (0: the only one)
+  bool slice = false;                // resume() runs one block, then returns Yield
+  bool by_block = false;             // the same for a host that steps the run (only between blocks)
   // Blocks evaluated ahead of the motion (NC-110 §2.16: the look-ahead of a run of
   // several processes, where it shows); 0: each block once the motion before it ended.
   uint32_t look_ahead = 0;
@@ -82,10 +83,12 @@ class Vm {
   void start(uint32_t entry);
   RunStatus resume();
   uint64_t steps() const { return steps_; }
-  uint32_t pc() const { return process_.pc; }  // where the last run stopped (Blocked: the waiting instruction)
-  bool waiting() const { return waiting_; }  // the last resume returned Blocked, at pc()
+  uint32_t pc() const { return process_.pc; }          // where the last run stopped (Blocked: the waiting instruction)
+  bool waiting() const { return waiting_; }            // the last resume returned Blocked, at pc()
   const std::string& waits() const { return waits_; }  // Blocked: what for ("wait for process 2")
-  double blocked_operand() const { return process_.stack.empty() ? 0 : process_.stack.back(); }  // Blocked: the process named
+  double blocked_operand() const {
+    return process_.stack.empty() ? 0 : process_.stack.back();
+  }  // Blocked: the process named
   // When the block being run is evaluated: with a look-ahead, while earlier motion
   // may still run; else when it ended (the machine's clock).
   double eval_time() const { return options_.look_ahead ? eval_ : machine_.clock(); }
@@ -159,7 +162,7 @@ class Vm {
   // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
   bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
   bool field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c);  // false: reported
-  bool input(Op op, const uint8_t* operands, uint32_t pc);                    // false: reported
+  bool input(Op op, const uint8_t* operands, uint32_t pc);                              // false: reported
   double pop_value() {  // the verifier has checked the stack holds it
     const double v = process_.stack.back();
     process_.stack.pop_back();
@@ -174,9 +177,9 @@ class Vm {
   static constexpr double kBlockCycle = 0.001;  // seconds
   double eval_ = 0;
   std::vector<double> ends_;
-  bool waiting_ = false;  // the instruction at pc waits (Blocked)
+  bool waiting_ = false;    // the instruction at pc waits (Blocked)
   bool mid_block_ = false;  // the last turn ended inside a block (SYNC)
-  std::string waits_;     // what for
+  std::string waits_;       // what for
   // Jumps; a jump out of a range ends it. After Unloop, the loops deeper than the
   // target's depth close.
   void jump_to(uint32_t target);
@@ -198,11 +201,11 @@ class Vm {
   Process process_;
   std::vector<uint16_t> codes_;  // the pending block
   BlockWords words_;
-  std::string message_;          // the pending operator message
-  uint64_t dynamic_codes_ = 0;   // the pending block's codes chosen at run time (bit i: codes_[i])
+  std::string message_;                 // the pending operator message
+  uint64_t dynamic_codes_ = 0;          // the pending block's codes chosen at run time (bit i: codes_[i])
   std::vector<uint8_t> dynamic_slots_;  // their words' slots, in order (GE1 GE2: G, G)
-  std::vector<Arg> args_;        // the next call's arguments
-  bool vacancy_ = false;         // a space holds vacant values: a vacant word value or code is omitted
+  std::vector<Arg> args_;               // the next call's arguments
+  bool vacancy_ = false;                // a space holds vacant values: a vacant word value or code is omitted
   // Per numbered space, the type of each variable (VarSpace::type_of, looked up once);
   // empty when all are long reals.
   std::vector<std::vector<VarType>> types_;

@@ -12,9 +12,9 @@ namespace ncc {
 // What check_block remembers while it reads one block, kept from block to block so
 // that checking a block allocates nothing (CAM programs have millions).
 struct BlockScratch {
-  std::array<const ir::Word*, 256> first{};  // a letter's first word
-  std::array<int, 256> count{};              // a letter's words so far
-  std::string letters;                       // the letters to clear
+  std::array<const ir::Word*, 256> first{};                          // a letter's first word
+  std::array<int, 256> count{};                                      // a letter's words so far
+  std::string letters;                                               // the letters to clear
   std::vector<std::pair<std::string_view, const ir::Word*>> groups;  // G group -> first code
   std::vector<std::pair<std::string_view, const ir::Word*>> sets;    // M conflict set -> first code
   std::vector<std::pair<int, const ir::Word*>> codes;                // M code number -> its word
@@ -71,8 +71,9 @@ const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rule
   return it == table.end() ? nullptr : &it->second;
 }
 
-void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second, const ir::Word& first,
-                      const std::string& a, const std::string& b = {}, const std::string& c = {}) {
+void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second,
+                      const ir::Word& first, const std::string& a, const std::string& b = {},
+                      const std::string& c = {}) {
   if (Diagnostic* d = diags.report(id, second.range, a, b, c))
     d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
 }
@@ -86,7 +87,8 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
   // At most n words of an address that may stand several times (NC-110: 4 M words).
   auto count_several = [&](const ir::Word& w) {
     auto addr = rules.tables->addresses.find(w.address.size() == 1 ? w.address[0] : 0);
-    if (addr == rules.tables->addresses.end() || addr->second.repeat != stdlib::Repeat::Several || !addr->second.max_count)
+    if (addr == rules.tables->addresses.end() || addr->second.repeat != stdlib::Repeat::Several ||
+        !addr->second.max_count)
       return;
     if (++seen.count_of(addr->first) == addr->second.max_count + 1)
       diags.report(DiagId::TooManyWords, w.range, addr->second.max_count + 1, w.address, addr->second.max_count);
@@ -124,7 +126,8 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         if (!first) first = &w;
         int allowed = addr->second.repeat == stdlib::Repeat::Twice ? 2 : 1;
         if (++count == allowed + 1)
-          report_with_note(p, diags, DiagId::WordRepeated, w, *first, std::string(1, key), allowed == 1 ? "once" : "twice");
+          report_with_note(p, diags, DiagId::WordRepeated, w, *first, std::string(1, key),
+                           allowed == 1 ? "once" : "twice");
         break;
       }
       case stdlib::Repeat::Feed:
@@ -151,7 +154,8 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
           // Block-only codes without a group letter count as their own group (§2.5).
           std::string_view group = entry->group == "-" ? entry->desc.name : entry->group;
           if (const ir::Word* other = BlockScratch::first_of(seen.groups, group, &w); other != &w)
-            report_with_note(p, diags, DiagId::GroupConflict, w, *other, word_text(p, *other), word_text(p, w), std::string(group));
+            report_with_note(p, diags, DiagId::GroupConflict, w, *other, word_text(p, *other), word_text(p, w),
+                             std::string(group));
         } else {
           count_several(w);
           // The same code twice is a word too many; two codes of one set contradict.
@@ -188,7 +192,8 @@ void BlockNumbers::add(const ir::Block& b, Diagnostics& diags) {
     if (Diagnostic* d = diags.report(DiagId::BlockNumberOrder, at, *b.number, "is used again"))
       d->notes.push_back({it->second, "first used here"});
   } else if (last_ && *b.number < *last_) {
-    diags.report(DiagId::BlockNumberOrder, at, *b.number, fmt::format("is lower than the previous block number {}", *last_));
+    diags.report(DiagId::BlockNumberOrder, at, *b.number,
+                 fmt::format("is lower than the previous block number {}", *last_));
   }
   last_ = *b.number;
 }
@@ -256,7 +261,8 @@ void check_structure(ir::Unit& unit, const CheckRules& rules, Diagnostics& diags
     for (const ir::Stmt& s : b.stmts) {
       bool begin = s.kind == ir::StmtKind::RepeatBegin, end = s.kind == ir::StmtKind::RepeatEnd;
       if ((begin || end) && b.skippable)
-        diags.report(DiagId::RepeatUnbalanced, b.range, "a repeat loop cannot begin or end in a block that may be skipped ('/')");
+        diags.report(DiagId::RepeatUnbalanced, b.range,
+                     "a repeat loop cannot begin or end in a block that may be skipped ('/')");
       if (begin) {
         open.push_back(next_loop++);
         open_stmt.push_back(&s);
@@ -273,7 +279,8 @@ void check_structure(ir::Unit& unit, const CheckRules& rules, Diagnostics& diags
     }
     after[i] = open;
   }
-  for (const ir::Stmt* s : open_stmt) diags.report(DiagId::RepeatUnbalanced, s->range, "this repeat loop has no end in its program unit");
+  for (const ir::Stmt* s : open_stmt)
+    diags.report(DiagId::RepeatUnbalanced, s->range, "this repeat loop has no end in its program unit");
 
   std::map<std::string, size_t> at;
   for (size_t i = 0; i < n; ++i)
@@ -353,7 +360,7 @@ void check_calls(const ir::Program& program, const CheckRules& rules, Diagnostic
     if (at != path.end()) {
       reported.insert(&s);
       if (rules.recursion) continue;  // a condition may end it; the call depth limit holds at run time
-      std::string through;  // the programs between: none when it calls itself directly
+      std::string through;            // the programs between: none when it calls itself directly
       for (++at; at != path.end(); ++at) through += (through.empty() ? " through " : " -> ") + at->unit->name;
       diags.report(DiagId::CallRecursive, s.range, s.label, through);
     } else if (limit && path.size() > limit) {

@@ -17,13 +17,13 @@ namespace ncc {
 
 struct CheckRules {
   const stdlib::DialectTables* tables = nullptr;
-  bool pedantic = false;            // report the recommended word order
-  bool block_number_order = true;   // block numbers rise and are not used twice
-  bool unique_labels = false;       // a label names one block of its unit
-  uint32_t max_repeat_depth = 0;    // repeat loops that may nest (0: no limit)
-  bool recursion = false;           // a unit may call itself (Macro B: a condition ends it)
-  bool block_ranges = false;        // a label may end a block range (NC-110 EPP): code follows its block
-  uint8_t processes = 1;            // processes that run programs side by side (NC-110 chapter 4: 5)
+  bool pedantic = false;           // report the recommended word order
+  bool block_number_order = true;  // block numbers rise and are not used twice
+  bool unique_labels = false;      // a label names one block of its unit
+  uint32_t max_repeat_depth = 0;   // repeat loops that may nest (0: no limit)
+  bool recursion = false;          // a unit may call itself (Macro B: a condition ends it)
+  bool block_ranges = false;       // a label may end a block range (NC-110 EPP): code follows its block
+  uint8_t processes = 1;           // processes that run programs side by side (NC-110 chapter 4: 5)
 };
 
 // The block numbers of a unit in order: a number used again, or lower than the one
@@ -59,7 +59,7 @@ class StreamChecks {
   const CheckRules& rules_;
   std::unique_ptr<BlockScratch> scratch_;
   BlockNumbers numbers_;
-  std::set<std::string> entries_;  // ":N" of the main blocks
+  std::set<std::string> entries_;           // ":N" of the main blocks
   Diagnostics block_diags_, number_diags_;  // found, not yet reported
 };
 

@@ -51,9 +51,12 @@ std::string quoted(std::string_view s) {
   std::string out = "\"";
   for (char c : s) {
     const auto u = static_cast<unsigned char>(c);
-    if (c == '"' || c == '\\') out += fmt::format("\\{}", c);
-    else if (u < 0x20 || u > 0x7E) out += fmt::format("\\x{:02X}", u);
-    else out += c;
+    if (c == '"' || c == '\\')
+      out += fmt::format("\\{}", c);
+    else if (u < 0x20 || u > 0x7E)
+      out += fmt::format("\\x{:02X}", u);
+    else
+      out += c;
   }
   return out + "\"";
 }
@@ -88,9 +91,12 @@ class TextReader {
       std::string_view line = text_.line(line_);
       tokens_.clear();
       if (!split(line) || tokens_.empty() || tokens_[0].text.starts_with('#')) continue;
-      if (tokens_[0].text == "file") header();
-      else if (files_.empty()) error(tokens_[0], "a record before any 'file NAME FIELDS... records N' line");
-      else record();
+      if (tokens_[0].text == "file")
+        header();
+      else if (files_.empty())
+        error(tokens_[0], "a record before any 'file NAME FIELDS... records N' line");
+      else
+        record();
     }
     return std::move(files_);
   }
@@ -159,21 +165,29 @@ class TextReader {
       return;
     }
     auto name = asset::parse_file_name(tokens_[1].text, 1);
-    if (!name) return error(tokens_[1], fmt::format("'{}' is not a file name: one to six capitals and digits, a letter first, then /MP0../MP6 or nothing", tokens_[1].text));
+    if (!name)
+      return error(
+          tokens_[1],
+          fmt::format(
+              "'{}' is not a file name: one to six capitals and digits, a letter first, then /MP0../MP6 or nothing",
+              tokens_[1].text));
     asset::Layout layout;
     for (auto t = tokens_.begin() + 2; t != records_at; ++t) {
       auto field = asset::parse_field(t->text);
       if (!field) return error(*t, fmt::format("'{}' is not a field: IN, RE, LR or kCH (k = 1..32)", t->text));
       layout.push_back(*field);
     }
-    if (layout.size() > asset::kMaxFields) return error(*(records_at - 1), fmt::format("{} fields: a record has at most {}", layout.size(), asset::kMaxFields));
+    if (layout.size() > asset::kMaxFields)
+      return error(*(records_at - 1),
+                   fmt::format("{} fields: a record has at most {}", layout.size(), asset::kMaxFields));
     uint32_t records = 0;
     const Token& n = *(records_at + 1);
     if (!whole(n.text, records) || records < 1 || records > asset::kMaxRecords)
       return error(n, fmt::format("'{}' records: a file has 1 to {}", n.text, asset::kMaxRecords));
     bool protect = false;
     for (auto t = records_at + 2; t != tokens_.end(); ++t) {
-      if (t->text != "protected" || protect) return error(*t, fmt::format("'{}' after the record count: only 'protected' may stand there", t->text));
+      if (t->text != "protected" || protect)
+        return error(*t, fmt::format("'{}' after the record count: only 'protected' may stand there", t->text));
       protect = true;
     }
     for (const auto& [other, f] : files_)
@@ -189,18 +203,20 @@ class TextReader {
     File& f = files_.back().second;
     uint32_t r = 0;
     if (!whole(tokens_[0].text, r) || r < 1 || r > f.records)
-      return error(tokens_[0], fmt::format("'{}' is not a record of {}: 1 to {}", tokens_[0].text, files_.back().first.text(), f.records));
+      return error(tokens_[0], fmt::format("'{}' is not a record of {}: 1 to {}", tokens_[0].text,
+                                           files_.back().first.text(), f.records));
     if (seen_[r]) return error(tokens_[0], fmt::format("record {} is given twice", r));
     seen_[r] = true;
     if (tokens_.size() - 1 != f.layout.size())
-      return error(tokens_.back(), fmt::format("record {} has {} values; the file's records have {} fields", r, tokens_.size() - 1, f.layout.size()));
+      return error(tokens_.back(), fmt::format("record {} has {} values; the file's records have {} fields", r,
+                                               tokens_.size() - 1, f.layout.size()));
     for (size_t i = 0; i < f.layout.size(); ++i) {
       const Token& t = tokens_[i + 1];
       const asset::Field& field = f.layout[i];
       if (field.type == asset::FieldType::Chars) {
         if (!t.quoted || !asset::set_chars(f, r, i, t.text))
-          error(t, fmt::format("field {} is {}: a string of at most {} character{} in quotes", i + 1, asset::field_text(field),
-                               field.length, field.length == 1 ? "" : "s"));
+          error(t, fmt::format("field {} is {}: a string of at most {} character{} in quotes", i + 1,
+                               asset::field_text(field), field.length, field.length == 1 ? "" : "s"));
         continue;
       }
       double v = 0;
@@ -213,7 +229,10 @@ class TextReader {
   }
 
   static int hex(char c) {
-    return c >= '0' && c <= '9' ? c - '0' : c >= 'A' && c <= 'F' ? c - 'A' + 10 : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+    return c >= '0' && c <= '9'   ? c - '0'
+           : c >= 'A' && c <= 'F' ? c - 'A' + 10
+           : c >= 'a' && c <= 'f' ? c - 'a' + 10
+                                  : -1;
   }
 
   static bool whole(const std::string& s, uint32_t& v) {
@@ -247,7 +266,8 @@ class Files {
     if (command == "load") return wants(operands >= 1) ? load({args.begin() + 2, args.end()}) : kUsage;
     if (command == "dump") return dump({args.begin() + 2, args.end()});
     if (command == "check") return wants(operands == 0) ? check() : kUsage;
-    if (command == "protect" || command == "unprotect") return wants(operands == 1) ? protect(args[2], command == "protect") : kUsage;
+    if (command == "protect" || command == "unprotect")
+      return wants(operands == 1) ? protect(args[2], command == "protect") : kUsage;
     std::fprintf(stderr, "ncc files: error: unknown command '%s'\n%s", command.c_str(), kFilesUsage);
     return kUsage;
   }
@@ -285,7 +305,9 @@ class Files {
 
   std::optional<FileName> name(const std::string& text) {
     auto n = asset::parse_file_name(text, 1);
-    if (!n) diags_.report(DiagId::AssetFile, {}, text, "not a file name: one to six capitals and digits, a letter first, then /MP0../MP6 or nothing");
+    if (!n)
+      diags_.report(DiagId::AssetFile, {}, text,
+                    "not a file name: one to six capitals and digits, a letter first, then /MP0../MP6 or nothing");
     return n;
   }
 
@@ -298,7 +320,8 @@ class Files {
   // A store's answer other than Ok, as an error; `usage` for what is not the file's fault.
   int failed(const FileName& n, Code c) {
     report(n, c);
-    return finish(c == Code::Logical || c == Code::Exists || c == Code::NotFound || c == Code::Protected ? kErrors : kUsage);
+    return finish(c == Code::Logical || c == Code::Exists || c == Code::NotFound || c == Code::Protected ? kErrors
+                                                                                                         : kUsage);
   }
 
   int create(const std::string& name_text, const std::string& fields, const std::string& count) {
@@ -309,7 +332,8 @@ class Files {
       size_t comma = std::min(fields.find(',', at), fields.size());
       auto field = asset::parse_field(std::string_view(fields).substr(at, comma - at));
       if (!field) {
-        diags_.report(DiagId::AssetFile, {}, n->text(), fmt::format("'{}' is not a field: IN, RE, LR or kCH (k = 1..32)", fields.substr(at, comma - at)));
+        diags_.report(DiagId::AssetFile, {}, n->text(),
+                      fmt::format("'{}' is not a field: IN, RE, LR or kCH (k = 1..32)", fields.substr(at, comma - at)));
         return finish(kErrors);
       }
       layout.push_back(*field);
@@ -319,7 +343,9 @@ class Files {
     auto [end, ec] = std::from_chars(count.data(), count.data() + count.size(), records);
     if (layout.size() > asset::kMaxFields || ec != std::errc() || end != count.data() + count.size() || records < 1 ||
         records > asset::kMaxRecords) {
-      diags_.report(DiagId::AssetFile, {}, n->text(), fmt::format("a file has 1 to {} fields and 1 to {} records", asset::kMaxFields, asset::kMaxRecords));
+      diags_.report(
+          DiagId::AssetFile, {}, n->text(),
+          fmt::format("a file has 1 to {} fields and 1 to {} records", asset::kMaxFields, asset::kMaxRecords));
       return finish(kErrors);
     }
     Code c = store_->create(*n, asset::blank_file(layout, records));
@@ -356,8 +382,10 @@ class Files {
     // Every file it can read; each it cannot, reported (exit 1).
     for (const FileName& n : which) {
       File f;
-      if (Code c = store_->load(n, f); c != Code::Ok) report(n, c);
-      else std::fputs(file_text(n, f).c_str(), stdout);
+      if (Code c = store_->load(n, f); c != Code::Ok)
+        report(n, c);
+      else
+        std::fputs(file_text(n, f).c_str(), stdout);
     }
     return finish(kOk);
   }

@@ -32,11 +32,12 @@ struct Command {
   std::string_view name;
   std::string_view summary;
   std::string_view usage;
-  std::string_view options;  // the command's own options, for --help
+  std::string_view options;      // the command's own options, for --help
   std::string_view shared = {};  // options it shares with others
 };
 
-constexpr std::string_view kCommonOptions = R"(  --dialect NAME            source dialect: gost, nc110, pp, iso (default gost)
+constexpr std::string_view kCommonOptions =
+    R"(  --dialect NAME            source dialect: gost, nc110, pp, iso (default gost)
   --machine FILE            machine profile (TOML, docs/profile.md); default: built in
   --lib DIR                 program library: where called programs are found (NC-110 CLS, pp G72, iso M98 G65)
   --process N=NAME          NC-110: program NAME[/MPn] of the library starts in process N (2..5) with the run,
@@ -51,7 +52,8 @@ constexpr std::string_view kCommonOptions = R"(  --dialect NAME            sourc
 )";
 
 // What a drawing's run takes of `ncc run`'s options.
-constexpr std::string_view kSimulationOptions = R"(  --block-skip              the block-skip switch is on: '/' parts are skipped
+constexpr std::string_view kSimulationOptions =
+    R"(  --block-skip              the block-skip switch is on: '/' parts are skipped
   --optional-stop           the optional-stop switch is on: M01 stops
   --start-block N           start at main block ':N' (GOST 20999 §2.6)
   --max-steps N             stop after N steps (default: the program's blocks + 100000000)
@@ -107,16 +109,19 @@ constexpr Command kCommands[] = {
   --tolerance MM            the largest distance between an arc and the chords drawn for it where the view
                             does not show it as an arc (default 0.001)
   --size PX                 the drawing's longer side (default 1000)
-)", kSimulationOptions},
+)",
+     kSimulationOptions},
     {"view", "write a page that shows the tool path in 3-D, block by block", "ncc view [options] FILE -o OUT.html",
      R"(  -o FILE                   the page to write ('-' = stdout): one file, no network needed
   --stock RANGES            the stock: X0:100,Y0:60,Z-20:0 (default: the profile's [stock], else the box
                             round the cutting moves up to the work zero)
   --grid MM                 the cell of the machined surface's height map (default: from the stock's size)
   --tolerance MM            how far the drawn path may leave the tool's when moves are merged (default 0.01)
-)", kSimulationOptions},
+)",
+     kSimulationOptions},
     {"regime", "compute spindle speed and feed from the tool and the material", "ncc regime [options]", ""},
-    {"translate", "write a program in another dialect", "ncc translate [options] --to DIALECT [--flatten] FILE [-o OUT]",
+    {"translate", "write a program in another dialect",
+     "ncc translate [options] --to DIALECT [--flatten] FILE [-o OUT]",
      R"(  --to DIALECT              the target: gost, nc110, pp, iso or linuxcnc (RS274NGC as LinuxCNC 2.9 reads it)
   --flatten                 run the program and write the plain motion blocks it makes (docs/translate.md);
                             without it, the program's parameters, loops and subprograms are kept (iso)
@@ -137,7 +142,8 @@ constexpr Command kCommands[] = {
 };
 
 void print_main_help(std::FILE* out) {
-  std::fprintf(out, "ncc - compiler, checker and VM for CNC part programs\n\nusage: ncc COMMAND [options] FILE\n\ncommands:\n");
+  std::fprintf(
+      out, "ncc - compiler, checker and VM for CNC part programs\n\nusage: ncc COMMAND [options] FILE\n\ncommands:\n");
   for (const Command& c : kCommands)
     std::fprintf(out, "  %-9s %s\n", std::string(c.name).c_str(), std::string(c.summary).c_str());
   std::fprintf(out, "\n'ncc COMMAND --help' describes a command and its options.\n");
@@ -165,12 +171,12 @@ struct Options {
   uint32_t error_limit = 100;
   std::string color = "auto";
   RunSettings run;
-  std::string to;              // translate
+  std::string to;  // translate
   bool flatten = false;
   std::string target_machine;
   bool time = false;  // run --time
   bool time_json = false;
-  sim::View view = sim::View::XY;  // plot
+  sim::View view = sim::View::XY;   // plot
   std::optional<double> tolerance;  // plot, view
   double size = 1000;
   std::string stock;  // view
@@ -204,7 +210,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       return value(text) && parse_number(text, out);
     };
     auto allowed = [&](std::string_view option) {
-      return command.options.find(option) != std::string_view::npos || command.shared.find(option) != std::string_view::npos;
+      return command.options.find(option) != std::string_view::npos ||
+             command.shared.find(option) != std::string_view::npos;
     };
     std::string text;
     uint64_t n = 0;
@@ -219,7 +226,8 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       if (!value(text) || text.size() < 3 || text[0] < '2' || text[0] > '5' || text[1] != '=')
         return "--process needs N=NAME: a process 2 to 5 and a program of the library";
       for (const auto& [process, name] : o.processes)
-        if (process == text[0] - '0') return fmt::format("--process {}: process {} already runs {}", text, process, name);
+        if (process == text[0] - '0')
+          return fmt::format("--process {}: process {} already runs {}", text, process, name);
       o.processes.push_back({static_cast<uint8_t>(text[0] - '0'), text.substr(2)});
     } else if (a == "--no-fast-path") {
       o.fast_path = false;
@@ -227,10 +235,14 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       o.stream = false;
     } else if (a == "--diagnostics-format") {
       if (!value(text)) return "--diagnostics-format needs text, json or sarif";
-      if (text == "text") o.diag_format = DiagFormat::Text;
-      else if (text == "json") o.diag_format = DiagFormat::Json;
-      else if (text == "sarif") o.diag_format = DiagFormat::Sarif;
-      else return "--diagnostics-format must be text, json or sarif";
+      if (text == "text")
+        o.diag_format = DiagFormat::Text;
+      else if (text == "json")
+        o.diag_format = DiagFormat::Json;
+      else if (text == "sarif")
+        o.diag_format = DiagFormat::Sarif;
+      else
+        return "--diagnostics-format must be text, json or sarif";
     } else if (a == "--error-limit") {
       if (!number(n) || n > UINT32_MAX) return "--error-limit needs a number";
       o.error_limit = static_cast<uint32_t>(n);
@@ -244,10 +256,14 @@ std::string parse_args(const std::vector<std::string>& args, const Command& comm
       trace_given = true;
     } else if (a == "--trace-format" && allowed("--trace-format")) {
       if (!value(text)) return "--trace-format needs text, jsonl or canon";
-      if (text == "text") o.trace_format = TraceFormat::Text;
-      else if (text == "jsonl") o.trace_format = TraceFormat::Jsonl;
-      else if (text == "canon") o.trace_format = TraceFormat::Canon;
-      else return "--trace-format must be text, jsonl or canon";
+      if (text == "text")
+        o.trace_format = TraceFormat::Text;
+      else if (text == "jsonl")
+        o.trace_format = TraceFormat::Jsonl;
+      else if (text == "canon")
+        o.trace_format = TraceFormat::Canon;
+      else
+        return "--trace-format must be text, jsonl or canon";
     } else if (a == "--to" && allowed("--to DIALECT")) {
       if (!value(o.to) || !translate::is_target(o.to)) return "--to needs a dialect: gost, nc110, pp, iso or linuxcnc";
     } else if (a == "--flatten" && allowed("--flatten")) {
@@ -433,8 +449,9 @@ class Cli {
       close = true;
     }
     NullSink none;
-    auto writer = o_.trace == "none" ? nullptr
-                                     : make_trace_writer(o_.trace_format, out, m->source_map, m->semantics.conventions.axes);
+    auto writer = o_.trace == "none"
+                      ? nullptr
+                      : make_trace_writer(o_.trace_format, out, m->source_map, m->semantics.conventions.axes);
     TraceSink& trace = writer ? *writer : static_cast<TraceSink&>(none);
     const bool on_terminal = out == stdout && isatty(STDOUT_FILENO);
     RunResult result;
@@ -443,7 +460,8 @@ class Cli {
       if (!sim) return finish(kUsage, stderr);
       result = sim->result;
       writer.reset();
-      const std::string text = o_.time_json ? sim::time_json(sim->path, sim->times) : sim::time_text(sim->path, sim->times);
+      const std::string text =
+          o_.time_json ? sim::time_json(sim->path, sim->times) : sim::time_text(sim->path, sim->times);
       std::fwrite(text.data(), 1, text.size(), stdout);
     } else {
       Progress line("running " + o_.input, trace, on_terminal);
@@ -492,10 +510,12 @@ class Cli {
     std::string temp = o_.output + ".tmp";
     std::FILE* out = to_stdout ? std::tmpfile() : std::fopen(temp.c_str(), "wb");
     if (!out) {
-      s_.diags.report(DiagId::FileUnwritable, {}, to_stdout ? std::string("a temporary file") : temp, std::strerror(errno));
+      s_.diags.report(DiagId::FileUnwritable, {}, to_stdout ? std::string("a temporary file") : temp,
+                      std::strerror(errno));
       return finish(kUsage, stderr);
     }
-    bool ok = o_.flatten ? translate::flatten(s_, *m, request, out) : translate::structured(s_, file, o_.dialect, request, out);
+    bool ok = o_.flatten ? translate::flatten(s_, *m, request, out)
+                         : translate::structured(s_, file, o_.dialect, request, out);
     if (to_stdout) {
       if (ok) {
         std::rewind(out);

@@ -26,7 +26,8 @@ void Progress::event(const Event& e) {
 void Progress::show() {
   const auto now = std::chrono::steady_clock::now();
   const double seconds = std::chrono::duration<double>(now - start_).count();
-  std::fprintf(stderr, "\r\033[K%s: %llu moves, %.0f s", what_.c_str(), static_cast<unsigned long long>(moves_), seconds);
+  std::fprintf(stderr, "\r\033[K%s: %llu moves, %.0f s", what_.c_str(), static_cast<unsigned long long>(moves_),
+               seconds);
   std::fflush(stderr);
   shown_ = true;
   next_ = now + std::chrono::milliseconds(250);

@@ -90,8 +90,9 @@ struct Units {
 };
 
 int usage_error(const std::string& message) {
-  std::fprintf(stderr, "ncc regime: error: %s\nusage: ncc regime --diameter D [--teeth Z] [--material NAME --tool KIND] "
-                       "[--vc V] [--fz F | --fn F] [options]\n",
+  std::fprintf(stderr,
+               "ncc regime: error: %s\nusage: ncc regime --diameter D [--teeth Z] [--material NAME --tool KIND] "
+               "[--vc V] [--fz F | --fn F] [options]\n",
                message.c_str());
   return kUsage;
 }
@@ -109,7 +110,8 @@ std::string parse(const std::vector<std::string>& args, Args& a) {
       if (i + 1 >= args.size()) return fmt::format("{} needs a number", opt);
       const std::string& text = args[++i];
       auto v = parse_number<double>(text);
-      if (!v || !std::isfinite(*v)) return fmt::format("{} needs a number, not '{}'", opt, printable(abbreviated(text)));
+      if (!v || !std::isfinite(*v))
+        return fmt::format("{} needs a number, not '{}'", opt, printable(abbreviated(text)));
       if (*v <= 0) return fmt::format("{} must be positive, not {}", opt, text);
       // Bounds that keep n and S within what a long and a printed line hold.
       if (*v < 1e-6 || *v > 1e6) return fmt::format("{} must be 0.000001 to 1000000, not {}", opt, text);
@@ -122,21 +124,32 @@ std::string parse(const std::vector<std::string>& args, Args& a) {
       return {};
     };
     std::string problem;
-    if (opt == "--diameter") problem = value(a.diameter);
-    else if (opt == "--vc") problem = value(a.vc);
-    else if (opt == "--fz") problem = value(a.fz);
-    else if (opt == "--fn") problem = value(a.fn);
-    else if (opt == "--max-rpm") problem = value(a.max_rpm);
-    else if (opt == "--max-feed") problem = value(a.max_feed);
-    else if (opt == "--material") problem = word(a.material);
-    else if (opt == "--tool") problem = word(a.tool);
-    else if (opt == "--inch") a.inch = true;
-    else if (opt == "--list") a.list = true;
+    if (opt == "--diameter")
+      problem = value(a.diameter);
+    else if (opt == "--vc")
+      problem = value(a.vc);
+    else if (opt == "--fz")
+      problem = value(a.fz);
+    else if (opt == "--fn")
+      problem = value(a.fn);
+    else if (opt == "--max-rpm")
+      problem = value(a.max_rpm);
+    else if (opt == "--max-feed")
+      problem = value(a.max_feed);
+    else if (opt == "--material")
+      problem = word(a.material);
+    else if (opt == "--tool")
+      problem = word(a.tool);
+    else if (opt == "--inch")
+      a.inch = true;
+    else if (opt == "--list")
+      a.list = true;
     else if (opt == "--teeth") {
       if (i + 1 >= args.size()) return "--teeth needs a number";
       const std::string& text = args[++i];
       auto z = parse_number<int>(text);
-      if (!z || *z < 1 || *z > 1000) return fmt::format("--teeth needs a whole number 1 to 1000, not '{}'", printable(abbreviated(text)));
+      if (!z || *z < 1 || *z > 1000)
+        return fmt::format("--teeth needs a whole number 1 to 1000, not '{}'", printable(abbreviated(text)));
       a.teeth = *z;
     } else if (opt.size() > 1 && opt[0] == '-') {
       return fmt::format("unknown option '{}' for 'ncc regime'", printable(abbreviated(opt)));
@@ -177,7 +190,8 @@ void print_line(std::string_view label, std::string_view value, std::string_view
 void print_list(const sim::CuttingTable& table, const Args& a, const Units& u) {
   std::printf("materials\n");
   for (const sim::CuttingMaterial& m : table.materials)
-    if (a.material.empty() || table.material(a.material) == &m) std::printf("  %-18s %s\n", m.key.c_str(), m.name.c_str());
+    if (a.material.empty() || table.material(a.material) == &m)
+      std::printf("  %-18s %s\n", m.key.c_str(), m.name.c_str());
   std::printf("tool kinds\n");
   for (const sim::ToolKind& t : table.tools)
     if (a.tool.empty() || table.tool(a.tool) == &t)
@@ -237,8 +251,8 @@ int regime_command(const std::vector<std::string>& args) {
     return error(fmt::format("unknown material '{}'; the table knows {}", printable(abbreviated(a.material)),
                              keys(table.materials)));
   if (!a.tool.empty() && !(tool = table.tool(a.tool)))
-    return error(fmt::format("unknown tool kind '{}'; the table knows {}", printable(abbreviated(a.tool)),
-                             keys(table.tools)));
+    return error(
+        fmt::format("unknown tool kind '{}'; the table knows {}", printable(abbreviated(a.tool)), keys(table.tools)));
   if (a.list) {
     print_list(table, a, u);
     return kOk;
@@ -286,7 +300,8 @@ int regime_command(const std::vector<std::string>& args) {
                              material->key, ref->source, f_option));
   const bool table_feed = ref && ref->has_feed;
   const double vc_lo = a.vc ? *a.vc * to_m : ref->vc_min, vc_hi = a.vc ? *a.vc * to_m : ref->vc_max;
-  const double f_lo = given_feed ? *given_feed * to_mm : ref->f_min, f_hi = given_feed ? *given_feed * to_mm : ref->f_max;
+  const double f_lo = given_feed ? *given_feed * to_mm : ref->f_min,
+               f_hi = given_feed ? *given_feed * to_mm : ref->f_max;
   in.vc = (vc_lo + vc_hi) / 2;
   in.feed = (f_lo + f_hi) / 2;
   const sim::Regime r = sim::compute_regime(in);
@@ -294,8 +309,10 @@ int regime_command(const std::vector<std::string>& args) {
   // What was asked and where each value came from.
   std::string tool_text = tool ? fmt::format("{} ({}), ", tool->key, tool->name) : "";
   tool_text += fmt::format("D {} {}", u.d(in.diameter), u.mm());
-  if (per == sim::FeedPer::Tooth) tool_text += fmt::format(", {} {}", in.teeth, in.teeth == 1 ? "tooth" : "teeth");
-  else tool_text += a.teeth ? ", feed per revolution (--teeth is not used)" : ", feed per revolution";
+  if (per == sim::FeedPer::Tooth)
+    tool_text += fmt::format(", {} {}", in.teeth, in.teeth == 1 ? "tooth" : "teeth");
+  else
+    tool_text += a.teeth ? ", feed per revolution (--teeth is not used)" : ", feed per revolution";
   print_line("tool", tool_text, "");
   if (material) print_line("material", fmt::format("{}: {}", material->key, material->name), "");
   if (tool && material && !ref) print_line("reference", "none in the table for this pair", "");
@@ -307,8 +324,8 @@ int regime_command(const std::vector<std::string>& args) {
     if (ref->how == sim::Reference::How::Row)
       text = fmt::format("the row for {}: {}", band(*ref->below, u), row_text(*ref->below));
     else if (ref->how == sim::Reference::How::Interpolated)
-      text = fmt::format("between the rows for {} and {}, linear in D: {}", band(*ref->below, u),
-                         band(*ref->above, u), ref->source);
+      text = fmt::format("between the rows for {} and {}, linear in D: {}", band(*ref->below, u), band(*ref->above, u),
+                         ref->source);
     else
       text = fmt::format("D {} {} is outside the table's rows; the nearest, for {}: {}", u.d(in.diameter), u.mm(),
                          band(*ref->below, u), row_text(*ref->below));
@@ -357,7 +374,8 @@ int regime_command(const std::vector<std::string>& args) {
                          a.inch ? "0.1 in/min" : "a whole mm/min"));
   if (ref)
     for (const std::string& key : split(ref->source, '/'))
-      if (const sim::CuttingSource* s = table.source(key)) print_line("source", fmt::format("{}: {}", s->key, s->title), "");
+      if (const sim::CuttingSource* s = table.source(key))
+        print_line("source", fmt::format("{}: {}", s->key, s->title), "");
   return kOk;
 }
 

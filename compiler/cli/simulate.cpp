@@ -43,8 +43,7 @@ std::optional<Simulation> simulate(Session& s, const vm::Module& m, RunSettings 
     sim.result.ok = false;
   }
   line.stage(progress + ": timing");
-  for (sim::TimeModel model : sim::kTimeModels)
-    sim.times.push_back(sim::cycle_time(sim.path, sim.machine, model));
+  for (sim::TimeModel model : sim::kTimeModels) sim.times.push_back(sim::cycle_time(sim.path, sim.machine, model));
   return sim;
 }
 
@@ -72,9 +71,12 @@ sim::ViewInput view_input(Session& s, const vm::Module& m, const Simulation& sim
     in.sources.push_back({std::filesystem::path(f.path()).filename().string(), std::string(f.text())});
   }
   in.blocks.reserve(m.source_map.size());
-  m.source_map.visit([&](const SourceBlock& b, const std::vector<WordPosition>&) { in.blocks.push_back({b.file, b.line}); });
+  m.source_map.visit([&](const SourceBlock& b, const std::vector<WordPosition>&) {
+    in.blocks.push_back({b.file, b.line});
+  });
   for (const Diagnostic& d : s.diags.all()) {
-    sim::ViewDiagnostic v{0, d.range.line, d.range.col, std::string(severity_name(d.severity)), diag_code(d.id), d.message};
+    sim::ViewDiagnostic v{0,        d.range.line, d.range.col, std::string(severity_name(d.severity)), diag_code(d.id),
+                          d.message};
     for (size_t i = 0; i < files.size(); ++i)
       if (d.range.valid() && files[i] == d.range.file) v.file = static_cast<uint32_t>(i);
     in.diagnostics.push_back(std::move(v));
@@ -90,7 +92,8 @@ std::string stock_box(const Simulation& sim, const std::string& text, double min
     while (at <= text.size()) {
       const size_t end = std::min(text.find(',', at), text.size());
       const std::string item = text.substr(at, end - at);
-      const int axis = item.empty() ? -1 : axis_index(static_cast<char>(std::toupper(static_cast<unsigned char>(item[0]))));
+      const int axis =
+          item.empty() ? -1 : axis_index(static_cast<char>(std::toupper(static_cast<unsigned char>(item[0]))));
       const size_t colon = item.find(':');
       if (axis < 0 || axis > 2 || colon == std::string::npos)
         return fmt::format("'{}' is not an axis and its range: --stock takes X0:100,Y0:60,Z-20:0", item);

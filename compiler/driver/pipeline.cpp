@@ -3,8 +3,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <deque>
+#include <filesystem>
 #include <set>
 #include <tuple>
 
@@ -15,8 +15,8 @@
 #include "check/check.h"
 #include "frontend/frontend.h"
 #include "lower/lower.h"
-#include "support/text.h"
 #include "runtime/machine.h"
+#include "support/text.h"
 #include "vm/processes.h"
 
 namespace ncc {
@@ -24,8 +24,8 @@ namespace ncc {
 namespace {
 
 // The steps (blocks, and a cycle's moves beyond its first) a run may take beyond the
-// program's blocks (--max-steps sets another bound): a run, long loops included; the dry run of check and compile, which runs
-// each block of a CAM file once and the loops of a parametric program (docs/limits.md).
+// program's blocks (--max-steps sets another bound): a run, long loops included; the dry run of check and compile,
+// which runs each block of a CAM file once and the loops of a parametric program (docs/limits.md).
 constexpr uint64_t kDefaultExtraSteps = 100'000'000;
 constexpr uint64_t kDryRunExtraSteps = 1'000'000;
 
@@ -155,15 +155,19 @@ std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& 
     if (f == std::end(kFormats)) return "the format is none of BL BY IN LI RE LR";
     out.format = static_cast<MemFormat>(f - std::begin(kFormats));
   }
-  const uint64_t bytes = out.format == MemFormat::Bit ? (uint64_t{index} + 8) / 8 : (uint64_t{index} + 1) * mem_size(out.format);
+  const uint64_t bytes =
+      out.format == MemFormat::Bit ? (uint64_t{index} + 8) / 8 : (uint64_t{index} + 1) * mem_size(out.format);
   if (bytes > m.spaces[space].size) return fmt::format("{} has {} bytes", m.spaces[space].name, m.spaces[space].size);
   // What the memory's format holds, as a store would take it (BL: 0 or 1).
-  static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer, VarType::Long, VarType::Real, VarType::LongReal};
+  static constexpr VarType kTypes[] = {VarType::Byte, VarType::Byte, VarType::Integer,
+                                       VarType::Long, VarType::Real, VarType::LongReal};
   auto v = parse_number<double>(value);
   double kept = v.value_or(0);
-  const bool fits = v && (out.format == MemFormat::Bit ? *v == 0 || *v == 1 : convert_value(kTypes[static_cast<int>(out.format)], 0, kept));
+  const bool fits = v && (out.format == MemFormat::Bit ? *v == 0 || *v == 1
+                                                       : convert_value(kTypes[static_cast<int>(out.format)], 0, kept));
   const bool whole = out.format != MemFormat::Real && out.format != MemFormat::LongReal;
-  if (!fits || (whole && kept != *v)) return fmt::format("'{}' is not a value of format {}", value, kFormats[static_cast<int>(out.format)]);
+  if (!fits || (whole && kept != *v))
+    return fmt::format("'{}' is not a value of format {}", value, kFormats[static_cast<int>(out.format)]);
   out.space = static_cast<uint8_t>(space);
   out.text = text;
   out.index = index;
@@ -194,13 +198,18 @@ bool read_answers(Session& s, const vm::Module& m, const std::string& path, std:
     auto [stop, ec] = std::from_chars(answer.data(), answer.data() + answer.size(), v);
     vm::PlcWrite w;
     std::string why;
-    if (answer == "ENTER") answers.push_back({});
-    else if (ec == std::errc() && stop == answer.data() + answer.size() && std::isfinite(v)) answers.push_back({v, {}});
-    else if (answer.size() >= 2 && answer.front() == '"' && answer.back() == '"') answers.push_back({{}, std::string(answer.substr(1, answer.size() - 2))});
-    else if ((why = plc_write(m, answer, w)).empty()) plc.push_back(w);
+    if (answer == "ENTER")
+      answers.push_back({});
+    else if (ec == std::errc() && stop == answer.data() + answer.size() && std::isfinite(v))
+      answers.push_back({v, {}});
+    else if (answer.size() >= 2 && answer.front() == '"' && answer.back() == '"')
+      answers.push_back({{}, std::string(answer.substr(1, answer.size() - 2))});
+    else if ((why = plc_write(m, answer, w)).empty())
+      plc.push_back(w);
     else
       s.diags.report(DiagId::InputScript, {id, n, static_cast<uint32_t>(begin + 1), n, static_cast<uint32_t>(end + 1)},
-                     fmt::format("'{}' is {}: a line is an answer, a number, a \"text\" or ENTER to keep the value offered, or a PLC signal such as SA12=1",
+                     fmt::format("'{}' is {}: a line is an answer, a number, a \"text\" or ENTER to keep the value "
+                                 "offered, or a PLC signal such as SA12=1",
                                  answer, why == "not an answer" ? why : "not a PLC signal: " + why));
   }
   return s.diags.error_count() == errors;
@@ -236,9 +245,10 @@ ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& setting
   parts_->reporter = std::make_unique<IssueReporter>(
       s, m, dry,
       diag_message(DiagId::DryRunBound, options.max_steps,
-                   settings.max_steps ? std::string("--max-steps")
-                                      : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
-                                                    blocks, kDryRunExtraSteps)));
+                   settings.max_steps
+                       ? std::string("--max-steps")
+                       : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
+                                     blocks, kDryRunExtraSteps)));
   options.trace_blocks = settings.trace_blocks;
   vm::ProcessSetup setup{m, config, trace, *parts_->reporter, options};
   setup.dry = dry;
@@ -339,7 +349,9 @@ RunResult execute(Session& s, const vm::Module& m, const RunSettings& settings, 
 std::vector<Diagnostic> diagnostics_in_order(const Session& s) {
   std::vector<Diagnostic> list = s.diags.all();
   std::stable_sort(list.begin(), list.end(), [](const Diagnostic& a, const Diagnostic& b) {
-    auto key = [](const Diagnostic& d) { return std::tuple(!d.range.valid(), d.range.file, d.range.line, d.range.col); };
+    auto key = [](const Diagnostic& d) {
+      return std::tuple(!d.range.valid(), d.range.file, d.range.line, d.range.col);
+    };
     return key(a) < key(b);
   });
   return list;
@@ -363,7 +375,8 @@ bool bytecode_file(const std::string& path) {
   struct stat st;
   char magic[4];
   const bool found = ::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) &&
-                     ::pread(fd, magic, sizeof magic, 0) == sizeof magic && std::string_view(magic, 4) == kBytecodeMagic;
+                     ::pread(fd, magic, sizeof magic, 0) == sizeof magic &&
+                     std::string_view(magic, 4) == kBytecodeMagic;
   ::close(fd);
   return found;
 }
@@ -419,7 +432,8 @@ class Stream final : public BlockSink {
     bool held = false;  // the last block waits for the one after it (looks_ahead)
     for (; n < unit.blocks.size(); ++n) {
       ir::Block& b = unit.blocks[n];
-      if (s_.diags.error_count() || checks.found_errors() || !settled(b) || (observer_ && !observer_->streams(program, b))) {
+      if (s_.diags.error_count() || checks.found_errors() || !settled(b) ||
+          (observer_ && !observer_->streams(program, b))) {
         stopped_ = true;
         break;
       }
@@ -440,8 +454,10 @@ class Stream final : public BlockSink {
     // the last made, which move down to take their place.
     if (stopped_) return;
     if (expressions_ != SIZE_MAX) {
-      if (held) move_expressions(program, unit.blocks.front(), expressions_);
-      else program.exprs.resize(expressions_);
+      if (held)
+        move_expressions(program, unit.blocks.front(), expressions_);
+      else
+        program.exprs.resize(expressions_);
     }
     if (!held) expressions_ = program.exprs.size();
   }
@@ -455,7 +471,8 @@ class Stream final : public BlockSink {
   // program is read. Nor is a label that may end a block range, or that must be
   // unique: the unit keeps the others, N and the block's number, Unit::streamed_labels.)
   bool settled(const ir::Block& b) const {
-    if (!b.label.empty() && (rules_.block_ranges || rules_.unique_labels || !b.number || b.label != ir::Unit::StreamedLabel{*b.number, {}}.label()))
+    if (!b.label.empty() && (rules_.block_ranges || rules_.unique_labels || !b.number ||
+                             b.label != ir::Unit::StreamedLabel{*b.number, {}}.label()))
       return false;
     for (const ir::Word& w : b.words)
       if (w.code == ir::kDynamicCode) return false;
@@ -545,13 +562,14 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   if (!frontend) return std::nullopt;
   Stream stream(s, frontend->rules());
   stream.lowering.expect(s.sources.file(file).text().size());
-  ir::Program program = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
+  ir::Program program =
+      frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
   return verified(s, file, stream.lowering.finish(program, *s.profile));
 }
 
-std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect, StreamObserver& observer,
-                                         ir::Program& rest) {
+std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect,
+                                         StreamObserver& observer, ir::Program& rest) {
   auto frontend = frontend_for(s, dialect);
   if (!frontend) return std::nullopt;
   Stream stream(s, frontend->rules(), &observer);
@@ -599,8 +617,10 @@ std::optional<vm::Module> load_module(Session& s, uint32_t file) {
   int error = fd < 0 || ::fstat(fd, &st) != 0 ? errno : 0;
   if (!error && static_cast<uint64_t>(st.st_size) > kProgramFile.bytes) error = EFBIG;
   std::optional<vm::Module> m;
-  if (error) s.diags.report(DiagId::FileUnreadable, {}, f.path(), read_error(error, kProgramFile));
-  else m = vm::read_module(fd, static_cast<uint64_t>(st.st_size), f.path(), s.diags);
+  if (error)
+    s.diags.report(DiagId::FileUnreadable, {}, f.path(), read_error(error, kProgramFile));
+  else
+    m = vm::read_module(fd, static_cast<uint64_t>(st.st_size), f.path(), s.diags);
   if (fd >= 0) ::close(fd);
   return m;
 }

@@ -19,7 +19,7 @@ struct Session {
   SourceManager sources;
   Diagnostics diags;
   std::optional<stdlib::Profile> profile;
-  std::string library;  // --lib: where called programs are found
+  std::string library;                                     // --lib: where called programs are found
   std::vector<std::pair<uint8_t, std::string>> processes;  // --process N=NAME (NC-110 SPG)
   bool fast_path = true;  // --no-fast-path: every block through the ANTLR parser (to compare)
   bool stream = true;     // --no-stream: hold the whole IR before checking and lowering (to compare)
@@ -36,15 +36,16 @@ bool load_profile(Session& s, const std::string& path);
 
 struct RunSettings {
   std::optional<uint64_t> max_steps;  // default: the program's blocks + 100,000,000; a dry run's: + 1,000,000
-  std::optional<uint64_t> max_memory;  // MiB the runtime may hold (--max-memory); default: the profile's limits.run_memory_mib
+  std::optional<uint64_t>
+      max_memory;  // MiB the runtime may hold (--max-memory); default: the profile's limits.run_memory_mib
   bool block_skip = false;
   bool optional_stop = false;
   bool trace_blocks = false;
-  bool trace_machine_frame = false;  // --trace-frame machine: positions in machine coordinates
+  bool trace_machine_frame = false;     // --trace-frame machine: positions in machine coordinates
   std::optional<uint32_t> start_block;  // a main block ':N' to start at
-  std::string files;  // the ASSET sandbox ("": none, every ASSET statement answers code 18)
-  std::string input;  // the operator's answers to INP, a line each ("": none)
-  bool screen = false;  // print the user screen at the end (NC-110 §5.6)
+  std::string files;                    // the ASSET sandbox ("": none, every ASSET statement answers code 18)
+  std::string input;                    // the operator's answers to INP, a line each ("": none)
+  bool screen = false;                  // print the user screen at the end (NC-110 §5.6)
 };
 
 enum class FileKind { Source, Bytecode };
@@ -75,8 +76,8 @@ class StreamObserver {
 };
 // compile_source, showing `observer` each block it streams, and leaving in `rest` the
 // program's IR without them (the units and blocks it holds at the end).
-std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect, StreamObserver& observer,
-                                         ir::Program& rest);
+std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect,
+                                         StreamObserver& observer, ir::Program& rest);
 // A source read whole again, with no sink and its diagnostics not reported (the
 // caller has read it once): for what needs every block at once.
 std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect);
@@ -118,7 +119,7 @@ class ModuleRun {
   State step();
   State stop();  // ends it now: what the runtime holds back goes to the trace as it stands
   uint64_t steps() const;
-  const Machine* machine() const;           // process 1's (none if it never started)
+  const Machine* machine() const;              // process 1's (none if it never started)
   std::optional<uint32_t> next_block() const;  // the source block process 1 runs next
   const screen::UserScreen* user_screen() const;
   // A problem at a block, as the runtime reports one (once).

@@ -7,8 +7,8 @@
 #include "support/utf8.h"
 
 #include "gost/gost_frontend.h"
-#include "nc110/nc110_frontend.h"
 #include "iso/iso_frontend.h"
+#include "nc110/nc110_frontend.h"
 #include "pp/pp_frontend.h"
 
 namespace ncc {
@@ -45,7 +45,8 @@ std::string_view invisible(uint32_t code_point) {
 
 }  // namespace
 
-std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at, bool& reported) {
+std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at,
+                                            bool& reported) {
   constexpr FileLimit kCalledProgram{256 << 20, "a called program (its IR is held whole)", true};
   int error = 0;
   auto text = read_file(path, kCalledProgram, error);
@@ -94,7 +95,8 @@ std::string describe_char(std::string_view text, size_t at, size_t& length) {
   if (c < 0x80) return fmt::format("0x{:02X} (a control character)", c);
   if (const Utf8Char u = decode_utf8(text, at); u.length) {
     length = u.length;
-    if (std::string_view what = invisible(u.code_point); !what.empty()) return fmt::format("U+{:04X} ({})", u.code_point, what);
+    if (std::string_view what = invisible(u.code_point); !what.empty())
+      return fmt::format("U+{:04X} ({})", u.code_point, what);
     return fmt::format("'{}' (U+{:04X})", text.substr(at, u.length), u.code_point);
   }
   return fmt::format("0x{:02X} (not UTF-8)", c);  // (admit_text lets none through)
@@ -117,7 +119,8 @@ int32_t program_code(ir::Program& program, const CodeDesc& desc) {
 void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, const std::vector<std::string>& tokens) {
   for (const std::string& token : tokens) {
     CodeDesc desc;
-    if (token.size() > 1 && (token[0] == 'G' || token[0] == 'M') && std::isdigit(static_cast<unsigned char>(token[1]))) {
+    if (token.size() > 1 && (token[0] == 'G' || token[0] == 'M') &&
+        std::isdigit(static_cast<unsigned char>(token[1]))) {
       const auto& codes = token[0] == 'G' ? tables.g_codes : tables.m_codes;
       auto number = parse_number<int>(std::string_view(token).substr(1));
       auto it = number ? codes.find(*number) : codes.end();

@@ -29,8 +29,8 @@ class BlockSink {
 };
 
 struct ReadOptions {
-  std::string library;  // where called programs are looked for ("" = the dialect's default)
-  bool fast_path = true;  // plain word blocks by the hand-written scanner (false: every block by ANTLR)
+  std::string library;        // where called programs are looked for ("" = the dialect's default)
+  bool fast_path = true;      // plain word blocks by the hand-written scanner (false: every block by ANTLR)
   BlockSink* sink = nullptr;  // none: the whole program is held
   // Programs started in other processes when the run starts, as a controller's
   // keyboard selects them (NC-110 SPG): process number, NAME or NAME/DEVICE.
@@ -87,7 +87,8 @@ std::vector<std::string_view> dialect_names();
 // The text of a program file a program calls (NC-110 CLS, pp G72), a regular file of
 // at most 256 MiB (its IR is held whole); nothing if there is none at `path`, or if
 // there is one that cannot be read: that is reported at `at`, and `reported` set.
-std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at, bool& reported);
+std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at,
+                                            bool& reported);
 
 // Where the programs a program calls are: --lib, else the dialect's profile setting,
 // else the calling program's folder.
@@ -125,7 +126,8 @@ bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std:
 // `fixed` (codes the front end reads itself), and the pairs of them that must not
 // share a block: the compatibility matrix (without one, two codes of one G group),
 // and the M conflict sets.
-void add_dynamic_codes(ir::Program& program, const stdlib::DialectTables& tables, const std::set<std::string>& fixed = {});
+void add_dynamic_codes(ir::Program& program, const stdlib::DialectTables& tables,
+                       const std::set<std::string>& fixed = {});
 
 // Builds the front end of `dialect` configured by `profile`; nullptr when the
 // dialect is unknown or its profile settings are invalid (reported).

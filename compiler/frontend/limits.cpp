@@ -22,17 +22,17 @@ bool binary_byte(unsigned char c) { return c < 0x20 && c != '\t' && c != '\n' &&
 // the frequency of Russian letters (per mille, а to я); nothing when there are too
 // few such bytes or they read as no Russian text in any of them.
 std::string_view guess_code_page(std::string_view text) {
-  static constexpr std::array<int, 32> kFrequency = {80, 16, 45, 17, 30, 85, 9,  16, 74, 12, 35, 44, 32, 67, 110, 28,
-                                                     47, 55, 63, 26, 3,  10, 5,  14, 7,  4,  0,  19, 17, 3,  6,   20};
+  static constexpr std::array<int, 32> kFrequency = {80, 16, 45, 17, 30, 85, 9, 16, 74, 12, 35, 44, 32, 67, 110, 28,
+                                                     47, 55, 63, 26, 3,  10, 5, 14, 7,  4,  0,  19, 17, 3,  6,   20};
   // KOI8-R orders its letters by their Latin twins (юабцдефгхийклмнопярстужвьызшэщчъ):
   // the index in а..я of each.
-  static constexpr std::array<int, 32> kKoi8 = {30, 0,  1,  22, 4,  5,  20, 3,  21, 8,  9,  10, 11, 12, 13, 14,
-                                                15, 31, 16, 17, 18, 19, 6,  2,  28, 27, 7,  24, 29, 25, 23, 26};
+  static constexpr std::array<int, 32> kKoi8 = {30, 0,  1,  22, 4,  5,  20, 3, 21, 8,  9, 10, 11, 12, 13, 14,
+                                                15, 31, 16, 17, 18, 19, 6,  2, 28, 27, 7, 24, 29, 25, 23, 26};
   // The letter a byte above 0x7F is in each page (Ё counts as Е), or -1.
   auto cp1251 = [](unsigned char b) { return b >= 0xC0 ? (b - 0xC0) % 32 : b == 0xA8 || b == 0xB8 ? 5 : -1; };
   auto cp866 = [](unsigned char b) {
-    if (b < 0xA0) return b - 0x80;                     // А..Я
-    if (b < 0xB0) return b - 0xA0;                     // а..п
+    if (b < 0xA0) return b - 0x80;                    // А..Я
+    if (b < 0xB0) return b - 0xA0;                    // а..п
     if (b >= 0xE0 && b < 0xF0) return b - 0xE0 + 16;  // р..я
     return b == 0xF0 || b == 0xF1 ? 5 : -1;
   };
@@ -65,8 +65,10 @@ std::pair<uint32_t, uint32_t> position(const SourceFile& source, size_t at) {
   uint32_t lo = 1, hi = source.line_count();
   while (lo < hi) {
     const uint32_t mid = (lo + hi + 1) / 2;
-    if (source.line_offset(mid) <= at) lo = mid;
-    else hi = mid - 1;
+    if (source.line_offset(mid) <= at)
+      lo = mid;
+    else
+      hi = mid - 1;
   }
   return {lo, static_cast<uint32_t>(at - source.line_offset(lo) + 1)};
 }
@@ -80,7 +82,8 @@ bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags) {
   const auto is_control = [](char c) { return binary_byte(static_cast<unsigned char>(c)); };
   const auto control = static_cast<size_t>(std::count_if(probe.begin(), probe.end(), is_control));
   if (control > 2 && control * 100 > probe.size()) {
-    auto [line, col] = position(source, static_cast<size_t>(std::find_if(probe.begin(), probe.end(), is_control) - probe.begin()));
+    auto [line, col] =
+        position(source, static_cast<size_t>(std::find_if(probe.begin(), probe.end(), is_control) - probe.begin()));
     diags.report(DiagId::BinaryFile, SourceRange::point(file, line, col), control, probe.size());
     return false;
   }
@@ -101,7 +104,7 @@ bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags) {
     ++i;
   }
   const std::string bytes = more == 1 ? "is 1 more byte" : fmt::format("are {} more bytes", more);
-  const std::string others = more == 0   ? std::string()
+  const std::string others = more == 0    ? std::string()
                              : lines == 1 ? fmt::format(", nor {} on its line", bytes)
                                           : fmt::format(", nor {} on {} lines", bytes, lines);
   const bool utf16 = text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF");  // its byte-order mark
@@ -109,8 +112,8 @@ bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags) {
   const std::string looks = utf16          ? std::string("; it begins like UTF-16 text")
                             : code.empty() ? std::string()
                                            : fmt::format("; it reads as Cyrillic text in {}", code);
-  diags.report(DiagId::TextEncoding, SourceRange::point(file, line, col), static_cast<unsigned char>(text[first]), others,
-               looks, code.empty() ? "CP1251" : code);
+  diags.report(DiagId::TextEncoding, SourceRange::point(file, line, col), static_cast<unsigned char>(text[first]),
+               others, looks, code.empty() ? "CP1251" : code);
   return false;
 }
 
@@ -130,7 +133,7 @@ bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens
   size_t deep = kNone, run_at = kNone, beyond = kNone;
   size_t depth = 0, operators = 0;
   size_t run = 0, run_from = 0, run_last = 0;  // signs in a row
-  size_t run_to = 0, run_length = 0;            // of the first run beyond the limit
+  size_t run_to = 0, run_length = 0;           // of the first run beyond the limit
   bool after_operand = false;
   const std::vector<antlr4::Token*>& all = tokens.getTokens();
   for (size_t i = 0; i < all.size(); ++i) {
@@ -153,9 +156,12 @@ bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens
   const size_t first = std::min({deep, run_at, beyond});
   if (first == kNone) return true;
   antlr4::Token* t = all[first];
-  if (first == deep) diags.report(DiagId::NestingTooDeep, range(t, t), t->getText(), kMaxNesting + 1, kMaxNesting);
-  else if (first == run_at) diags.report(DiagId::SignsInARow, range(t, all[run_to]), run_length, kMaxSignsInARow);
-  else diags.report(DiagId::ExpressionTooLong, range(t, t), operators, kMaxOperators);
+  if (first == deep)
+    diags.report(DiagId::NestingTooDeep, range(t, t), t->getText(), kMaxNesting + 1, kMaxNesting);
+  else if (first == run_at)
+    diags.report(DiagId::SignsInARow, range(t, all[run_to]), run_length, kMaxSignsInARow);
+  else
+    diags.report(DiagId::ExpressionTooLong, range(t, t), operators, kMaxOperators);
   return false;
 }
 

@@ -20,7 +20,8 @@ std::vector<size_t> Unit::named_streamed_labels() const {
       if (s.kind == StmtKind::Jump) any = any || s.label.empty();
       if (s.kind == StmtKind::Jump || s.kind == StmtKind::CallRange) named.insert(s.label);
       if (s.kind == StmtKind::CallRange) named.insert(s.end_label);
-      if (s.kind == StmtKind::Call && s.label.starts_with(own)) named.insert(std::string_view(s.label).substr(own.size()));
+      if (s.kind == StmtKind::Call && s.label.starts_with(own))
+        named.insert(std::string_view(s.label).substr(own.size()));
     }
   if (!any && named.empty()) return out;
   for (size_t i = 0; i < streamed_labels.size(); ++i)

@@ -33,16 +33,30 @@ constexpr ExprId kNoExpr = UINT32_MAX;
 enum class ExprOp : uint8_t {
   Number,  // number
   Var,     // space[index a]
-  Neg, Not,
-  Add, Sub, Mul, Div, Mod, Pow,
-  Eq, Ne, Lt, Le, Gt, Ge, And, Or, Xor,
-  Call,    // builtin(a[, b])
-  Mem,     // the value of `format` at index a of memory `space`
-  Sys,     // system variable `sys` (SysRef::packed)
-  Text,    // `count` bytes at byte a of memory `space`: not a number
-  String,  // Program::texts[text]: not a number
-  TextEq,  // 1 if Text a holds the bytes of Text or String b
-  Check,   // a, which must meet semantics.value_rules[rule] (reported at word `slot`)
+  Neg,
+  Not,
+  Add,
+  Sub,
+  Mul,
+  Div,
+  Mod,
+  Pow,
+  Eq,
+  Ne,
+  Lt,
+  Le,
+  Gt,
+  Ge,
+  And,
+  Or,
+  Xor,
+  Call,          // builtin(a[, b])
+  Mem,           // the value of `format` at index a of memory `space`
+  Sys,           // system variable `sys` (SysRef::packed)
+  Text,          // `count` bytes at byte a of memory `space`: not a number
+  String,        // Program::texts[text]: not a number
+  TextEq,        // 1 if Text a holds the bytes of Text or String b
+  Check,         // a, which must meet semantics.value_rules[rule] (reported at word `slot`)
   ZeroIfVacant,  // a, or 0 if it is vacant (Macro B: a vacant operand of arithmetic)
 };
 
@@ -112,7 +126,7 @@ struct Word {
   ExprId value = kNoExpr;
   int32_t code = -1;
   SourceRange range;
-  std::string text;       // the value as written: "-10.5", "01"
+  std::string text;  // the value as written: "-10.5", "01"
 };
 
 enum class StmtKind : uint8_t {
@@ -122,17 +136,17 @@ enum class StmtKind : uint8_t {
   Jump,         // go to `label` (if `cond` is true, when given); no label: to the block numbered `value`
   RepeatBegin,  // repeat the statements up to the matching RepeatEnd `count` times
   RepeatEnd,
-  Call,         // call unit/file `label` (a block of its unit: "unit/label"), `value` times, with `args`
+  Call,  // call unit/file `label` (a block of its unit: "unit/label"), `value` times, with `args`
   Return,
-  CallRange,    // run the blocks from label `label` to label `end_label`, then go on
-  Display,      // show `items` to the operator, one after the other
-  Asset,        // an ASSET file statement (NC-110 chapter 5, `asset`): `items` its operands, `label` the file
-  Input,        // the operator enters `target`'s value, offered its current one after the prompt `label` (NC-110 INP),
-                // or after the text of screen field items[0]; items[1]: the field that shows the answer
+  CallRange,  // run the blocks from label `label` to label `end_label`, then go on
+  Display,    // show `items` to the operator, one after the other
+  Asset,      // an ASSET file statement (NC-110 chapter 5, `asset`): `items` its operands, `label` the file
+  Input,      // the operator enters `target`'s value, offered its current one after the prompt `label` (NC-110 INP),
+              // or after the text of screen field items[0]; items[1]: the field that shows the answer
   // NC-110 user screen (§5.6).
-  ScreenSwitch,  // SCR: `value` 1 on, 0 off
-  ScreenDefine,  // DEF: items field, row, column, initial value[, format]; `label` the attribute (R, A179) or ""
-  ScreenShow,    // OUT: items the fields (a negative constant: inverse); none: every field not shown yet
+  ScreenSwitch,    // SCR: `value` 1 on, 0 off
+  ScreenDefine,    // DEF: items field, row, column, initial value[, format]; `label` the attribute (R, A179) or ""
+  ScreenShow,      // OUT: items the fields (a negative constant: inverse); none: every field not shown yet
   ScreenShowWith,  // OUT n, value: items field, value
   // NC-110 processes (chapter 4).
   ProcessStart,      // EXE: start program `label` (a unit of kind Process) in process `value`
@@ -166,17 +180,17 @@ struct Stmt {
   Stmt(StmtKind k, SourceRange r) : kind(k), range(r) {}
 
   StmtKind kind = StmtKind::Machine;
-  bool optional = false;       // Comment after a mid-block '/': dropped when block skip is on
-  bool shares_locals = false;  // Call: the called code keeps the caller's locals (Macro B M98)
+  bool optional = false;              // Comment after a mid-block '/': dropped when block skip is on
+  bool shares_locals = false;         // Call: the called code keeps the caller's locals (Macro B M98)
   AssetOp asset = AssetOp::OpenRead;  // Asset
   SourceRange range;
-  ExprId target = kNoExpr;  // Assign: a Var expression
-  ExprId value = kNoExpr;   // Assign value; RepeatBegin count; Call count (none: once)
-  ExprId cond = kNoExpr;    // Jump condition; any other statement runs only if it is true
-  SourceRange end_range;    // CallRange: where end_label is written
-  double limit = 0;         // RepeatBegin: the largest count allowed (0: no limit of the dialect)
-  std::string label;        // Jump target label; Call target; Comment text
-  std::string end_label;    // CallRange
+  ExprId target = kNoExpr;         // Assign: a Var expression
+  ExprId value = kNoExpr;          // Assign value; RepeatBegin count; Call count (none: once)
+  ExprId cond = kNoExpr;           // Jump condition; any other statement runs only if it is true
+  SourceRange end_range;           // CallRange: where end_label is written
+  double limit = 0;                // RepeatBegin: the largest count allowed (0: no limit of the dialect)
+  std::string label;               // Jump target label; Call target; Comment text
+  std::string end_label;           // CallRange
   std::vector<DisplayItem> items;  // Display; Asset
   std::vector<CallArg> args;       // Call
 };
@@ -187,9 +201,9 @@ struct Block {
   bool main_block = false;         // ':' (GOST 20999 §2.6)
   bool skippable = false;          // '/' before the block: skipped when block skip is on
   bool has_errors = false;
-  bool unread = false;  // refused whole, beyond a limit: its label too is unknown
-  char sync = 0;                   // NC-110 '#': wait for the motion before; '&': do not
-  bool waits_motion = false;       // evaluated once the motion before it has ended ('#', NC-110 SA/SK blocks)
+  bool unread = false;        // refused whole, beyond a limit: its label too is unknown
+  char sync = 0;              // NC-110 '#': wait for the motion before; '&': do not
+  bool waits_motion = false;  // evaluated once the motion before it has ended ('#', NC-110 SA/SK blocks)
   std::string label;
   std::vector<Word> words;
   std::vector<std::string> comments;
@@ -235,7 +249,9 @@ struct Program {
     exprs.push_back(e);
     return static_cast<ExprId>(exprs.size() - 1);
   }
-  ExprId number(double v, SourceRange range) { return add({ExprOp::Number, Builtin::Sin, 0, v, kNoExpr, kNoExpr, range}); }
+  ExprId number(double v, SourceRange range) {
+    return add({ExprOp::Number, Builtin::Sin, 0, v, kNoExpr, kNoExpr, range});
+  }
   bool is_constant(ExprId id) const { return id != kNoExpr && exprs[id].op == ExprOp::Number; }
 };
 

@@ -13,7 +13,6 @@ namespace ncc::ir {
 
 namespace {
 
-
 const char* op_name(ExprOp op) {
   switch (op) {
     case ExprOp::Neg: return "neg";
@@ -104,18 +103,20 @@ std::string print(const Program& p, const SourceManager& sources) {
   auto letter = [](char l) { return l ? std::string(1, l) : std::string("-"); };
   out += fmt::format(
       "conventions arc_centre={} helix_lead={} parabola={} angle={} dwell={}*{}s peck={} cycle_level={} "
-      "pitch_change={} thread_j={} single_quadrant={} arc_tolerance={} lead_resolution={} m06_stops_spindle={} length_axes={} "
+      "pitch_change={} thread_j={} single_quadrant={} arc_tolerance={} lead_resolution={} m06_stops_spindle={} "
+      "length_axes={} "
       "axes={}\n",
       pick(c.arc_centre, {"incremental", "absolute"}), pick(c.helix_lead, {"per_radian", "per_revolution"}),
       pick(c.parabola_tangent, {"coordinates", "incremental"}), pick(c.angle_unit, {"deg", "rad", "rev"}),
       letter(c.dwell_word), shortest(c.dwell_seconds_per_unit), letter(c.peck_word), letter(c.cycle_level_word),
-      letter(c.pitch_change_word), c.thread_allow_j, c.arc_single_quadrant, shortest(c.arc_tolerance), shortest(c.lead_resolution),
-      c.m06_stops_spindle, c.tool_offset_axes, c.axes);
+      letter(c.pitch_change_word), c.thread_allow_j, c.arc_single_quadrant, shortest(c.arc_tolerance),
+      shortest(c.lead_resolution), c.m06_stops_spindle, c.tool_offset_axes, c.axes);
   for (size_t i = 0; i < p.semantics.cycles.size(); ++i) {
     const CyclePattern& cy = p.semantics.cycles[i];
     out += fmt::format("cycle #{} {} in={} dwell={} bottom={} out={}\n", i, cy.name,
-                       pick(cy.in, {"feed", "peck", "spindle_feed", "chip_break", "tap_cw", "tap_ccw", "back"}), cy.dwell ? "yes" : "no",
-                       pick(cy.bottom, {"-", "reverse", "stop", "orient_shift"}), pick(cy.out, {"rapid", "feed", "manual"}));
+                       pick(cy.in, {"feed", "peck", "spindle_feed", "chip_break", "tap_cw", "tap_ccw", "back"}),
+                       cy.dwell ? "yes" : "no", pick(cy.bottom, {"-", "reverse", "stop", "orient_shift"}),
+                       pick(cy.out, {"rapid", "feed", "manual"}));
   }
   for (size_t i = 0; i < p.semantics.codes.size(); ++i)
     out += fmt::format("code #{} {}\n", i, code_text(p.semantics.codes[i]));
@@ -123,7 +124,8 @@ std::string print(const Program& p, const SourceManager& sources) {
   for (uint16_t i : p.semantics.power_on) out += fmt::format(" {}", p.semantics.codes[i].name);
   out += "\n";
   for (const VarSpace& s : p.spaces)
-    out += fmt::format("space {} size={}{}{}{}\n", s.name, s.size, s.memory ? " memory" : "", s.locals == 0       ? std::string()
+    out += fmt::format("space {} size={}{}{}{}\n", s.name, s.size, s.memory ? " memory" : "",
+                       s.locals == 0        ? std::string()
                        : s.locals >= s.size ? std::string(" local")
                                             : fmt::format(" locals={}", s.locals),
                        s.vacant ? " vacant" : "");
@@ -145,7 +147,8 @@ std::string print(const Program& p, const SourceManager& sources) {
       if (!b.label.empty()) out += fmt::format(" label=\"{}\"", b.label);
       out += "\n";
       // Text the dialect does not show the operator (an NC-110 ';' block).
-      bool shown = std::any_of(b.stmts.begin(), b.stmts.end(), [](const Stmt& s) { return s.kind == StmtKind::Comment; });
+      bool shown =
+          std::any_of(b.stmts.begin(), b.stmts.end(), [](const Stmt& s) { return s.kind == StmtKind::Comment; });
       if (!shown)
         for (const std::string& text : b.comments) out += fmt::format("    note \"{}\"\n", json_escape(text));
       if (!b.words.empty()) {
@@ -179,7 +182,8 @@ std::string print(const Program& p, const SourceManager& sources) {
             out += fmt::format("    assign {} = {}\n", print_expr(p, s.target), print_expr(p, s.value));
             break;
           case StmtKind::Jump:
-            out += s.label.empty() ? fmt::format("    goto N[{}]", print_expr(p, s.value)) : fmt::format("    goto {}", s.label);
+            out += s.label.empty() ? fmt::format("    goto N[{}]", print_expr(p, s.value))
+                                   : fmt::format("    goto {}", s.label);
             if (s.cond != kNoExpr) out += " if " + print_expr(p, s.cond);
             out += "\n";
             break;
@@ -209,9 +213,9 @@ std::string print(const Program& p, const SourceManager& sources) {
           case StmtKind::ProcessWait:
           case StmtKind::ProcessWaitUntil:
           case StmtKind::ProcessSignal: {
-            static constexpr const char* kNames[] = {"input",         "screen_switch",   "screen_define", "screen_show",
-                                                     "screen_show_with", "process_start", "process_release",
-                                                     "process_wait",  "process_wait_until", "process_signal"};
+            static constexpr const char* kNames[] = {
+                "input",         "screen_switch",   "screen_define", "screen_show",        "screen_show_with",
+                "process_start", "process_release", "process_wait",  "process_wait_until", "process_signal"};
             out += fmt::format("    {}", kNames[static_cast<int>(s.kind) - static_cast<int>(StmtKind::Input)]);
             if (!s.label.empty()) out += fmt::format(" \"{}\"", s.label);
             if (s.target != kNoExpr) out += " " + print_expr(p, s.target);

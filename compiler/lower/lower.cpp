@@ -25,9 +25,9 @@ constexpr double kMaxRepeatCount = 2147483647;
 struct UnitState {
   std::map<std::string, uint32_t> labels;
   std::vector<std::pair<uint32_t, std::string>> jumps;  // (operand, label)
-  std::vector<uint32_t> repeats;    // Repeat operands whose loop has not ended
-  std::vector<uint32_t> loop_start; // where each open loop's body starts
-  size_t starting_loops = 0;        // loops whose body starts at the next block
+  std::vector<uint32_t> repeats;                        // Repeat operands whose loop has not ended
+  std::vector<uint32_t> loop_start;                     // where each open loop's body starts
+  size_t starting_loops = 0;                            // loops whose body starts at the next block
   bool entry_added = false;
   // The repeat loops open at each label (a jump out of loops closes them), and the
   // labels that end a range (a RangeEnd follows their block).
@@ -94,7 +94,8 @@ class Lowering {
       UnitState fresh;
       lower_unit(program.units[u], u == 0 ? first_unit_ : fresh);
     }
-    std::stable_sort(m_.entries.begin(), m_.entries.end(), [](const vm::Entry& a, const vm::Entry& b) { return a.pc < b.pc; });
+    std::stable_sort(m_.entries.begin(), m_.entries.end(),
+                     [](const vm::Entry& a, const vm::Entry& b) { return a.pc < b.pc; });
     resolve_calls();
     return std::move(m_);
   }
@@ -190,9 +191,7 @@ class Lowering {
   void expr(ir::ExprId id) {
     const ir::Expr& e = p_->exprs[id];
     switch (e.op) {
-      case ir::ExprOp::Number:
-        constant(Op::Const, Op::ConstDec, std::nullopt, e.number);
-        return;
+      case ir::ExprOp::Number: constant(Op::Const, Op::ConstDec, std::nullopt, e.number); return;
       case ir::ExprOp::Var:
         if (auto index = written_index(e)) {
           op(Op::Load);
@@ -259,10 +258,9 @@ class Lowering {
     expr(e.a);
     expr(e.b);
     static const std::map<ir::ExprOp, Op> binary = {
-        {ir::ExprOp::Add, Op::Add}, {ir::ExprOp::Sub, Op::Sub}, {ir::ExprOp::Mul, Op::Mul},
-        {ir::ExprOp::Div, Op::Div}, {ir::ExprOp::Mod, Op::Mod}, {ir::ExprOp::Pow, Op::Pow},
-        {ir::ExprOp::Eq, Op::Eq},   {ir::ExprOp::Ne, Op::Ne},   {ir::ExprOp::Lt, Op::Lt},
-        {ir::ExprOp::Le, Op::Le},   {ir::ExprOp::Gt, Op::Gt},   {ir::ExprOp::Ge, Op::Ge},
+        {ir::ExprOp::Add, Op::Add}, {ir::ExprOp::Sub, Op::Sub}, {ir::ExprOp::Mul, Op::Mul}, {ir::ExprOp::Div, Op::Div},
+        {ir::ExprOp::Mod, Op::Mod}, {ir::ExprOp::Pow, Op::Pow}, {ir::ExprOp::Eq, Op::Eq},   {ir::ExprOp::Ne, Op::Ne},
+        {ir::ExprOp::Lt, Op::Lt},   {ir::ExprOp::Le, Op::Le},   {ir::ExprOp::Gt, Op::Gt},   {ir::ExprOp::Ge, Op::Ge},
         {ir::ExprOp::And, Op::And}, {ir::ExprOp::Or, Op::Or},   {ir::ExprOp::Xor, Op::Xor}};
     op(binary.at(e.op));
   }
@@ -329,7 +327,8 @@ class Lowering {
       case ir::AssetOp::Write: {
         const bool at = s.items.size() > 2;
         operands(0, 3);
-        op(s.asset == ir::AssetOp::Read ? (at ? Op::AssetReadAt : Op::AssetRead) : (at ? Op::AssetWriteAt : Op::AssetWrite));
+        op(s.asset == ir::AssetOp::Read ? (at ? Op::AssetReadAt : Op::AssetRead)
+                                        : (at ? Op::AssetWriteAt : Op::AssetWrite));
         break;
       }
       case ir::AssetOp::Close:
@@ -411,12 +410,15 @@ class Lowering {
       case ir::StmtKind::ScreenSwitch: op(p_->exprs[s.value].number != 0 ? Op::ScreenOn : Op::ScreenOff); break;
       case ir::StmtKind::ScreenDefine: {
         for (size_t i = 0; i < 3; ++i) expr(s.items[i].value);  // field, row, column
-        if (s.items.size() > 4) expr(s.items[4].value);
-        else constant(Op::Const, Op::ConstDec, std::nullopt, 0);  // no format
+        if (s.items.size() > 4)
+          expr(s.items[4].value);
+        else
+          constant(Op::Const, Op::ConstDec, std::nullopt, 0);  // no format
         // The attribute: -1 none, 256 inverse (R), else the colour (An, 0..255: the front end).
         const double attribute = s.label.empty() ? -1
-                                 : s.label == "R" ? 256
-                                                  : parse_number<double>(std::string_view(s.label).substr(1)).value_or(-1);
+                                 : s.label == "R"
+                                     ? 256
+                                     : parse_number<double>(std::string_view(s.label).substr(1)).value_or(-1);
         constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
         text_or_value(3, Op::ScreenDefineText, Op::ScreenDefineMem, Op::ScreenDefineValue);
         break;
@@ -601,8 +603,7 @@ class Lowering {
       m_.entries.push_back({unit.name, entry_kind(unit), pc(), unit.processes});
       st.entry_added = true;
     }
-    if (b.main_block && b.number)
-      m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
+    if (b.main_block && b.number) m_.entries.push_back({fmt::format(":{}", *b.number), vm::EntryKind::MainBlock, pc()});
     // A block a call names (Macro B M97) is an entry point of its own.
     if (!b.label.empty() && called_.count(unit.name + "/" + b.label))
       m_.entries.push_back({unit.name + "/" + b.label, vm::EntryKind::Subprogram, pc()});
@@ -612,8 +613,8 @@ class Lowering {
     for (const ir::Stmt& s : b.stmts) {
       // A block the compiler rejected does not jump or call: where to is in doubt (a
       // dry run goes on past it, its other errors already reported).
-      if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange ||
-                           s.kind == ir::StmtKind::ProcessStart))
+      if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call ||
+                           s.kind == ir::StmtKind::CallRange || s.kind == ir::StmtKind::ProcessStart))
         continue;
       // A statement with a condition (Macro B `IF [...] THEN`) runs only when it holds.
       uint32_t unless = 0;
@@ -749,7 +750,9 @@ class Lowering {
     size_t missing[2] = {SIZE_MAX, SIZE_MAX};  // a subprogram's, a process's
     for (const auto& [at, name, process] : calls_) {
       size_t i = 0;
-      while (i < m_.entries.size() && (m_.entries[i].name != name || (m_.entries[i].kind == vm::EntryKind::Process) != process)) ++i;
+      while (i < m_.entries.size() &&
+             (m_.entries[i].name != name || (m_.entries[i].kind == vm::EntryKind::Process) != process))
+        ++i;
       if (i == m_.entries.size()) {
         if (missing[process] == SIZE_MAX) {
           missing[process] = m_.entries.size();
@@ -776,11 +779,11 @@ class Lowering {
     bool process;      // a Process entry (EXE), else a subprogram's
   };
   std::vector<CallTarget> calls_;
-  std::set<std::string> called_;                          // every entry name a call names
+  std::set<std::string> called_;                                 // every entry name a call names
   std::vector<std::pair<uint32_t, std::string>> range_ends_at_;  // (CallRange end operand, end label)
   std::map<std::string, uint32_t> labels_end_;                   // label -> its RangeEnd
-  UnitState first_unit_;  // of the first unit, whose leading blocks may come streamed
-  std::vector<WordPosition> words_;  // of the block being lowered
+  UnitState first_unit_;                      // of the first unit, whose leading blocks may come streamed
+  std::vector<WordPosition> words_;           // of the block being lowered
   std::vector<uint32_t> streamed_label_pcs_;  // where each of Unit::streamed_labels starts
 };
 

@@ -19,9 +19,7 @@ constexpr double kSame = 1e-9;
 
 // Functions a code may call besides the one wanted without changing what a flattened
 // program relies on: it writes no cutter compensation and no canned cycle.
-bool harmless(FnCall c) {
-  return c.fn == Fn::CompOff || c.fn == Fn::CycleCancel || c.fn == Fn::DistanceAbsolute;
-}
+bool harmless(FnCall c) { return c.fn == Fn::CompOff || c.fn == Fn::CycleCancel || c.fn == Fn::DistanceAbsolute; }
 
 // Whether the target has a code for a function at all, whatever else it calls.
 bool any_fits(FnCall) { return true; }
@@ -34,7 +32,9 @@ int plane_index(const Plane& plane) {
 }
 
 Fn plane_fn(int plane) { return plane == 0 ? Fn::PlaneXY : plane == 1 ? Fn::PlaneZX : Fn::PlaneYZ; }
-Fn feed_mode_fn(int mode) { return mode == 0 ? Fn::FeedInverseTime : mode == 2 ? Fn::FeedPerRevolution : Fn::FeedPerMinute; }
+Fn feed_mode_fn(int mode) {
+  return mode == 0 ? Fn::FeedInverseTime : mode == 2 ? Fn::FeedPerRevolution : Fn::FeedPerMinute;
+}
 
 }  // namespace
 
@@ -82,12 +82,16 @@ bool Flattener::write_code(FnCall call, std::vector<OutWord>& words, uint32_t so
       case Fn::FeedPerMinute: return want_.feed_mode == 1;
       case Fn::FeedPerRevolution: return want_.feed_mode == 2;
       case Fn::FeedInverseTime: return want_.feed_mode == 0;
-      case Fn::CoolantOff: case Fn::CoolantFlood: case Fn::CoolantMist: return true;  // synced after
+      case Fn::CoolantOff:
+      case Fn::CoolantFlood:
+      case Fn::CoolantMist: return true;  // synced after
       case Fn::LengthOff: return want_.length_entry == 0;
       case Fn::LengthPlus: return conv_.corrector_in_tool_word;  // NC-110 M06 of T n.0: the corrector is synced after
-      case Fn::ClampOff: case Fn::ClampRotaryOff: return true;  // NC-110 M11 unclamps every axis
+      case Fn::ClampOff:
+      case Fn::ClampRotaryOff: return true;  // NC-110 M11 unclamps every axis
       case Fn::DynamicsSmooth: return true;  // pp G09/G98: how blocks join, not where they go
-      case Fn::HelixOn: case Fn::HelixOff: return true;  // pp G24: the helix mode follows (told_.helix)
+      case Fn::HelixOn:
+      case Fn::HelixOff: return true;  // pp G24: the helix mode follows (told_.helix)
       default: return false;
     }
   };
@@ -120,7 +124,8 @@ void Flattener::applied(const Code& code) {
       case Fn::SpindleConstantSurface: told_.constant_surface = true; break;
       case Fn::SpindleCw: told_.spindle = 1; break;
       case Fn::SpindleCcw: told_.spindle = -1; break;
-      case Fn::SpindleStop: case Fn::SpindleOrient: told_.spindle = 0; break;
+      case Fn::SpindleStop:
+      case Fn::SpindleOrient: told_.spindle = 0; break;
       case Fn::CoolantMist: told_.mist = true; break;
       case Fn::CoolantFlood: told_.flood = true; break;
       case Fn::Coolant3: told_.coolant3 = true; break;
@@ -136,18 +141,19 @@ void Flattener::applied(const Code& code) {
       case Fn::ClampOff: told_.clamp = false; break;
       case Fn::ClampRotaryOn: told_.rotary_clamp = true; break;
       case Fn::ClampRotaryOff: told_.rotary_clamp = false; break;
-      case Fn::DynamicsCornerSlowdown: case Fn::DynamicsContinuous: case Fn::DynamicsPointToPoint:
-      case Fn::DynamicsSmooth:
-        told_.dynamics = c.fn;
-        break;
+      case Fn::DynamicsCornerSlowdown:
+      case Fn::DynamicsContinuous:
+      case Fn::DynamicsPointToPoint:
+      case Fn::DynamicsSmooth: told_.dynamics = c.fn; break;
       case Fn::HelixOff: told_.helix = false; break;
       case Fn::WorkOffset:
         if (target_offset_ != c.arg) told_.position.reset();  // the numbers written mean other points now
         target_offset_ = c.arg;
         break;
-      case Fn::MotionRapid: case Fn::MotionLinear: case Fn::MotionArcCw: case Fn::MotionArcCcw:
-        told_.motion = static_cast<int>(c.fn);
-        break;
+      case Fn::MotionRapid:
+      case Fn::MotionLinear:
+      case Fn::MotionArcCw:
+      case Fn::MotionArcCcw: told_.motion = static_cast<int>(c.fn); break;
       case Fn::ToolChange:
         // ISO M06 (and machines like it) stops the spindle and the coolant, and ends
         // the length offset: the state is then written again.
@@ -176,7 +182,8 @@ void Flattener::emit_block(std::vector<OutWord> words, std::string_view comment)
   if (!started_) start();
   for (const OutWord& w : words) {
     if (auto why = w_.unwritable(w)) return refuse(source_, "a value beyond the target's range: " + *why);
-    if (w.kind != Value::Count && w_.rounded_rate(w)) report_({source_, std::string(1, w.letter), Finding::RoundedRate});
+    if (w.kind != Value::Count && w_.rounded_rate(w))
+      report_({source_, std::string(1, w.letter), Finding::RoundedRate});
   }
   w_.block(words, comment);
 }
@@ -192,8 +199,10 @@ void Flattener::emit_codes(const std::vector<OutWord>& words) {
       });
     };
     auto it = std::find_if(blocks.begin(), blocks.end(), fits);
-    if (it == blocks.end()) blocks.push_back({w});
-    else it->push_back(w);
+    if (it == blocks.end())
+      blocks.push_back({w});
+    else
+      it->push_back(w);
   }
   for (auto& b : blocks) emit_block(std::move(b));
 }
@@ -214,13 +223,18 @@ void Flattener::start() {
 // tool change (a change while the spindle turns is not the same change).
 void Flattener::sync_spindle(uint32_t source) {
   if (!told_.spindle || *told_.spindle != want_.spindle)
-    write_alone(source, {want_.spindle == 1 ? Fn::SpindleCw : want_.spindle == -1 ? Fn::SpindleCcw : Fn::SpindleStop}, "the spindle");
+    write_alone(source,
+                {want_.spindle == 1    ? Fn::SpindleCw
+                 : want_.spindle == -1 ? Fn::SpindleCcw
+                                       : Fn::SpindleStop},
+                "the spindle");
   const bool extra = (told_.mist.value_or(true) && !want_.mist) || (told_.flood.value_or(true) && !want_.flood);
   if (extra) write_alone(source, {Fn::CoolantOff}, "coolant off");
   if (want_.mist && !told_.mist.value_or(false)) write_alone(source, {Fn::CoolantMist}, "mist coolant");
   if (want_.flood && !told_.flood.value_or(false)) write_alone(source, {Fn::CoolantFlood}, "flood coolant");
   if (want_.coolant3 != told_.coolant3.value_or(false) || want_.coolant4 != told_.coolant4.value_or(false)) {
-    if (told_.coolant3.value_or(false) || told_.coolant4.value_or(false)) write_alone(source, {Fn::CoolantOff34}, "coolants 3 and 4 off");
+    if (told_.coolant3.value_or(false) || told_.coolant4.value_or(false))
+      write_alone(source, {Fn::CoolantOff34}, "coolants 3 and 4 off");
     if (want_.coolant3) write_alone(source, {Fn::Coolant3}, "coolant 3");
     if (want_.coolant4) write_alone(source, {Fn::Coolant4}, "coolant 4");
   }
@@ -245,8 +259,10 @@ void Flattener::sync_state(uint32_t source) {
     }
   }
   if (want_.dynamics && told_.dynamics != want_.dynamics) {
-    if (code_for({*want_.dynamics}, any_fits)) write_alone(source, {*want_.dynamics}, "the path mode");
-    else drop(source, fmt::format("the path mode {}", fn_name(*want_.dynamics)));
+    if (code_for({*want_.dynamics}, any_fits))
+      write_alone(source, {*want_.dynamics}, "the path mode");
+    else
+      drop(source, fmt::format("the path mode {}", fn_name(*want_.dynamics)));
     told_.dynamics = want_.dynamics;
   }
   if (want_.tool >= 0 && told_.tool != want_.tool) {  // a tool selected ahead of its change
@@ -255,12 +271,17 @@ void Flattener::sync_state(uint32_t source) {
   }
   // A target without codes for feed per minute or spindle rpm knows no other mode.
   if (!told_.feed_mode || *told_.feed_mode != want_.feed_mode) {
-    if (want_.feed_mode == 1 && !code_for({Fn::FeedPerMinute}, any_fits)) told_.feed_mode = 1;
-    else write_alone(source, {feed_mode_fn(want_.feed_mode)}, "the feed mode");
+    if (want_.feed_mode == 1 && !code_for({Fn::FeedPerMinute}, any_fits))
+      told_.feed_mode = 1;
+    else
+      write_alone(source, {feed_mode_fn(want_.feed_mode)}, "the feed mode");
   }
   if (!told_.constant_surface || *told_.constant_surface != want_.constant_surface) {
-    if (!want_.constant_surface && !code_for({Fn::SpindleRpm}, any_fits)) told_.constant_surface = false;
-    else write_alone(source, {want_.constant_surface ? Fn::SpindleConstantSurface : Fn::SpindleRpm}, "the spindle speed mode");
+    if (!want_.constant_surface && !code_for({Fn::SpindleRpm}, any_fits))
+      told_.constant_surface = false;
+    else
+      write_alone(source, {want_.constant_surface ? Fn::SpindleConstantSurface : Fn::SpindleRpm},
+                  "the spindle speed mode");
   }
   if (want_.speed >= 0 && (!told_.speed || *told_.speed != want_.speed)) {
     emit_block({{'S', want_.speed, Value::Speed}});
@@ -275,8 +296,10 @@ void Flattener::sync_state(uint32_t source) {
     } else if (!conv_.link_axes.empty() && on_or_was) {
       link(source);
     } else if (want_.length_entry == 0) {
-      if (code_for({Fn::LengthOff})) write_code({Fn::LengthOff}, b, source, "tool length offset off");
-      else told_.length_entry = 0;  // the target has none: never on
+      if (code_for({Fn::LengthOff}))
+        write_code({Fn::LengthOff}, b, source, "tool length offset off");
+      else
+        told_.length_entry = 0;  // the target has none: never on
     } else if (write_code({want_.length_minus ? Fn::LengthMinus : Fn::LengthPlus}, b, source, "tool length offset")) {
       b.push_back({'H', static_cast<double>(want_.length_entry), Value::Count});
       told_.length_entry = want_.length_entry;
@@ -291,8 +314,10 @@ void Flattener::sync_state(uint32_t source) {
 void Flattener::corrector(uint32_t source) {
   const auto m06 = code_for({Fn::ToolChange}, [](FnCall c) { return c.fn == Fn::LengthPlus; });
   if (!m06 || loaded_ < 1) {
-    refuse(source, fmt::format("a tool length offset (entry {}): {} applies one at its M06 with the corrector in the T word, "
-                               "and no tool is in the spindle", want_.length_entry, w_.dialect()));
+    refuse(source,
+           fmt::format("a tool length offset (entry {}): {} applies one at its M06 with the corrector in the T word, "
+                       "and no tool is in the spindle",
+                       want_.length_entry, w_.dialect()));
     told_.length_entry = want_.length_entry;
     return;
   }
@@ -324,8 +349,10 @@ void Flattener::link(uint32_t source) {
   }
   const size_t first = digits.find_first_not_of('0');
   const OutWord amp{'&', first == std::string::npos ? 0.0 : std::stod(digits.substr(first)), Value::Count};
-  if (want_.length_entry == 0 || first == std::string::npos) emit_block({amp});
-  else emit_block({{'D', static_cast<double>(want_.length_entry), Value::Count}, amp});
+  if (want_.length_entry == 0 || first == std::string::npos)
+    emit_block({amp});
+  else
+    emit_block({{'D', static_cast<double>(want_.length_entry), Value::Count}, amp});
   told_.length_entry = want_.length_entry;
 }
 
@@ -405,7 +432,8 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
   const bool clockwise = e.rotation < 0;
   const AxisValues start = told_.position.value_or(start_);
   // The centre in the target's frame: moved as the end point was.
-  const double cu = mm(e.centre[0], u) - (mm(e.pos[u], u) - end[u]), cv = mm(e.centre[1], v) - (mm(e.pos[v], v) - end[v]);
+  const double cu = mm(e.centre[0], u) - (mm(e.pos[u], u) - end[u]),
+               cv = mm(e.centre[1], v) - (mm(e.pos[v], v) - end[v]);
   const double sweep = e.b * kPi / 180;  // radians, positive
   // An end off the circle, as far as the source's tolerance let it be, may be beyond the target's.
   const double off = std::fabs(std::hypot(start[u] - cu, start[v] - cv) - std::hypot(end[u] - cu, end[v] - cv));
@@ -417,7 +445,8 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
   if (std::fabs(dw) > kSame && conv_.helix_by_end && e.b > 360 + 1e-6)
     return refuse(e.source, fmt::format("a helix of {} turns: {} writes a helix by its end point, one turn at most",
                                         four_decimals(e.b / 360), w_.dialect()));
-  if (std::fabs(dw) > kSame && !told_.helix.value_or(false) && code_for({Fn::HelixOn}, [](FnCall c) { return c.fn == Fn::DynamicsSmooth; })) {
+  if (std::fabs(dw) > kSame && !told_.helix.value_or(false) &&
+      code_for({Fn::HelixOn}, [](FnCall c) { return c.fn == Fn::DynamicsSmooth; })) {
     std::vector<OutWord> b;
     write_code({Fn::HelixOn}, b, e.source, "helix mode");
     emit_block(std::move(b));
@@ -461,14 +490,13 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
       const double x = written_length(to[i]);
       if (i != u && i != v && std::fabs(from[i] - x) < kSame) continue;
       if (axes_.find(kAxisLetters[i]) == std::string::npos)
-        return refuse(e.source, fmt::format("a move of axis {}: the target machine has axes {}", kAxisLetters[i], axes_));
+        return refuse(e.source,
+                      fmt::format("a move of axis {}: the target machine has axes {}", kAxisLetters[i], axes_));
       b.push_back({kAxisLetters[i], x, Value::Length});
       at[i] = x;
     }
     const bool plane_words = conv_.centre_words == CentreWords::Plane;
-    auto centre_letter = [&](int axis, char plane_word) {
-      return plane_words || axis >= 3 ? plane_word : "IJK"[axis];
-    };
+    auto centre_letter = [&](int axis, char plane_word) { return plane_words || axis >= 3 ? plane_word : "IJK"[axis]; };
     const bool absolute = conv_.arc_centre == ArcCentre::Absolute;
     b.push_back({centre_letter(u, 'I'), written_length(absolute ? cu : cu - from[u]), Value::Length});
     b.push_back({centre_letter(v, 'J'), written_length(absolute ? cv : cv - from[v]), Value::Length});
@@ -508,11 +536,14 @@ void Flattener::parabola(const Event& e) {
   for (int i = 0; i < 3; ++i) control[i] = e.control[i];
   control = target_point(control);
   for (int i = 2; i < kAxisCount; ++i)
-    if (std::fabs(written_length(end[i]) - from[i]) > kSame || (i == 2 && std::fabs(written_length(control[i]) - from[i]) > kSame))
-      return refuse(e.source, fmt::format("a parabola out of the XY plane: {}'s G5.1 moves X and Y only", w_.dialect()));
+    if (std::fabs(written_length(end[i]) - from[i]) > kSame ||
+        (i == 2 && std::fabs(written_length(control[i]) - from[i]) > kSame))
+      return refuse(e.source,
+                    fmt::format("a parabola out of the XY plane: {}'s G5.1 moves X and Y only", w_.dialect()));
   const double i = written_length(control[0] - from[0]), j = written_length(control[1] - from[1]);
   if (std::fabs(i) < kSame && std::fabs(j) < kSame)
-    return refuse(e.source, fmt::format("a parabola whose control point is its start: {}'s G5.1 takes none", w_.dialect()));
+    return refuse(e.source,
+                  fmt::format("a parabola whose control point is its start: {}'s G5.1 takes none", w_.dialect()));
   if (!told_.plane || *told_.plane != want_.plane) {
     std::vector<OutWord> pc;
     if (!write_code({plane_fn(want_.plane)}, pc, e.source, "the parabola's plane")) return;
@@ -554,7 +585,9 @@ void Flattener::event(const Event& e) {
     case EventKind::SpindleSpeed: want_.speed = inch_ && want_.constant_surface ? e.a * 0.3048 : e.a; break;
     case EventKind::SpindleOn: want_.spindle = e.n; break;
     case EventKind::SpindleStop: want_.spindle = 0; break;
-    case EventKind::Rapid: case EventKind::Linear: case EventKind::Arc: move(e); break;
+    case EventKind::Rapid:
+    case EventKind::Linear:
+    case EventKind::Arc: move(e); break;
     case EventKind::Dwell: {
       std::vector<OutWord> words;
       sync_state(e.source);
@@ -577,14 +610,16 @@ void Flattener::event(const Event& e) {
         const double reference = target_.reference_position[axis] - offset_mm(axis);
         const double at = told_.position ? (*told_.position)[axis] : target_.initial_position[axis] - offset_mm(axis);
         if (std::fabs(written_length(at) - written_length(reference)) > kSame)
-          return refuse(e.source, fmt::format("a tool change where the tool stands: {}'s M06 first takes {} to the reference "
-                                              "point (a machine that changes tools in place says iso.tool_change_retract = "
-                                              "false in --target-machine)",
-                                              w_.dialect(), conv_.tool_offset_axes[0]));
+          return refuse(e.source,
+                        fmt::format("a tool change where the tool stands: {}'s M06 first takes {} to the reference "
+                                    "point (a machine that changes tools in place says iso.tool_change_retract = "
+                                    "false in --target-machine)",
+                                    w_.dialect(), conv_.tool_offset_axes[0]));
       }
       if ((conv_.tool_change_iso || conv_.m06_stops_spindle) && (want_.spindle != 0 || want_.mist || want_.flood))
-        return refuse(e.source, fmt::format("a tool change with the spindle or the coolant on: {}'s M06 stops them first",
-                                            w_.dialect()));
+        return refuse(
+            e.source,
+            fmt::format("a tool change with the spindle or the coolant on: {}'s M06 stops them first", w_.dialect()));
       sync_spindle(e.source);
       std::vector<OutWord> words{{'T', static_cast<double>(e.n), Value::Count}};
       if (write_code({Fn::ToolChange}, words, e.source, "tool change")) emit_block(std::move(words));
@@ -605,13 +640,16 @@ void Flattener::event(const Event& e) {
     }
     case EventKind::CutterComp:
       if (e.n != 0 && !comp_path_)
-        refuse(e.source, "cutter radius compensation: the source's run shows the programmed contour, not the tool centre's path");
+        refuse(e.source,
+               "cutter radius compensation: the source's run shows the programmed contour, not the tool centre's path");
       break;
     case EventKind::WorkOffset: want_.work_offset = e.n; break;
     // In the positions already (machine coordinates).
-    case EventKind::PositionOffset: case EventKind::Origin: case EventKind::Transform: case EventKind::OffsetLoad:
-    case EventKind::Block:
-      break;
+    case EventKind::PositionOffset:
+    case EventKind::Origin:
+    case EventKind::Transform:
+    case EventKind::OffsetLoad:
+    case EventKind::Block: break;
     case EventKind::Coolant:
       switch (e.n) {
         case 0: want_.mist = want_.flood = false; break;
@@ -622,7 +660,8 @@ void Flattener::event(const Event& e) {
         default: want_.coolant3 = want_.coolant4 = false; break;
       }
       break;
-    case EventKind::Comment: case EventKind::Message: w_.comment(e.text); break;
+    case EventKind::Comment:
+    case EventKind::Message: w_.comment(e.text); break;
     case EventKind::Stop: {
       if (e.n == 3) return refuse(e.source, "a manual retract (G87/G88): the operator moves the tool");
       std::vector<OutWord> words;
@@ -643,9 +682,9 @@ void Flattener::event(const Event& e) {
       break;
     }
     case EventKind::PathMode: {
-      static constexpr Fn kModes[] = {Fn::PathAccelerate, Fn::PathDecelerate, Fn::PathTapping, Fn::PathSpindleSync,
-                                      Fn::DynamicsCornerSlowdown, Fn::DynamicsContinuous, Fn::DynamicsPointToPoint,
-                                      Fn::DynamicsSmooth};
+      static constexpr Fn kModes[] = {Fn::PathAccelerate,       Fn::PathDecelerate,         Fn::PathTapping,
+                                      Fn::PathSpindleSync,      Fn::DynamicsCornerSlowdown, Fn::DynamicsContinuous,
+                                      Fn::DynamicsPointToPoint, Fn::DynamicsSmooth};
       if (e.n < 0 || e.n >= 8) break;
       if (e.n >= 4) {  // a mode: written before the next move that needs it
         want_.dynamics = kModes[e.n];
@@ -666,8 +705,13 @@ void Flattener::event(const Event& e) {
       want_.spindle = 0;
       break;
     }
-    case EventKind::Clamp: case EventKind::Override: case EventKind::SpindleHold: {
-      Fn fn = e.kind == EventKind::Clamp ? (e.n == 1 ? Fn::ClampOn : e.n == 0 ? Fn::ClampOff : e.n == 3 ? Fn::ClampRotaryOn : Fn::ClampRotaryOff)
+    case EventKind::Clamp:
+    case EventKind::Override:
+    case EventKind::SpindleHold: {
+      Fn fn = e.kind == EventKind::Clamp      ? (e.n == 1   ? Fn::ClampOn
+                                                 : e.n == 0 ? Fn::ClampOff
+                                                 : e.n == 3 ? Fn::ClampRotaryOn
+                                                            : Fn::ClampRotaryOff)
               : e.kind == EventKind::Override ? (e.n ? Fn::OverrideEnable : Fn::OverrideDisable)
                                               : (e.n ? Fn::SpindleHoldOn : Fn::SpindleHoldOff);
       // The overrides and the constant spindle speed are the operator's: a target
@@ -684,7 +728,9 @@ void Flattener::event(const Event& e) {
       break;
     }
     case EventKind::Parabola: parabola(e); break;
-    case EventKind::Thread: refuse(e.source, "a threading move: flattening writes no spindle-synchronised motion yet"); break;
+    case EventKind::Thread:
+      refuse(e.source, "a threading move: flattening writes no spindle-synchronised motion yet");
+      break;
     case EventKind::Spline: refuse(e.source, "a spline: flattening writes straight lines and arcs"); break;
     case EventKind::Probe: refuse(e.source, "a probing move: its end depends on the part"); break;
     case EventKind::OperatorMove: refuse(e.source, "a move the operator makes"); break;
@@ -695,8 +741,10 @@ void Flattener::event(const Event& e) {
     case EventKind::Graphic: drop(e.source, "the graphic display of the path (UCG, CLG, DCG)"); break;
     case EventKind::Tooling:
       // A corrector changed is the target's offset table changed: it has no such statement.
-      if (e.n == kToolingCorrector) refuse(e.source, "a change to a tool corrector (RQU, RQP)");
-      else drop(e.source, "a tool declared unusable or the probe's settings (TOF, DPT)");
+      if (e.n == kToolingCorrector)
+        refuse(e.source, "a change to a tool corrector (RQU, RQP)");
+      else
+        drop(e.source, "a tool declared unusable or the probe's settings (TOF, DPT)");
       break;
     case EventKind::Virtual: refuse(e.source, "virtual axes (UAV): the moves are the virtual axes'"); break;
     case EventKind::Aux: refuse(e.source, "auxiliary function " + e.text + " of the machine's logic"); break;
@@ -704,11 +752,19 @@ void Flattener::event(const Event& e) {
     case EventKind::Tolerance: refuse(e.source, "an in-position tolerance (DTL)"); break;
     case EventKind::Limits: refuse(e.source, "working limits (DLO)"); break;
     case EventKind::Zone: refuse(e.source, "a protected zone (DSA, ASC, DSC)"); break;
-    case EventKind::Configuration: if (e.n) refuse(e.source, "the turning configuration (CTL)"); break;
-    case EventKind::SpindleRange: if (e.n) refuse(e.source, "a forced spindle range (M41-M45)"); break;
+    case EventKind::Configuration:
+      if (e.n) refuse(e.source, "the turning configuration (CTL)");
+      break;
+    case EventKind::SpindleRange:
+      if (e.n) refuse(e.source, "a forced spindle range (M41-M45)");
+      break;
     case EventKind::PartChange: refuse(e.source, "a part change (M60)"); break;
-    case EventKind::Diameter: if (e.n) refuse(e.source, "diameter programming (G74)"); break;
-    case EventKind::FeedReduction: if (e.n) refuse(e.source, "the feed reduced to F / 100 (M37)"); break;
+    case EventKind::Diameter:
+      if (e.n) refuse(e.source, "diameter programming (G74)");
+      break;
+    case EventKind::FeedReduction:
+      if (e.n) refuse(e.source, "the feed reduced to F / 100 (M37)");
+      break;
   }
 }
 

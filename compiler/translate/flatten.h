@@ -73,12 +73,12 @@ class Flattener final : public TraceSink {
   const Conventions& conv_;
   const MachineConfig& target_;
   std::function<void(const Refusal&)> report_;  // a refusal or a drop
-  std::string axes_;       // the target's axis letters
-  bool inch_ = false;      // the source's unit
-  std::optional<double> feed_programmed_;  // F as the source wrote it
-  uint32_t source_ = 0;     // the block of the event being written
-  int loaded_ = -1;         // the tool in the spindle
-  bool comp_path_ = false;  // the source's trace shows the tool centre's path (ISO)
+  std::string axes_;                            // the target's axis letters
+  bool inch_ = false;                           // the source's unit
+  std::optional<double> feed_programmed_;       // F as the source wrote it
+  uint32_t source_ = 0;                         // the block of the event being written
+  int loaded_ = -1;                             // the tool in the spindle
+  bool comp_path_ = false;                      // the source's trace shows the tool centre's path (ISO)
   bool started_ = false;
   bool ended_ = false;
   bool after_end_ = false;
@@ -93,10 +93,10 @@ class Flattener final : public TraceSink {
     int spindle = 0;  // 1 cw, -1 ccw, 0 stop
     bool mist = false, flood = false, coolant3 = false, coolant4 = false;
     int work_offset = 0;
-    int tool = -1;  // selected
+    int tool = -1;         // selected
     int length_entry = 0;  // tool length offset entry (0: none)
     bool length_minus = false;
-    AxisValues length_axes{};  // the offset on each axis, as the source's run applies it
+    AxisValues length_axes{};    // the offset on each axis, as the source's run applies it
     std::optional<Fn> dynamics;  // how blocks join (NC-110 G27-G29, pp G23/G24), once the source says
   };
   State want_;
@@ -111,8 +111,8 @@ class Flattener final : public TraceSink {
   };
   Told told_;
   std::vector<OutWord> block_codes_;  // codes of one block only, for the next move
-  AxisValues start_{};     // where the target machine starts, in its frame at the first move
-  int target_offset_ = -1;  // the work offset the target has selected (-1: none yet)
+  AxisValues start_{};                // where the target machine starts, in its frame at the first move
+  int target_offset_ = -1;            // the work offset the target has selected (-1: none yet)
 };
 
 }  // namespace ncc::translate

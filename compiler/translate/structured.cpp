@@ -33,8 +33,13 @@ constexpr uint32_t kExtraBase = 100, kExtraEnd = 150;
 // warned of, as flattening does.
 bool path_manner(Fn fn) {
   switch (fn) {
-    case Fn::DynamicsCornerSlowdown: case Fn::DynamicsContinuous: case Fn::DynamicsPointToPoint:
-    case Fn::DynamicsSmooth: case Fn::PathAccelerate: case Fn::PathDecelerate: case Fn::OverrideEnable:
+    case Fn::DynamicsCornerSlowdown:
+    case Fn::DynamicsContinuous:
+    case Fn::DynamicsPointToPoint:
+    case Fn::DynamicsSmooth:
+    case Fn::PathAccelerate:
+    case Fn::PathDecelerate:
+    case Fn::OverrideEnable:
     case Fn::OverrideDisable: return true;
     default: return false;
   }
@@ -49,7 +54,7 @@ struct Structured::Mapped {
   Code code;
   Timing wants, has;
   std::vector<std::string> sets;  // the M conflict sets (stdlib tables)
-  std::string later;  // written after the block's other codes instead (G43 H after M06)
+  std::string later;              // written after the block's other codes instead (G43 H after M06)
 };
 
 Structured::Structured(std::string dialect, Writer& writer, const MachineConfig& target_machine)
@@ -92,8 +97,12 @@ int Structured::frame_codes(const ir::Program& program, const ir::Block& b) cons
       const CodeDesc& d = program.semantics.codes[static_cast<size_t>(w.code)];
       for (const FnCall& c : d.calls)
         if (is_frame(c.fn))
-          found = std::max(found, same_ || own_frame(c.fn) || (exact_code({c}, d.scope) && (c.fn != Fn::Mirror ||
-                                                           program.semantics.conventions.mirror_toggles == dst_.mirror_toggles)) ? 1 : 2);
+          found = std::max(found, same_ || own_frame(c.fn) ||
+                                          (exact_code({c}, d.scope) &&
+                                           (c.fn != Fn::Mirror ||
+                                            program.semantics.conventions.mirror_toggles == dst_.mirror_toggles))
+                                      ? 1
+                                      : 2);
     }
   return found;
 }
@@ -155,7 +164,8 @@ void Structured::lead(const ir::Block& b) {
   });
   const bool moves = std::any_of(b.words.begin(), b.words.end(), [&](const ir::Word& w) {
     return (w.kind == ir::WordKind::Code && w.code < 0) ||
-           (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos);
+           (w.kind == ir::WordKind::Parameter && w.address.size() == 1 &&
+            src_.axes.find(w.address[0]) != std::string::npos);
   });
   lead_before_ = lead_.size();
   if (!plain) {
@@ -163,8 +173,7 @@ void Structured::lead(const ir::Block& b) {
     return;
   }
   in_lead_ = true;
-  for (const ir::Word& w : b.words)
-    lead_feed_ |= w.kind == ir::WordKind::Parameter && w.address == "F";
+  for (const ir::Word& w : b.words) lead_feed_ |= w.kind == ir::WordKind::Parameter && w.address == "F";
   for (const ir::Word& w : b.words)
     if (w.kind == ir::WordKind::Code && w.code >= 0) {
       const CodeDesc& desc = p_->semantics.codes[static_cast<size_t>(w.code)];
@@ -182,11 +191,15 @@ void Structured::lead(const ir::Block& b) {
 bool Structured::at_power_on(const FnCall& c) const {
   if (!target_power_on_) return false;
   switch (c.fn) {
-    case Fn::SpindleStop: case Fn::CoolantOff: case Fn::OverrideEnable: case Fn::SpindleRangeCancel:
-    case Fn::SpindleRangeAuto:
-      return true;
-    case Fn::ClampOff: case Fn::ClampRotaryOff:
-      return std::none_of(target_power_on_->begin(), target_power_on_->end(), [&](const FnCall& o) { return fn_group(o.fn) == fn_group(c.fn); });
+    case Fn::SpindleStop:
+    case Fn::CoolantOff:
+    case Fn::OverrideEnable:
+    case Fn::SpindleRangeCancel:
+    case Fn::SpindleRangeAuto: return true;
+    case Fn::ClampOff:
+    case Fn::ClampRotaryOff:
+      return std::none_of(target_power_on_->begin(), target_power_on_->end(),
+                          [&](const FnCall& o) { return fn_group(o.fn) == fn_group(c.fn); });
     default: break;
   }
   if (std::find(target_power_on_->begin(), target_power_on_->end(), c) != target_power_on_->end()) return true;
@@ -194,7 +207,8 @@ bool Structured::at_power_on(const FnCall& c) const {
   if (c.fn != Fn::WorkOffset) return false;
   auto zero = [&](int n) {
     const auto it = target_.work_offsets.find(n);
-    return it == target_.work_offsets.end() || std::all_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v == 0; });
+    return it == target_.work_offsets.end() ||
+           std::all_of(it->second.values.begin(), it->second.values.end(), [](double v) { return v == 0; });
   };
   int start = 0;
   for (const FnCall& o : *target_power_on_)
@@ -226,11 +240,11 @@ void Structured::begin_main() {
   forget();
   in_main_ = true;
   frame_ = Frame{};  // no rotation, scale or mirror at power-on
-  moved_ = false;  // the tool is where the machine starts
+  moved_ = false;    // the tool is where the machine starts
   coolant_on_ = length_on_ = comp_on_ = false;
   length_entry_ = 0;
   spindle_turns_ = spindle_direction_ = 0;
-  rpm_ = true;  // a cutting speed needs its code (G96)
+  rpm_ = true;                        // a cutting speed needs its code (G96)
   tool_selected_ = tool_loaded_ = 0;  // no tool in the spindle
   corrector_ = 0;
   timer_ = 0;  // NC-110's TMR at power-on
@@ -245,7 +259,8 @@ void Structured::begin_main() {
   const auto origin = target_.work_offsets.find(*source_origin_);
   if (inch_ == false && (origin != target_.work_offsets.end() ? !origin->second.inch : *source_origin_ == 0))
     for (size_t i = 0; i < 3; ++i)
-      position_[i] = target_.initial_position[i] - (origin != target_.work_offsets.end() ? origin->second.values[i] : 0);
+      position_[i] =
+          target_.initial_position[i] - (origin != target_.work_offsets.end() ? origin->second.values[i] : 0);
   // Where a motion code alone moves (LinuxCNC's G0 to where the tool is), the
   // power-on motion goes into the main program's first move instead of the start.
   if (motion_code_moves() && !same_)
@@ -300,11 +315,14 @@ bool Structured::emit(std::FILE* streamed, std::FILE* out) {
 void Structured::unit(const ir::Unit& u, bool main) {
   if (u.kind == ir::UnitKind::Process) return fail(u.range, "a process program (EXE)");
   if (!main && u.kind == ir::UnitKind::Program && !next_program(u))  // GOST 20999 §1.8
-    return fail(u.range, fmt::format("a second program on the medium, run after the first ends: {} runs one", w_.dialect()));
+    return fail(u.range,
+                fmt::format("a second program on the medium, run after the first ends: {} runs one", w_.dialect()));
   if (main) main_at_ = w_.pending();
   in_main_ = main;
-  if (!main) forget();
-  else if (!streamed_) begin_main();  // else its leading blocks are written already
+  if (!main)
+    forget();
+  else if (!streamed_)
+    begin_main();  // else its leading blocks are written already
   open_unit(u, main);
   bool returned = false;
   for (size_t i = 0; i < u.blocks.size(); ++i) {
@@ -326,7 +344,7 @@ std::optional<uint32_t> Structured::common_number(const ir::Expr& e) const {
 }
 
 std::optional<uint32_t> Structured::parameter_number(const ir::Expr& e, uint32_t first, uint32_t end,
-                                                    std::set<uint32_t>& taken, uint32_t& next) const {
+                                                     std::set<uint32_t>& taken, uint32_t& next) const {
   std::optional<uint32_t> n = common_number(e);
   if (!n || *n < first || *n >= end || taken.count(*n)) {
     while (taken.count(next)) ++next;
@@ -359,8 +377,10 @@ void Structured::note_access(const ir::Block& b, const ir::Stmt* stmt) {
     if (id == ir::kNoExpr) return;
     const ir::Expr& e = p_->exprs[id];
     if (e.op == ir::ExprOp::Var) {
-      if (p_->is_constant(e.a)) named.emplace(e.space, static_cast<uint32_t>(p_->exprs[e.a].number));
-      else computed = true;
+      if (p_->is_constant(e.a))
+        named.emplace(e.space, static_cast<uint32_t>(p_->exprs[e.a].number));
+      else
+        computed = true;
     }
     if (e.op != ir::ExprOp::Number && e.op != ir::ExprOp::String) {
       add(e.a);
@@ -407,7 +427,8 @@ bool Structured::block(const ir::Block& b) {
   if (program_ended_ && in_main_ && !reads_after_end()) return false;
   // Comment blocks before the main program's first block: its title, on the line
   // that starts the target's program (an NC-110 comment block takes a block cycle).
-  if (in_main_ && !main_begun_ && b.words.empty() && b.stmts.empty() && !b.number && !b.comments.empty() && title_line()) {
+  if (in_main_ && !main_begun_ && b.words.empty() && b.stmts.empty() && !b.number && !b.comments.empty() &&
+      title_line()) {
     for (const std::string& c : b.comments)
       if (auto text = trim(c); !text.empty()) title_comments_.emplace_back(text);
     return false;
@@ -415,8 +436,8 @@ bool Structured::block(const ir::Block& b) {
   // (A block that writes no line yet begins the program where it does more than its
   // words: a loop's head, a label.)
   main_begun_ |= in_main_ && (!b.label.empty() || std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
-                                return s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Comment;
-                              }));
+                   return s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Comment;
+                 }));
   block_ = &b;
   words_written_ = false;
   if (!pending_number_) pending_number_ = carried_number_;  // a block before it wrote nothing
@@ -438,8 +459,10 @@ bool Structured::block(const ir::Block& b) {
   for (const ir::Stmt& s : b.stmts) {
     note_access(b, &s);
     returned = s.kind == ir::StmtKind::Return;
-    if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump) conditional(s);
-    else statement(s);
+    if (s.cond != ir::kNoExpr && s.kind != ir::StmtKind::Jump)
+      conditional(s);
+    else
+      statement(s);
   }
   if (!extra_words_.empty()) write_words(std::exchange(extra_words_, {}));  // with no machine words to join
   if (std::exchange(carry_, false)) return returned;
@@ -463,17 +486,23 @@ void Structured::statement(const ir::Stmt& s) {
     case ir::StmtKind::Display: return display(s);
     case ir::StmtKind::Asset: return fail(s.range, "an ASSET file statement");
     case ir::StmtKind::Input: return fail(s.range, "operator input (INP)");
-    case ir::StmtKind::ScreenSwitch: case ir::StmtKind::ScreenDefine: case ir::StmtKind::ScreenShow:
+    case ir::StmtKind::ScreenSwitch:
+    case ir::StmtKind::ScreenDefine:
+    case ir::StmtKind::ScreenShow:
     case ir::StmtKind::ScreenShowWith: return fail(s.range, "the user screen");
-    case ir::StmtKind::ProcessStart: case ir::StmtKind::ProcessRelease: case ir::StmtKind::ProcessWait:
-    case ir::StmtKind::ProcessWaitUntil: case ir::StmtKind::ProcessSignal: return fail(s.range, "processes");
+    case ir::StmtKind::ProcessStart:
+    case ir::StmtKind::ProcessRelease:
+    case ir::StmtKind::ProcessWait:
+    case ir::StmtKind::ProcessWaitUntil:
+    case ir::StmtKind::ProcessSignal: return fail(s.range, "processes");
   }
 }
 
 void Structured::line(std::string text) {
   main_begun_ |= in_main_;
   std::string head = std::exchange(label_, {});
-  if (pending_number_) head += (head.empty() ? "" : " ") + fmt::format("{}{}", main_number_ ? ':' : 'N', *pending_number_);
+  if (pending_number_)
+    head += (head.empty() ? "" : " ") + fmt::format("{}{}", main_number_ ? ':' : 'N', *pending_number_);
   pending_number_.reset();  // a skipped block's lines all start with '/'
   if (pending_sync_) head += (head.empty() ? "" : " ") + std::string(1, std::exchange(pending_sync_, 0));
   text = std::exchange(then_, {}) + text;
@@ -543,7 +572,8 @@ void Structured::machine() {
 std::string Structured::verbatim_word(const ir::Word& w) {
   switch (w.kind) {
     case ir::WordKind::Code: return w.code < 0 ? as_written(w) : p_->semantics.codes[static_cast<size_t>(w.code)].name;
-    case ir::WordKind::Parameter: case ir::WordKind::Argument: return as_written(w);
+    case ir::WordKind::Parameter:
+    case ir::WordKind::Argument: return as_written(w);
     case ir::WordKind::Control: return w.address + value(w.value, 'N');  // M98 P1000, not P1000.
     default: return {};
   }
@@ -567,7 +597,8 @@ void Structured::translated_machine() {
   if (opens || in_gtl_ || block_has(Fn::GtlDefine) || block_has(Fn::GtlClose)) {
     in_gtl_ = (in_gtl_ || opens) && !block_has(Fn::GtlClose);
     return fail(block_->range, fmt::format("GTL geometry (§2.11): {} has no geometric elements or profiles; "
-                                           "--flatten writes the path a run makes", w_.dialect()));
+                                           "--flatten writes the path a run makes",
+                                           w_.dialect()));
   }
   std::vector<Mapped> codes;
   const auto motion_code = [](const Mapped& c) {
@@ -576,7 +607,7 @@ void Structured::translated_machine() {
   };
   std::vector<std::string> params;
   bool moves = false;
-  bool drills = false;  // the block has a position in the plane (a converted cycle's hole)
+  bool drills = false;                              // the block has a position in the plane (a converted cycle's hole)
   std::array<const ir::Word*, 6> parabola_words{};  // X Y Z I J K of a parabola the target writes otherwise
   operand_words_ = false;
   // Where the previous block's corner left the tool, and the motion code its fillet
@@ -584,7 +615,7 @@ void Structured::translated_machine() {
   const auto chained = std::exchange(chained_start_, std::nullopt);
   std::string restore_motion = std::exchange(restore_motion_, {});
   const auto centre_override = std::exchange(centre_override_, std::nullopt);  // its arc's, from that point
-  if (src_.corrector_in_tool_word)  // before M06 of the same block
+  if (src_.corrector_in_tool_word)                                             // before M06 of the same block
     for (const ir::Word& w : block_->words)
       if (w.kind == ir::WordKind::Parameter && w.address[0] == 'T') corrector(w);
   for (const ir::Word& w : block_->words)
@@ -613,10 +644,12 @@ void Structured::translated_machine() {
   // A code two words map to (GOST's M05 M09: pp's M05 M09, and M09 again), once.
   for (size_t i = 0; i < codes.size(); ++i)
     for (size_t j = codes.size() - 1; j > i; --j)
-      if (codes[j].code.letter == codes[i].code.letter && codes[j].code.number == codes[i].code.number && codes[j].later.empty())
+      if (codes[j].code.letter == codes[i].code.letter && codes[j].code.number == codes[i].code.number &&
+          codes[j].later.empty())
         codes.erase(codes.begin() + static_cast<long>(j));
   for (const Mapped& c : codes) state(c.code.entry->desc.calls);
-  for (const ir::Word* w : std::exchange(frames_, {})) frame_code(*w, p_->semantics.codes[static_cast<size_t>(w->code)]);
+  for (const ir::Word* w : std::exchange(frames_, {}))
+    frame_code(*w, p_->semantics.codes[static_cast<size_t>(w->code)]);
   // A block in machine coordinates (G53) leaves the program's coordinates unknown.
   const bool machine_frame = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
     if (w.kind != ir::WordKind::Code || w.code < 0) return false;
@@ -629,22 +662,24 @@ void Structured::translated_machine() {
   const auto start = position_;  // where the block's arc starts
   // ISO's, GOST's and pp's centre along X Y Z, from the start: NC-110's two words of
   // the plane (both needed), from the origin under G90.
-  const bool plane_words = !reads_source_words() && src_.centre_words == CentreWords::PerAxis &&
-                           dst_.centre_words == CentreWords::Plane;
+  const bool plane_words =
+      !reads_source_words() && src_.centre_words == CentreWords::PerAxis && dst_.centre_words == CentreWords::Plane;
   std::array<const ir::Word*, 3> centre_words{};
-  size_t centre_at = 0;  // ... written at this place of params
-  const ir::Word* radius = nullptr;  // an arc's R, where the target gives arcs by their centre
-  const ir::Word* lead = nullptr;    // a helix's lead word
-  const ir::Word* corner = nullptr;  // ISO's ,C or ,R, where the target has no corners
+  size_t centre_at = 0;                    // ... written at this place of params
+  const ir::Word* radius = nullptr;        // an arc's R, where the target gives arcs by their centre
+  const ir::Word* lead = nullptr;          // a helix's lead word
+  const ir::Word* corner = nullptr;        // ISO's ,C or ,R, where the target has no corners
   std::array<const ir::Word*, 2> polar{};  // the plane's radius and angle, where the target has no G16
-  size_t polar_at = 0;                    // ... written at this place of params
+  size_t polar_at = 0;                     // ... written at this place of params
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
   // A move under a frame the target has not: its points transformed (framed_move()).
-  const bool framed_block = !operand_words_ && !machine_frame && framed(std::any_of(block_->words.begin(), block_->words.end(), [](const ir::Word& w) {
-    return w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] >= 'X' && w.address[0] <= 'Z';
-  }));
+  const bool framed_block =
+      !operand_words_ && !machine_frame &&
+      framed(std::any_of(block_->words.begin(), block_->words.end(), [](const ir::Word& w) {
+        return w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] >= 'X' && w.address[0] <= 'Z';
+      }));
   size_t framed_at = SIZE_MAX;
-  std::string arc_code;  // ... an arc's motion code, turned where one axis of its plane is mirrored
+  std::string arc_code;    // ... an arc's motion code, turned where one axis of its plane is mirrored
   std::string helix_code;  // the target's helix mode, where a helix needs it
   for (const ir::Word& w : block_->words)
     if (w.kind == ir::WordKind::Parameter) {
@@ -663,11 +698,16 @@ void Structured::translated_machine() {
         track(w);
         continue;
       }
-      if (framed_block && arc && ((l >= 'I' && l <= 'K') || (l && l == src_.radius_word))) continue;  // the centre, transformed
-      if (lowers_frame_ && frame_ && frame_->scales_others && l && std::string_view("UVW").find(l) != std::string_view::npos)
-        fail(w.range, fmt::format("an axis {} under a scale or mirror: {} has none, and only X Y Z are written transformed", l, w_.dialect()));
+      if (framed_block && arc && ((l >= 'I' && l <= 'K') || (l && l == src_.radius_word)))
+        continue;  // the centre, transformed
+      if (lowers_frame_ && frame_ && frame_->scales_others && l &&
+          std::string_view("UVW").find(l) != std::string_view::npos)
+        fail(w.range,
+             fmt::format("an axis {} under a scale or mirror: {} has none, and only X Y Z are written transformed", l,
+                         w_.dialect()));
       if (lowers_corner(w)) {
-        if (framed_block) fail(w.range, fmt::format("a corner under a rotation, scale or mirror: {} has none of them", w_.dialect()));
+        if (framed_block)
+          fail(w.range, fmt::format("a corner under a rotation, scale or mirror: {} has none of them", w_.dialect()));
         corner = &w;
         continue;
       }
@@ -691,7 +731,8 @@ void Structured::translated_machine() {
         continue;
       }
       if (plane_words && w.address.size() == 1 && w.address[0] >= 'I' && w.address[0] <= 'K') {
-        if (std::none_of(centre_words.begin(), centre_words.end(), [](const ir::Word* c) { return c; })) centre_at = params.size();
+        if (std::none_of(centre_words.begin(), centre_words.end(), [](const ir::Word* c) { return c; }))
+          centre_at = params.size();
         centre_words[static_cast<size_t>(w.address[0] - 'I')] = &w;
         continue;
       }
@@ -723,9 +764,11 @@ void Structured::translated_machine() {
   skip_offset_word_ = false;
   bool hole = false;  // the block's own line goes over a hole written as moves (hole_moves())
   if (level_cycle_) {
-    if (level_cycle_lines(drills, start, cycle_before, params)) restore_motion.clear();  // the cycle is the block's motion
+    if (level_cycle_lines(drills, start, cycle_before, params))
+      restore_motion.clear();  // the cycle is the block's motion
     hole = level_cycle_ && level_cycle_->moves && !hole_lines_.empty();
-    if (hole) std::erase_if(codes, motion_code);  // ... whose motion it is: a motion code of the block is its state only
+    if (hole)
+      std::erase_if(codes, motion_code);  // ... whose motion it is: a motion code of the block is its state only
     if (const auto rapid = std::exchange(hole_rapid_, std::nullopt))
       codes.push_back({*rapid, Timing::None, rapid->entry->desc.timing, rapid->entry->conflict_sets, {}});
   } else {
@@ -734,9 +777,11 @@ void Structured::translated_machine() {
   if (framed_block) {
     std::vector<std::string> transformed;
     framed_move(start, arc, transformed, arc_code);
-    params.insert(params.begin() + static_cast<long>(std::min(framed_at, params.size())), transformed.begin(), transformed.end());
+    params.insert(params.begin() + static_cast<long>(std::min(framed_at, params.size())), transformed.begin(),
+                  transformed.end());
   } else if (lowers_frame_ && arc && moves && std::exchange(flipped_, false)) {
-    if (auto code = target_code({{*motion_}}, Scope::Modal)) arc_code = code->text();  // the target's is the other way round
+    if (auto code = target_code({{*motion_}}, Scope::Modal))
+      arc_code = code->text();  // the target's is the other way round
   }
   if (machine_frame) position_ = {};
   if (moves && in_main_ && !offset_selected_) moved_before_offset_ = true;
@@ -784,11 +829,16 @@ void Structured::translated_machine() {
   std::vector<std::string> before, main, m, after, later;
   std::vector<Code> g;
   for (const Mapped& c : codes) {
-    if (!c.later.empty()) later.push_back(c.later);
-    else if (c.code.letter == 'M' && any_before && c.wants == Timing::Before) before.push_back(c.code.text());
-    else if (c.code.letter == 'M' && any_after && c.wants == Timing::After) after.push_back(c.code.text());
-    else if (c.code.letter == 'M') m.push_back(c.code.text());
-    else g.push_back(c.code);
+    if (!c.later.empty())
+      later.push_back(c.later);
+    else if (c.code.letter == 'M' && any_before && c.wants == Timing::Before)
+      before.push_back(c.code.text());
+    else if (c.code.letter == 'M' && any_after && c.wants == Timing::After)
+      after.push_back(c.code.text());
+    else if (c.code.letter == 'M')
+      m.push_back(c.code.text());
+    else
+      g.push_back(c.code);
   }
   for (const std::string& line : cycle_before) write_words({line});
   for (const std::string& line : std::exchange(lines_before_, {})) write_words({line});
@@ -798,8 +848,10 @@ void Structured::translated_machine() {
   for (size_t i = 0; i < blocks.size(); ++i) {
     std::vector<std::string> texts;
     for (const Code& c : blocks[i]) texts.push_back(c.text());
-    if (i + 1 < blocks.size()) write_words(texts);
-    else main = texts;
+    if (i + 1 < blocks.size())
+      write_words(texts);
+    else
+      main = texts;
   }
   if (!before.empty()) {  // the speed and the tool the codes before the motion act on
     for (auto it = params.begin(); it != params.end();) {
@@ -813,8 +865,10 @@ void Structured::translated_machine() {
   }
   const bool has_motion = std::any_of(codes.begin(), codes.end(), motion_code);
   if (!restore_motion.empty() && !has_motion) {  // at the next move
-    if (moves) main.insert(main.begin(), restore_motion);
-    else restore_motion_ = restore_motion;
+    if (moves)
+      main.insert(main.begin(), restore_motion);
+    else
+      restore_motion_ = restore_motion;
   }
   if (!arc_code.empty()) main.push_back(arc_code);  // after the block's other G codes
   if (!helix_code.empty()) main.insert(main.begin(), helix_code);
@@ -832,7 +886,8 @@ void Structured::translated_machine() {
     for (const std::string& word : words) {
       const bool is_m = word[0] == 'M';
       if (is_m && std::any_of(line.begin(), line.end(), [](const std::string& x) { return x[0] == 'M'; }) &&
-          std::any_of(codes.begin(), codes.end(), [&](const Mapped& c) { return c.code.text() == word && conflict(c); })) {
+          std::any_of(codes.begin(), codes.end(),
+                      [&](const Mapped& c) { return c.code.text() == word && conflict(c); })) {
         write_words(line);
         line.clear();
       }
@@ -847,7 +902,7 @@ void Structured::translated_machine() {
   apart_blocks(after);
   later.insert(later.end(), later_lines_.begin(), later_lines_.end());
   later_lines_.clear();
-  for (const std::string& line : later) write_words({line});  // each a block of its own
+  for (const std::string& line : later) write_words({line});                           // each a block of its own
   if (level_cycle_ && std::exchange(level_cycle_->carry, false) && pending_number_) {  // to the cycle's first hole
     carried_number_ = std::exchange(pending_number_, std::nullopt);
     carry_ = true;
@@ -897,8 +952,10 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
   for (const ir::Word& o : block_->words) {
     if (o.kind == ir::WordKind::Code && o.code >= 0)
       for (const FnCall& c : p_->semantics.codes[static_cast<size_t>(o.code)].calls)
-        if (c.fn == Fn::DistanceIncremental || c.fn == Fn::DistanceAbsolute) incremental = c.fn == Fn::DistanceIncremental;
-    if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && src_.axes.find(o.address[0]) != std::string::npos) {
+        if (c.fn == Fn::DistanceIncremental || c.fn == Fn::DistanceAbsolute)
+          incremental = c.fn == Fn::DistanceIncremental;
+    if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 &&
+        src_.axes.find(o.address[0]) != std::string::npos) {
       axes = true;
       const auto v = constant_of(o.value);
       zero &= v && *v == 0;
@@ -909,12 +966,15 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
   // X Y Z.
   const bool every = !axes && src_.axes == "XYZ";
   if (!every && (!axes || incremental != true || !zero))
-    return fail(w.range, fmt::format("{} through a point off the tool's position (only G91 with zero words, or none on a "
-                                     "machine of X Y Z, as {} goes there directly)", desc.name,
-                                     to ? fmt::format("{}'s {}", w_.dialect(), to->text())
-                                        : fmt::format("a rapid in {}'s machine coordinates", w_.dialect())));
+    return fail(w.range,
+                fmt::format("{} through a point off the tool's position (only G91 with zero words, or none on a "
+                            "machine of X Y Z, as {} goes there directly)",
+                            desc.name,
+                            to ? fmt::format("{}'s {}", w_.dialect(), to->text())
+                               : fmt::format("a rapid in {}'s machine coordinates", w_.dialect())));
   if (!to) {  // NC-110 and GOST: a rapid in machine coordinates (iso_tool_change())
-    std::string named;  // the axes to move: before the program's first move, one that starts at the reference point does not
+    std::string
+        named;  // the axes to move: before the program's first move, one that starts at the reference point does not
     auto add = [&](char axis) {
       const size_t i = static_cast<size_t>(axis - 'X');
       if (moved_ || target_.initial_position[i] != target_.reference_position[i]) named += axis;
@@ -922,13 +982,16 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
     if (every)
       for (char axis : std::string_view("XYZ")) add(axis);
     for (const ir::Word& o : block_->words)
-      if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 && std::string_view("XYZ").find(o.address[0]) != std::string_view::npos)
+      if (o.kind == ir::WordKind::Parameter && o.address.size() == 1 &&
+          std::string_view("XYZ").find(o.address[0]) != std::string_view::npos)
         add(o.address[0]);
     std::vector<std::string> lines;
     if (named.empty()) return void(operand_words_ = true);
     if (std::string why = machine_reference(named, incremental, lines, true); !why.empty())
-      return fail(w.range, fmt::format("{} (reference.return): {} has no code for it, and a rapid in its machine coordinates "
-                                       "cannot say it here: {}", desc.name, w_.dialect(), why));
+      return fail(w.range,
+                  fmt::format("{} (reference.return): {} has no code for it, and a rapid in its machine coordinates "
+                              "cannot say it here: {}",
+                              desc.name, w_.dialect(), why));
     operand_words_ = true;  // the axes named are the move's, not a point to go through
     later_lines_.insert(later_lines_.end(), lines.begin(), lines.end());
     for (const char axis : named) position_[static_cast<size_t>(axis - 'X')].reset();
@@ -939,12 +1002,14 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
   std::vector<std::string> off, on;
   if (length_on_ != false)
     if (std::string why = length_around(off, on, true); !why.empty())
-      return fail(w.range, fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} with it; {}",
-                                       desc.name, p_->dialect, w_.dialect(), to->text(), why));
+      return fail(w.range,
+                  fmt::format("{} with a length offset (perhaps) on: {} goes there without it, {}'s {} with it; {}",
+                              desc.name, p_->dialect, w_.dialect(), to->text(), why));
   lines_before_.insert(lines_before_.end(), off.begin(), off.end());
   later_lines_.insert(later_lines_.end(), on.begin(), on.end());
   if (every)
-    for (char axis : std::string_view("XYZ")) extra_words_.push_back(std::string(1, axis) + number({axis, 0, Value::Length}, w.range));
+    for (char axis : std::string_view("XYZ"))
+      extra_words_.push_back(std::string(1, axis) + number({axis, 0, Value::Length}, w.range));
   out.push_back({*to, desc.timing, to->entry->desc.timing, {}, {}});
 }
 
@@ -953,7 +1018,9 @@ void Structured::reference(const ir::Word& w, const CodeDesc& desc, std::vector<
 // the target's G04 with its time, after the block's motion.
 void Structured::timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out) {
   const auto code = target_code({{Fn::Dwell}}, Scope::Block);
-  if (!code || !dst_.dwell_word) return fail(w.range, fmt::format("{} ({}): {} has no dwell with a time", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
+  if (!code || !dst_.dwell_word)
+    return fail(w.range, fmt::format("{} ({}): {} has no dwell with a time", desc.name, fn_name(desc.calls[0].fn),
+                                     w_.dialect()));
   bool known = timer_.has_value();
   double seconds = timer_.value_or(0);
   if (desc.calls[0].fn == Fn::DwellSeconds) {
@@ -963,12 +1030,16 @@ void Structured::timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vecto
         if (const auto v = constant_of(o.value)) known = true, seconds = *v;
     operand_words_ = true;  // its operand is the dwell's time
   } else if (per_minute_ != true) {
-    return fail(w.range, fmt::format("{} where the feed may be per revolution: TMR then counts revolutions", desc.name));
+    return fail(w.range,
+                fmt::format("{} where the feed may be per revolution: TMR then counts revolutions", desc.name));
   }
-  if (!known) return fail(w.range, fmt::format("{} whose time is not known here (TMR set by a label's way, or computed)", desc.name));
+  if (!known)
+    return fail(w.range,
+                fmt::format("{} whose time is not known here (TMR set by a label's way, or computed)", desc.name));
   const OutWord time{dst_.dwell_word, seconds / dst_.dwell_seconds_per_unit, Value::Seconds};
   if (auto why = w_.unwritable(time)) return fail(w.range, *why);
-  out.push_back({*code, desc.timing, code->entry->desc.timing, {}, code->text() + " " + dst_.dwell_word + number(time, w.range)});
+  out.push_back(
+      {*code, desc.timing, code->entry->desc.timing, {}, code->text() + " " + dst_.dwell_word + number(time, w.range)});
 }
 
 // NC-110's (UAO,n): origin n on every axis it declares. It is the target's work
@@ -979,10 +1050,13 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
   bool listed = false;
   for (const ir::Word& o : block_->words) {
     if (o.kind != ir::WordKind::Parameter) continue;
-    if (o.slot == operand_slot(0)) n = constant_of(o.value);
-    else if (o.slot < 52) listed = true;
+    if (o.slot == operand_slot(0))
+      n = constant_of(o.value);
+    else if (o.slot < 52)
+      listed = true;
   }
-  auto code = n && *n >= 1 && *n <= 0xFFFF ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*n)}}, Scope::Modal) : std::nullopt;
+  auto code = n && *n >= 1 && *n <= 0xFFFF ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*n)}}, Scope::Modal)
+                                           : std::nullopt;
   // NC-110's origin 0 (none) into a target without "none": the offset it powers on in,
   // where the target machine sets it to zero (as the start takes it, start_offset()).
   if (n && *n == 0) {
@@ -994,7 +1068,9 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
   }
   operand_words_ = true;  // its operands are said by the work offset, or refused with it
   if (!n) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name));
-  if (listed) return fail(w.range, fmt::format("{} on the axes it lists: {}'s work offset sets every axis", desc.name, w_.dialect()));
+  if (listed)
+    return fail(w.range,
+                fmt::format("{} on the axes it lists: {}'s work offset sets every axis", desc.name, w_.dialect()));
   if (!code) return fail(w.range, fmt::format("{},{}: {} has no work offset {}", desc.name, *n, w_.dialect(), *n));
   if (*n != 0)
     if (auto why = partial_offset(static_cast<int>(*n), desc.name)) return fail(w.range, *why);
@@ -1020,10 +1096,14 @@ void Structured::origin(const ir::Word& w, const CodeDesc& desc, std::vector<Map
 void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc) {
   operand_words_ = true;  // the shift's words are written below, or refused with it
   const auto local = local_shift_code();
-  if (!local) return fail(w.range, fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
+  if (!local)
+    return fail(w.range,
+                fmt::format("{} ({}): {} has no code for it", desc.name, fn_name(desc.calls[0].fn), w_.dialect()));
   if (lowers_frame_)
-    return fail(w.range, fmt::format("{} in a program with a rotation, scale or mirror written into its points: {}'s {} "
-                                     "shifts the points written", desc.name, w_.dialect(), local->text()));
+    return fail(w.range,
+                fmt::format("{} in a program with a rotation, scale or mirror written into its points: {}'s {} "
+                            "shifts the points written",
+                            desc.name, w_.dialect(), local->text()));
   // pp's G37 sets every axis's shift: the others' it does not name end.
   const auto& calls = local->entry->desc.calls;
   const bool names_every = std::find(calls.begin(), calls.end(), FnCall{Fn::ShiftAxes}) != calls.end();
@@ -1032,16 +1112,20 @@ void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc) {
   std::vector<std::pair<int, std::optional<double>>> axes;
   for (const ir::Word& o : block_->words) {
     if (o.kind != ir::WordKind::Parameter) continue;
-    if (temporary && o.slot == operand_slot(0)) n = constant_of(o.value);
+    if (temporary && o.slot == operand_slot(0))
+      n = constant_of(o.value);
     else if (o.address.size() == 1 && std::string_view(kAxisLetters).find(o.address[0]) != std::string_view::npos)
       axes.emplace_back(static_cast<int>(std::string_view(kAxisLetters).find(o.address[0])), constant_of(o.value));
   }
   if (temporary && (!n || !source_origin_ || *n != *source_origin_))
-    return fail(w.range, fmt::format("{} of another origin than the one in force, or where that is not known (after a "
-                                     "label, a loop's start or a call): {}'s local shift moves the work offset in force",
-                                     desc.name, w_.dialect()));
+    return fail(w.range,
+                fmt::format("{} of another origin than the one in force, or where that is not known (after a "
+                            "label, a loop's start or a call): {}'s local shift moves the work offset in force",
+                            desc.name, w_.dialect()));
   if (!temporary && !shift_known_)
-    return fail(w.range, fmt::format("{} where the shift it adds to is not known (after a label, a loop's start or a call)", desc.name));
+    return fail(
+        w.range,
+        fmt::format("{} where the shift it adds to is not known (after a label, a loop's start or a call)", desc.name));
   std::string text = local->text();
   for (const auto& [axis, v] : axes) {
     const char letter = kAxisLetters[static_cast<size_t>(axis)];
@@ -1053,13 +1137,14 @@ void Structured::origin_shift(const ir::Word& w, const CodeDesc& desc) {
   }
   for (size_t i = 0; i < kAxisLetters.size(); ++i) {
     const char letter = kAxisLetters[i];
-    const bool named = std::any_of(axes.begin(), axes.end(), [&](const auto& a) { return static_cast<size_t>(a.first) == i; });
+    const bool named =
+        std::any_of(axes.begin(), axes.end(), [&](const auto& a) { return static_cast<size_t>(a.first) == i; });
     if (!named && !(names_every && shifted_axes_.find(letter) != std::string::npos)) continue;
     const auto written = length(w.range, letter, shift_[i]);
     if (!written) return;
     text += fmt::format(" {}{}", letter, *written);
   }
-  forget_position();  // the program's coordinates of the tool move with its origin
+  forget_position();             // the program's coordinates of the tool move with its origin
   later_lines_.push_back(text);  // a block of its own (ISO)
 }
 
@@ -1067,7 +1152,8 @@ std::optional<std::string> Structured::partial_offset(int n, std::string_view na
   // The axes both dialects move: an axis the source cannot move keeps its origin unseen.
   std::string axes;
   for (char axis : dst_.axes)
-    if (src_.axes.find(axis) != std::string::npos && std::string_view(kAxisLetters).find(axis) != std::string_view::npos)
+    if (src_.axes.find(axis) != std::string::npos &&
+        std::string_view(kAxisLetters).find(axis) != std::string_view::npos)
       axes += axis;
   const auto record = target_.work_offsets.find(n);
   bool every = record != target_.work_offsets.end();
@@ -1078,8 +1164,10 @@ std::optional<std::string> Structured::partial_offset(int n, std::string_view na
   if (record != target_.work_offsets.end())
     for (size_t i = 0; i < kAxisLetters.size(); ++i)
       if ((record->second.axes >> i) & 1u) declared += kAxisLetters[i];
-  return fmt::format("{},{}: origin {} declares {}, and {}'s work offset sets every axis ({}): the others would not "
-                     "keep their origins", name, n, n, declared.empty() ? "no axis" : declared, w_.dialect(), axes);
+  return fmt::format(
+      "{},{}: origin {} declares {}, and {}'s work offset sets every axis ({}): the others would not "
+      "keep their origins",
+      name, n, n, declared.empty() ? "no axis" : declared, w_.dialect(), axes);
 }
 
 // An arc's centre where the dialects give it otherwise: NC-110's I and J are the
@@ -1091,7 +1179,8 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
   int axis = letter - 'I';
   if (src_.centre_words == CentreWords::Plane) {
     if (!plane_) return fail(w.range, fmt::format("the arc centre {} where the plane is not known", letter));
-    if (letter == 'K') return fail(w.range, fmt::format("a helix pitch K: {} gives a helix by its end point alone", w_.dialect()));
+    if (letter == 'K')
+      return fail(w.range, fmt::format("a helix pitch K: {} gives a helix by its end point alone", w_.dialect()));
     const int plane = plane_index();
     axis = letter == 'I' ? kPlanes[plane].u : kPlanes[plane].v;
   }
@@ -1102,26 +1191,30 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
       if (!v) return fail(w.range, fmt::format("the arc centre {} given by a parameter, from the origin", letter));
       if (!start[static_cast<size_t>(axis)])
         return fail(w.range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
-                                         "a label, a call or a computed move)", letter));
+                                         "a label, a call or a computed move)",
+                                         letter));
       centre_[static_cast<size_t>(axis)] = *v;
       *v -= *start[static_cast<size_t>(axis)];
     }
   }
-  if (src_.arc_centre == ArcCentre::Incremental && dst_.arc_centre == ArcCentre::Absolute && src_.centre_words == dst_.centre_words) {
+  if (src_.arc_centre == ArcCentre::Incremental && dst_.arc_centre == ArcCentre::Absolute &&
+      src_.centre_words == dst_.centre_words) {
     if (!incremental_) return fail(w.range, fmt::format("the arc centre {} where G90 or G91 is not known", letter));
     if (!*incremental_) {  // from the origin in the target
       if (!v) return fail(w.range, fmt::format("the arc centre {} given by a parameter, from the origin", letter));
       if (!start[static_cast<size_t>(axis)])
         return fail(w.range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
-                                         "a label, a call or a computed move)", letter));
+                                         "a label, a call or a computed move)",
+                                         letter));
       *v += *start[static_cast<size_t>(axis)];
     }
   }
   // The target's word: I J K of X Y Z, or (pp) I J of the plane's two axes.
   if (dst_.centre_words == CentreWords::Plane && !plane_)
     return fail(w.range, fmt::format("the arc centre {} where the plane is not known", letter));
-  const char to = dst_.centre_words == CentreWords::Plane ? centre_letter(dst_, static_cast<size_t>(axis) == plane_u() ? 0 : 1)
-                                                          : static_cast<char>('I' + axis);
+  const char to = dst_.centre_words == CentreWords::Plane
+                      ? centre_letter(dst_, static_cast<size_t>(axis) == plane_u() ? 0 : 1)
+                      : static_cast<char>('I' + axis);
   if (!v && unit_ == 1.0) return words.push_back(to + value(w.value, to));
   if (const auto text = length(w.range, to, v)) words.push_back(to + *text);
 }
@@ -1131,7 +1224,8 @@ void Structured::centre(const ir::Word& w, const Position& start, std::vector<st
 // start's coordinate.
 void Structured::absolute_centre(const Position& start, std::vector<std::string>& words) {
   if (reads_source_words() || src_.arc_centre != ArcCentre::Incremental || dst_.arc_centre != ArcCentre::Absolute ||
-      src_.centre_words != CentreWords::PerAxis || dst_.centre_words != CentreWords::PerAxis || incremental_ != false || !plane_)
+      src_.centre_words != CentreWords::PerAxis || dst_.centre_words != CentreWords::PerAxis || incremental_ != false ||
+      !plane_)
     return;
   std::array<bool, 3> given{};
   const ir::Word* any = nullptr;
@@ -1146,8 +1240,10 @@ void Structured::absolute_centre(const Position& start, std::vector<std::string>
     if (given[static_cast<size_t>(axis)]) continue;
     const char to = static_cast<char>('I' + axis);
     if (!start[static_cast<size_t>(axis)])
-      return fail(any->range, fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
-                                          "a label, a call or a computed move)", to));
+      return fail(any->range,
+                  fmt::format("the arc centre {} from the origin, where the arc's start is not known (after "
+                              "a label, a call or a computed move)",
+                              to));
     if (const auto text = length(any->range, to, *start[static_cast<size_t>(axis)])) words.push_back(to + *text);
   }
 }
@@ -1155,26 +1251,34 @@ void Structured::absolute_centre(const Position& start, std::vector<std::string>
 void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const Position& start,
                               std::vector<std::string>& out) {
   const ir::Word& first = **std::find_if(words.begin(), words.end(), [](const ir::Word* w) { return w; });
-  if (src_.arc_centre != ArcCentre::Incremental) return fail(first.range, "an arc centre from the origin, given by X Y Z");
+  if (src_.arc_centre != ArcCentre::Incremental)
+    return fail(first.range, "an arc centre from the origin, given by X Y Z");
   if (!plane_) return fail(first.range, "an arc centre where the plane is not known");
-  if (!incremental_ && dst_.arc_centre == ArcCentre::Absolute) return fail(first.range, "an arc centre where G90 or G91 is not known");
+  if (!incremental_ && dst_.arc_centre == ArcCentre::Absolute)
+    return fail(first.range, "an arc centre where G90 or G91 is not known");
   const int plane = plane_index();
   if (const ir::Word* lead = words[static_cast<size_t>(kPlanes[plane].w)])
-    return fail(lead->range, fmt::format("a helix lead {}: the dialects give the lead in other units", lead->address.str()));
+    return fail(lead->range,
+                fmt::format("a helix lead {}: the dialects give the lead in other units", lead->address.str()));
   for (int k = 0; k < 2; ++k) {
     const size_t axis = static_cast<size_t>(k == 0 ? kPlanes[plane].u : kPlanes[plane].v);
     const char to = k == 0 ? 'I' : 'J';
     const ir::Word* w = words[axis];
     if (dst_.arc_centre == ArcCentre::Incremental || *incremental_) {  // from the start in both (pp's I J)
-      if (unit_ == 1.0) out.push_back(to + (w ? value(w->value, to) : std::string("0")));
-      else if (const auto text = length(w ? w->range : first.range, to, w ? constant_of(w->value) : 0.0)) out.push_back(to + *text);
+      if (unit_ == 1.0)
+        out.push_back(to + (w ? value(w->value, to) : std::string("0")));
+      else if (const auto text = length(w ? w->range : first.range, to, w ? constant_of(w->value) : 0.0))
+        out.push_back(to + *text);
       continue;
     }
     const std::optional<double> v = w ? constant_of(w->value) : std::optional<double>(0);
-    if (!v) return fail(w->range, fmt::format("the arc centre {} given by a parameter, from the start point", w->address.str()));
+    if (!v)
+      return fail(w->range,
+                  fmt::format("the arc centre {} given by a parameter, from the start point", w->address.str()));
     if (!start[axis])
-      return fail(first.range, "an arc centre from the start point, where the arc's start is not known (after a label, a "
-                               "call or a computed move)");
+      return fail(first.range,
+                  "an arc centre from the start point, where the arc's start is not known (after a label, a "
+                  "call or a computed move)");
     centre_[axis] = *start[axis] + *v;
     if (const auto text = length(first.range, to, *centre_[axis])) out.push_back(to + *text);
   }
@@ -1187,12 +1291,14 @@ void Structured::plane_centre(const std::array<const ir::Word*, 3>& words, const
 std::optional<std::array<double, 2>> Structured::centre_by_radius(const ir::Word& r, const Position& start) {
   const auto radius = constant_of(r.value);
   if (!radius) {
-    fail(r.range, fmt::format("an arc by its radius {} given by a parameter: {} gives the centre", r.address.str(), w_.dialect()));
+    fail(r.range, fmt::format("an arc by its radius {} given by a parameter: {} gives the centre", r.address.str(),
+                              w_.dialect()));
     return std::nullopt;
   }
   const size_t u = plane_u(), v = plane_v();
   if (!start[u] || !start[v] || !position_[u] || !position_[v]) {
-    fail(r.range, "an arc by its radius, where its start or end is not known (after a label, a call or a computed move)");
+    fail(r.range,
+         "an arc by its radius, where its start or end is not known (after a label, a call or a computed move)");
     return std::nullopt;
   }
   const double du = *position_[u] - *start[u], dv = *position_[v] - *start[v];
@@ -1232,7 +1338,8 @@ void Structured::radius_centre(const ir::Word& r, const Position& start, std::ve
 // over the sweep the source's run takes (the turns its lead selects, or its end
 // point's); a helix of more than one turn is refused where the target has no lead.
 // The start, the end and the centre must be known from the text.
-void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words, std::string& mode) {
+void Structured::helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words,
+                       std::string& mode) {
   if (reads_source_words() || !plane_) return;
   const size_t u = plane_u(), v = plane_v();
   const size_t n = static_cast<size_t>(normal_axis() - 'X');
@@ -1255,10 +1362,13 @@ void Structured::helix(const Position& start, const ir::Word* lead, std::vector<
   if (!lead && !writes_lead) return;
   const auto centre = arc_centre(start);
   const std::optional<double> source_lead = lead ? constant_of(lead->value) : std::nullopt;
-  if (!centre || !start[u] || !start[v] || !start[n] || !position_[u] || !position_[v] || !position_[n] || (lead && !source_lead))
-    return fail(at, "a helix whose start, end, centre or lead is not known here (after a label, a call or a computed value)");
-  double sweep = arc_sweep(std::atan2(*start[v] - (*centre)[1], *start[u] - (*centre)[0]),
-                           std::atan2(*position_[v] - (*centre)[1], *position_[u] - (*centre)[0]), motion_ == Fn::MotionArcCcw);
+  if (!centre || !start[u] || !start[v] || !start[n] || !position_[u] || !position_[v] || !position_[n] ||
+      (lead && !source_lead))
+    return fail(
+        at, "a helix whose start, end, centre or lead is not known here (after a label, a call or a computed value)");
+  double sweep =
+      arc_sweep(std::atan2(*start[v] - (*centre)[1], *start[u] - (*centre)[0]),
+                std::atan2(*position_[v] - (*centre)[1], *position_[u] - (*centre)[0]), motion_ == Fn::MotionArcCcw);
   const double dw = *position_[n] - *start[n];
   if (source_lead) {  // the turns it selects, as the runtime takes them
     const double per_radian = *source_lead / (src_.helix_lead == HelixLead::PerRevolution ? kTwoPi : 1.0);
@@ -1301,12 +1411,17 @@ void Structured::polar_point(const std::array<const ir::Word*, 2>& words, const 
   const size_t u = plane_u(), v = plane_v();
   position_[u].reset();
   position_[v].reset();
-  if (!incremental_ || std::any_of(words.begin(), words.end(), [&](const ir::Word* w) { return w && !constant_of(w->value); }))
-    return fail(first.range, fmt::format("a point in polar coordinates given by a parameter, or where G90/G91 is not known: {} "
-                                         "has none, and it cannot be written in X Y Z here", w_.dialect()));
+  if (!incremental_ ||
+      std::any_of(words.begin(), words.end(), [&](const ir::Word* w) { return w && !constant_of(w->value); }))
+    return fail(first.range,
+                fmt::format("a point in polar coordinates given by a parameter, or where G90/G91 is not known: {} "
+                            "has none, and it cannot be written in X Y Z here",
+                            w_.dialect()));
   if (!start[u] || !start[v])
-    return fail(first.range, fmt::format("a point in polar coordinates, where the tool's position is not known: {} has none, "
-                                         "and it cannot be written in X Y Z here", w_.dialect()));
+    return fail(first.range,
+                fmt::format("a point in polar coordinates, where the tool's position is not known: {} has none, "
+                            "and it cannot be written in X Y Z here",
+                            w_.dialect()));
   constexpr double kDegree = std::numbers::pi / 180;
   const bool absolute = !*incremental_;
   double radius = absolute ? std::hypot(*start[u], *start[v]) : 0;
@@ -1318,7 +1433,8 @@ void Structured::polar_point(const std::array<const ir::Word*, 2>& words, const 
   std::vector<std::string> words_xy;
   for (const auto& [axis, p] : {std::pair{u, pu}, std::pair{v, pv}}) {
     const char letter = static_cast<char>('X' + axis);
-    if (const auto text = length(first.range, letter, absolute ? p : p - *start[axis])) words_xy.push_back(letter + *text);
+    if (const auto text = length(first.range, letter, absolute ? p : p - *start[axis]))
+      words_xy.push_back(letter + *text);
   }
   if (u > v) std::swap(words_xy.front(), words_xy.back());  // X Y Z order
   out.insert(out.begin() + static_cast<long>(std::min(at, out.size())), words_xy.begin(), words_xy.end());
@@ -1346,7 +1462,8 @@ std::optional<std::array<double, 2>> Structured::arc_centre(const Position& star
     const char letter = centre_letter(src_, k);
     std::optional<double> word = 0.0;
     for (const ir::Word& w : block_->words)
-      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter) word = constant_of(w.value);
+      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter)
+        word = constant_of(w.value);
     const bool from_start = src_.arc_centre == ArcCentre::Incremental || incremental_ == true;
     if (!word || !start[axis] || !incremental_) return std::nullopt;
     centre[static_cast<size_t>(k)] = from_start ? *start[axis] + *word : *word;
@@ -1370,8 +1487,8 @@ void Structured::arc_on_circle(const Position& start) {
   // The source's centre words from the start, each written to the target's step, where
   // the target reads them so too (pp's I J from inches).
   const bool arc = motion_ == Fn::MotionArcCw || motion_ == Fn::MotionArcCcw;
-  if (!arc || reads_source_words() || src_.arc_centre != ArcCentre::Incremental || dst_.arc_centre != ArcCentre::Incremental ||
-      incremental_ != false)
+  if (!arc || reads_source_words() || src_.arc_centre != ArcCentre::Incremental ||
+      dst_.arc_centre != ArcCentre::Incremental || incremental_ != false)
     return;
   std::array<double, 2> c{};
   bool given = false;
@@ -1393,9 +1510,12 @@ void Structured::track(const ir::Word& w) {
   const auto v = constant_of(w.value);
   // A cycle's depth is no position: the tool comes back to a level the text may not say.
   const bool depth = cycle_on_ != false && (!plane_ || w.address[0] == normal_axis());
-  if (!v || !incremental_ || depth) axis.reset();
-  else if (!*incremental_) axis = *v;
-  else if (axis) *axis += *v;
+  if (!v || !incremental_ || depth)
+    axis.reset();
+  else if (!*incremental_)
+    axis = *v;
+  else if (axis)
+    *axis += *v;
 }
 
 // A word's or an operand's value where it is a number, signed or not (a read's
@@ -1412,8 +1532,10 @@ std::optional<double> Structured::constant_of(ir::ExprId id) const {
 // writes is rounded to its step, with a warning (once): CAM output's fourth decimal
 // into GOST or pp; so is a feed, a speed or a dwell (F369.752387 into NC-110).
 std::string Structured::number(const OutWord& w, SourceRange at) {
-  if ((w.kind == Value::Length || w.kind == Value::Angle) && off_step(w.value)) problems.push_back({at, "rounded", Finding::Rounded});
-  if (w.kind != Value::Count && w_.rounded_rate(w) && !w_.unwritable(w)) problems.push_back({at, std::string(1, w.letter), Finding::RoundedRate});
+  if ((w.kind == Value::Length || w.kind == Value::Angle) && off_step(w.value))
+    problems.push_back({at, "rounded", Finding::Rounded});
+  if (w.kind != Value::Count && w_.rounded_rate(w) && !w_.unwritable(w))
+    problems.push_back({at, std::string(1, w.letter), Finding::RoundedRate});
   return w_.number(w);
 }
 
@@ -1422,13 +1544,16 @@ double Structured::on_step(double v) const {
   return step > 0 ? std::round(v / step) * step : v;
 }
 
-void Structured::on_circle(const std::array<double, 2>& a, const std::array<double, 2>& b, const std::array<double, 2>& c) {
+void Structured::on_circle(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                           const std::array<double, 2>& c) {
   const double r0 = std::hypot(a[0] - c[0], a[1] - c[1]), r1 = std::hypot(b[0] - c[0], b[1] - c[1]);
-  const double mm = std::fabs(r1 - r0) * (inch_ != false && unit_.value_or(1.0) == 1.0 ? 25.4 : 1.0);  // the tolerance is in mm
+  const double mm =
+      std::fabs(r1 - r0) * (inch_ != false && unit_.value_or(1.0) == 1.0 ? 25.4 : 1.0);  // the tolerance is in mm
   if (mm > dst_.arc_tolerance)
-    fail(block_->range, fmt::format("an arc whose end, written to {}'s step of {}, lies farther off its circle than the "
-                                    "{} mm {} takes", w_.dialect(), exact(w_.resolution(), false),
-                                    exact(dst_.arc_tolerance, false), w_.dialect()));
+    fail(block_->range,
+         fmt::format("an arc whose end, written to {}'s step of {}, lies farther off its circle than the "
+                     "{} mm {} takes",
+                     w_.dialect(), exact(w_.resolution(), false), exact(dst_.arc_tolerance, false), w_.dialect()));
 }
 
 // Without the checks the source's reads make (a vacant value, a range).
@@ -1462,7 +1587,8 @@ std::string Structured::length_offset(SourceRange at) {
   if (!dst_.link_axes.empty()) {
     const size_t at_digit = dst_.link_axes.find(axis);
     if (n && at_digit == std::string::npos) {
-      fail(at, fmt::format("corrector {}'s length is on {}, which {}'s length link does not name", n, axis, w_.dialect()));
+      fail(at,
+           fmt::format("corrector {}'s length is on {}, which {}'s length link does not name", n, axis, w_.dialect()));
       return {};
     }
     const bool was_on = length_on_ != false;
@@ -1507,11 +1633,13 @@ std::string Structured::iso_tool_change() {
 
   std::vector<std::string> retract;  // where the target has no reference-point code
   if (!reference)
-    if (std::string why = machine_reference(std::string(1, axis), incremental_, retract, false); !why.empty()) return why;
+    if (std::string why = machine_reference(std::string(1, axis), incremental_, retract, false); !why.empty())
+      return why;
   // A block of M06 alone (and T, and an end of the program, which comes last): another
   // code would act before or after the change as the target orders them, not as ISO does.
   const bool moves = std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
-    if (w.kind == ir::WordKind::Parameter) return w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
+    if (w.kind == ir::WordKind::Parameter)
+      return w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos;
     if (w.kind != ir::WordKind::Code) return false;
     if (w.code < 0) return true;
     const std::vector<FnCall>& calls = p_->semantics.codes[static_cast<size_t>(w.code)].calls;
@@ -1530,7 +1658,8 @@ std::string Structured::iso_tool_change() {
     if (off.empty()) return "a length offset is (perhaps) on, which its M06 keeps";
     before.push_back(off);
   }
-  const auto both = *spindle_on && *coolant_on_ ? target_code({{Fn::SpindleStop}, {Fn::CoolantOff}}, Scope::Modal) : std::nullopt;
+  const auto both =
+      *spindle_on && *coolant_on_ ? target_code({{Fn::SpindleStop}, {Fn::CoolantOff}}, Scope::Modal) : std::nullopt;
   if (both) before.push_back(both->text());  // one code for both (GOST's M05)
   if (*spindle_on && !both) {
     auto stop = target_code({{Fn::SpindleStop}}, Scope::Modal);
@@ -1563,13 +1692,14 @@ std::string Structured::iso_tool_change() {
 // The move at rapid to the target machine's reference point along `axes`, in machine
 // coordinates, where the target has no reference-point code (NC-110's G79, GOST's
 // G53), and the codes in force again after it: its lines, or why it cannot be written.
-std::string Structured::machine_reference(std::string_view axes, std::optional<bool> incremental, std::vector<std::string>& lines,
-                                          bool keep_length) {
+std::string Structured::machine_reference(std::string_view axes, std::optional<bool> incremental,
+                                          std::vector<std::string>& lines, bool keep_length) {
   auto machine_zero = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block);
   const bool absolute = machine_zero.has_value();  // NC-110's G79 is absolute in its block
   if (!machine_zero) machine_zero = target_code({{Fn::WorkOffset, 0}}, Scope::Block);
   const auto rapid = target_code({{Fn::MotionRapid}}, Scope::Modal);
-  const auto g90 = target_code({{Fn::DistanceAbsolute}}, Scope::Modal), g91 = target_code({{Fn::DistanceIncremental}}, Scope::Modal);
+  const auto g90 = target_code({{Fn::DistanceAbsolute}}, Scope::Modal),
+             g91 = target_code({{Fn::DistanceIncremental}}, Scope::Modal);
   std::optional<Code> restore;
   if (motion_ && *motion_ != Fn::MotionRapid) restore = target_code({{*motion_}}, Scope::Modal);
   if (!machine_zero || !rapid) return "it has no code for the reference point nor for machine coordinates";
@@ -1603,8 +1733,10 @@ void Structured::length(Fn fn) {
     for (const ir::Word& o : block_->words)
       if (o.kind == ir::WordKind::Parameter && (o.address == "H" || o.address == "D")) h = constant_of(o.value);
   length_entry_.reset();
-  if (fn == Fn::LengthOff) length_entry_ = 0;
-  else if (fn == Fn::LengthPlus && h && *h >= 1 && *h == std::floor(*h)) length_entry_ = static_cast<int>(*h);
+  if (fn == Fn::LengthOff)
+    length_entry_ = 0;
+  else if (fn == Fn::LengthPlus && h && *h >= 1 && *h == std::floor(*h))
+    length_entry_ = static_cast<int>(*h);
 }
 
 // The length offset in force ended before a move in machine coordinates, which take
@@ -1624,7 +1756,8 @@ std::string Structured::length_around(std::vector<std::string>& off, std::vector
   }
   if (dst_.corrector_in_tool_word) {
     const auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal);
-    if (!m06 || !tool_loaded_ || *tool_loaded_ < 1 || !tool_selected_) return why + "no tool is known to be in the spindle";
+    if (!m06 || !tool_loaded_ || *tool_loaded_ < 1 || !tool_selected_)
+      return why + "no tool is known to be in the spindle";
     off.push_back(fmt::format("T{} {}", *tool_loaded_, m06->text()));
     if (keep) on.push_back(fmt::format("T{}.{} {}", *tool_loaded_, *length_entry_, m06->text()));
     // The next tool selected since (ISO's T2 after T1 M06), selected again for its M06.
@@ -1648,12 +1781,14 @@ void Structured::rescale(double factor) {
   if (factor == 1.0) return;
   for (auto& p : position_)
     if (p) p = factor ? std::optional(*p * factor) : std::nullopt;
-  if (level_cycle_ && level_cycle_->initial) level_cycle_->initial = factor ? std::optional(*level_cycle_->initial * factor) : std::nullopt;
+  if (level_cycle_ && level_cycle_->initial)
+    level_cycle_->initial = factor ? std::optional(*level_cycle_->initial * factor) : std::nullopt;
 }
 
 void Structured::state(const std::vector<FnCall>& calls) {
   // ISO's M06 ends the length offset: NC-110's M06 it becomes applies corrector 0.
-  const bool iso_change = src_.tool_change_iso && std::find(calls.begin(), calls.end(), FnCall{Fn::ToolChange}) != calls.end();
+  const bool iso_change =
+      src_.tool_change_iso && std::find(calls.begin(), calls.end(), FnCall{Fn::ToolChange}) != calls.end();
   for (const FnCall& f : calls) {
     if (fn_group(f.fn) == FnGroup::Motion) {
       motion_ = f.fn;
@@ -1666,12 +1801,15 @@ void Structured::state(const std::vector<FnCall>& calls) {
         rescale(inch_ == true ? 25.4 : inch_ ? 1.0 : 0.0);
         inch_ = false, unit_ = 1.0;
         break;
-      case Fn::PolarOn: case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
-      case Fn::HelixOn: case Fn::HelixOff: helix_mode_ = f.fn == Fn::HelixOn; break;
-      case Fn::CycleReturnInitial: case Fn::CycleReturnLevel: return_initial_ = f.fn == Fn::CycleReturnInitial; break;
-      case Fn::FeedPerMinute: case Fn::FeedPerRevolution: case Fn::FeedInverseTime:
-        per_minute_ = f.fn == Fn::FeedPerMinute;
-        break;
+      case Fn::PolarOn:
+      case Fn::PolarOff: polar_ = f.fn == Fn::PolarOn; break;
+      case Fn::HelixOn:
+      case Fn::HelixOff: helix_mode_ = f.fn == Fn::HelixOn; break;
+      case Fn::CycleReturnInitial:
+      case Fn::CycleReturnLevel: return_initial_ = f.fn == Fn::CycleReturnInitial; break;
+      case Fn::FeedPerMinute:
+      case Fn::FeedPerRevolution:
+      case Fn::FeedInverseTime: per_minute_ = f.fn == Fn::FeedPerMinute; break;
       case Fn::UnitsInch:
         rescale(inch_ == false ? 1 / 25.4 : inch_ ? 1.0 : 0.0);
         inch_ = true, unit_ = target_inch_ ? 1.0 : 25.4;
@@ -1687,18 +1825,25 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::PlaneXY: plane_ = 'K'; break;  // the plane by its normal's centre word
       case Fn::PlaneZX: plane_ = 'J'; break;
       case Fn::PlaneYZ: plane_ = 'I'; break;
-      case Fn::SpindleCw: case Fn::SpindleCcw: spindle_turns_ = spindle_direction_ = cycle::spindle_turns(f.fn); break;
-      case Fn::SpindleStop: case Fn::SpindleOrient: spindle_turns_ = cycle::spindle_turns(f.fn); break;
-      case Fn::CoolantMist: case Fn::CoolantFlood: case Fn::Coolant3: case Fn::Coolant4: coolant_on_ = true; break;
+      case Fn::SpindleCw:
+      case Fn::SpindleCcw: spindle_turns_ = spindle_direction_ = cycle::spindle_turns(f.fn); break;
+      case Fn::SpindleStop:
+      case Fn::SpindleOrient: spindle_turns_ = cycle::spindle_turns(f.fn); break;
+      case Fn::CoolantMist:
+      case Fn::CoolantFlood:
+      case Fn::Coolant3:
+      case Fn::Coolant4: coolant_on_ = true; break;
       case Fn::CoolantOff: coolant_on_ = false; break;
-      case Fn::LengthPlus: case Fn::LengthMinus: case Fn::LengthOff:
-        length(iso_change ? Fn::LengthOff : f.fn);
-        break;
-      case Fn::CompLeft: case Fn::CompRight: comp_on_ = true; break;
+      case Fn::LengthPlus:
+      case Fn::LengthMinus:
+      case Fn::LengthOff: length(iso_change ? Fn::LengthOff : f.fn); break;
+      case Fn::CompLeft:
+      case Fn::CompRight: comp_on_ = true; break;
       case Fn::SpindleRpm: rpm_ = true; break;
       case Fn::SpindleConstantSurface: rpm_ = false; break;
       case Fn::CompOff: comp_on_ = false; break;
-      case Fn::ProgramEnd: case Fn::ProgramEndInformation:
+      case Fn::ProgramEnd:
+      case Fn::ProgramEndInformation:
         coolant_on_ = cycle_on_ = false;
         spindle_turns_ = 0;
         program_ended_ |= in_main_ && !skip_;  // after a '/' it ends the program only with block skip off
@@ -1706,20 +1851,26 @@ void Structured::state(const std::vector<FnCall>& calls) {
       case Fn::ToolChange:
         // ... and first takes the tool axis to the reference point: a move the
         // target's M06 does not make.
-        if (src_.m06_stops_spindle && !dst_.m06_stops_spindle && !dst_.tool_change_iso && (spindle_on() != false || coolant_on_ != false))
-          fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s does not",
-                                          spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect, w_.dialect()));
+        if (src_.m06_stops_spindle && !dst_.m06_stops_spindle && !dst_.tool_change_iso &&
+            (spindle_on() != false || coolant_on_ != false))
+          fail(block_->range,
+               fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s does not",
+                           spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect,
+                           w_.dialect()));
         if (src_.tool_change_iso && !dst_.tool_change_iso) {
           if (src_.tool_change_retract) {
             if (const std::string why = iso_tool_change(); !why.empty())
-              fail(block_->range, fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, "
-                                              "{}'s does not, and it cannot be written before it here: {} (a machine "
-                                              "that changes tools in place says iso.tool_change_retract = false)",
-                                              p_->dialect, w_.dialect(), why));
+              fail(block_->range,
+                   fmt::format("a tool change: {}'s M06 first takes the tool axis to the reference point, "
+                               "{}'s does not, and it cannot be written before it here: {} (a machine "
+                               "that changes tools in place says iso.tool_change_retract = false)",
+                               p_->dialect, w_.dialect(), why));
           } else if (spindle_on() != false || coolant_on_ != false) {
-            fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s "
-                                            "does not", spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on",
-                                            p_->dialect, w_.dialect()));
+            fail(block_->range,
+                 fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them, {}'s "
+                             "does not",
+                             spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", p_->dialect,
+                             w_.dialect()));
           }
         }
         // The target's M06 first takes the tool axis to the reference point, the
@@ -1728,9 +1879,11 @@ void Structured::state(const std::vector<FnCall>& calls) {
         if (dst_.tool_change_retract && !src_.tool_change_retract) {
           const size_t i = std::string_view(kAxisLetters).find(tool_axis(dst_));
           if (moved_ || target_.initial_position[i] != target_.reference_position[i])
-            fail(block_->range, fmt::format("a tool change where the tool stands: {}'s M06 first takes the tool axis to the "
-                                            "reference point, {}'s does not (a machine that changes tools in place says "
-                                            "iso.tool_change_retract = false)", w_.dialect(), p_->dialect));
+            fail(block_->range,
+                 fmt::format("a tool change where the tool stands: {}'s M06 first takes the tool axis to the "
+                             "reference point, {}'s does not (a machine that changes tools in place says "
+                             "iso.tool_change_retract = false)",
+                             w_.dialect(), p_->dialect));
         }
         tool_loaded_ = tool_selected_;
         // ... which stops the spindle (a translation where the target's does not, with
@@ -1739,8 +1892,9 @@ void Structured::state(const std::vector<FnCall>& calls) {
         // ISO's M06 stops the spindle and the coolant: a change while they run is
         // not the same change (flattening refuses it too).
         if (dst_.tool_change_iso && !src_.tool_change_iso && (spindle_on() != false || coolant_on_ != false))
-          fail(block_->range, fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them",
-                                          spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", w_.dialect()));
+          fail(block_->range,
+               fmt::format("a tool change with the spindle or the coolant {}: {}'s M06 stops them",
+                           spindle_on() == true || coolant_on_ == true ? "on" : "perhaps on", w_.dialect()));
         break;
       default: break;
     }
@@ -1753,38 +1907,53 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   if (desc.calls.empty()) return;  // a call, a return: the statements write them
   if (own_code(w, desc)) return;
   if (lowers_frame(desc)) return frames_.push_back(&w);  // after the block's G90/G91 and plane (translated_machine())
-  if (src_.mirror_toggles != dst_.mirror_toggles && std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
-    return fail(w.range, fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
-  if (desc.calls == std::vector<FnCall>{{Fn::MotionParabola}} && w_.parabola_code() && !target_code(desc.calls, desc.scope))
+  if (src_.mirror_toggles != dst_.mirror_toggles &&
+      std::find(desc.calls.begin(), desc.calls.end(), FnCall{Fn::Mirror}) != desc.calls.end())
+    return fail(
+        w.range,
+        fmt::format("{}: a mirror code on a mirrored axis turns it back in one dialect, not in the other", desc.name));
+  if (desc.calls == std::vector<FnCall>{{Fn::MotionParabola}} && w_.parabola_code() &&
+      !target_code(desc.calls, desc.scope))
     return state(desc.calls);  // its points written as the target's parabola (parabola())
   if (desc.calls.size() == 1 && desc.calls[0].fn == Fn::OriginSelect) return origin(w, desc, out);
-  if (desc.calls.size() == 1 && (desc.calls[0].fn == Fn::OriginTemporary || desc.calls[0].fn == Fn::OriginIncremental) &&
+  if (desc.calls.size() == 1 &&
+      (desc.calls[0].fn == Fn::OriginTemporary || desc.calls[0].fn == Fn::OriginIncremental) &&
       !target_code(desc.calls, desc.scope))
     return origin_shift(w, desc);
-  if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope)) return reference(w, desc, out);
+  if (desc.calls == std::vector<FnCall>{{Fn::ReferenceReturn}} && !target_code(desc.calls, desc.scope))
+    return reference(w, desc, out);
   // ISO's G53 (its block in machine coordinates, absolute) into NC-110: G79.
-  if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block && !target_code(desc.calls, desc.scope))
+  if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block &&
+      !target_code(desc.calls, desc.scope))
     if (auto g79 = target_code({{Fn::OriginMachine}, {Fn::DistanceAbsolute}}, Scope::Block)) {
       if (incremental_ != false || comp_on_ != false)
-        return fail(w.range, fmt::format("{} under G91, or with cutter compensation, or where the text does not say they are off: "
-                                         "{}'s {} is absolute and takes no compensation", desc.name, w_.dialect(), g79->text()));
+        return fail(
+            w.range,
+            fmt::format("{} under G91, or with cutter compensation, or where the text does not say they are off: "
+                        "{}'s {} is absolute and takes no compensation",
+                        desc.name, w_.dialect(), g79->text()));
       return out.push_back({*g79, desc.timing, g79->entry->desc.timing, {}, {}});
     }
   // ... into pp: its G53 (the machine's zero, modal) before the block, the work offset
   // in force again after it.
-  if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block && !target_code(desc.calls, desc.scope))
+  if (desc.calls == std::vector<FnCall>{{Fn::WorkOffset, 0}} && desc.scope == Scope::Block &&
+      !target_code(desc.calls, desc.scope))
     if (auto zero = target_code({{Fn::WorkOffset, 0}}, Scope::Modal)) {
-      const auto back = work_offset_ ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*work_offset_)}}, Scope::Modal)
-                                     : std::nullopt;
+      const auto back = work_offset_
+                            ? target_code({{Fn::WorkOffset, static_cast<uint16_t>(*work_offset_)}}, Scope::Modal)
+                            : std::nullopt;
       if (incremental_ != false || comp_on_ != false || !back)
-        return fail(w.range, fmt::format("{} under G91, or with cutter compensation, or where the work offset in force is "
-                                         "not known: {}'s {} is absolute, takes no compensation and stays until the work "
-                                         "offset is selected again", desc.name, w_.dialect(), zero->text()));
+        return fail(w.range,
+                    fmt::format("{} under G91, or with cutter compensation, or where the work offset in force is "
+                                "not known: {}'s {} is absolute, takes no compensation and stays until the work "
+                                "offset is selected again",
+                                desc.name, w_.dialect(), zero->text()));
       lines_before_.push_back(zero->text());
       later_lines_.push_back(back->text());
       return;
     }
-  if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} || desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
+  if ((desc.calls == std::vector<FnCall>{{Fn::PathDwellEnd}} ||
+       desc.calls == std::vector<FnCall>{{Fn::DwellSeconds}}) &&
       !target_code(desc.calls, desc.scope))
     return timed_dwell(w, desc, out);
   // ISO's and NC-110's G41/G42 move the tool's centre off the path by their own rules
@@ -1793,10 +1962,12 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
         return c.fn == Fn::CompLeft || c.fn == Fn::CompRight;
       })) {
     if (src_.comp_path() && dst_.comp_path())
-      return fail(w.range, fmt::format("{}: cutter compensation turns outside corners and ends by other rules in {} than in {}",
-                                       desc.name, p_->dialect, w_.dialect()));
-    return fail(w.range, fmt::format("{}: cutter compensation moves the tool's centre off the path in {}, not in {}", desc.name,
-                                     src_.comp_path() ? p_->dialect : w_.dialect(), src_.comp_path() ? w_.dialect() : p_->dialect));
+      return fail(w.range,
+                  fmt::format("{}: cutter compensation turns outside corners and ends by other rules in {} than in {}",
+                              desc.name, p_->dialect, w_.dialect()));
+    return fail(w.range, fmt::format("{}: cutter compensation moves the tool's centre off the path in {}, not in {}",
+                                     desc.name, src_.comp_path() ? p_->dialect : w_.dialect(),
+                                     src_.comp_path() ? w_.dialect() : p_->dialect));
   }
   for (const FnCall& c : desc.calls)
     if (c.fn == Fn::Cycle) {
@@ -1848,8 +2019,8 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   };
   if (desc.calls == std::vector<FnCall>{{Fn::Aux}}) {
     if (auto own = aux_code(desc.name)) return add(*own);
-    return fail(w.range, fmt::format("{} (aux), a function of the machine's logic: {} has no {} of that kind", desc.name,
-                                     w_.dialect(), desc.name));
+    return fail(w.range, fmt::format("{} (aux), a function of the machine's logic: {} has no {} of that kind",
+                                     desc.name, w_.dialect(), desc.name));
   }
   // One code of the same functions, else one code for each.
   if (auto one = target_code(desc.calls, desc.scope)) return add(*one);
@@ -1864,13 +2035,15 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
       return add(*m06);
     }
   // ... that G43 H, applied by that M06 already.
-  if (desc.calls == std::vector<FnCall>{{Fn::LengthPlus}} && dst_.corrector_in_tool_word && !src_.corrector_in_tool_word) {
+  if (desc.calls == std::vector<FnCall>{{Fn::LengthPlus}} && dst_.corrector_in_tool_word &&
+      !src_.corrector_in_tool_word) {
     skip_offset_word_ = true;
     if (std::exchange(folded_g43_, false)) return void(length_on_ = true);
     if (corrector_change(true)) return;
-    return fail(w.range, fmt::format("{}: {} applies a length offset at its tool change only (T tool.corrector M06), and "
-                                     "no tool is known to be in the spindle here, or its H is not a constant",
-                                     desc.name, w_.dialect()));
+    return fail(w.range,
+                fmt::format("{}: {} applies a length offset at its tool change only (T tool.corrector M06), and "
+                            "no tool is known to be in the spindle here, or its H is not a constant",
+                            desc.name, w_.dialect()));
   }
   if (desc.calls == std::vector<FnCall>{{Fn::LengthOff}} && length_on_ != false && dst_.corrector_in_tool_word &&
       !src_.corrector_in_tool_word && !target_code(desc.calls, desc.scope) && corrector_change(false))
@@ -1882,18 +2055,23 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
   const bool all_idle = std::all_of(desc.calls.begin(), desc.calls.end(), [&](const FnCall& c) { return idle(c); });
   for (const FnCall& c : desc.calls) {
     // What a code does more changes nothing here (GOST's M05 ends a coolant that is off).
-    if (desc.calls.size() > 1 && idle(c) && !(all_idle && &c == &desc.calls.front()) && std::none_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& o) {
+    if (desc.calls.size() > 1 && idle(c) && !(all_idle && &c == &desc.calls.front()) &&
+        std::none_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& o) {
           if (&o == &w || o.kind != ir::WordKind::Code || o.code < 0) return false;
           const auto& calls = p_->semantics.codes[static_cast<size_t>(o.code)].calls;
-          return std::any_of(calls.begin(), calls.end(), [&](const FnCall& f) { return fn_group(f.fn) == fn_group(c.fn); });
+          return std::any_of(calls.begin(), calls.end(),
+                             [&](const FnCall& f) { return fn_group(f.fn) == fn_group(c.fn); });
         }))
       continue;
     auto code = target_code({c}, desc.scope);
-    if (code) each.push_back(*code);
-    else if (c.fn == Fn::LengthOff && length_on_ == false) continue;  // ends no offset (ISO's G49 of a safety block)
+    if (code)
+      each.push_back(*code);
+    else if (c.fn == Fn::LengthOff && length_on_ == false)
+      continue;  // ends no offset (ISO's G49 of a safety block)
     else if ((c.fn == Fn::CycleReturnInitial || c.fn == Fn::CycleReturnLevel) && dst_.cycle_two_levels)
       state({c});  // the return level, written as the cycle's R2 (level_cycle_lines())
-    else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles) state({c});  // GOST's cycles return so always
+    else if (c.fn == Fn::CycleReturnInitial && !dst_.fanuc_cycles)
+      state({c});  // GOST's cycles return so always
     // ... and ISO's G99 changes nothing where no cycle is on, or the holes are written
     // as moves, or the block has a cycle code, which code() writes so then.
     else if (c.fn == Fn::CycleReturnLevel &&
@@ -1903,23 +2081,28 @@ void Structured::code(const ir::Word& w, std::vector<Mapped>& out) {
       state({c});  // pp: mm always, inches written as mm (unit_)
     else if ((c.fn == Fn::PolarOn || c.fn == Fn::PolarOff) && !target_polar_)
       state({c});  // the points written in X Y Z (polar())
-    else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal)) continue;  // ISO: rpm always
-    else if (still_at_power_on(c)) continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)
+    else if (c.fn == Fn::SpindleRpm && !target_code({{Fn::SpindleConstantSurface}}, Scope::Modal))
+      continue;  // ISO: rpm always
+    else if (still_at_power_on(c))
+      continue;  // GOST's M11 of a start, into NC-110 (unclamped at power-on)
     // pp has no G43: its length link adds the offset's length on the axes it names.
     else if (const std::string link = link_word(c.fn); !link.empty()) {
       extra_words_.push_back(link);
       length(c.fn);
     }
     // NC-110's M06 applies the T word's corrector: corrector 0 is no length offset.
-    else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false) continue;
+    else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && corrector_ == 0 && length_on_ == false)
+      continue;
     // ... in a block after the target's M06 (pp's D and link, GOST's G43).
     else if (c.fn == Fn::LengthPlus && src_.corrector_in_tool_word && !each.empty() &&
              each.back().entry->desc.calls == std::vector<FnCall>{{Fn::ToolChange}})
       later = length_offset(w.range);
-    else if (path_manner(c.fn)) drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
+    else if (path_manner(c.fn))
+      drop(w.range, fmt::format("{} ({})", desc.name, fn_name(c.fn)));
     else {
       operand_words_ |= takes_operands(c.fn);  // refused with it
-      return fail(w.range, fmt::format("{} ({}): {} has no code for it{}", desc.name, fn_name(c.fn), w_.dialect(), doing_more(c, desc.scope)));
+      return fail(w.range, fmt::format("{} ({}): {} has no code for it{}", desc.name, fn_name(c.fn), w_.dialect(),
+                                       doing_more(c, desc.scope)));
     }
   }
   for (const Code& c : each) add(c);
@@ -1949,12 +2132,19 @@ bool Structured::coolant_ends_next() const {
       }))
     return false;
   for (const ir::Word& w : next_->words)
-    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos) return false;
-  if (block_has_call([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion || c.fn == Fn::Dwell || c.fn == Fn::DwellSeconds; }, next_))
+    if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos)
+      return false;
+  if (block_has_call(
+          [](const FnCall& c) {
+            return fn_group(c.fn) == FnGroup::Motion || c.fn == Fn::Dwell || c.fn == Fn::DwellSeconds;
+          },
+          next_))
     return false;
-  return block_has_call([](const FnCall& c) {
-    return c.fn == Fn::CoolantOff || c.fn == Fn::ProgramEnd || c.fn == Fn::ProgramEndInformation;
-  }, next_);
+  return block_has_call(
+      [](const FnCall& c) {
+        return c.fn == Fn::CoolantOff || c.fn == Fn::ProgramEnd || c.fn == Fn::ProgramEndInformation;
+      },
+      next_);
 }
 
 // Where the target has `f` in a code that does more, which changes something here:
@@ -1980,10 +2170,12 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
     for (const auto& [number, entry] : *table) {
       const std::vector<FnCall>& has = entry.desc.calls;
       if (entry.desc.scope != scope || has.size() <= calls.size() || has.size() - calls.size() >= fewest) continue;
-      const bool all = std::all_of(calls.begin(), calls.end(), [&](const FnCall& c) { return std::find(has.begin(), has.end(), c) != has.end(); });
+      const bool all = std::all_of(calls.begin(), calls.end(),
+                                   [&](const FnCall& c) { return std::find(has.begin(), has.end(), c) != has.end(); });
       const bool rest_idle = std::all_of(has.begin(), has.end(), [&](const FnCall& c) {
         // ... or ends the coolant just before the next block does (coolant_ends_next())
-        return std::find(calls.begin(), calls.end(), c) != calls.end() || idle(c) || (c.fn == Fn::CoolantOff && coolant_ends_next());
+        return std::find(calls.begin(), calls.end(), c) != calls.end() || idle(c) ||
+               (c.fn == Fn::CoolantOff && coolant_ends_next());
       });
       if (all && rest_idle) {
         best = Code{entry.letter, number, &entry};
@@ -1996,19 +2188,23 @@ std::optional<Structured::Code> Structured::code_doing_more(const std::vector<Fn
 // GOST 20999's parabola (G06) into a target that writes one by its end and control
 // point (LinuxCNC's G5.1, in XY: I J the control point from the start).
 bool Structured::lowers_parabola() const {
-  return !same_ && motion_ == Fn::MotionParabola && w_.parabola_code() && !target_code({{Fn::MotionParabola}}, Scope::Modal);
+  return !same_ && motion_ == Fn::MotionParabola && w_.parabola_code() &&
+         !target_code({{Fn::MotionParabola}}, Scope::Modal);
 }
 
 // The parabola's control point as the runtime takes it (machine_motion.cpp, §4.4): the
 // tangents' intersection I J K (coordinates under G90, or from the start, as the
 // source machine says), or from two blocks without them twice the intermediate point
 // less half the start and the end. The words must be constants, the start known.
-void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out) {
+void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Position& start,
+                          std::vector<std::string>& out) {
   const ir::Word& first = **std::find_if(words.begin(), words.end(), [](const ir::Word* w) { return w; });
   position_ = {};
   if (!incremental_ || !start[0] || !start[1] || !start[2] || plane_ != 'K')
-    return fail(first.range, fmt::format("a parabola where the tool's position, G90/G91 or the plane is not known, or out of "
-                                         "the XY plane: {}'s G5.1 is in XY (G17)", w_.dialect()));
+    return fail(first.range,
+                fmt::format("a parabola where the tool's position, G90/G91 or the plane is not known, or out of "
+                            "the XY plane: {}'s G5.1 is in XY (G17)",
+                            w_.dialect()));
   const bool tangent = words[3] || words[4] || words[5];
   // The second of two blocks goes on from the intermediate point (G91, words not written).
   const Position base = !tangent && parabola_middle_ ? *parabola_middle_ : start;
@@ -2033,10 +2229,11 @@ void Structured::parabola(const std::array<const ir::Word*, 6>& words, const Pos
   if (std::fabs(end[2] - *start[2]) > 1e-9 || std::fabs(control[2] - *start[2]) > 1e-9)
     return fail(first.range, fmt::format("a parabola out of the XY plane: {}'s G5.1 moves X and Y only", w_.dialect()));
   if (std::fabs(control[0] - *start[0]) < 1e-9 && std::fabs(control[1] - *start[1]) < 1e-9)
-    return fail(first.range, fmt::format("a parabola whose control point is its start: {}'s G5.1 takes none", w_.dialect()));
+    return fail(first.range,
+                fmt::format("a parabola whose control point is its start: {}'s G5.1 takes none", w_.dialect()));
   std::vector<std::string> written{"G" + w_.number({'G', *w_.parabola_code(), Value::Code})};
-  for (const auto& [letter, v] : {std::pair{'X', end[0]}, std::pair{'Y', end[1]}, std::pair{'I', control[0] - *start[0]},
-                                  std::pair{'J', control[1] - *start[1]}}) {
+  for (const auto& [letter, v] : {std::pair{'X', end[0]}, std::pair{'Y', end[1]},
+                                  std::pair{'I', control[0] - *start[0]}, std::pair{'J', control[1] - *start[1]}}) {
     const auto text = length(first.range, letter, letter >= 'X' && *incremental_ ? v - *start[letter - 'X'] : v);
     if (!text) return;
     written.push_back(letter + *text);
@@ -2059,7 +2256,8 @@ bool Structured::corrector_change(bool on) {
   auto m06 = target_code({{Fn::ToolChange}, {Fn::LengthPlus}}, Scope::Modal);
   if (!m06) return false;
   const int corrector = static_cast<int>(*h);
-  lines_before_.push_back(fmt::format("T{}{} {}", *tool_loaded_, corrector ? fmt::format(".{}", corrector) : "", m06->text()));
+  lines_before_.push_back(
+      fmt::format("T{}{} {}", *tool_loaded_, corrector ? fmt::format(".{}", corrector) : "", m06->text()));
   // The next tool selected since (ISO's T2 after T1 M06), selected again for its M06.
   if (*tool_selected_ != *tool_loaded_) lines_before_.push_back(fmt::format("T{}", *tool_selected_));
   corrector_ = corrector;
@@ -2079,7 +2277,8 @@ std::optional<int> Structured::offset_after_change() const {
       g43 |= p_->semantics.codes[static_cast<size_t>(w.code)].calls == std::vector<FnCall>{{Fn::LengthPlus}};
     else if (w.kind == ir::WordKind::Parameter && w.address == "H")
       h = constant_of(w.value);
-    else if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && src_.axes.find(w.address[0]) != std::string::npos)
+    else if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 &&
+             src_.axes.find(w.address[0]) != std::string::npos)
       return std::nullopt;
   }
   for (const ir::Stmt& s : next_->stmts)
@@ -2100,8 +2299,10 @@ std::map<std::string, int> Structured::unit_numbers(std::set<int> taken, std::ve
     if (name.size() > 1 && name.size() <= 5 && (name[0] == 'O' || name[0] == 'L') &&
         name.find_first_not_of("0123456789", 1) == std::string::npos)
       n = std::stoi(name.substr(1));
-    if (n && *n > 0 && taken.insert(*n).second) numbers[name] = *n;
-    else rest.push_back(&p_->units[u]);
+    if (n && *n > 0 && taken.insert(*n).second)
+      numbers[name] = *n;
+    else
+      rest.push_back(&p_->units[u]);
   }
   int next = 9000;
   for (const ir::Unit* u : rest) {
@@ -2121,7 +2322,8 @@ bool Structured::uses_locals(const std::string& unit) const {
     std::function<bool(ir::ExprId)> local = [&](ir::ExprId id) {
       if (id == ir::kNoExpr) return false;
       const ir::Expr& e = p_->exprs[id];
-      if (e.op == ir::ExprOp::Var && e.space == 0 && (!p_->is_constant(e.a) || p_->exprs[e.a].number <= 33)) return true;
+      if (e.op == ir::ExprOp::Var && e.space == 0 && (!p_->is_constant(e.a) || p_->exprs[e.a].number <= 33))
+        return true;
       if (e.op == ir::ExprOp::Number || e.op == ir::ExprOp::String) return false;
       return local(e.a) || local(e.b);
     };
@@ -2131,7 +2333,8 @@ bool Structured::uses_locals(const std::string& unit) const {
           for (const ir::Word& w : b.words)
             if (local(w.value)) return true;
           for (const ir::Stmt& s : b.stmts)
-            if (local(s.target) || local(s.value) || local(s.cond) || (s.kind == ir::StmtKind::Call && s.shares_locals && in_unit(s.label)))
+            if (local(s.target) || local(s.value) || local(s.cond) ||
+                (s.kind == ir::StmtKind::Call && s.shares_locals && in_unit(s.label)))
               return true;
         }
     return false;
@@ -2157,7 +2360,8 @@ std::string Structured::as_written(const ir::Word& w) {
 // its point: ISO reads P2 in G04 as 2 ms), a variable, or an expression in brackets.
 std::string Structured::value(ir::ExprId id, char letter) {
   const ir::Expr& e = p_->exprs[id];
-  if (e.op == ir::ExprOp::Number) return exact(e.number, std::string_view("STHDLNOM").find(letter) == std::string_view::npos);
+  if (e.op == ir::ExprOp::Number)
+    return exact(e.number, std::string_view("STHDLNOM").find(letter) == std::string_view::npos);
   // X-#5: a vacant #5 leaves the word out, as X#5 does; X[-#5] would be X0.
   if (e.op == ir::ExprOp::Neg && p_->exprs[e.a].op == ir::ExprOp::Var) return "-" + expr(e.a, kSign);
   if (e.op == ir::ExprOp::Var || e.op == ir::ExprOp::ZeroIfVacant) return expr(id, kSign);
@@ -2176,7 +2380,8 @@ std::optional<Structured::Code> Structured::target_code(const std::vector<FnCall
 std::optional<Structured::Code> Structured::aux_code(std::string_view name) const {
   for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})
     for (const auto& [number, entry] : *table)
-      if (entry.desc.name == name && entry.desc.calls == std::vector<FnCall>{{Fn::Aux}}) return Code{entry.letter, number, &entry};
+      if (entry.desc.name == name && entry.desc.calls == std::vector<FnCall>{{Fn::Aux}})
+        return Code{entry.letter, number, &entry};
   return std::nullopt;
 }
 
@@ -2184,14 +2389,16 @@ std::optional<Structured::Code> Structured::aux_code(std::string_view name) cons
 // its table calls another's alias.
 std::optional<Structured::Code> Structured::exact_code(const std::vector<FnCall>& calls, Scope scope) const {
   // A code of a block and a modal one differ only in a state they set.
-  const bool stateful = std::any_of(calls.begin(), calls.end(), [](const FnCall& c) { return fn_group(c.fn) != FnGroup::None; });
+  const bool stateful =
+      std::any_of(calls.begin(), calls.end(), [](const FnCall& c) { return fn_group(c.fn) != FnGroup::None; });
   std::optional<Code> best;
   bool best_alias = true;
   for (const auto* table : {&w_.tables().g_codes, &w_.tables().m_codes})
     for (const auto& [number, entry] : *table) {
       const std::vector<FnCall>& has = entry.desc.calls;
       if (has.size() != calls.size() || (stateful && entry.desc.scope != scope)) continue;
-      if (!std::all_of(calls.begin(), calls.end(), [&](const FnCall& c) { return std::find(has.begin(), has.end(), c) != has.end(); }))
+      if (!std::all_of(calls.begin(), calls.end(),
+                       [&](const FnCall& c) { return std::find(has.begin(), has.end(), c) != has.end(); }))
         continue;
       const bool alias = entry.meaning.find("(as ") != std::string::npos;
       if (!best || (best_alias && !alias)) {
@@ -2226,14 +2433,18 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
   }
   if (const char to = cycle_word(letter)) {
     if (letter == src_.dwell_word) return dwell(w, words);
-    if (to == '-') return fail(w.range, fmt::format("a repeat count {} of a canned cycle: {} makes one hole a block", letter, w_.dialect()));
+    if (to == '-')
+      return fail(w.range,
+                  fmt::format("a repeat count {} of a canned cycle: {} makes one hole a block", letter, w_.dialect()));
     return write_length(to);  // a level or a peck
   }
   if ((letter == 'D' || letter == 'H') && reads_offset_number(src_, letter)) {
     // ISO's D and H, GOST's D: the one register of the offset in force (the runtime's),
     // the target's D; once where a block has both.
-    if (!reads_offset_number(dst_, 'D') || !w_.tables().addresses.count('D') || src_.tool_offset_axes != dst_.tool_offset_axes)
-      return fail(w.range, fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
+    if (!reads_offset_number(dst_, 'D') || !w_.tables().addresses.count('D') ||
+        src_.tool_offset_axes != dst_.tool_offset_axes)
+      return fail(w.range,
+                  fmt::format("the word {} of {}: {} has no word of its meaning", address, p_->dialect, w_.dialect()));
     const std::string word = "D" + value(w.value, 'D');
     if (std::find(words.begin(), words.end(), word) != words.end()) return;
     if (std::any_of(words.begin(), words.end(), [](const std::string& o) { return o[0] == 'D'; }))
@@ -2247,18 +2458,22 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
         return fail(w.range, fmt::format("a cutting speed in feet a minute: {} has no inch mode", w_.dialect()));
       return write(letter);
     case 'T': return write(letter);
-    case 'I': case 'J': case 'K':
+    case 'I':
+    case 'J':
+    case 'K':
       if (src_.helix_by_end && plane_ && *plane_ == letter) return;  // ISO's K in G17 does nothing (NC4025)
       if (src_.centre_words == CentreWords::PerAxis && (src_.helix_lead != dst_.helix_lead || dst_.helix_by_end)) {
-        if (!plane_) return fail(w.range, fmt::format("{} where the plane is not known: a centre or a helix lead", letter));
+        if (!plane_)
+          return fail(w.range, fmt::format("{} where the plane is not known: a centre or a helix lead", letter));
         if (*plane_ == letter)
           return fail(w.range, fmt::format("a helix lead {}: {}", letter,
-                                           dst_.helix_by_end ? fmt::format("{} gives a helix by its end point alone", w_.dialect())
-                                                             : std::string("the dialects give the lead in other units")));
+                                           dst_.helix_by_end
+                                               ? fmt::format("{} gives a helix by its end point alone", w_.dialect())
+                                               : std::string("the dialects give the lead in other units")));
       }
       if (src_.arc_centre != dst_.arc_centre)
-        return fail(w.range, fmt::format("the arc centre {}: {} gives it from the origin, {} from the start point", letter,
-                                         src_.arc_centre == ArcCentre::Absolute ? p_->dialect : w_.dialect(),
+        return fail(w.range, fmt::format("the arc centre {}: {} gives it from the origin, {} from the start point",
+                                         letter, src_.arc_centre == ArcCentre::Absolute ? p_->dialect : w_.dialect(),
                                          src_.arc_centre == ArcCentre::Absolute ? w_.dialect() : p_->dialect));
       if (src_.centre_words != dst_.centre_words)
         return fail(w.range, fmt::format("the arc centre {}: the dialects give the centre by different words", letter));
@@ -2274,8 +2489,10 @@ void Structured::parameter(const ir::Word& w, std::vector<std::string>& words) {
 // the target's mm (a target without an inch mode: pp); refused where it is not a
 // constant or the unit is not known.
 std::optional<std::string> Structured::length(SourceRange at, char to, std::optional<double> v) {
-  if (!unit_) fail(at, unit_unknown());
-  else if (!v) fail(at, fmt::format("a length in inches given by a parameter: {} has no inch mode", w_.dialect()));
+  if (!unit_)
+    fail(at, unit_unknown());
+  else if (!v)
+    fail(at, fmt::format("a length in inches given by a parameter: {} has no inch mode", w_.dialect()));
   if (!unit_ || !v) return std::nullopt;
   return number({to, *v * *unit_, to == 'F' ? Value::Feed : Value::Length}, at);
 }
@@ -2285,12 +2502,16 @@ std::optional<std::string> Structured::length(SourceRange at, char to, std::opti
 // nothing where the target has none or lacks one of the axes.
 std::string Structured::link_word(Fn fn) const {
   // (NC-110's corrector names its own axis: not known from the text.)
-  if (dst_.link_axes.empty() || src_.corrector_in_tool_word || (fn != Fn::LengthPlus && fn != Fn::LengthMinus && fn != Fn::LengthOff))
+  if (dst_.link_axes.empty() || src_.corrector_in_tool_word ||
+      (fn != Fn::LengthPlus && fn != Fn::LengthMinus && fn != Fn::LengthOff))
     return {};
   std::string digits;
   for (char axis : dst_.link_axes)
-    digits += src_.tool_offset_axes.find(axis) == std::string::npos || fn == Fn::LengthOff ? '0' : fn == Fn::LengthPlus ? '1' : '2';
-  if (std::any_of(src_.tool_offset_axes.begin(), src_.tool_offset_axes.end(), [&](char a) { return dst_.link_axes.find(a) == std::string::npos; }))
+    digits += src_.tool_offset_axes.find(axis) == std::string::npos || fn == Fn::LengthOff ? '0'
+              : fn == Fn::LengthPlus                                                       ? '1'
+                                                                                           : '2';
+  if (std::any_of(src_.tool_offset_axes.begin(), src_.tool_offset_axes.end(),
+                  [&](char a) { return dst_.link_axes.find(a) == std::string::npos; }))
     return {};
   const size_t first = digits.find_first_not_of('0');
   return "&" + (first == std::string::npos ? std::string("0") : digits.substr(first));
@@ -2322,9 +2543,10 @@ void Structured::dwell(const ir::Word& w, std::vector<std::string>& words) {
   const ir::Expr& e = p_->exprs[w.value];
   if (e.op == ir::ExprOp::Number)
     if (auto why = w_.unwritable({dst_.dwell_word, e.number * factor, Value::Seconds})) return fail(w.range, *why);
-  words.push_back(dst_.dwell_word + (e.op == ir::ExprOp::Number ? number({dst_.dwell_word, e.number * factor, Value::Seconds}, w.range)
-                                     : factor == 1              ? value(w.value, dst_.dwell_word)
-                                                                : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
+  words.push_back(dst_.dwell_word +
+                  (e.op == ir::ExprOp::Number ? number({dst_.dwell_word, e.number * factor, Value::Seconds}, w.range)
+                   : factor == 1              ? value(w.value, dst_.dwell_word)
+                                              : fmt::format("[{}*{}]", expr(w.value, kTerm), exact(factor, false))));
 }
 
 // --- parameters and expressions -----------------------------------------------------------
@@ -2335,7 +2557,9 @@ void Structured::assign(const ir::Stmt& s) {
   // (timed_dwell()); nothing written.
   if (!same_ && target.op == ir::ExprOp::Sys && SysRef::unpack(target.sys).var == SysVar::DwellTime) {
     timer_ = constant_of(s.value);
-    if (!timer_) fail(s.range, fmt::format("a dwell time TMR that is not a constant: {} gives a dwell its time in its block", w_.dialect()));
+    if (!timer_)
+      fail(s.range, fmt::format("a dwell time TMR that is not a constant: {} gives a dwell its time in its block",
+                                w_.dialect()));
     carried_number_ = std::exchange(pending_number_, std::nullopt);  // with the comments, to the next line
     carry_ = true;
     return;
@@ -2351,8 +2575,10 @@ void Structured::assign(const ir::Stmt& s) {
         // nothing to round (a sum of thousandths is one to within 1e-15)
       } else if (p_->is_constant(s.value)) {
         double v = p_->exprs[s.value].number;
-        if (convert_value(type, 0, v)) value = exact(v, false);
-        else fail(s.range, "a value outside its parameter's class");
+        if (convert_value(type, 0, v))
+          value = exact(v, false);
+        else
+          fail(s.range, "a value outside its parameter's class");
       } else {
         // Half away from zero, as the class stores (ISO's ROUND; LinuxCNC's own
         // rounds halves up: builtin()).
@@ -2378,10 +2604,22 @@ bool Structured::is_whole(ir::ExprId id) const {
       const VarType t = p_->spaces[e.space].type_of(static_cast<uint32_t>(p_->exprs[e.a].number));
       return t == VarType::Byte || t == VarType::Integer || t == VarType::Long;
     }
-    case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: case ir::ExprOp::Neg: return is_whole(e.a);
-    case ir::ExprOp::Add: case ir::ExprOp::Sub: case ir::ExprOp::Mul: return is_whole(e.a) && is_whole(e.b);
-    case ir::ExprOp::Not: case ir::ExprOp::Eq: case ir::ExprOp::Ne: case ir::ExprOp::Lt: case ir::ExprOp::Le:
-    case ir::ExprOp::Gt: case ir::ExprOp::Ge: case ir::ExprOp::And: case ir::ExprOp::Or: case ir::ExprOp::Xor: return true;
+    case ir::ExprOp::ZeroIfVacant:
+    case ir::ExprOp::Check:
+    case ir::ExprOp::Neg: return is_whole(e.a);
+    case ir::ExprOp::Add:
+    case ir::ExprOp::Sub:
+    case ir::ExprOp::Mul: return is_whole(e.a) && is_whole(e.b);
+    case ir::ExprOp::Not:
+    case ir::ExprOp::Eq:
+    case ir::ExprOp::Ne:
+    case ir::ExprOp::Lt:
+    case ir::ExprOp::Le:
+    case ir::ExprOp::Gt:
+    case ir::ExprOp::Ge:
+    case ir::ExprOp::And:
+    case ir::ExprOp::Or:
+    case ir::ExprOp::Xor: return true;
     default: return false;
   }
 }
@@ -2395,8 +2633,11 @@ bool Structured::is_thousandths(ir::ExprId id) const {
     case ir::ExprOp::Var:
       return p_->is_constant(e.a) &&
              p_->spaces[e.space].type_of(static_cast<uint32_t>(p_->exprs[e.a].number)) == VarType::Thousandths;
-    case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: case ir::ExprOp::Neg: return is_thousandths(e.a);
-    case ir::ExprOp::Add: case ir::ExprOp::Sub: return is_thousandths(e.a) && is_thousandths(e.b);
+    case ir::ExprOp::ZeroIfVacant:
+    case ir::ExprOp::Check:
+    case ir::ExprOp::Neg: return is_thousandths(e.a);
+    case ir::ExprOp::Add:
+    case ir::ExprOp::Sub: return is_thousandths(e.a) && is_thousandths(e.b);
     default: return is_whole(id);
   }
 }
@@ -2447,7 +2688,8 @@ std::string Structured::expr(ir::ExprId id, int min) {
   switch (e.op) {
     case ir::ExprOp::Number: return e.number < 0 ? wrap(kSign, exact(e.number, false)) : exact(e.number, false);
     case ir::ExprOp::Var: return var(e);
-    case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return expr(e.a, min);
+    case ir::ExprOp::ZeroIfVacant:
+    case ir::ExprOp::Check: return expr(e.a, min);
     case ir::ExprOp::Neg:
       if (auto v = constant_of(id)) {  // NC-110's NEG(NEG(-2)) is -2, not ---2
         const double c = *v == 0 ? 0.0 : *v;
@@ -2484,9 +2726,9 @@ std::string Structured::modulo(const ir::Expr& e, int min) {
 // order comparisons read vacant as 0, and EQ and NE are each other's opposite).
 std::string Structured::negation(ir::ExprId id, int min) {
   const ir::Expr& a = p_->exprs[id];
-  static const std::map<ir::ExprOp, std::string_view> kOpposite = {
-      {ir::ExprOp::Eq, "NE"}, {ir::ExprOp::Ne, "EQ"}, {ir::ExprOp::Lt, "GE"},
-      {ir::ExprOp::Le, "GT"}, {ir::ExprOp::Gt, "LE"}, {ir::ExprOp::Ge, "LT"}};
+  static const std::map<ir::ExprOp, std::string_view> kOpposite = {{ir::ExprOp::Eq, "NE"}, {ir::ExprOp::Ne, "EQ"},
+                                                                   {ir::ExprOp::Lt, "GE"}, {ir::ExprOp::Le, "GT"},
+                                                                   {ir::ExprOp::Gt, "LE"}, {ir::ExprOp::Ge, "LT"}};
   std::string text;
   if (auto it = kOpposite.find(a.op); it != kOpposite.end())
     text = fmt::format("{} {} {}", expr(a.a, kSum), it->second, expr(a.b, kSum));
@@ -2552,7 +2794,9 @@ void Structured::start() {
   // A mode the target machine starts in, or one the program's leading blocks set
   // before it matters, is not written: a second translation adds nothing.
   for (const FnCall& c : modes)
-    if (auto code = target_code({c}, Scope::Modal); code && start_needs(c) && !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
+    if (auto code = target_code({c}, Scope::Modal);
+        code && start_needs(c) &&
+        !(motion_code_moves() && fn_group(c.fn) == FnGroup::Motion && c.fn != Fn::CycleCancel)) {
       auto& list = code->letter == 'G' ? g : m;
       if (std::none_of(list.begin(), list.end(), [&](const Code& o) { return o.number == code->number; }))
         list.push_back(*code);
@@ -2565,7 +2809,8 @@ void Structured::start() {
   for (const Code& c : m) w_.line(c.text());
   // A machine that starts with a feed (iso.initial_feed) where the target's starts
   // with another.
-  if (src_.initial_feed > 0 && dst_.initial_feed != src_.initial_feed && !lead_feed_) w_.line("F" + w_.number({'F', src_.initial_feed, Value::Feed}));
+  if (src_.initial_feed > 0 && dst_.initial_feed != src_.initial_feed && !lead_feed_)
+    w_.line("F" + w_.number({'F', src_.initial_feed, Value::Feed}));
   start_offset();
   start_parameters();
 }
@@ -2575,7 +2820,8 @@ void Structured::start_parameters() {
   if (indirect_ && mapped_space_ >= 0)
     zero_all(kMappedBase, std::min(p_->spaces[static_cast<size_t>(mapped_space_)].size, kMappedEnd - kMappedBase));
   for (uint32_t v : used_)
-    if ((!indirect_ || v < kMappedBase) && !starts_stored_.count(fmt::format("#{}", v))) w_.line(fmt::format("#{}=0", v));
+    if ((!indirect_ || v < kMappedBase) && !starts_stored_.count(fmt::format("#{}", v)))
+      w_.line(fmt::format("#{}=0", v));
 }
 
 // G codes in as few blocks as the target takes them: two of one group, or a pair
@@ -2590,8 +2836,10 @@ std::vector<std::vector<Structured::Code>> Structured::together(const std::vecto
     auto it = std::find_if(blocks.begin(), blocks.end(), [&](const std::vector<Code>& b) {
       return std::none_of(b.begin(), b.end(), [&](const Code& o) { return apart(o, c); });
     });
-    if (it == blocks.end()) blocks.push_back({c});
-    else it->push_back(c);
+    if (it == blocks.end())
+      blocks.push_back({c});
+    else
+      it->push_back(c);
   }
   return blocks;
 }
@@ -2642,8 +2890,12 @@ class Streamer final : public StreamObserver {
     t_.stream(program, block, next);
     spill.grown();
   }
-  bool streams(const ir::Program& program, const ir::Block& block) const override { return !t_.frame_codes(program, block); }
-  bool looks_ahead(const ir::Program& program, const ir::Block& block) const override { return t_.looks_ahead(program, block); }
+  bool streams(const ir::Program& program, const ir::Block& block) const override {
+    return !t_.frame_codes(program, block);
+  }
+  bool looks_ahead(const ir::Program& program, const ir::Block& block) const override {
+    return t_.looks_ahead(program, block);
+  }
 
   Spill spill;
 
@@ -2695,7 +2947,8 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   if (!rest.units.empty()) {
     header.title = rest.units.front().title;
     const std::string& name = rest.units.front().name;  // GOST's and pp's "%12"
-    if (name.size() > 1 && name.size() <= 9 && name[0] == '%' && name.find_first_not_of("0123456789", 1) == std::string::npos)
+    if (name.size() > 1 && name.size() <= 9 && name[0] == '%' &&
+        name.find_first_not_of("0123456789", 1) == std::string::npos)
       header.number = name.substr(1);
   }
   translation->translate(rest, header);
@@ -2714,21 +2967,24 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
   std::vector<std::string> order;
   for (const Problem& p : translation->problems) {
     auto [it, fresh] = seen.try_emplace(p.what, &p, 0);
-    if (fresh) order.push_back(p.what);
-    else ++it->second.second;
+    if (fresh)
+      order.push_back(p.what);
+    else
+      ++it->second.second;
   }
   bool refused = false;
   for (const std::string& what : order) {
     const auto& [p, more] = seen.at(what);
     const std::string text = what + (more ? fmt::format(" (and in {} more places)", more) : "");
     if (p->kind == Finding::Rounded)
-      s.diags.report(DiagId::TranslateRounded, p->at, writer->dialect(), static_cast<int>(std::lround(-std::log10(writer->resolution()))),
-                     rounded_these("length", more));
+      s.diags.report(DiagId::TranslateRounded, p->at, writer->dialect(),
+                     static_cast<int>(std::lround(-std::log10(writer->resolution()))), rounded_these("length", more));
     else if (p->kind == Finding::RoundedRate)
       s.diags.report(DiagId::TranslateRoundedRate, p->at, writer->dialect(), what, writer->rate_decimals(what[0]),
                      rounded_these("value", more));
     else
-      s.diags.report(p->kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at, writer->dialect(), text);
+      s.diags.report(p->kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at,
+                     writer->dialect(), text);
     refused |= p->kind == Finding::Refused;
   }
   if (refused || streamer.spill.failed) return false;

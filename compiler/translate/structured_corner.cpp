@@ -30,14 +30,13 @@ bool plain(const ir::Block& b) {
 
 // An element's sweep, an arc's.
 double sweep(const corner::Element& e) {
-  return arc_sweep(std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), std::atan2(e.b.y() - e.c.y(), e.b.x() - e.c.x()), e.ccw);
+  return arc_sweep(std::atan2(e.a.y() - e.c.y(), e.a.x() - e.c.x()), std::atan2(e.b.y() - e.c.y(), e.b.x() - e.c.x()),
+                   e.ccw);
 }
 
 }  // namespace
 
-bool Structured::lowers_corner(const ir::Word& w) const {
-  return src_.corners && !dst_.corners && is_corner_word(w);
-}
+bool Structured::lowers_corner(const ir::Word& w) const { return src_.corners && !dst_.corners && is_corner_word(w); }
 
 bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) const {
   auto has = [&](Fn fn) {
@@ -52,7 +51,8 @@ bool Structured::looks_ahead(const ir::Program& program, const ir::Block& b) con
   // A spindle stop the target says with the coolant's only (NC-110's and GOST's M05),
   // where the next block ends the coolant (coolant_ends_next()).
   if (has(Fn::SpindleStop) && !target_code({{Fn::SpindleStop}}, Scope::Modal)) return true;
-  return program.semantics.conventions.corners && !dst_.corners && std::any_of(b.words.begin(), b.words.end(), is_corner_word);
+  return program.semantics.conventions.corners && !dst_.corners &&
+         std::any_of(b.words.begin(), b.words.end(), is_corner_word);
 }
 
 // The block's own words get the corner's first end on the plane's axes; the words
@@ -89,20 +89,30 @@ std::vector<std::string> Structured::corner_moves(const ir::Word& c, const Posit
     if (w.kind == ir::WordKind::Code) {
       if (w.code < 0) return refuse("the next block's codes are chosen at run time");
       for (const FnCall& f : p_->semantics.codes[static_cast<size_t>(w.code)].calls) {
-        if (fn_group(f.fn) == FnGroup::Motion) next_motion = f.fn;
-        else if (f.fn == Fn::DistanceAbsolute) absolute = true;
-        else if (f.fn == Fn::DistanceIncremental) absolute = false;
-        else other = true;
+        if (fn_group(f.fn) == FnGroup::Motion)
+          next_motion = f.fn;
+        else if (f.fn == Fn::DistanceAbsolute)
+          absolute = true;
+        else if (f.fn == Fn::DistanceIncremental)
+          absolute = false;
+        else
+          other = true;
       }
     } else if (w.kind == ir::WordKind::Parameter) {
       const char letter = w.address.size() == 1 ? w.address[0] : 0;
       const auto value = constant_of(w.value);
-      if (letter == 'X' + static_cast<char>(u) && value) end.x() = *value;
-      else if (letter == 'X' + static_cast<char>(v) && value) end.y() = *value;
-      else if (letter == 'I' + static_cast<char>(u) && value) offset.x() = *value;
-      else if (letter == 'I' + static_cast<char>(v) && value) offset.y() = *value;
-      else if (letter && letter == src_.radius_word && value) radius = *value;
-      else if (letter != 'F' && !is_corner_word(w)) other = true;
+      if (letter == 'X' + static_cast<char>(u) && value)
+        end.x() = *value;
+      else if (letter == 'X' + static_cast<char>(v) && value)
+        end.y() = *value;
+      else if (letter == 'I' + static_cast<char>(u) && value)
+        offset.x() = *value;
+      else if (letter == 'I' + static_cast<char>(v) && value)
+        offset.y() = *value;
+      else if (letter && letter == src_.radius_word && value)
+        radius = *value;
+      else if (letter != 'F' && !is_corner_word(w))
+        other = true;
     }
   }
   const bool next_arc = next_motion == Fn::MotionArcCw || next_motion == Fn::MotionArcCcw;

@@ -67,8 +67,11 @@ bool Structured::dwell_lines(double seconds, std::vector<std::string>& lines) {
   }
   const auto g04 = target_code({{Fn::PathDwellEnd}}, Scope::Block);
   if (!g04) return refuse(fmt::format("a dwell: {} has no dwell with a time", w_.dialect()));
-  if (per_minute_ != true) return refuse(fmt::format("a dwell where the feed may be per revolution: {}'s TMR counts revolutions then", w_.dialect()));
-  if (seconds < 0 || seconds > 60) return refuse(fmt::format("a dwell of {} s: {}'s TMR holds 0 to 60 s", exact(seconds, false), w_.dialect()));
+  if (per_minute_ != true)
+    return refuse(
+        fmt::format("a dwell where the feed may be per revolution: {}'s TMR counts revolutions then", w_.dialect()));
+  if (seconds < 0 || seconds > 60)
+    return refuse(fmt::format("a dwell of {} s: {}'s TMR holds 0 to 60 s", exact(seconds, false), w_.dialect()));
   if (!timer_ || *timer_ != seconds) lines.push_back("TMR=" + exact(seconds, false));
   timer_ = seconds;
   lines.push_back(g04->text());
@@ -83,8 +86,11 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   LevelCycle& c = *level_cycle_;
   const bool defined_here = std::exchange(c.defined_here, false);
   const LevelCycle::Levels given = std::exchange(c.given, {});
-  for (auto [now, was] : {std::pair{&c.now.depth, given.depth}, {&c.now.peck, given.peck}, {&c.now.dwell, given.dwell},
-                          {&c.now.factor, given.factor}, {&c.now.minimum, given.minimum}})
+  for (auto [now, was] : {std::pair{&c.now.depth, given.depth},
+                          {&c.now.peck, given.peck},
+                          {&c.now.dwell, given.dwell},
+                          {&c.now.factor, given.factor},
+                          {&c.now.minimum, given.minimum}})
     if (was) *now = was;
   const bool two_levels = src_.cycle_two_levels;
   // The drilling axis: the plane's normal (NC-110's is Z here, its cycle block's axis).
@@ -92,19 +98,21 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   const std::optional<double> z = position_[d];
   if (!two_levels && given.r1) c.now.r1 = given.r1;
   if (two_levels) {  // one R sets both levels, two each; none at the cycle's block: where the tool is
-    if (given.r1) c.now.r2 = given.r2 ? given.r2 : given.r1, c.now.r1 = given.r1;
-    else if (given.r2) c.now.r2 = given.r2;
+    if (given.r1)
+      c.now.r2 = given.r2 ? given.r2 : given.r1, c.now.r1 = given.r1;
+    else if (given.r2)
+      c.now.r2 = given.r2;
     if (defined_here && !c.now.r1) c.now.r1 = c.now.r2 = z;
   }
   // A hole: an axis word or R (the one-level dialects), an axis word off the drilling
   // axis (NC-110, whose cycle block drills none).
-  const bool drills = !(two_levels && defined_here) &&
-                      std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
-                        if (w.kind != ir::WordKind::Parameter || w.address.size() != 1) return false;
-                        const char l = w.address[0];
-                        return two_levels ? l != 'Z' && src_.axes.find(l) != std::string::npos
-                                          : src_.axes.find(l) != std::string::npos || l == src_.cycle_level_word;
-                      });
+  const bool drills =
+      !(two_levels && defined_here) && std::any_of(block_->words.begin(), block_->words.end(), [&](const ir::Word& w) {
+        if (w.kind != ir::WordKind::Parameter || w.address.size() != 1) return false;
+        const char l = w.address[0];
+        return two_levels ? l != 'Z' && src_.axes.find(l) != std::string::npos
+                          : src_.axes.find(l) != std::string::npos || l == src_.cycle_level_word;
+      });
   c.carry = two_levels && defined_here;  // its block writes nothing: its number goes to the next line
   if (!drills) return false;
   const SourceRange at = defined_here ? c.at : block_->range;
@@ -114,8 +122,10 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
   // the hole begins), the depth from R; the lines then move by increments too.
   const bool relative = *incremental_;
   if (relative && two_levels) return refuse("under G91, where NC-110's levels are increments from the axis' position");
-  if (!plane_ || (two_levels && plane_ != 'K')) return refuse("where the plane is not known, or NC-110's in another plane than XY");
-  if (lowers_frame_ || polar_ != false) return refuse("under a rotation, scale, mirror or polar coordinates the target has not");
+  if (!plane_ || (two_levels && plane_ != 'K'))
+    return refuse("where the plane is not known, or NC-110's in another plane than XY");
+  if (lowers_frame_ || polar_ != false)
+    return refuse("under a rotation, scale, mirror or polar coordinates the target has not");
   if (!unit_) return refuse(unit_unknown());
   if (!z) return refuse("the level the tool starts at is not known");
   if (!c.now.r1 || !c.now.depth) return refuse("without its level R or its depth");
@@ -134,7 +144,8 @@ bool Structured::hole_moves(const Position& start, std::vector<std::string>& bef
     std::optional<double> n;
     if (pattern.in == In::Peck) {
       double stuck = 0;
-      if (p.step <= 0 || p.factor.value_or(1) <= 0 || p.minimum.value_or(0) < 0) return refuse("a peck, factor or minimum not above 0");
+      if (p.step <= 0 || p.factor.value_or(1) <= 0 || p.minimum.value_or(0) < 0)
+        return refuse("a peck, factor or minimum not above 0");
       n = p.count(stuck);
       if (!n || *n > 1000) return refuse("its pecks never reach the bottom, or are more than 1000");
     }
@@ -220,7 +231,10 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
         }
         continue;
       }
-      case cycle::Step::Kind::Rapid: case cycle::Step::Kind::Feed: case cycle::Step::Kind::Tap: case cycle::Step::Kind::TapOut: {
+      case cycle::Step::Kind::Rapid:
+      case cycle::Step::Kind::Feed:
+      case cycle::Step::Kind::Tap:
+      case cycle::Step::Kind::TapOut: {
         const Fn fn = s.kind == cycle::Step::Kind::Rapid ? Fn::MotionRapid : Fn::MotionLinear;
         if (written != fn) {
           const auto code = target_code({{fn}}, Scope::Modal);
@@ -229,7 +243,8 @@ bool Structured::hole_lines(const std::vector<cycle::Step>& steps, SourceRange a
           written = fn;
         }
         if (s.shift != shift_written) {
-          if (!position_[u] && !relative) return refuse("the hole's position is not known, which the shift off the wall moves from");
+          if (!position_[u] && !relative)
+            return refuse("the hole's position is not known, which the shift off the wall moves from");
           const auto x = length(block_->range, across, relative ? s.shift - shift_written : *position_[u] + s.shift);
           if (!x) return level_cycle_.reset(), false;
           line.push_back(across + *x);
@@ -275,18 +290,27 @@ bool Structured::level_word(const ir::Word& w) {
   const bool second = address.size() == 2 && address[1] == '\'';
   LevelCycle::Levels& given = level_cycle_->given;
   std::optional<double>* slot = nullptr;
-  if (letter == src_.cycle_level_word) slot = second ? &given.r2 : &given.r1;
-  else if (letter == src_.peck_word && level_cycle_->moves) slot = &given.peck;
-  else if (letter == src_.peck_factor_word && level_cycle_->moves) slot = &given.factor;
-  else if (letter == src_.peck_minimum_word && level_cycle_->moves) slot = &given.minimum;
-  else if (plane_ && letter == normal_axis() && address.size() == 1) slot = &given.depth;
-  else if (src_.dwell_word && letter == src_.dwell_word) slot = &given.dwell;
+  if (letter == src_.cycle_level_word)
+    slot = second ? &given.r2 : &given.r1;
+  else if (letter == src_.peck_word && level_cycle_->moves)
+    slot = &given.peck;
+  else if (letter == src_.peck_factor_word && level_cycle_->moves)
+    slot = &given.factor;
+  else if (letter == src_.peck_minimum_word && level_cycle_->moves)
+    slot = &given.minimum;
+  else if (plane_ && letter == normal_axis() && address.size() == 1)
+    slot = &given.depth;
+  else if (src_.dwell_word && letter == src_.dwell_word)
+    slot = &given.dwell;
   else if (letter == src_.peck_word || src_.cycle_repeat_words.find(letter) != std::string::npos)
-    return fail(w.range, fmt::format("{}{}: a word of a canned cycle that {} has not", letter, w.text, w_.dialect())), true;
+    return fail(w.range, fmt::format("{}{}: a word of a canned cycle that {} has not", letter, w.text, w_.dialect())),
+           true;
   if (!slot) return false;
   *slot = constant_of(w.value);
-  if (!*slot) fail(w.range, "a canned cycle's level, depth, peck or dwell given by a parameter");
-  else if (slot == &given.dwell) **slot *= src_.dwell_seconds_per_unit;  // seconds
+  if (!*slot)
+    fail(w.range, "a canned cycle's level, depth, peck or dwell given by a parameter");
+  else if (slot == &given.dwell)
+    **slot *= src_.dwell_seconds_per_unit;  // seconds
   return true;
 }
 
@@ -319,9 +343,11 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
   };
   if (incremental_ == true && (defined_here || drills) && !src_.cycle_two_levels) return as_moves();
   if (incremental_ != false && (defined_here || drills))
-    return refuse("under G91, or where G90 is not known: the one-level dialects read its R and depth as increments then, "
-                  "NC-110 as levels");
-  if (defined_here && plane_ && plane_ != 'K' && !src_.cycle_two_levels) return as_moves();  // NC-110's drills along Z here
+    return refuse(
+        "under G91, or where G90 is not known: the one-level dialects read its R and depth as increments then, "
+        "NC-110 as levels");
+  if (defined_here && plane_ && plane_ != 'K' && !src_.cycle_two_levels)
+    return as_moves();  // NC-110's drills along Z here
   // NC-110's cycle block goes before the block's own, in the unit before its G70 or G71.
   if (defined_here && dst_.cycle_two_levels && (block_has(Fn::UnitsInch) || block_has(Fn::UnitsMm))) return as_moves();
   if (defined_here && plane_ != 'K') return refuse("in another plane than XY, or where the plane is not known");
@@ -330,8 +356,10 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
   if (given.depth) now.depth = given.depth;
   if (given.dwell) now.dwell = given.dwell;
   if (src_.cycle_two_levels) {  // NC-110: one R sets both levels, two each; none at first: where the tool is
-    if (given.r1) now.r2 = given.r2 ? given.r2 : given.r1, now.r1 = given.r1;
-    else if (given.r2) now.r2 = given.r2;
+    if (given.r1)
+      now.r2 = given.r2 ? given.r2 : given.r1, now.r1 = given.r1;
+    else if (given.r2)
+      now.r2 = given.r2;
     if (defined_here && !now.r1) now.r1 = now.r2 = z;
   } else {  // the return level: ISO's G98 or G99; GOST's and pp's is where the cycle began
     if (given.r1) now.r1 = given.r1;
@@ -343,7 +371,8 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
   }
   if (!now.r1 || !now.depth) return refuse("without its level R or its depth, or where the tool's level is not known");
   if (c.pattern->dwell && !now.dwell && !src_.cycle_two_levels) return refuse("a dwell without its time");
-  if (*now.depth >= *now.r1 || *now.r2 < *now.r1) return refuse("its depth is not below R, or its return level is below R");
+  if (*now.depth >= *now.r1 || *now.r2 < *now.r1)
+    return refuse("its depth is not below R, or its return level is below R");
   // NC-110 (as ISO) feeds out to R1, then goes at rapid to R2; GOST and pp feed all the way.
   auto all_the_way = [](const Conventions& k) { return !k.fanuc_cycles && !k.cycle_two_levels; };
   if (c.pattern->out == CyclePattern::Out::Feed && *now.r2 != *now.r1 && (all_the_way(src_) || all_the_way(dst_)))
@@ -351,8 +380,7 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
   const bool changed = now.r1 != was.r1 || now.r2 != was.r2 || now.depth != was.depth || now.dwell != was.dwell;
   // The one-level dialects go up to R first from a start below it; NC-110 goes over
   // the hole at the level the tool is at.
-  if (drills && !c.written && (!z || *z < *now.r1))
-    return as_moves();  // the dialects go there otherwise
+  if (drills && !c.written && (!z || *z < *now.r1)) return as_moves();  // the dialects go there otherwise
   auto level_words = [&](std::vector<std::string>& out, bool both) {
     for (const auto& [letter, v] : {std::pair{dst_.cycle_level_word, *now.r1}, std::pair{'Z', *now.depth}}) {
       const auto text = length(c.at, letter, v);
@@ -372,7 +400,8 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     // blocks after it.
     if ((!defined_here && !drills && changed) || (defined_here && !drills)) return as_moves();
     if (now.dwell && (!timer_ || *timer_ != *now.dwell)) {
-      if (per_minute_ != true) return refuse("a dwell where the feed may be per revolution: TMR then counts revolutions");
+      if (per_minute_ != true)
+        return refuse("a dwell where the feed may be per revolution: TMR then counts revolutions");
       before.push_back("TMR=" + exact(*now.dwell, false));
       timer_ = now.dwell;
     }
@@ -400,7 +429,8 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
     std::vector<std::string> cycle;
     if (dst_.fanuc_cycles) {
       if (*now.r2 != *now.r1 && now.r2 != c.initial) return as_moves();  // R2 is neither R nor the level it began at
-      const auto back = target_code({{*now.r2 == *now.r1 ? Fn::CycleReturnLevel : Fn::CycleReturnInitial}}, Scope::Modal);
+      const auto back =
+          target_code({{*now.r2 == *now.r1 ? Fn::CycleReturnLevel : Fn::CycleReturnInitial}}, Scope::Modal);
       if (!back) return refuse(fmt::format("{} has no code for its return level", w_.dialect()));
       if (!c.written || c.restate) cycle.push_back(back->text());
     } else if (now.r2 != c.initial) {
@@ -431,8 +461,9 @@ bool Structured::level_cycle_lines(bool drills, const Position& start, std::vect
 // label or a call): G91 reads the cycle's levels otherwise in the two.
 void Structured::unknown_level_cycle(bool moves) {
   if (level_cycles_ && !level_cycle_ && moves && cycle_on_ == std::nullopt && incremental_ != false)
-    fail(block_->range, "a move under G91 where a canned cycle may be on: the one-level dialects read its R and depth as "
-                        "increments then, NC-110 as levels");
+    fail(block_->range,
+         "a move under G91 where a canned cycle may be on: the one-level dialects read its R and depth as "
+         "increments then, NC-110 as levels");
 }
 
 // The end of a converted cycle: G80, or (ISO) a motion code, which ends it there and
@@ -443,7 +474,8 @@ void Structured::end_level_cycle(bool by_motion, std::vector<std::string>& befor
   if (level_cycle_->moves) {  // the moves leave the target in G00 or G01: the source's motion again
     if (!by_motion && motion_)
       if (const auto code = target_code({{*motion_}}, Scope::Modal)) restore_motion_ = code->text();
-    if (!by_motion && !motion_) fail(block_->range, "the end of a canned cycle written as moves, where the motion code in force is not known");
+    if (!by_motion && !motion_)
+      fail(block_->range, "the end of a canned cycle written as moves, where the motion code in force is not known");
     return level_cycle_.reset();
   }
   if (by_motion && dst_.cycle_two_levels)

@@ -26,8 +26,14 @@ bool defines_frame(Fn fn) { return is_frame(fn) && fn != Fn::ScalingOff && fn !=
 
 bool is_frame(Fn fn) {
   switch (fn) {
-    case Fn::Mirror: case Fn::Rotation: case Fn::Scale: case Fn::ScaleAxes:
-    case Fn::ScalingOn: case Fn::ScalingOff: case Fn::RotationOn: case Fn::RotationOff: return true;
+    case Fn::Mirror:
+    case Fn::Rotation:
+    case Fn::Scale:
+    case Fn::ScaleAxes:
+    case Fn::ScalingOn:
+    case Fn::ScalingOff:
+    case Fn::RotationOn:
+    case Fn::RotationOff: return true;
     default: return false;
   }
 }
@@ -38,7 +44,8 @@ bool Structured::Frame::moves(size_t axis, size_t u, size_t v) const {
 
 std::array<double, 3> Structured::Frame::apply(std::array<double, 3> p, size_t u, size_t v) const {
   for (size_t i = 0; i < 3; ++i)
-    if (scale[i] != 1 || mirror[i]) p[i] = scale_centre[i] + (p[i] - scale_centre[i]) * (mirror[i] ? -scale[i] : scale[i]);
+    if (scale[i] != 1 || mirror[i])
+      p[i] = scale_centre[i] + (p[i] - scale_centre[i]) * (mirror[i] ? -scale[i] : scale[i]);
   if (rotation != 0) {
     const double c = std::cos(rotation * kDegree), s = std::sin(rotation * kDegree);
     const double x = p[u] - rotation_centre[0], y = p[v] - rotation_centre[1];
@@ -56,12 +63,14 @@ std::array<double, 3> Structured::Frame::invert(std::array<double, 3> q, size_t 
     q[v] = rotation_centre[1] - x * s + y * c;
   }
   for (size_t i = 0; i < 3; ++i)
-    if (scale[i] != 1 || mirror[i]) q[i] = scale_centre[i] + (q[i] - scale_centre[i]) / (mirror[i] ? -scale[i] : scale[i]);
+    if (scale[i] != 1 || mirror[i])
+      q[i] = scale_centre[i] + (q[i] - scale_centre[i]) / (mirror[i] ? -scale[i] : scale[i]);
   return q;
 }
 
 bool Structured::lowers_frame(const CodeDesc& desc) const {
-  return lowers_frame_ && std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) { return is_frame(c.fn); });
+  return lowers_frame_ &&
+         std::any_of(desc.calls.begin(), desc.calls.end(), [](const FnCall& c) { return is_frame(c.fn); });
 }
 
 // A frame code: the frame it leaves, and the program coordinates of the tool's
@@ -71,7 +80,8 @@ void Structured::frame_code(const ir::Word& w, const CodeDesc& desc) {
   auto refuse = [&](std::string why) {
     frame_ = Frame{};  // (the translation is refused: its moves are not refused again)
     position_ = {};
-    fail(w.range, fmt::format("{} {}: {} has no such frame, and it cannot be written in X Y Z here", desc.name, why, w_.dialect()));
+    fail(w.range, fmt::format("{} {}: {} has no such frame, and it cannot be written in X Y Z here", desc.name, why,
+                              w_.dialect()));
   };
   // The block's word of a letter, or operand n: absent, or its constant.
   std::optional<const ir::Word*> bad;
@@ -83,7 +93,9 @@ void Structured::frame_code(const ir::Word& w, const CodeDesc& desc) {
       }
     return std::nullopt;
   };
-  auto letter = [&](char l) { return find([&](const ir::Word& o) { return o.address.size() == 1 && o.address[0] == l; }); };
+  auto letter = [&](char l) {
+    return find([&](const ir::Word& o) { return o.address.size() == 1 && o.address[0] == l; });
+  };
   auto listed = [&]() {  // the axes a code names (NC-110's MIR, SCF; pp's G36)
     std::vector<size_t> axes;
     for (const ir::Word& o : block_->words)
@@ -104,14 +116,16 @@ void Structured::frame_code(const ir::Word& w, const CodeDesc& desc) {
       case Fn::RotationOff: f.rotation = 0, f.rotation_centre = {}; break;
       case Fn::ScalingOff: f.scale = {1, 1, 1}, f.mirror = {}, f.scale_centre = {}, f.scales_others = false; break;
       case Fn::Rotation:  // NC-110: about the origin
-        if (auto a = find([](const ir::Word& o) { return o.slot == operand_slot(0); })) f.rotation = *a, f.rotation_centre = {};
+        if (auto a = find([](const ir::Word& o) { return o.slot == operand_slot(0); }))
+          f.rotation = *a, f.rotation_centre = {};
         break;
       case Fn::Scale: {  // NC-110 (SCF,n[,axes]): n on those, every linear axis when none
         const auto n = find([](const ir::Word& o) { return o.slot == operand_slot(0); });
         const auto axes = listed();
         f.scale = {1, 1, 1};
-        f.scales_others = n && *n != 1 && (axes.empty() ? src_.axes.find_first_of("UVW") != std::string::npos
-                                                         : std::count(axes.begin(), axes.end(), std::string_view::npos) > 0);
+        f.scales_others = n && *n != 1 &&
+                          (axes.empty() ? src_.axes.find_first_of("UVW") != std::string::npos
+                                        : std::count(axes.begin(), axes.end(), std::string_view::npos) > 0);
         for (size_t i = 0; i < 3; ++i)
           if (axes.empty() || std::find(axes.begin(), axes.end(), i) != axes.end()) f.scale[i] = n.value_or(1);
         break;
@@ -120,8 +134,10 @@ void Structured::frame_code(const ir::Word& w, const CodeDesc& desc) {
         const auto axes = listed();
         if (axes.empty()) f.mirror = {};
         for (size_t i : axes)
-          if (i == std::string_view::npos) f.scales_others = true;
-          else f.mirror[i] = src_.mirror_toggles ? !f.mirror[i] : true;
+          if (i == std::string_view::npos)
+            f.scales_others = true;
+          else
+            f.mirror[i] = src_.mirror_toggles ? !f.mirror[i] : true;
         break;
       }
       case Fn::ScaleAxes: {  // pp G36: the named axes' factors, 1 on the others
@@ -157,7 +173,8 @@ void Structured::frame_code(const ir::Word& w, const CodeDesc& desc) {
         const auto r = letter('R');
         if (!r) return refuse(bad ? "with its angle R given by a parameter" : "without R");
         for (size_t i = 0; i < 3; ++i)  // a programmed point: scaled as the path is
-          if (f.scale[i] != 1 || f.mirror[i]) centre[i] = f.scale_centre[i] + (centre[i] - f.scale_centre[i]) * (f.mirror[i] ? -f.scale[i] : f.scale[i]);
+          if (f.scale[i] != 1 || f.mirror[i])
+            centre[i] = f.scale_centre[i] + (centre[i] - f.scale_centre[i]) * (f.mirror[i] ? -f.scale[i] : f.scale[i]);
         f.rotation = *incremental_ ? last_rotation_ + *r : *r;
         last_rotation_ = f.rotation;
         f.rotation_centre = {centre[u], centre[v]};
@@ -204,19 +221,26 @@ bool Structured::framed_axis(size_t axis, bool arc) const {
 void Structured::framed_move(const Position& start, bool arc, std::vector<std::string>& words, std::string& arc_code) {
   const SourceRange at = block_->range;
   const std::string name = std::string(w_.dialect());
-  if (!frame_) return fail(at, fmt::format("a move where the rotation, scale or mirror in force is not known (after a label, a "
-                                           "call or a computed value): {} has none", name));
-  if (!plane_ || !incremental_ || !unit_) return fail(at, fmt::format("a move under a rotation, scale or mirror where the plane, "
-                                                                      "G90/G91 or the unit is not known: {} has none", name));
+  if (!frame_)
+    return fail(at, fmt::format("a move where the rotation, scale or mirror in force is not known (after a label, a "
+                                "call or a computed value): {} has none",
+                                name));
+  if (!plane_ || !incremental_ || !unit_)
+    return fail(at, fmt::format("a move under a rotation, scale or mirror where the plane, "
+                                "G90/G91 or the unit is not known: {} has none",
+                                name));
   if (cycle_on_ != false || comp_on_ != false)
-    return fail(at, fmt::format("a canned cycle or cutter compensation under a rotation, scale or mirror: {} has none", name));
+    return fail(
+        at, fmt::format("a canned cycle or cutter compensation under a rotation, scale or mirror: {} has none", name));
   const size_t u = plane_u(), v = plane_v();
   std::array<double, 3> p0{}, p1{};
   for (size_t i = 0; i < 3; ++i) {
     if (!framed_axis(i, arc)) continue;
     if (!start[i] || !position_[i])
-      return fail(at, fmt::format("a move under a rotation, scale or mirror, where the tool's position is not known (after a "
-                                  "label, a call or a computed move): {} has none", name));
+      return fail(
+          at, fmt::format("a move under a rotation, scale or mirror, where the tool's position is not known (after a "
+                          "label, a call or a computed move): {} has none",
+                          name));
     p0[i] = *start[i], p1[i] = *position_[i];
   }
   const auto q0 = frame_->apply(p0, u, v), q1 = frame_->apply(p1, u, v);
@@ -233,17 +257,21 @@ void Structured::framed_move(const Position& start, bool arc, std::vector<std::s
       return w.kind == ir::WordKind::Parameter && w.address.size() == 1 && w.address[0] == letter;
     });
     const double from = target(q0[i]), to = target(q1[i]);
-    if (written || from != to) words.push_back(letter + w_.number({letter, *incremental_ ? to - from : to, Value::Length}));
+    if (written || from != to)
+      words.push_back(letter + w_.number({letter, *incremental_ ? to - from : to, Value::Length}));
   }
   if (arc) {
     if (frame_->scale[u] != frame_->scale[v])
-      return fail(at, fmt::format("an arc under scale factors that differ on {} and {}: the path is no circle", char('X' + u),
-                                  char('X' + v)));
+      return fail(at, fmt::format("an arc under scale factors that differ on {} and {}: the path is no circle",
+                                  char('X' + u), char('X' + v)));
     const size_t n = static_cast<size_t>(normal_axis() - 'X');
     if (frame_->moves(n, u, v) ? target(q0[n]) != target(q1[n]) : start[n] != position_[n])
       return fail(at, fmt::format("a helix under a rotation, scale or mirror: {} has none", name));
     const auto centre = arc_centre(start);
-    if (!centre) return fail(at, fmt::format("an arc under a rotation, scale or mirror whose centre is not known here: {} has none", name));
+    if (!centre)
+      return fail(
+          at,
+          fmt::format("an arc under a rotation, scale or mirror whose centre is not known here: {} has none", name));
     std::array<double, 3> c = p0;
     c[u] = (*centre)[0], c[v] = (*centre)[1];
     const auto qc = frame_->apply(c, u, v);
@@ -251,7 +279,8 @@ void Structured::framed_move(const Position& start, bool arc, std::vector<std::s
       const size_t axis = k == 0 ? u : v;
       const char to = centre_letter(dst_, k);
       const bool from_start = dst_.arc_centre == ArcCentre::Incremental || *incremental_;
-      words.push_back(to + w_.number({to, from_start ? target(qc[axis]) - target(q0[axis]) : target(qc[axis]), Value::Length}));
+      words.push_back(
+          to + w_.number({to, from_start ? target(qc[axis]) - target(q0[axis]) : target(qc[axis]), Value::Length}));
     }
     on_circle({target(q0[u]), target(q0[v])}, {target(q1[u]), target(q1[v])}, {target(qc[u]), target(qc[v])});
   }

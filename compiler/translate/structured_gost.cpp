@@ -58,23 +58,31 @@ class GostStructured final : public Structured {
           return s.kind == ir::StmtKind::RepeatEnd || (s.kind == ir::StmtKind::Return && depth > 0 && i + 1 == to);
         });
         out.push_back(std::move(b));
-        if (out.size() > kMost) return fail(blocks[i].range, fmt::format("a program of more than {} blocks written out{}", kMost, kFlatten)), false;
+        if (out.size() > kMost)
+          return fail(blocks[i].range, fmt::format("a program of more than {} blocks written out{}", kMost, kFlatten)),
+                 false;
         continue;
       }
       const ir::Stmt s = *flow;
-      if (std::next(flow) != b.stmts.end()) return fail(s.range, std::string("a call or a repeat before other statements of its block") + kFlatten), false;
+      if (std::next(flow) != b.stmts.end())
+        return fail(s.range, std::string("a call or a repeat before other statements of its block") + kFlatten), false;
       b.stmts.erase(flow);
       int count = 1;
       if (s.value != ir::kNoExpr) {
         const ir::Expr& n = p_->exprs[s.value];
-        count = n.op == ir::ExprOp::Number && n.number >= 0 && n.number == std::trunc(n.number) ? static_cast<int>(n.number) : -1;
+        count = n.op == ir::ExprOp::Number && n.number >= 0 && n.number == std::trunc(n.number)
+                    ? static_cast<int>(n.number)
+                    : -1;
       }
       if (count < 0) return fail(s.range, std::string("a count computed when the program runs") + kFlatten), false;
       out.push_back(std::move(b));  // its words run first
       if (s.kind == ir::StmtKind::Call) {
-        auto unit = std::find_if(p_->units.begin(), p_->units.end(), [&](const ir::Unit& u) { return u.name == s.label; });
+        auto unit =
+            std::find_if(p_->units.begin(), p_->units.end(), [&](const ir::Unit& u) { return u.name == s.label; });
         if (unit == p_->units.end() || !s.args.empty() || depth > 8)
-          return fail(s.range, std::string("a call of ") + s.label + ", with arguments or nested deeper than 8" + kFlatten), false;
+          return fail(s.range,
+                      std::string("a call of ") + s.label + ", with arguments or nested deeper than 8" + kFlatten),
+                 false;
         for (int k = 0; k < count; ++k)
           if (!unroll(unit->blocks, 0, unit->blocks.size(), out, depth + 1)) return false;
         continue;
@@ -84,7 +92,8 @@ class GostStructured final : public Structured {
       for (int open = 0; end < to; ++end) {
         const auto& stmts = blocks[end].stmts;
         if (!stmts.empty() && stmts.front().kind == ir::StmtKind::RepeatEnd && open == 0) break;
-        for (const ir::Stmt& x : stmts) open += x.kind == ir::StmtKind::RepeatBegin ? 1 : x.kind == ir::StmtKind::RepeatEnd ? -1 : 0;
+        for (const ir::Stmt& x : stmts)
+          open += x.kind == ir::StmtKind::RepeatBegin ? 1 : x.kind == ir::StmtKind::RepeatEnd ? -1 : 0;
       }
       if (end == to) return fail(s.range, std::string("a repeat without its end") + kFlatten), false;
       for (int k = 0; k < count; ++k)
@@ -113,7 +122,8 @@ class GostStructured final : public Structured {
     };
     for (const ir::Word& w : b.words) {
       add(w.optional, verbatim_word(w));
-      if (!w.optional && w.kind == ir::WordKind::Code && w.code >= 0) state(p_->semantics.codes[static_cast<size_t>(w.code)].calls);
+      if (!w.optional && w.kind == ir::WordKind::Code && w.code >= 0)
+        state(p_->semantics.codes[static_cast<size_t>(w.code)].calls);
     }
     for (const ir::Stmt& s : b.stmts)
       if (s.kind == ir::StmtKind::Comment) add(s.optional, w_.inline_comment(s.label));
@@ -148,8 +158,12 @@ class GostStructured final : public Structured {
   void repeat_begin(const ir::Stmt&) override {}
   void repeat_end(const ir::Stmt&) override {}
   void call(const ir::Stmt&) override {}
-  void ret(const ir::Stmt& s) override { fail(s.range, std::string("a return from a subprogram: GOST 20999 has none") + kFlatten); }
-  void conditional(const ir::Stmt& s) override { fail(s.range, std::string("a condition: GOST 20999 has none") + kFlatten); }
+  void ret(const ir::Stmt& s) override {
+    fail(s.range, std::string("a return from a subprogram: GOST 20999 has none") + kFlatten);
+  }
+  void conditional(const ir::Stmt& s) override {
+    fail(s.range, std::string("a condition: GOST 20999 has none") + kFlatten);
+  }
   std::string assignment(const ir::Stmt&, const std::string&, std::string) override { return {}; }
   void zero_all(uint32_t, uint32_t) override {}
   void start_parameters() override {}
@@ -163,8 +177,10 @@ class GostStructured final : public Structured {
   std::string value(ir::ExprId id, char letter) override {
     const ir::Expr& e = p_->exprs[id];
     std::optional<double> v;
-    if (e.op == ir::ExprOp::Number) v = e.number;
-    else if (e.op == ir::ExprOp::Neg && p_->exprs[e.a].op == ir::ExprOp::Number) v = -p_->exprs[e.a].number;
+    if (e.op == ir::ExprOp::Number)
+      v = e.number;
+    else if (e.op == ir::ExprOp::Neg && p_->exprs[e.a].op == ir::ExprOp::Number)
+      v = -p_->exprs[e.a].number;
     if (!v) {
       fail(e.range, std::string("a value computed when the program runs: GOST 20999 has no parameters") + kFlatten);
       return "0";
@@ -172,7 +188,9 @@ class GostStructured final : public Structured {
     // §3.3.5: a format whose T word holds tool and offset digits (T1 is written T100)
     // says the offset with the tool only (GOST's own D: the T word's, value('T')).
     if (letter == 'D' && std::stoll(w_.number({'T', 1, Value::Count})) != 1) {
-      fail(e.range, "an offset (D) where the T word holds tool and offset digits (§3.3.5): the target says it with its tool only");
+      fail(e.range,
+           "an offset (D) where the T word holds tool and offset digits (§3.3.5): the target says it with its tool "
+           "only");
       return "0";
     }
     OutWord word{letter, *v, kind_of(letter)};

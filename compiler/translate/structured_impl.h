@@ -128,7 +128,9 @@ class Structured {
   virtual void call_range(const ir::Stmt& s) { fail(s.range, "a call of a range of blocks (EPP)"); }
   virtual void display(const ir::Stmt& s);
   virtual bool next_program(const ir::Unit&) { return false; }  // a second program on the medium, started
-  virtual bool skip_within(const ir::Block&) { return false; }   // a block with a '/' after its first word, written  // a comment, where the target shows the operator no values
+  virtual bool skip_within(const ir::Block&) {
+    return false;
+  }  // a block with a '/' after its first word, written  // a comment, where the target shows the operator no values
   virtual void start_offset();
   // What the program's first line starts with (`first`, its first character) where
   // the start wrote nothing before it.
@@ -151,10 +153,10 @@ class Structured {
   }
   void machine();
   void write_words(const std::vector<std::string>& words);
-  std::string operand(ir::ExprId a);  // a function's operand
+  std::string operand(ir::ExprId a);             // a function's operand
   std::string negation(ir::ExprId id, int min);  // not id
-  void forget();  // the state the text says is not known any more (a label, a call)
-  void forget_position() { position_ = {}; }  // a code that moves the origin or the frame
+  void forget();                                 // the state the text says is not known any more (a label, a call)
+  void forget_position() { position_ = {}; }     // a code that moves the origin or the frame
   bool ends_program(const ir::Unit& u) const;
   // ISO's #500+n as n, the number the dialects' numbered parameters share (E n, R n:
   // docs/translate.md, "Parameters"); nothing for any other variable.
@@ -167,10 +169,13 @@ class Structured {
   bool dwell_lines(double seconds, std::vector<std::string>& lines);
   // Whether the block being written has a code word with function `fn`.
   bool block_has(Fn fn) const;
-  bool block_has_call(const std::function<bool(const FnCall&)>& is, const ir::Block* b = nullptr) const;  // b: this block
+  bool block_has_call(const std::function<bool(const FnCall&)>& is,
+                      const ir::Block* b = nullptr) const;  // b: this block
   bool coolant_ends_next() const;
   std::string doing_more(const FnCall& f, Scope scope) const;
-  bool block_has_motion() const { return block_has_call([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion; }); }
+  bool block_has_motion() const {
+    return block_has_call([](const FnCall& c) { return fn_group(c.fn) == FnGroup::Motion; });
+  }
   // Notes the variables block `b`'s words name (`s` none), or its statement `s`
   // names; sets first_store_.
   void note_access(const ir::Block& b, const ir::Stmt* s);
@@ -213,15 +218,15 @@ class Structured {
   const MachineConfig& target_;
   Conventions src_;
   const Conventions& dst_;
-  const bool same_;  // the target is the source's dialect
-  const bool target_inch_;  // the target has an inch mode (pp has not)
+  const bool same_;          // the target is the source's dialect
+  const bool target_inch_;   // the target has an inch mode (pp has not)
   const bool target_polar_;  // ... polar coordinates (ISO's G16)
   const ir::Block* block_ = nullptr;
-  std::optional<int> pending_number_;  // the block number the next line starts with
-  char pending_sync_ = 0;              // ... and NC-110's '#' or '&' after it
-  bool main_number_ = false;           // ... written ':' (a GOST main block)
-  std::string then_;                   // what the next line starts with after it (IF [c] THEN)
-  std::string label_;                  // ... and before it (NC-110's "LABEL")
+  std::optional<int> pending_number_;     // the block number the next line starts with
+  char pending_sync_ = 0;                 // ... and NC-110's '#' or '&' after it
+  bool main_number_ = false;              // ... written ':' (a GOST main block)
+  std::string then_;                      // what the next line starts with after it (IF [c] THEN)
+  std::string label_;                     // ... and before it (NC-110's "LABEL")
   std::vector<std::string> extra_words_;  // the block's words the target adds (pp's G70 of a subprogram's end)
   std::vector<std::string> later_lines_;  // the block's lines after its own (a reference return in machine coordinates)
   std::vector<std::string> hole_lines_;   // the moves of a cycle's hole after the block's own line (hole_moves())
@@ -230,22 +235,22 @@ class Structured {
   bool folded_g43_ = false;               // ... and that G43 is written so
   bool skip_offset_word_ = false;         // ... and its H too
   std::vector<std::string> lines_before_;  // the block's lines before its own (NC-110's M06 of a G43's corrector)
-  bool streamed_ = false;              // the main program's leading blocks are written
+  bool streamed_ = false;                  // the main program's leading blocks are written
   bool needs_whole_ = false;
-  ir::ExprId scaled_ = ir::kNoExpr;    // an operand written times 1000 (rounding to pp's R)
-  bool in_main_ = false;               // the unit being written is the main program
-  bool in_gtl_ = false;                // between an NC-110 G21 and its G20 (a GTL profile)
-  bool operand_words_ = false;         // the block's words are its code's operands (UAO, a dwell, a frame)
-  bool offset_selected_ = false;       // the main program has selected a work offset
-  bool moved_before_offset_ = false;   // ... or moved (or jumped) before it did
-  bool moved_ = false;                 // a block has moved (or a label or call come)
-  bool program_ended_ = false;         // the main program's end is written
-  bool start_empty_ = false;           // the start wrote no line
-  bool main_begun_ = false;            // a line of the main program is written
-  std::optional<bool> per_minute_;     // the feed is per minute (G94), where the text says
-  std::optional<double> timer_ = 0;    // NC-110's dwell time TMR, where the text says
-  bool carry_ = false;                 // the block wrote nothing: its number goes to the next line
-  std::optional<int> carried_number_;  // ... this one
+  ir::ExprId scaled_ = ir::kNoExpr;          // an operand written times 1000 (rounding to pp's R)
+  bool in_main_ = false;                     // the unit being written is the main program
+  bool in_gtl_ = false;                      // between an NC-110 G21 and its G20 (a GTL profile)
+  bool operand_words_ = false;               // the block's words are its code's operands (UAO, a dwell, a frame)
+  bool offset_selected_ = false;             // the main program has selected a work offset
+  bool moved_before_offset_ = false;         // ... or moved (or jumped) before it did
+  bool moved_ = false;                       // a block has moved (or a label or call come)
+  bool program_ended_ = false;               // the main program's end is written
+  bool start_empty_ = false;                 // the start wrote no line
+  bool main_begun_ = false;                  // a line of the main program is written
+  std::optional<bool> per_minute_;           // the feed is per minute (G94), where the text says
+  std::optional<double> timer_ = 0;          // NC-110's dwell time TMR, where the text says
+  bool carry_ = false;                       // the block wrote nothing: its number goes to the next line
+  std::optional<int> carried_number_;        // ... this one
   std::vector<std::string> title_comments_;  // the comment blocks before it
 
  private:
@@ -267,7 +272,9 @@ class Structured {
   // The word of an arc centre's k-th coordinate in the plane: I J of the plane
   // (NC-110), or the I J K of the plane's axes.
   char centre_letter(const Conventions& c, int k) const {
-    return static_cast<char>('I' + (c.centre_words == CentreWords::Plane ? static_cast<size_t>(k) : k == 0 ? plane_u() : plane_v()));
+    return static_cast<char>('I' + (c.centre_words == CentreWords::Plane ? static_cast<size_t>(k)
+                                    : k == 0                             ? plane_u()
+                                                                         : plane_v()));
   }
   std::string unit_unknown() const {
     return "a length where G20 or G21 is not known: " + std::string(w_.dialect()) + " has no inch mode";
@@ -277,7 +284,7 @@ class Structured {
   bool start_needs(const FnCall& c) const;
   // A variable (the target's name) the program stores before anything reads it.
   bool starts_stored(const std::string& name) const { return starts_stored_.count(name) > 0; }
-  std::optional<int> end_number_;  // returns_after()
+  std::optional<int> end_number_;                // returns_after()
   std::string verbatim_word(const ir::Word& w);  // a word of the same dialect, as written
   void state(const std::vector<FnCall>& calls);  // what the codes' functions set
 
@@ -306,7 +313,8 @@ class Structured {
   bool converts_cycle_levels() const;
   void level_cycle_code(const ir::Word& w, const CyclePattern& pattern);
   bool level_word(const ir::Word& w);
-  bool level_cycle_lines(bool drills, const Position& start, std::vector<std::string>& before, std::vector<std::string>& words);
+  bool level_cycle_lines(bool drills, const Position& start, std::vector<std::string>& before,
+                         std::vector<std::string>& words);
   void end_level_cycle(bool by_motion, std::vector<std::string>& before);
   void unknown_level_cycle(bool moves);
   // ... and a one-level cycle the target has none of its pattern for: each hole as its moves.
@@ -324,7 +332,8 @@ class Structured {
   void timed_dwell(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   bool lowers_corner(const ir::Word& w) const;
   std::vector<std::string> corner_moves(const ir::Word& corner, const Position& start,
-                                        const std::optional<std::array<double, 2>>& chained, std::vector<std::string>& words);
+                                        const std::optional<std::array<double, 2>>& chained,
+                                        std::vector<std::string>& words);
   std::optional<std::array<double, 2>> arc_centre(const Position& start);
   std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
@@ -334,9 +343,9 @@ class Structured {
     std::array<double, 3> scale{1, 1, 1};
     std::array<bool, 3> mirror{};
     std::array<double, 3> scale_centre{};
-    double rotation = 0;  // degrees, counter-clockwise in the plane of the move
-    std::array<double, 2> rotation_centre{};  // on the plane's axes when set (ISO G68)
-    bool scales_others = false;  // NC-110's (SCF,n) scales U V W as well
+    double rotation = 0;                                // degrees, counter-clockwise in the plane of the move
+    std::array<double, 2> rotation_centre{};            // on the plane's axes when set (ISO G68)
+    bool scales_others = false;                         // NC-110's (SCF,n) scales U V W as well
     bool moves(size_t axis, size_t u, size_t v) const;  // the frame changes the axis
     std::array<double, 3> apply(std::array<double, 3> p, size_t u, size_t v) const;
     std::array<double, 3> invert(std::array<double, 3> q, size_t u, size_t v) const;
@@ -371,24 +380,24 @@ class Structured {
   std::string builtin_of_scaled(ir::ExprId value, SourceRange at);
   bool is_thousandths(ir::ExprId id) const;
 
-  int mapped_space_ = -1;  // the source's space of numbered parameters
+  int mapped_space_ = -1;                    // the source's space of numbered parameters
   std::map<uint16_t, uint32_t> space_base_;  // a space's first target variable
   uint32_t extra_ = 100;                     // the next one of #100..#149
   std::optional<std::vector<FnCall>> power_on_, target_power_on_;
   std::vector<FnCall> lead_;  // the functions of the main program's leading blocks (lead())
   bool lead_open_ = true;
-  bool in_lead_ = false;    // the block being written is one of them
-  bool lead_feed_ = false;  // ... and one of them has an F word
-  size_t lead_before_ = 0;  // ... of the blocks before the one being written
-  size_t main_at_ = 0;  // where the main program's text begins in text_
-  std::string head_, text_;  // the start, and the rest, translated
+  bool in_lead_ = false;         // the block being written is one of them
+  bool lead_feed_ = false;       // ... and one of them has an F word
+  size_t lead_before_ = 0;       // ... of the blocks before the one being written
+  size_t main_at_ = 0;           // where the main program's text begins in text_
+  std::string head_, text_;      // the start, and the rest, translated
   std::string deferred_motion_;  // the power-on motion code, for the main program's first move
   bool skip_ = false;
   bool words_written_ = false;
   std::vector<std::string> comments_;  // for the block's first line
   size_t lines_ = 0;                   // the lines line() has written
-  std::set<uint32_t> used_;  // target variables the program reads or writes
-  bool indirect_ = false;    // ... and one computed
+  std::set<uint32_t> used_;            // target variables the program reads or writes
+  bool indirect_ = false;              // ... and one computed
   // The main program's start, up to its first jump, loop, call, condition or '/',
   // runs each statement once and in order: a variable it stores before anything
   // reads it needs no 0 at the start (a round trip adds no store).
@@ -398,15 +407,15 @@ class Structured {
   std::set<std::string> starts_stored_;               // the target's names of those variables
   // What the text says the spindle, the coolant and the plane are (nothing: not known).
   std::optional<bool> coolant_on_ = false, cycle_on_ = false, length_on_ = false, comp_on_ = false;
-  std::optional<bool> rpm_;           // the spindle speed is in rpm (not a cutting speed)
+  std::optional<bool> rpm_;                         // the spindle speed is in rpm (not a cutting speed)
   std::optional<int> tool_selected_, tool_loaded_;  // by T, and in the spindle
-  std::optional<int> spindle_turns_ = 0;      // 1 cw, -1 ccw, 0 stopped, 2 oriented
-  std::optional<int> spindle_direction_ = 0;  // the last direction set (0: none yet)
+  std::optional<int> spindle_turns_ = 0;            // 1 cw, -1 ccw, 0 stopped, 2 oriented
+  std::optional<int> spindle_direction_ = 0;        // the last direction set (0: none yet)
   std::optional<bool> spindle_on() const {
     return spindle_turns_ ? std::optional(*spindle_turns_ == 1 || *spindle_turns_ == -1) : std::nullopt;
   }
-  std::optional<char> plane_;         // the centre word along the plane's normal: a helix lead
-  std::optional<int> corrector_ = 0;  // NC-110: the corrector the next M06 applies
+  std::optional<char> plane_;            // the centre word along the plane's normal: a helix lead
+  std::optional<int> corrector_ = 0;     // NC-110: the corrector the next M06 applies
   std::optional<int> length_entry_ = 0;  // the source's length offset entry in force (G43's H); 0: none
   std::map<int, OffsetEntry> source_offsets_;
   Position position_;                  // X Y Z where the text leaves them
@@ -419,40 +428,41 @@ class Structured {
   // A canned cycle converted between two levels and one (structured_cycle.cpp).
   struct LevelCycle {
     struct Levels {
-      std::optional<double> r1, r2, depth, dwell, peck;  // R1 (approach), R2 (return): lengths in the source's unit; seconds
-      std::optional<double> factor, minimum;             // NC-110's G83: K and J
+      std::optional<double> r1, r2, depth, dwell,
+          peck;                               // R1 (approach), R2 (return): lengths in the source's unit; seconds
+      std::optional<double> factor, minimum;  // NC-110's G83: K and J
     };
     const CyclePattern* pattern;
     Code code;  // the target's
     SourceRange at;
-    Levels now, given;               // in force; this block's words
-    std::optional<double> initial;   // the level the cycle began at (the one-level dialects' return level)
-    bool defined_here = true;        // the block being written has the cycle's code
-    bool written = false;            // its first hole is written (a one-level target's cycle block with it)
-    bool restate = false;            // ... and its levels changed since
-    bool carry = false;              // the cycle's block writes nothing: its number goes to the next line
-    bool moves = false;              // the target has no cycle of its pattern: each hole is its moves (hole_moves())
+    Levels now, given;              // in force; this block's words
+    std::optional<double> initial;  // the level the cycle began at (the one-level dialects' return level)
+    bool defined_here = true;       // the block being written has the cycle's code
+    bool written = false;           // its first hole is written (a one-level target's cycle block with it)
+    bool restate = false;           // ... and its levels changed since
+    bool carry = false;             // the cycle's block writes nothing: its number goes to the next line
+    bool moves = false;             // the target has no cycle of its pattern: each hole is its moves (hole_moves())
   };
   bool level_cycles_ = false;  // the program has a converted cycle
   std::optional<LevelCycle> level_cycle_;
   std::optional<Position> parabola_middle_;  // GOST's two-block parabola: its intermediate point
-  std::optional<bool> return_initial_;  // ISO's G98 (true) or G99, where the text says
-  std::optional<int> source_origin_;   // NC-110's origin selected (UAO), where the text says
-  std::optional<int> work_offset_;     // the work offset in force (the target's codes' G54 = 1), where the text says
-  AxisValues shift_{};                 // ... its temporary or incremental shift on each axis (UOT, UIO)
-  bool shift_known_ = true;            // ... as far as the text says
-  std::string shifted_axes_;           // the axes a local shift (ISO's G52) has been written for
-  bool lowers_polar_ = false;          // ... and the program has it
-  bool lowers_frame_ = false;          // the program has a frame the target has not: every frame lowered
+  std::optional<bool> return_initial_;       // ISO's G98 (true) or G99, where the text says
+  std::optional<int> source_origin_;         // NC-110's origin selected (UAO), where the text says
+  std::optional<int> work_offset_;        // the work offset in force (the target's codes' G54 = 1), where the text says
+  AxisValues shift_{};                    // ... its temporary or incremental shift on each axis (UOT, UIO)
+  bool shift_known_ = true;               // ... as far as the text says
+  std::string shifted_axes_;              // the axes a local shift (ISO's G52) has been written for
+  bool lowers_polar_ = false;             // ... and the program has it
+  bool lowers_frame_ = false;             // the program has a frame the target has not: every frame lowered
   std::optional<Frame> frame_ = Frame{};  // ... the one in force, where the text says
-  double last_rotation_ = 0;           // ISO G68: the angle G91 adds to
-  bool flipped_ = false;               // a mirrored arc was written the other way round
-  std::vector<const ir::Word*> frames_;  // the block's frame codes, lowered
-  std::optional<Fn> motion_;           // the motion code in force
-  Position centre_;                    // of the block's arc, where this translation computed it
-  const ir::Block* next_ = nullptr;    // the block after this one in its unit
+  double last_rotation_ = 0;              // ISO G68: the angle G91 adds to
+  bool flipped_ = false;                  // a mirrored arc was written the other way round
+  std::vector<const ir::Word*> frames_;   // the block's frame codes, lowered
+  std::optional<Fn> motion_;              // the motion code in force
+  Position centre_;                       // of the block's arc, where this translation computed it
+  const ir::Block* next_ = nullptr;       // the block after this one in its unit
   std::optional<std::array<double, 2>> chained_start_;  // in the plane: where a corner's move left the tool
-  std::string restore_motion_;         // the motion code a fillet's move leaves to be written again
+  std::string restore_motion_;                          // the motion code a fillet's move leaves to be written again
   std::optional<std::vector<std::string>> centre_override_;  // the next arc's centre words, from a corner's end
 };
 

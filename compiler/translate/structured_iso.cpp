@@ -30,7 +30,8 @@ class IsoStructured final : public Structured {
     std::vector<const ir::Unit*> unnamed;
     programs_ = unit_numbers({1}, &unnamed);
     if (same_)
-      for (const ir::Unit* u : unnamed) fail(u->range, fmt::format("program {}: O0001 is the translation's main program", u->name));
+      for (const ir::Unit* u : unnamed)
+        fail(u->range, fmt::format("program {}: O0001 is the translation's main program", u->name));
   }
 
   void open_unit(const ir::Unit& u, bool main) override {
@@ -45,7 +46,8 @@ class IsoStructured final : public Structured {
     if (head_) line(fmt::format("N{}", *std::exchange(head_, std::nullopt)));  // a loop with an empty body
     // What stands after the main program's end is the subprograms' place.
     if (main && p_->units.size() > 1 && !ends_program(u)) line("M30");
-    if (!main && !returned) line(end_number_ ? fmt::format("N{} M99", *std::exchange(end_number_, std::nullopt)) : "M99");
+    if (!main && !returned)
+      line(end_number_ ? fmt::format("N{} M99", *std::exchange(end_number_, std::nullopt)) : "M99");
   }
   bool returns_after() const override { return true; }
 
@@ -83,8 +85,10 @@ class IsoStructured final : public Structured {
     std::set<std::string> placed;  // a label used twice names its first block (lowering)
     for (size_t i = 0; i < unit.blocks.size(); ++i) {
       const ir::Block& b = unit.blocks[i];
-      if (!b.label.empty() && labels_.count(b.label) && placed.insert(b.label).second) numbers_[i] = labels_.at(b.label);
-      else if (auto n = number_of(b)) numbers_[i] = *n;  // one ISO's N holds
+      if (!b.label.empty() && labels_.count(b.label) && placed.insert(b.label).second)
+        numbers_[i] = labels_.at(b.label);
+      else if (auto n = number_of(b))
+        numbers_[i] = *n;  // one ISO's N holds
     }
     blocks_ = &unit.blocks;
   }
@@ -107,17 +111,22 @@ class IsoStructured final : public Structured {
     if (!b.label.empty() && labels_.count(b.label)) forget();
     pending_number_ = numbers_.count(i) ? std::optional<int>(numbers_.at(i)) : std::nullopt;
     if (head_) {  // a loop's body starts here
-      if (pending_number_) w_.line(fmt::format("N{}", *head_));
-      else pending_number_ = head_;
+      if (pending_number_)
+        w_.line(fmt::format("N{}", *head_));
+      else
+        pending_number_ = head_;
       head_.reset();
     }
   }
 
   void jump(const ir::Stmt& s) override {
     std::string to;
-    if (!s.label.empty()) to = fmt::format("{}", labels_.at(s.label));
-    else if (same_) to = value(s.value, 'N');  // GOTO #1: the block numbers are the source's
-    else return fail(s.range, "a jump to a computed block number");
+    if (!s.label.empty())
+      to = fmt::format("{}", labels_.at(s.label));
+    else if (same_)
+      to = value(s.value, 'N');  // GOTO #1: the block numbers are the source's
+    else
+      return fail(s.range, "a jump to a computed block number");
     if (s.cond == ir::kNoExpr) return line("GOTO " + to);
     line(fmt::format("IF [{}] GOTO {}", expr(s.cond, kOr), to));
   }
@@ -150,7 +159,8 @@ class IsoStructured final : public Structured {
   void call(const ir::Stmt& s) override {
     forget();
     if (!programs_.count(s.label))
-      return fail(s.range, s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
+      return fail(s.range,
+                  s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
     if (!s.args.empty()) return fail(s.range, "a call with arguments");
     std::string text = fmt::format("M98 P{}", programs_.at(s.label));
     if (s.value != ir::kNoExpr && !(p_->is_constant(s.value) && p_->exprs[s.value].number == 1))
@@ -173,7 +183,9 @@ class IsoStructured final : public Structured {
     then_.clear();
   }
 
-  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override { return var + "=" + text; }
+  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override {
+    return var + "=" + text;
+  }
 
   void zero_all(uint32_t first, uint32_t count) override {
     w_.line("#1=0");

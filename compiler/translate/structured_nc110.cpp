@@ -85,13 +85,15 @@ class Nc110Structured final : public Structured {
         if (valid_label(b.label)) taken_.insert(b.label);
     if (same_)
       for (const ir::Expr& e : p_->exprs)
-        if (e.op == ir::ExprOp::Var && p_->is_constant(e.a)) source_e_.insert(static_cast<uint32_t>(p_->exprs[e.a].number));
+        if (e.op == ir::ExprOp::Var && p_->is_constant(e.a))
+          source_e_.insert(static_cast<uint32_t>(p_->exprs[e.a].number));
     if (same_) return;
     for (size_t u = 1; u < p_->units.size(); ++u) {
       const std::string& name = p_->units[u].name;
       std::string label;
       for (char c : name.substr(name.rfind('/') + 1))
-        if (std::isalnum(static_cast<unsigned char>(c))) label += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+        if (std::isalnum(static_cast<unsigned char>(c)))
+          label += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
       ranges_[name] = {own(label), fresh()};
     }
   }
@@ -161,12 +163,14 @@ class Nc110Structured final : public Structured {
     pending_number_ = number_of(b);
     pending_sync_ = sync_of(b);
     // An ISO jump target's number is its label: the label says it.
-    if (p_->dialect == "iso" && label_at_.count(i) && b.number && b.label == fmt::format("N{}", *b.number)) pending_number_.reset();
+    if (p_->dialect == "iso" && label_at_.count(i) && b.number && b.label == fmt::format("N{}", *b.number))
+      pending_number_.reset();
     if ((b.skippable) && std::any_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
-          return s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::RepeatBegin || s.kind == ir::StmtKind::RepeatEnd ||
-                 s.kind == ir::StmtKind::Call || s.cond != ir::kNoExpr;
+          return s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::RepeatBegin ||
+                 s.kind == ir::StmtKind::RepeatEnd || s.kind == ir::StmtKind::Call || s.cond != ir::kNoExpr;
         }))
-      fail(b.range, "a jump, a repeat, a call or a condition in a block '/' skips: the translation writes it in several blocks");
+      fail(b.range,
+           "a jump, a repeat, a call or a condition in a block '/' skips: the translation writes it in several blocks");
   }
 
   // --- flow -------------------------------------------------------------------------
@@ -191,8 +195,10 @@ class Nc110Structured final : public Structured {
         {ir::ExprOp::Le, {"BLE", "BGT"}}, {ir::ExprOp::Gt, {"BGT", "BLE"}}, {ir::ExprOp::Ge, {"BGE", "BLT"}}};
     switch (c.op) {
       case ir::ExprOp::Not: return branch(c.a, label, !negate);
-      case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return branch(c.a, label, negate);
-      case ir::ExprOp::And: case ir::ExprOp::Or:
+      case ir::ExprOp::ZeroIfVacant:
+      case ir::ExprOp::Check: return branch(c.a, label, negate);
+      case ir::ExprOp::And:
+      case ir::ExprOp::Or:
         if ((c.op == ir::ExprOp::And) != negate) {  // both must hold: past the second test if the first fails
           const std::string skip = fresh();
           branch(c.a, skip, !negate);
@@ -276,17 +282,23 @@ class Nc110Structured final : public Structured {
     forget();
     // G65 gives the called program locals of its own: the target's parameters are global.
     if (p_->dialect == "iso" && !s.shares_locals && uses_locals(s.label))
-      return fail(s.range, "G65 of a program that uses #1-#33: ISO gives it locals of its own, NC-110's parameters are global");
-    if (!s.args.empty()) return fail(s.range, "a call with arguments: NC-110's subprograms take none (E parameters are global)");
+      return fail(s.range,
+                  "G65 of a program that uses #1-#33: ISO gives it locals of its own, NC-110's parameters are global");
+    if (!s.args.empty())
+      return fail(s.range, "a call with arguments: NC-110's subprograms take none (E parameters are global)");
     std::string text;
     if (same_) {  // the unit "MP0/FLOWA" is CLS's FLOWA/MP0
       const size_t slash = s.label.find('/');
-      text = fmt::format("(CLS,{})", slash == std::string::npos ? s.label : s.label.substr(slash + 1) + "/" + s.label.substr(0, slash));
+      text = fmt::format("(CLS,{})", slash == std::string::npos
+                                         ? s.label
+                                         : s.label.substr(slash + 1) + "/" + s.label.substr(0, slash));
     } else {
       if (!ranges_.count(s.label))
-        return fail(s.range, s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
+        return fail(s.range,
+                    s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
       if (!in_main_)
-        return fail(s.range, "a call from a subprogram: the translation's subprograms are EPP ranges, which do not nest");
+        return fail(s.range,
+                    "a call from a subprogram: the translation's subprograms are EPP ranges, which do not nest");
       text = fmt::format("(EPP,{},{})", ranges_.at(s.label).first, ranges_.at(s.label).second);
     }
     if (s.value == ir::kNoExpr || (p_->is_constant(s.value) && p_->exprs[s.value].number == 1)) return line(text);
@@ -368,8 +380,10 @@ class Nc110Structured final : public Structured {
       operand_words_ = true;
       for (const ir::Word& o : block_->words) {
         if (o.kind != ir::WordKind::Parameter) continue;
-        if (o.slot != operand_slot(0)) listed |= o.slot < 52;
-        else if (auto v = constant_of(o.value); v && *v >= 0 && *v <= 99) n = static_cast<int>(*v);
+        if (o.slot != operand_slot(0))
+          listed |= o.slot < 52;
+        else if (auto v = constant_of(o.value); v && *v >= 0 && *v <= 99)
+          n = static_cast<int>(*v);
       }
     }
     if (n < 0) return fail(w.range, fmt::format("{} of an origin given by a parameter", desc.name)), true;
@@ -390,7 +404,8 @@ class Nc110Structured final : public Structured {
     for (const ir::Word& o : block_->words) {
       if (o.kind != ir::WordKind::Parameter) continue;
       if (o.address.size() != 1 || o.address[0] != src_.dwell_word)
-        return fail(o.range, fmt::format("a dwell with the word {}: NC-110 dwells in a block of its own, by TMR", o.address.str()));
+        return fail(o.range, fmt::format("a dwell with the word {}: NC-110 dwells in a block of its own, by TMR",
+                                         o.address.str()));
       time = &o;
     }
     const auto value = time ? constant_of(time->value) : std::nullopt;
@@ -447,8 +462,9 @@ class Nc110Structured final : public Structured {
   // decision 44): a source without path modes NC-110 has runs point to point, each
   // block alone.
   void start_modes(std::vector<FnCall>& modes) const override {
-    if (std::none_of(modes.begin(), modes.end(),
-                     [&](const FnCall& c) { return fn_group(c.fn) == FnGroup::Dynamics && target_code({c}, Scope::Modal); }))
+    if (std::none_of(modes.begin(), modes.end(), [&](const FnCall& c) {
+          return fn_group(c.fn) == FnGroup::Dynamics && target_code({c}, Scope::Modal);
+        }))
       modes.push_back({Fn::DynamicsPointToPoint});
   }
 
@@ -465,7 +481,8 @@ class Nc110Structured final : public Structured {
   // Each variable of the source in an LR parameter from E30 up, in the order the
   // program first names them; NC-110's own keep their numbers.
   std::string var(const ir::Expr& e) override {
-    if (same_ && (e.op == ir::ExprOp::Mem || e.op == ir::ExprOp::Text || e.op == ir::ExprOp::Sys)) return own_reference(e);
+    if (same_ && (e.op == ir::ExprOp::Mem || e.op == ir::ExprOp::Text || e.op == ir::ExprOp::Sys))
+      return own_reference(e);
     const auto n = e_of(e);
     return n ? fmt::format("E{}", *n) : "E0";
   }
@@ -482,7 +499,8 @@ class Nc110Structured final : public Structured {
     const auto index = constant_of(e.a);
     if (!index) return fail(e.range, "a memory at a computed index"), "E0";
     static constexpr const char* kFormats[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
-    const std::string format = e.op == ir::ExprOp::Text ? fmt::format("{}CH", e.count) : kFormats[static_cast<int>(e.format)];
+    const std::string format =
+        e.op == ir::ExprOp::Text ? fmt::format("{}CH", e.count) : kFormats[static_cast<int>(e.format)];
     return fmt::format("{}{}.{}", p_->spaces[e.space].name, static_cast<uint32_t>(*index), format);
   }
 
@@ -520,7 +538,8 @@ class Nc110Structured final : public Structured {
   std::string value(ir::ExprId id, char letter) override {
     const ir::Expr& e = p_->exprs[bare(id)];
     if (letter == 'E' && !same_) {  // G72-G74: where the results go (NC-110 keeps its own E numbers)
-      fail(e.range, fmt::format("the word E of {}: NC-110's E says where a measurement stores its results", p_->dialect));
+      fail(e.range,
+           fmt::format("the word E of {}: NC-110's E says where a measurement stores its results", p_->dialect));
       return "0";
     }
     const auto address = w_.tables().addresses.find(letter);
@@ -540,7 +559,8 @@ class Nc110Structured final : public Structured {
     }
     if (e.op == ir::ExprOp::Var && p_->is_constant(e.a)) {
       const auto n = e_of(e);
-      if (!n || std::find(takes.begin(), takes.end(), class_of(*n)) != takes.end()) return fmt::format("E{}", n.value_or(0));
+      if (!n || std::find(takes.begin(), takes.end(), class_of(*n)) != takes.end())
+        return fmt::format("E{}", n.value_or(0));
       return scratch(takes.back(), fmt::format("E{}", *n));
     }
     return scratch(takes.back(), expr(id, kOr));
@@ -550,8 +570,10 @@ class Nc110Structured final : public Structured {
     switch (letter) {
       case 'F': return Value::Feed;
       case 'S': return Value::Speed;
-      case 'T': case 'H': return Value::Count;
-      case 'G': case 'M': return Value::Code;
+      case 'T':
+      case 'H': return Value::Count;
+      case 'G':
+      case 'M': return Value::Code;
       default: return Value::Length;
     }
   }
@@ -568,7 +590,8 @@ class Nc110Structured final : public Structured {
         e = e_count_ - 1 - scratch_used_++;
       } else {
         if (kFirst[c] + class_used_[c] == kEnd[c]) {
-          fail(block_->range, fmt::format("more computed {} values in a block than E{}-E{}", kClassName[c], kFirst[c], kEnd[c] - 1));
+          fail(block_->range,
+               fmt::format("more computed {} values in a block than E{}-E{}", kClassName[c], kFirst[c], kEnd[c] - 1));
           return "E0";
         }
         e = kFirst[c] + class_used_[c]++;
@@ -578,7 +601,9 @@ class Nc110Structured final : public Structured {
     return fmt::format("E{}", e);
   }
 
-  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override { return stored(var, text); }
+  std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override {
+    return stored(var, text);
+  }
   std::string stored(const std::string& var, const std::string& text) {
     std::string line = var + "=" + text;
     if (line.size() > 120) fail(block_->range, "an expression longer than an NC-110 line of 128 characters");
@@ -587,17 +612,20 @@ class Nc110Structured final : public Structured {
 
   void zero_all(uint32_t, uint32_t) override {}  // never: var() refuses computed parameter numbers
 
-
   // NC-110's expressions (§2.12, nc110 decisions 9 and 10): ( ), + - * /, one sign
   // before an operand, MOD(A,B), functions of degrees; no comparison outside a branch.
   std::string expr(ir::ExprId id, int min) override {
     const ir::Expr& e = p_->exprs[id];
     auto wrap = [&](int level, std::string s) { return level < min ? "(" + s + ")" : s; };
-    auto binary = [&](int level, std::string_view op) { return wrap(level, expr(e.a, level) + std::string(op) + expr(e.b, level + 1)); };
+    auto binary = [&](int level, std::string_view op) {
+      return wrap(level, expr(e.a, level) + std::string(op) + expr(e.b, level + 1));
+    };
     switch (e.op) {
       case ir::ExprOp::Number: return e.number < 0 ? wrap(kSign, exact(e.number, false)) : exact(e.number, false);
       case ir::ExprOp::Var: return var(e);
-      case ir::ExprOp::Mem: case ir::ExprOp::Text: case ir::ExprOp::Sys:
+      case ir::ExprOp::Mem:
+      case ir::ExprOp::Text:
+      case ir::ExprOp::Sys:
         if (same_) return own_reference(e);
         fail(e.range, "a memory, a system variable or a text in an expression");
         return "0";
@@ -605,7 +633,8 @@ class Nc110Structured final : public Structured {
         if (same_) return quoted(p_->texts[e.text]);
         fail(e.range, "a memory, a system variable or a text in an expression");
         return "0";
-      case ir::ExprOp::ZeroIfVacant: case ir::ExprOp::Check: return expr(e.a, min);
+      case ir::ExprOp::ZeroIfVacant:
+      case ir::ExprOp::Check: return expr(e.a, min);
       case ir::ExprOp::Neg:  // -(-2) reads back as 2: a constant is folded
         if (auto v = constant_of(id)) return *v < 0 ? wrap(kSign, exact(*v, false)) : exact(*v, false);
         return wrap(kSign, "-" + expr(e.a, kPrimary));
@@ -613,11 +642,19 @@ class Nc110Structured final : public Structured {
       case ir::ExprOp::Sub: return binary(kSum, "-");
       case ir::ExprOp::Mul: return binary(kTerm, "*");
       case ir::ExprOp::Div: return binary(kTerm, "/");
-      case ir::ExprOp::Mod: return fmt::format("MOD({},{})", expr(e.a, kOr), expr(e.b, kOr));  // the dividend's sign, as the IR
+      case ir::ExprOp::Mod:
+        return fmt::format("MOD({},{})", expr(e.a, kOr), expr(e.b, kOr));  // the dividend's sign, as the IR
       case ir::ExprOp::Call: return builtin(e);
       case ir::ExprOp::Pow: fail(e.range, "a power: NC-110 has no power operator"); return "0";
-      case ir::ExprOp::Eq: case ir::ExprOp::Ne: case ir::ExprOp::Lt: case ir::ExprOp::Le: case ir::ExprOp::Gt:
-      case ir::ExprOp::Ge: case ir::ExprOp::And: case ir::ExprOp::Or: case ir::ExprOp::Not: {
+      case ir::ExprOp::Eq:
+      case ir::ExprOp::Ne:
+      case ir::ExprOp::Lt:
+      case ir::ExprOp::Le:
+      case ir::ExprOp::Gt:
+      case ir::ExprOp::Ge:
+      case ir::ExprOp::And:
+      case ir::ExprOp::Or:
+      case ir::ExprOp::Not: {
         // A truth as a value (pp G73's counter is armed by one): 1 or 0 by a branch.
         const std::string truth = scratch(LR, "0"), skip = fresh();
         branch(id, skip, true);
@@ -657,10 +694,10 @@ class Nc110Structured final : public Structured {
   std::map<std::string, std::pair<std::string, std::string>> ranges_;  // unit -> its first and last label
   std::map<std::string, std::string> labels_;  // of the unit being written: source label -> output label
   std::map<size_t, std::string> label_at_;     // block index -> its label
-  std::map<std::string, uint32_t> mapped_;      // source variable -> E
+  std::map<std::string, uint32_t> mapped_;     // source variable -> E
   std::vector<std::pair<uint32_t, std::string>> legend_;
   uint32_t next_e_ = kFirst[LR];
-  std::set<uint32_t> e_taken_;  // the E parameters mapped_ gives
+  std::set<uint32_t> e_taken_;   // the E parameters mapped_ gives
   std::set<uint32_t> source_e_;  // NC-110's own E parameters
   uint32_t scratch_used_ = 0, class_used_[LR] = {};
   struct Loop {

@@ -42,7 +42,8 @@ class NgcStructured final : public Structured {
       std::string name;
       const std::string& source = p_->units[u].name;
       for (char c : source.substr(source.rfind('/') + 1))
-        if (std::isalnum(static_cast<unsigned char>(c))) name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (std::isalnum(static_cast<unsigned char>(c)))
+          name += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
       if (name.empty()) name = "sub";
       std::string unique = name;
       for (int n = 2; !taken.insert(unique).second; ++n) unique = fmt::format("{}_{}", name, n);
@@ -120,9 +121,10 @@ class NgcStructured final : public Structured {
           if (t > i) {
             // Macro B's WHILE: a jump over the body to a block that jumps back.
             const ir::Block& end = u.blocks[t];
-            const ir::Stmt* back = end.stmts.size() == 1 && end.stmts[0].kind == ir::StmtKind::Jump ? &end.stmts[0] : nullptr;
-            if (back && !back->label.empty() && labels.count(back->label) && labels.at(back->label) == i + 1 && s.cond != ir::kNoExpr &&
-                p_->exprs[s.cond].op == ir::ExprOp::Not && p_->exprs[s.cond].a == back->cond) {
+            const ir::Stmt* back =
+                end.stmts.size() == 1 && end.stmts[0].kind == ir::StmtKind::Jump ? &end.stmts[0] : nullptr;
+            if (back && !back->label.empty() && labels.count(back->label) && labels.at(back->label) == i + 1 &&
+                s.cond != ir::kNoExpr && p_->exprs[s.cond].op == ir::ExprOp::Not && p_->exprs[s.cond].a == back->cond) {
               regions_.push_back({Region::While, 2 * i + 1, 2 * t, expr(back->cond, kOr)});
               consumed.insert(back);
             } else {
@@ -142,7 +144,8 @@ class NgcStructured final : public Structured {
               return x.kind == ir::StmtKind::RepeatEnd && depth-- == 0;
             });
             if (end != stmts.end()) {
-              if (end != stmts.begin()) return fail(end->range, "the end of a repeat after other statements of its block");
+              if (end != stmts.begin())
+                return fail(end->range, "the end of a repeat after other statements of its block");
               break;
             }
           }
@@ -158,7 +161,8 @@ class NgcStructured final : public Structured {
     std::vector<size_t> order(regions_.size());
     for (size_t k = 0; k < order.size(); ++k) order[k] = k;
     std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-      return regions_[a].open != regions_[b].open ? regions_[a].open < regions_[b].open : regions_[a].close > regions_[b].close;
+      return regions_[a].open != regions_[b].open ? regions_[a].open < regions_[b].open
+                                                  : regions_[a].close > regions_[b].close;
     });
     std::vector<size_t> open;
     for (size_t rank = 0; rank < order.size(); ++rank) {
@@ -170,7 +174,8 @@ class NgcStructured final : public Structured {
         regions_.clear();
         breaks_.clear();
         return fail(of_region[order[rank]]->range,
-                    "a jump into or out of a loop or another jump's blocks: LinuxCNC has no GOTO, only o-word blocks that nest");
+                    "a jump into or out of a loop or another jump's blocks: LinuxCNC has no GOTO, only o-word blocks "
+                    "that nest");
       }
       open.push_back(order[rank]);
     }
@@ -221,9 +226,11 @@ class NgcStructured final : public Structured {
   void call(const ir::Stmt& s) override {
     forget();
     if (!subs_.count(s.label))
-      return fail(s.range, s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
+      return fail(s.range,
+                  s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
     if (s.shares_locals && uses_locals(s.label))
-      return fail(s.range, "M98 of a subprogram that uses #1-#33: it shares them with its caller, a LinuxCNC sub has its own");
+      return fail(s.range,
+                  "M98 of a subprogram that uses #1-#33: it shares them with its caller, a LinuxCNC sub has its own");
     // G65's arguments by their place: #1 is the first.
     std::string text = fmt::format("o<{}> call", subs_.at(s.label));
     uint32_t last = 0;
@@ -241,7 +248,7 @@ class NgcStructured final : public Structured {
   }
 
   void ret(const ir::Stmt&) override {
-    if (in_main_) return line("M2");  // M99 with no call open ends the run
+    if (in_main_) return line("M2");              // M99 with no call open ends the run
     if (block_ == &unit_->blocks.back()) return;  // endsub returns
     oword(fmt::format("o<{}> return", subs_.at(unit_->name)));
   }
@@ -256,13 +263,15 @@ class NgcStructured final : public Structured {
 
   // An o-word line: the block's number and comments go on a line before it.
   void oword(const std::string& text) {
-    if (block_ && block_->skippable) fail(block_->range, "a call or a condition in a block '/' skips: LinuxCNC skips no o-word");
+    if (block_ && block_->skippable)
+      fail(block_->range, "a call or a condition in a block '/' skips: LinuxCNC skips no o-word");
     flush();
     w_.line(text);
   }
 
   std::string assignment(const ir::Stmt&, const std::string& var, std::string text) override {
-    const bool simple = text.find_first_of("+-*/[ ") == std::string::npos || (text[0] == '-' && text.find_first_of("+*/[ ", 1) == std::string::npos);
+    const bool simple = text.find_first_of("+-*/[ ") == std::string::npos ||
+                        (text[0] == '-' && text.find_first_of("+*/[ ", 1) == std::string::npos);
     return var + "=" + (simple ? text : "[" + text + "]");
   }
 
@@ -336,12 +345,14 @@ class NgcStructured final : public Structured {
   // Macro B call and globals in LinuxCNC.
   void check_variable(const ir::Expr& e, uint32_t index) override {
     if (p_->dialect != "iso") return;
-    if (index == 0) fail(e.range, "the vacant #0: LinuxCNC's parameters are never vacant");
-    else if (index >= 31 && index <= 33) fail(e.range, fmt::format("#{}: a local of ISO, a global of LinuxCNC", index));
+    if (index == 0)
+      fail(e.range, "the vacant #0: LinuxCNC's parameters are never vacant");
+    else if (index >= 31 && index <= 33)
+      fail(e.range, fmt::format("#{}: a local of ISO, a global of LinuxCNC", index));
   }
 
-  std::map<std::string, std::string> subs_;  // unit name -> sub name
-  std::vector<Region> regions_;              // of the unit being written
+  std::map<std::string, std::string> subs_;   // unit name -> sub name
+  std::vector<Region> regions_;               // of the unit being written
   std::map<const ir::Stmt*, size_t> breaks_;  // a jump that leaves a loop: the loop's region
   const ir::Unit* unit_ = nullptr;
   int next_number_ = 99;  // o-words of the file: o100 up

@@ -44,16 +44,20 @@ class PpStructured final : public Structured {
     // P-8.2: the entry block holds G79 and L alone: the unit's first block when it
     // has nothing else (pp's own), else a block before it.
     const std::string entry = fmt::format("G79 L{}", numbers_.at(u.name));
-    if (!u.blocks.empty() && only_entry(u.blocks.front())) extra_words_ = {entry};
-    else line(entry);
+    if (!u.blocks.empty() && only_entry(u.blocks.front()))
+      extra_words_ = {entry};
+    else
+      line(entry);
   }
 
   bool only_entry(const ir::Block& b) const {
     for (const ir::Word& w : b.words)
-      if (w.kind == ir::WordKind::Parameter || (w.kind == ir::WordKind::Code && w.code >= 0 && !p_->semantics.codes[static_cast<size_t>(w.code)].calls.empty()))
+      if (w.kind == ir::WordKind::Parameter || (w.kind == ir::WordKind::Code && w.code >= 0 &&
+                                                !p_->semantics.codes[static_cast<size_t>(w.code)].calls.empty()))
         return false;
-    return std::all_of(b.stmts.begin(), b.stmts.end(),
-                       [](const ir::Stmt& s) { return s.kind == ir::StmtKind::Machine || s.kind == ir::StmtKind::Comment; });
+    return std::all_of(b.stmts.begin(), b.stmts.end(), [](const ir::Stmt& s) {
+      return s.kind == ir::StmtKind::Machine || s.kind == ir::StmtKind::Comment;
+    });
   }
 
   void close_unit(const ir::Unit& u, bool main, bool) override {
@@ -72,20 +76,24 @@ class PpStructured final : public Structured {
 
   void before_block(size_t i) override {
     const ir::Block& b = unit_->blocks[i];
-    if (same_ && b.number) pending_number_ = static_cast<int>(*b.number);  // a jump's target
-    else if (head_) pending_number_ = static_cast<int>(*std::exchange(head_, std::nullopt));
-    else pending_number_ = number_of(b);
+    if (same_ && b.number)
+      pending_number_ = static_cast<int>(*b.number);  // a jump's target
+    else if (head_)
+      pending_number_ = static_cast<int>(*std::exchange(head_, std::nullopt));
+    else
+      pending_number_ = number_of(b);
     if (!p_->units.empty() && unit_ != &p_->units.front()) {
       // P-8.2: the end block; a return alone after the last block (ISO's M99 line)
       // is its G70, as the translation back writes it.
       const auto& blocks = unit_->blocks;
       const ir::Block& last = blocks.back();
-      const bool bare = blocks.size() > 1 && !last.number && last.comments.empty() && last.stmts.size() == 1 &&
-                        last.stmts.front().kind == ir::StmtKind::Return &&
-                        std::all_of(last.words.begin(), last.words.end(), [&](const ir::Word& w) {  // M99: the return's own
-                          return w.kind == ir::WordKind::Control ||
-                                 (w.kind == ir::WordKind::Code && w.code >= 0 && p_->semantics.codes[static_cast<size_t>(w.code)].calls.empty());
-                        });
+      const bool bare =
+          blocks.size() > 1 && !last.number && last.comments.empty() && last.stmts.size() == 1 &&
+          last.stmts.front().kind == ir::StmtKind::Return &&
+          std::all_of(last.words.begin(), last.words.end(), [&](const ir::Word& w) {  // M99: the return's own
+            return w.kind == ir::WordKind::Control || (w.kind == ir::WordKind::Code && w.code >= 0 &&
+                                                       p_->semantics.codes[static_cast<size_t>(w.code)].calls.empty());
+          });
       if (i + (bare ? 2 : 1) == blocks.size()) extra_words_.push_back("G70");
       for (const ir::Word& w : b.words)
         if (w.kind == ir::WordKind::Code && w.code >= 0)
@@ -143,7 +151,8 @@ class PpStructured final : public Structured {
   void repeat_begin(const ir::Stmt& s) override {
     const ir::Expr& n = p_->exprs[s.value];
     if (n.op != ir::ExprOp::Number || n.number < 1 || n.number > 10000 || n.number != std::trunc(n.number))
-      return fail(s.range, "a repeat loop whose count is not a constant of 1..10000: pp's G73 counts Q of 1..9999 jumps");
+      return fail(s.range,
+                  "a repeat loop whose count is not a constant of 1..10000: pp's G73 counts Q of 1..9999 jumps");
     if (block_ && block_->skippable) return fail(s.range, "a repeat in a block '/' skips");
     flush();  // an outer loop's first block, numbered, when this one is its first
     Loop loop{static_cast<int>(n.number), 0};
@@ -170,14 +179,17 @@ class PpStructured final : public Structured {
   void call(const ir::Stmt& s) override {
     forget();
     if (!numbers_.count(s.label))
-      return fail(s.range, s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
+      return fail(s.range,
+                  s.label.find('/') != std::string::npos ? "a call of a block of a program" : "a call of " + s.label);
     // G65 gives the called program locals of its own: the target's parameters are global.
     if (p_->dialect == "iso" && !s.shares_locals && uses_locals(s.label))
-      return fail(s.range, "G65 of a program that uses #1-#33: ISO gives it locals of its own, pp's parameters are global");
-    if (!s.args.empty()) return fail(s.range, "a call with arguments: pp's subprograms take none (R parameters are global)");
+      return fail(s.range,
+                  "G65 of a program that uses #1-#33: ISO gives it locals of its own, pp's parameters are global");
+    if (!s.args.empty())
+      return fail(s.range, "a call with arguments: pp's subprograms take none (R parameters are global)");
     const bool macro = same_ && std::any_of(p_->units.begin(), p_->units.end(), [&](const ir::Unit& u) {
-      return u.name == s.label && u.kind == ir::UnitKind::Macro;
-    });
+                         return u.name == s.label && u.kind == ir::UnitKind::Macro;
+                       });
     std::string text = fmt::format("{} L{}", macro ? "G72" : "G71", numbers_.at(s.label));
     if (s.value != ir::kNoExpr && !(p_->is_constant(s.value) && p_->exprs[s.value].number == 1))
       text += " Q" + word_value(s.value, 'Q');
@@ -186,7 +198,8 @@ class PpStructured final : public Structured {
 
   void ret(const ir::Stmt& s) override {
     if (in_main_) return fail(s.range, "M99 in the main program");
-    if (block_ != &unit_->blocks.back()) fail(s.range, "a return before the subprogram's end: pp's ends at its G70 block");
+    if (block_ != &unit_->blocks.back())
+      fail(s.range, "a return before the subprogram's end: pp's ends at its G70 block");
   }
 
   void conditional(const ir::Stmt& s) override { fail(s.range, "a statement under a condition: pp has no condition"); }
@@ -197,7 +210,8 @@ class PpStructured final : public Structured {
     if (mapped_.empty()) return;
     std::string text;
     for (const auto& [name, r] : mapped_)
-      if (const std::string var = fmt::format("R{}", r); !starts_stored(var)) text += fmt::format("{}{} 0", text.empty() ? "" : " ", var);
+      if (const std::string var = fmt::format("R{}", r); !starts_stored(var))
+        text += fmt::format("{}{} 0", text.empty() ? "" : " ", var);
     if (!text.empty()) w_.line(text);
     std::string legend = "R parameters:";
     for (const auto& [r, name] : legend_) legend += fmt::format(" R{} {},", r, name);
@@ -259,13 +273,15 @@ class PpStructured final : public Structured {
     switch (letter) {
       case 'F': return Value::Feed;
       case 'S': return Value::Speed;
-      case 'T': case 'D': case 'L': case 'Q': return Value::Count;
-      case 'G': case 'M': return Value::Code;
+      case 'T':
+      case 'D':
+      case 'L':
+      case 'Q': return Value::Count;
+      case 'G':
+      case 'M': return Value::Code;
       default: return Value::Length;
     }
   }
-
-
 
   // R<m> or -R<m>: what a word or an R word takes as its value.
   std::optional<std::string> plain(ir::ExprId id) {
@@ -316,11 +332,17 @@ class PpStructured final : public Structured {
       flush_r_words();
       line(fmt::format("{} {} {}", code, r, second));
     };
-    auto whole = [&](ir::ExprId x) { auto v = constant_of(x); return v && *v == std::trunc(*v); };
+    auto whole = [&](ir::ExprId x) {
+      auto v = constant_of(x);
+      return v && *v == std::trunc(*v);
+    };
     switch (e.op) {
       case ir::ExprOp::Add: return formula("G26", e.a, e.b);
       case ir::ExprOp::Sub: return formula("G27", e.a, e.b);
-      case ir::ExprOp::Neg: store(r, e.a); flush_r_words(); return line(fmt::format("G28 {} -1", r));
+      case ir::ExprOp::Neg:
+        store(r, e.a);
+        flush_r_words();
+        return line(fmt::format("G28 {} -1", r));
       case ir::ExprOp::Mul:
         if (whole(e.b)) return formula("G28", e.a, e.b);
         if (whole(e.a)) return formula("G28", e.b, e.a);
@@ -354,13 +376,13 @@ class PpStructured final : public Structured {
   }
 
   const ir::Unit* unit_ = nullptr;
-  size_t r_words_ = 0;  // the R words at the front of extra_words_
+  size_t r_words_ = 0;                  // the R words at the front of extra_words_
   std::map<std::string, int> numbers_;  // unit -> its L number
   std::map<std::string, uint32_t> mapped_;
   std::vector<std::pair<uint32_t, std::string>> legend_;
   uint32_t next_r_ = 0, scratch_used_ = 0;
   std::set<uint32_t> r_taken_;  // the R parameters mapped_ gives
-  std::string count_ = "1";  // the Q of pp's own G73 being written
+  std::string count_ = "1";     // the Q of pp's own G73 being written
   struct Loop {
     int count;
     long head;

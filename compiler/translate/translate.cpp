@@ -43,8 +43,10 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
   std::vector<std::string> order;
   Flattener flattener(*writer, module.semantics, target, [&](const Refusal& r) {
     auto [it, fresh] = seen.try_emplace(r.what, Seen{r.source, r.kind});
-    if (fresh) order.push_back(r.what);
-    else if (it->second.source != r.source) ++it->second.more;
+    if (fresh)
+      order.push_back(r.what);
+    else if (it->second.source != r.source)
+      ++it->second.more;
   });
   writer->begin(request.header);
   Streaming sink(flattener, *writer, out);
@@ -58,8 +60,8 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
     const Seen& r = seen.at(what);
     if (r.kind == Finding::RoundedRate) {
       report_at_block(s, module, r.source, DiagId::TranslateRoundedRate,
-                      diag_message(DiagId::TranslateRoundedRate, writer->dialect(), what, writer->rate_decimals(what[0]),
-                                   rounded_these("value", r.more)));
+                      diag_message(DiagId::TranslateRoundedRate, writer->dialect(), what,
+                                   writer->rate_decimals(what[0]), rounded_these("value", r.more)));
       continue;
     }
     const std::string text = what + (r.more ? fmt::format(" (and in {} more blocks)", r.more) : "");

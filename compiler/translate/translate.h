@@ -10,10 +10,10 @@
 namespace ncc::translate {
 
 struct Request {
-  std::string to;             // the target dialect (is_target)
-  Header header;              // what the leading comment says
+  std::string to;                                   // the target dialect (is_target)
+  Header header;                                    // what the leading comment says
   const stdlib::Profile* target_profile = nullptr;  // the machine the target runs on
-  RunSettings run;            // the run that flattens (switches, limits, inputs)
+  RunSettings run;                                  // the run that flattens (switches, limits, inputs)
 };
 
 // Flattened translation: runs the compiled program and writes the plain blocks its

@@ -43,13 +43,15 @@ int Writer::rate_decimals(char letter) const {
   // The decimals the range writes, at either end (pp's F 0.001..24000 takes 3).
   const stdlib::AddressEntry& a = it->second;
   int decimals = a.decimals;
-  while (decimals < 6 && std::fabs(a.min * std::pow(10.0, decimals) - std::round(a.min * std::pow(10.0, decimals))) > 1e-9)
+  while (decimals < 6 &&
+         std::fabs(a.min * std::pow(10.0, decimals) - std::round(a.min * std::pow(10.0, decimals))) > 1e-9)
     ++decimals;
   return decimals;
 }
 
 std::optional<double> Writer::rounded_rate(const OutWord& w) const {
-  if (w.kind != Value::Feed && w.kind != Value::Speed && w.kind != Value::Seconds && w.kind != Value::Count) return std::nullopt;
+  if (w.kind != Value::Feed && w.kind != Value::Speed && w.kind != Value::Seconds && w.kind != Value::Count)
+    return std::nullopt;
   const double scale = std::pow(10.0, rate_decimals(w.letter));
   const double v = std::round(w.value * scale) / scale;
   if (std::fabs(v - w.value) <= 1e-9 * std::max(1.0, std::fabs(w.value))) return std::nullopt;
@@ -66,8 +68,8 @@ std::optional<std::string> Writer::unwritable(const OutWord& w) const {
   double v = w.value;
   if (auto r = rounded_rate(w)) {
     if (w.kind == Value::Count || std::fabs(*r - w.value) > kRateRounding * std::fabs(w.value))
-      return fmt::format("{}{}: {} writes {} with {} decimals", w.letter, decimal(w.value, 6, false), dialect(), w.letter,
-                         rate_decimals(w.letter));
+      return fmt::format("{}{}: {} writes {} with {} decimals", w.letter, decimal(w.value, 6, false), dialect(),
+                         w.letter, rate_decimals(w.letter));
     v = *r;
   }
   if (v >= a.min && v <= a.max) return std::nullopt;

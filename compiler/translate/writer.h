@@ -43,7 +43,8 @@ inline constexpr double kRateRounding = 1e-2;
 // The subject of a rounding warning (NC4098, NC4099): "this length is", "this value
 // and 3 more are".
 inline std::string rounded_these(std::string_view what, size_t more) {
-  return more ? "this " + std::string(what) + " and " + std::to_string(more) + " more are" : "this " + std::string(what) + " is";
+  return more ? "this " + std::string(what) + " and " + std::to_string(more) + " more are"
+              : "this " + std::string(what) + " is";
 }
 
 struct OutWord {
@@ -59,7 +60,7 @@ struct Header {
   std::string dialect;  // the source's dialect
   std::string title;    // the source program's title, if it has one
   bool flattened = false;
-  std::string number;   // the source program's number, if it has one ("%0012": "0012")
+  std::string number;  // the source program's number, if it has one ("%0012": "0012")
 };
 
 // The leading comment of a translation: "translated from F, dialect D: TITLE"

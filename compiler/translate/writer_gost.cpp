@@ -40,7 +40,7 @@ class GostWriter final : public Writer {
     // operator, and translated again as one.
     begun_ = true;
     if (!s_.format.program_start) return;
-    std::string line = "%" + h.number;  // §1.8: up to 8 digits (a name of more is no number)
+    std::string line = "%" + h.number;            // §1.8: up to 8 digits (a name of more is no number)
     append_comment(line, header_text(h, " - "));  // GOST's comment takes no ':'
     out_ += line;
     out_ += '\n';
@@ -66,8 +66,10 @@ class GostWriter final : public Writer {
     std::string line = number_word();
     for (const OutWord& w : sorted) {
       // §2.1: with '.' in the format a tab stands before each word but N.
-      if (s_.format.tab) line += '\t';
-      else if (!line.empty()) line += ' ';
+      if (s_.format.tab)
+        line += '\t';
+      else if (!line.empty())
+        line += ' ';
       line += w.letter;
       line += number(w);
       note(w);
@@ -114,7 +116,8 @@ class GostWriter final : public Writer {
       if (m > 0 && text[m - 1] != ' ' && text[m - 1] != '\t') continue;
       size_t end = m + 1;
       while (end < text.size() && std::isdigit(static_cast<unsigned char>(text[end]))) ++end;
-      if (end > m + 1) note({'M', static_cast<double>(std::stoi(std::string(text.substr(m + 1, end - m - 1)))), Value::Code});
+      if (end > m + 1)
+        note({'M', static_cast<double>(std::stoi(std::string(text.substr(m + 1, end - m - 1)))), Value::Code});
     }
   }
 
@@ -164,19 +167,24 @@ class GostWriter final : public Writer {
   std::optional<std::string> unwritable(const OutWord& w) const override {
     if (w.kind == Value::Code) return std::nullopt;
     const gost::WordFormat* f = s_.format.word(w.letter);
-    if (!f) return fmt::format("{}{}: the format {} has no {}", w.letter, decimal(w.value, 4, false), s_.format.text, w.letter);
+    if (!f)
+      return fmt::format("{}{}: the format {} has no {}", w.letter, decimal(w.value, 4, false), s_.format.text,
+                         w.letter);
     const int b = rate_decimals(w.letter);
     const double scale = std::pow(10.0, b);
     const double r = std::round(w.value * scale) / scale;
     // A length is rounded to resolution(); a feed, a speed or a dwell by a hundredth
     // of itself at most; a count not at all.
-    if (auto rate = rounded_rate(w); rate && (w.kind == Value::Count || std::fabs(*rate - w.value) > kRateRounding * std::fabs(w.value)))
+    if (auto rate = rounded_rate(w);
+        rate && (w.kind == Value::Count || std::fabs(*rate - w.value) > kRateRounding * std::fabs(w.value)))
       return fmt::format("{}{}: {} writes {} decimals", w.letter, decimal(w.value, 6, false), f->text, b);
     if (w.letter == 'T' && s_.tool_digits > 0) return std::nullopt;  // tool and offset digits: the reader's rule
     const int digits = static_cast<int>(fmt::format("{:.0f}", std::floor(std::fabs(r))).size());
     if (digits > f->int_digits && std::floor(std::fabs(r)) != 0)
-      return fmt::format("{}{}: {} holds {} digits before the point", w.letter, decimal(w.value, 4, false), f->text, f->int_digits);
-    if (r < 0 && !f->is_signed) return fmt::format("{}{}: {} has no sign", w.letter, decimal(w.value, 4, false), f->text);
+      return fmt::format("{}{}: {} holds {} digits before the point", w.letter, decimal(w.value, 4, false), f->text,
+                         f->int_digits);
+    if (r < 0 && !f->is_signed)
+      return fmt::format("{}{}: {} has no sign", w.letter, decimal(w.value, 4, false), f->text);
     return std::nullopt;
   }
 
@@ -247,8 +255,10 @@ class GostWriter final : public Writer {
         case ':': line += '.'; break;
         case '%': line += "pct"; break;
         default:
-          if ((byte < 0x20 && byte != '\t') || byte == 0x7F) line += ' ';
-          else line += text.substr(at, c.length);
+          if ((byte < 0x20 && byte != '\t') || byte == 0x7F)
+            line += ' ';
+          else
+            line += text.substr(at, c.length);
       }
       at += c.length;
     }

@@ -81,7 +81,8 @@ class IsoWriter final : public Writer {
         return w.value == std::floor(w.value) ? fmt::format("{:02}", static_cast<int>(w.value)) : exact(w.value, false);
       case Value::Count: return fmt::format("{}", static_cast<long long>(w.value));
       case Value::Speed: return decimal(w.value, rate_decimals(w.letter), false);
-      case Value::Feed: return decimal(w.value, rate_decimals(w.letter), true);  // a computed feed as it is (inverse time, G95)
+      case Value::Feed:
+        return decimal(w.value, rate_decimals(w.letter), true);  // a computed feed as it is (inverse time, G95)
       default: return decimal(w.value, linuxcnc_ ? 6 : 4, true);
     }
   }

@@ -24,9 +24,7 @@ class Nc110Writer final : public Writer {
 
   // The manual gives a program no header or name line (its name is the file's, §2.13.2.2);
   // a '%' tape mark would only be skipped.
-  void begin(const Header& h) override {
-    comment(header_text(h));
-  }
+  void begin(const Header& h) override { comment(header_text(h)); }
 
   void block(const std::vector<OutWord>& words, std::string_view comment) override {
     // G before every other word (§2.8; `order` in addresses.tsv), the rest as given.

@@ -17,8 +17,8 @@
 namespace ncc::translate {
 namespace {
 
-constexpr size_t kLine = 80;              // §2.2.1 f: characters a line
-constexpr int kStep = 10;                 // N10, N20...: the manual's examples
+constexpr size_t kLine = 80;                // §2.2.1 f: characters a line
+constexpr int kStep = 10;                   // N10, N20...: the manual's examples
 constexpr std::string_view kIndent = "  ";  // a line that goes on with the block above
 
 // The characters of UTF-8 text (a byte that is not UTF-8 counts as one).
@@ -146,7 +146,9 @@ class PpWriter final : public Writer {
   std::string number(const OutWord& w) const override {
     switch (w.kind) {
       case Value::Code: return fmt::format("{:02}", static_cast<int>(w.value));
-      case Value::Count: case Value::Speed: case Value::Seconds: return decimal(w.value, 0, false);
+      case Value::Count:
+      case Value::Speed:
+      case Value::Seconds: return decimal(w.value, 0, false);
       default: return decimal(w.value, 3, false);
     }
   }
@@ -168,7 +170,8 @@ class PpWriter final : public Writer {
 
   // §2.2.1 d: every block begins with N (8), each number once in the file.
   std::string next_number() {
-    while (block_number_ < taken_.size() && taken_[block_number_]) block_number_ += kStep;  // a structured translation's own
+    while (block_number_ < taken_.size() && taken_[block_number_])
+      block_number_ += kStep;  // a structured translation's own
     std::string n = fmt::format("N{}", block_number_);
     take(block_number_);     // a source's number claimed later is not this one
     block_number_ += kStep;  // past 99999999 the program is no longer pp
@@ -246,9 +249,12 @@ class PpWriter final : public Writer {
         continue;
       }
       const uint32_t cp = c.code_point;
-      if (cp == '"') t += '\'';
-      else if (cp < 0x20 || (cp >= 0x7F && cp < 0xA0) || cp == 0x2028 || cp == 0x2029) t += ' ';
-      else t.append(s.substr(i, c.length));
+      if (cp == '"')
+        t += '\'';
+      else if (cp < 0x20 || (cp >= 0x7F && cp < 0xA0) || cp == 0x2028 || cp == 0x2029)
+        t += ' ';
+      else
+        t.append(s.substr(i, c.length));
       i += c.length;
     }
     while (!t.empty() && t.back() == ' ') t.pop_back();
@@ -263,7 +269,7 @@ class PpWriter final : public Writer {
     taken_[n] = true;
   }
   std::optional<size_t> open_;  // the bytes of the block being written (none before the first)
-  bool main_ended_ = false;  // a block with M02 or M30 is written
+  bool main_ended_ = false;     // a block with M02 or M30 is written
   bool ended_ = false;
 };
 

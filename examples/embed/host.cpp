@@ -19,7 +19,8 @@ class Planner final : public api::MachineInterface {
   api::Reply straight_feed(const api::Block& b, const api::Axes& end) override { return move(b, "feed ", end); }
   api::Reply arc_feed(const api::Block& b, const api::Arc& arc) override {
     std::printf("  line %u: arc   to X%.3f Y%.3f Z%.3f about X%.3f Y%.3f, %s, at F%g\n", b.line, arc.end[0], arc.end[1],
-                arc.end[2], arc.centre_first, arc.centre_second, arc.rotation < 0 ? "clockwise" : "counter-clockwise", feed_);
+                arc.end[2], arc.centre_first, arc.centre_second, arc.rotation < 0 ? "clockwise" : "counter-clockwise",
+                feed_);
     return {};
   }
   api::Reply feed_rate(const api::Block&, double rate) override {
@@ -31,7 +32,8 @@ class Planner final : public api::MachineInterface {
     return {};
   }
   api::Reply spindle_start(const api::Block& b, api::Direction d) override {
-    std::printf("  line %u: spindle on, %s\n", b.line, d == api::Direction::Clockwise ? "clockwise" : "counter-clockwise");
+    std::printf("  line %u: spindle on, %s\n", b.line,
+                d == api::Direction::Clockwise ? "clockwise" : "counter-clockwise");
     return {};
   }
 

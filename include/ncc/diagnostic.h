@@ -34,7 +34,8 @@ struct Diagnostic {
 template <typename T>
 class [[nodiscard]] Result {
  public:
-  Result(T value, std::vector<Diagnostic> diagnostics) : value_(std::move(value)), diagnostics_(std::move(diagnostics)) {}
+  Result(T value, std::vector<Diagnostic> diagnostics)
+      : value_(std::move(value)), diagnostics_(std::move(diagnostics)) {}
   explicit Result(std::vector<Diagnostic> diagnostics) : diagnostics_(std::move(diagnostics)) {}
 
   bool ok() const { return value_.has_value(); }

@@ -30,8 +30,8 @@ using Axes = std::array<double, kAxisCount>;
 
 // A block of the program: where it stands and its number.
 struct Block {
-  uint32_t index = 0;       // Program::block(index)
-  std::string_view file;    // valid while the Program lives
+  uint32_t index = 0;     // Program::block(index)
+  std::string_view file;  // valid while the Program lives
   uint32_t line = 0, column = 0;
   std::optional<uint32_t> number;  // N12; a main block's :100 (main_block)
   bool main_block = false;
@@ -110,7 +110,9 @@ class NCC_API MachineInterface {
   virtual Reply units(const Block&, Units) { return {}; }
   virtual Reply plane(const Block&, const Plane&) { return {}; }
   virtual Reply feed_mode(const Block&, FeedMode) { return {}; }
-  virtual Reply feed_rate(const Block&, double /*rate*/) { return {}; }  // program units per minute (or as feed_mode says)
+  virtual Reply feed_rate(const Block&, double /*rate*/) {
+    return {};
+  }  // program units per minute (or as feed_mode says)
   virtual Reply path_mode(const Block&, PathMode) { return {}; }
 
   // Spindle, tools and offsets.
@@ -124,7 +126,7 @@ class NCC_API MachineInterface {
   virtual Reply tool_length_offset(const Block&, const Axes& /*offset*/) { return {}; }
   virtual Reply cutter_compensation(const Block&, CutterSide, double /*radius*/) { return {}; }
   virtual Reply work_offset(const Block&, int /*number*/, const Axes& /*offset*/) { return {}; }  // 0: none
-  virtual Reply position_offset(const Block&, const Axes& /*offset*/) { return {}; }  // G92
+  virtual Reply position_offset(const Block&, const Axes& /*offset*/) { return {}; }              // G92
   virtual Reply coolant(const Block&, Coolant) { return {}; }
 
   // The program and its operator.

@@ -17,12 +17,12 @@
 namespace ncc::api {
 
 struct RunOptions {
-  std::string profile;  // a machine profile file; "": the one the program was compiled with
-  bool block_skip = false;     // blocks starting with '/' are skipped
-  bool optional_stop = false;  // M01 stops
+  std::string profile;                // a machine profile file; "": the one the program was compiled with
+  bool block_skip = false;            // blocks starting with '/' are skipped
+  bool optional_stop = false;         // M01 stops
   std::optional<uint64_t> max_steps;  // blocks before the run stops with NC4021; default: the program's and 10^8 more
-  std::string files;  // NC-110 ASSET files: the sandbox folder (ncc files init); "": none
-  std::string input;  // NC-110 INP: a file of the operator's answers; "": none
+  std::string files;                  // NC-110 ASSET files: the sandbox folder (ncc files init); "": none
+  std::string input;                  // NC-110 INP: a file of the operator's answers; "": none
 };
 
 enum class Status {
@@ -79,8 +79,8 @@ class NCC_API Run {
   Status status() const;
   std::optional<Block> next_block() const;  // the block step() runs next; none once over
   State state() const;
-  std::string axes() const;  // the machine's axis letters ("XYZ", "XYZA")
-  uint64_t blocks_run() const;  // blocks (and a cycle's moves beyond the first) since power-on
+  std::string axes() const;                            // the machine's axis letters ("XYZ", "XYZA")
+  uint64_t blocks_run() const;                         // blocks (and a cycle's moves beyond the first) since power-on
   const std::vector<Diagnostic>& diagnostics() const;  // every problem the run met, once
 
  private:

@@ -31,8 +31,12 @@ class Recorder : public api::MachineInterface {
  public:
   std::vector<std::string> calls;
 
-  api::Reply straight_traverse(const api::Block& b, const api::Axes& end) override { return add(b, "straight_traverse " + xyz(end)); }
-  api::Reply straight_feed(const api::Block& b, const api::Axes& end) override { return add(b, "straight_feed " + xyz(end)); }
+  api::Reply straight_traverse(const api::Block& b, const api::Axes& end) override {
+    return add(b, "straight_traverse " + xyz(end));
+  }
+  api::Reply straight_feed(const api::Block& b, const api::Axes& end) override {
+    return add(b, "straight_feed " + xyz(end));
+  }
   api::Reply arc_feed(const api::Block& b, const api::Arc& a) override {
     return add(b, "arc_feed " + xyz(a.end) + " centre " + std::to_string(a.centre_first) + " " +
                       std::to_string(a.centre_second) + " rotation " + std::to_string(a.rotation));
@@ -41,21 +45,34 @@ class Recorder : public api::MachineInterface {
     return add(b, u == api::Units::Millimetres ? "units mm" : "units inch");
   }
   api::Reply plane(const api::Block& b, const api::Plane& p) override {
-    return add(b, "plane " + std::string{api::kAxisLetters[static_cast<size_t>(p.first)], api::kAxisLetters[static_cast<size_t>(p.second)]});
+    return add(b, "plane " + std::string{api::kAxisLetters[static_cast<size_t>(p.first)],
+                                         api::kAxisLetters[static_cast<size_t>(p.second)]});
   }
-  api::Reply feed_rate(const api::Block& b, double rate) override { return add(b, "feed_rate " + std::to_string(static_cast<int>(rate))); }
-  api::Reply spindle_speed(const api::Block& b, double speed) override { return add(b, "spindle_speed " + std::to_string(static_cast<int>(speed))); }
+  api::Reply feed_rate(const api::Block& b, double rate) override {
+    return add(b, "feed_rate " + std::to_string(static_cast<int>(rate)));
+  }
+  api::Reply spindle_speed(const api::Block& b, double speed) override {
+    return add(b, "spindle_speed " + std::to_string(static_cast<int>(speed)));
+  }
   api::Reply spindle_start(const api::Block& b, api::Direction d) override {
     return add(b, d == api::Direction::Clockwise ? "spindle_start cw" : "spindle_start ccw");
   }
   api::Reply spindle_stop(const api::Block& b) override { return add(b, "spindle_stop"); }
-  api::Reply tool_select(const api::Block& b, int tool) override { return add(b, "tool_select " + std::to_string(tool)); }
-  api::Reply tool_change(const api::Block& b, int tool) override { return add(b, "tool_change " + std::to_string(tool)); }
+  api::Reply tool_select(const api::Block& b, int tool) override {
+    return add(b, "tool_select " + std::to_string(tool));
+  }
+  api::Reply tool_change(const api::Block& b, int tool) override {
+    return add(b, "tool_change " + std::to_string(tool));
+  }
   api::Reply work_offset(const api::Block& b, int n, const api::Axes& offset) override {
     return add(b, "work_offset " + std::to_string(n) + " " + xyz(offset));
   }
-  api::Reply coolant(const api::Block& b, api::Coolant c) override { return add(b, c == api::Coolant::Off ? "coolant off" : "coolant on"); }
-  api::Reply program_end(const api::Block& b, bool information) override { return add(b, information ? "end information" : "end program"); }
+  api::Reply coolant(const api::Block& b, api::Coolant c) override {
+    return add(b, c == api::Coolant::Off ? "coolant off" : "coolant on");
+  }
+  api::Reply program_end(const api::Block& b, bool information) override {
+    return add(b, information ? "end information" : "end program");
+  }
   api::Reply other(const api::Block& b, std::string_view name, std::string_view json) override {
     return add(b, "other " + std::string(name) + " " + std::string(json));
   }
@@ -67,12 +84,21 @@ class Recorder : public api::MachineInterface {
   }
 };
 
-const std::vector<std::string> kCalls = {
-    "1 units mm",          "1 plane XY",           "1 work_offset 1 X0 Y0 Z0",
-    "2 tool_select 2",     "2 tool_change 2",      "3 spindle_speed 1000",
-    "3 spindle_start cw",  "4 straight_traverse X10 Y0 Z5", "5 feed_rate 300",
-    "5 straight_feed X10 Y0 Z-1", "6 straight_feed X20 Y0 Z-1", "7 straight_traverse X20 Y0 Z5",
-    "8 spindle_stop",      "8 coolant off",        "8 end information"};
+const std::vector<std::string> kCalls = {"1 units mm",
+                                         "1 plane XY",
+                                         "1 work_offset 1 X0 Y0 Z0",
+                                         "2 tool_select 2",
+                                         "2 tool_change 2",
+                                         "3 spindle_speed 1000",
+                                         "3 spindle_start cw",
+                                         "4 straight_traverse X10 Y0 Z5",
+                                         "5 feed_rate 300",
+                                         "5 straight_feed X10 Y0 Z-1",
+                                         "6 straight_feed X20 Y0 Z-1",
+                                         "7 straight_traverse X20 Y0 Z5",
+                                         "8 spindle_stop",
+                                         "8 coolant off",
+                                         "8 end information"};
 
 api::CompileOptions in(const std::string& dialect) {
   api::CompileOptions o;
@@ -119,7 +145,8 @@ TEST(Api, StepsABlockAtATime) {
     EXPECT_EQ(next->file, "part.nc");
     const size_t before = host.calls.size();
     EXPECT_EQ(run.step(), expected < 7 ? api::Status::Ready : api::Status::Ended);
-    for (size_t i = before; i < host.calls.size(); ++i) EXPECT_EQ(host.calls[i].substr(0, 2), std::to_string(expected + 1) + " ");
+    for (size_t i = before; i < host.calls.size(); ++i)
+      EXPECT_EQ(host.calls[i].substr(0, 2), std::to_string(expected + 1) + " ");
     calls_per_block.push_back(host.calls.size() - before);
   }
   EXPECT_EQ(calls_per_block, (std::vector<size_t>{3, 2, 2, 1, 2, 1, 1, 3}));
@@ -202,9 +229,9 @@ TEST(Api, RestartsAtABlockWithTheModesInForce) {
   EXPECT_EQ(run.restart_at(*block), api::Status::Ready);
   // The modes the blocks before it set, each from the block that set it, in the order
   // they were set; no move.
-  EXPECT_EQ(host.calls, (std::vector<std::string>{"1 units mm", "1 plane XY", "1 work_offset 1 X0 Y0 Z0", "2 tool_select 2",
-                                                  "2 tool_change 2", "3 spindle_speed 1000", "3 spindle_start cw",
-                                                  "5 feed_rate 300"}));
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"1 units mm", "1 plane XY", "1 work_offset 1 X0 Y0 Z0",
+                                                  "2 tool_select 2", "2 tool_change 2", "3 spindle_speed 1000",
+                                                  "3 spindle_start cw", "5 feed_rate 300"}));
   EXPECT_EQ(run.next_block()->line, 6u);
   EXPECT_EQ(xyz(run.state().position), "X10 Y0 Z-1");  // where the block before it left the tool
   host.calls.clear();
@@ -319,10 +346,13 @@ TEST(Api, ADialectsOwnCallsComeAsOther) {
   Recorder host;
   api::Run run = started(program, host);
   EXPECT_EQ(run.run(), api::Status::Ended);
-  EXPECT_EQ(host.calls, (std::vector<std::string>{"2 feed_rate 100", "2 straight_feed X10 Y0 Z0",
-                                                  R"(3 other origin {"event":"origin","X":5,"Y":0,"Z":0,"A":0,"B":0,"C":0,"U":0,"V":0,"W":0})",
-                                                  "4 straight_feed X20 Y0 Z0", "5 spindle_stop", "5 coolant off",
-                                                  R"(5 other origin {"event":"origin","X":0,"Y":0,"Z":0,"A":0,"B":0,"C":0,"U":0,"V":0,"W":0})", "5 end information"}));
+  EXPECT_EQ(host.calls,
+            (std::vector<std::string>{
+                "2 feed_rate 100", "2 straight_feed X10 Y0 Z0",
+                R"(3 other origin {"event":"origin","X":5,"Y":0,"Z":0,"A":0,"B":0,"C":0,"U":0,"V":0,"W":0})",
+                "4 straight_feed X20 Y0 Z0", "5 spindle_stop", "5 coolant off",
+                R"(5 other origin {"event":"origin","X":0,"Y":0,"Z":0,"A":0,"B":0,"C":0,"U":0,"V":0,"W":0})",
+                "5 end information"}));
 }
 
 }  // namespace

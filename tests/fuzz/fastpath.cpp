@@ -74,7 +74,9 @@ class Generator {
  private:
   int below(int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng_); }
   bool chance(int percent) { return below(100) < percent; }
-  std::string pick(std::initializer_list<const char*> list) { return *(list.begin() + below(static_cast<int>(list.size()))); }
+  std::string pick(std::initializer_list<const char*> list) {
+    return *(list.begin() + below(static_cast<int>(list.size())));
+  }
   std::string digits(int max) {
     std::string d;
     for (int n = 1 + below(max); n > 0; --n) d += static_cast<char>('0' + below(10));
@@ -96,7 +98,8 @@ class Generator {
   std::string word() {
     static const std::string kLetters = "GXYZXYZIJKFSMTDHPQRLABCUVWEO";
     std::string letter(1, kLetters[static_cast<size_t>(below(static_cast<int>(kLetters.size())))]);
-    if (letter == "G" || letter == "M") return letter + blanks() + pick({"0", "1", "01", "2", "3", "17", "90", "91", "94", "4", "8", "9", "30"});
+    if (letter == "G" || letter == "M")
+      return letter + blanks() + pick({"0", "1", "01", "2", "3", "17", "90", "91", "94", "4", "8", "9", "30"});
     std::string sign = chance(60) ? "" : pick({"-", "+"});
     return letter + blanks() + sign + blanks() + number();
   }
@@ -109,9 +112,12 @@ class Generator {
     if (dialect_ == "gost")
       return pick({"(comment)", ":10", "/", "(unterminated", "%", "X1 .5", "N", "x12", "X1.2.3", "*"});
     if (dialect_ == "pp")
-      return pick({"R5 10", "XR5", "&1", "/", "\"comment\"", "4.50", "5.-10", "X-  3", "X3.  12", "R1 -2", "%", "\"open"});
-    return pick({"XE31", "GE1", "T1.1", "\"LABEL\"", "#", "&", "E32", "G X10", "X - 5", "x10", "E1=5", "(RPT,3)", "(ERP)",
-                 ";note", "/", "\xd0\x95" "30"});
+      return pick(
+          {"R5 10", "XR5", "&1", "/", "\"comment\"", "4.50", "5.-10", "X-  3", "X3.  12", "R1 -2", "%", "\"open"});
+    return pick({"XE31", "GE1", "T1.1", "\"LABEL\"", "#", "&", "E32", "G X10", "X - 5", "x10", "E1=5", "(RPT,3)",
+                 "(ERP)", ";note", "/",
+                 "\xd0\x95"
+                 "30"});
   }
 
   std::string block() {
@@ -132,8 +138,12 @@ class Generator {
     const char c = kBytes[static_cast<size_t>(below(static_cast<int>(kBytes.size())))];
     switch (below(3)) {
       case 0: b.insert(b.begin() + static_cast<std::ptrdiff_t>(at), c); break;
-      case 1: if (!b.empty()) b.erase(at, 1); break;
-      default: if (!b.empty()) b[at] = c; break;
+      case 1:
+        if (!b.empty()) b.erase(at, 1);
+        break;
+      default:
+        if (!b.empty()) b[at] = c;
+        break;
     }
   }
 
@@ -160,10 +170,14 @@ int main(int argc, char** argv) {
   std::string replay;
   for (int i = 1; i + 1 < argc; i += 2) {
     std::string option = argv[i], value = argv[i + 1];
-    if (option == "--dialect") dialects = {value};
-    else if (option == "--programs") programs = std::atoi(value.c_str());
-    else if (option == "--seed") seed = static_cast<uint32_t>(std::strtoul(value.c_str(), nullptr, 10));
-    else if (option == "--replay") replay = value;
+    if (option == "--dialect")
+      dialects = {value};
+    else if (option == "--programs")
+      programs = std::atoi(value.c_str());
+    else if (option == "--seed")
+      seed = static_cast<uint32_t>(std::strtoul(value.c_str(), nullptr, 10));
+    else if (option == "--replay")
+      replay = value;
     else {
       std::fprintf(stderr, "usage: %s [--dialect D] [--programs N] [--seed S] [--replay FILE]\n", argv[0]);
       return 2;
@@ -184,7 +198,9 @@ int main(int argc, char** argv) {
       std::string text = gen.program(20);
       std::string diff = compare(dialect, text);
       if (diff.empty()) continue;
-      if (++failures <= 3) std::printf("DIFFER %s program %d (seed %u):\n%s\n--- program ---\n%s---\n", dialect.c_str(), p, seed, diff.c_str(), text.c_str());
+      if (++failures <= 3)
+        std::printf("DIFFER %s program %d (seed %u):\n%s\n--- program ---\n%s---\n", dialect.c_str(), p, seed,
+                    diff.c_str(), text.c_str());
     }
     std::printf("%s: %d random programs of 20 blocks, seed %u\n", dialect.c_str(), programs, seed);
   }

@@ -20,8 +20,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const Layout kOrigins = {{FieldType::Integer, 2}, {FieldType::Chars, 1}, {FieldType::LongReal, 8},
-                         {FieldType::Chars, 3}, {FieldType::Real, 4}};
+const Layout kOrigins = {{FieldType::Integer, 2},
+                         {FieldType::Chars, 1},
+                         {FieldType::LongReal, 8},
+                         {FieldType::Chars, 3},
+                         {FieldType::Real, 4}};
 
 // A sandbox of its own for each test, with the devices given, removed afterwards.
 class Sandbox {
@@ -62,7 +65,8 @@ TEST(AssetFields, FormatsAndTheirBytes) {
   EXPECT_EQ(parse_field("LR"), (Field{FieldType::LongReal, 8}));
   EXPECT_EQ(parse_field("CH"), (Field{FieldType::Chars, 1}));
   EXPECT_EQ(parse_field("32CH"), (Field{FieldType::Chars, 32}));
-  for (std::string_view bad : {"0CH", "33CH", "BY", "BL", "LI", "-1CH", "3 CH", ""}) EXPECT_FALSE(parse_field(bad)) << bad;
+  for (std::string_view bad : {"0CH", "33CH", "BY", "BL", "LI", "-1CH", "3 CH", ""})
+    EXPECT_FALSE(parse_field(bad)) << bad;
   for (const Field& f : kOrigins) EXPECT_EQ(parse_field(field_text(f)), f);
   EXPECT_EQ(record_length(kOrigins), 18u);
   EXPECT_TRUE(well_formed(kOrigins));
@@ -248,7 +252,6 @@ TEST(AssetStore, AKilledWriterNeverTearsAFile) {
   EXPECT_GT(seen.size(), 1u);
 }
 
-
 // ---- The statements of a process ------------------------------------------------------
 
 class AssetChannels : public ::testing::Test {
@@ -318,7 +321,7 @@ TEST_F(AssetChannels, ReadFollowsTheRecordPointer) {
   EXPECT_EQ(p.read(1, 2, std::nullopt, v), Code::EndOfFile);  // after record 3 of 3
   EXPECT_EQ(p.read(1, 2, 1, v), Code::Ok);
   EXPECT_EQ(p.read(1, 2, std::nullopt, v), Code::Ok);  // record 2
-  EXPECT_EQ(p.read(1, 2, 9, v), Code::NoRecord);        // a failed read leaves the pointer
+  EXPECT_EQ(p.read(1, 2, 9, v), Code::NoRecord);       // a failed read leaves the pointer
   EXPECT_EQ(p.read(1, 2, std::nullopt, v), Code::Ok);  // record 3
   EXPECT_EQ(v[0].number, 2);
   EXPECT_FALSE(p.define(0, kOrigins));
@@ -356,7 +359,7 @@ TEST_F(AssetChannels, CloseOneOrAll) {
   Channels p(store.get(), open_files, {});
   EXPECT_EQ(p.close(0), Code::BadChannel);
   EXPECT_EQ(p.close(1), Code::ChannelState);  // "channel still closed"
-  EXPECT_EQ(p.close_all(), Code::Ok);          // nothing open: no error
+  EXPECT_EQ(p.close_all(), Code::Ok);         // nothing open: no error
   ASSERT_EQ(p.open(1, name("ORIG/MP3"), true), Code::Ok);
   ASSERT_EQ(p.open(2, name("LOCKED/MP3"), false), Code::Ok);
   EXPECT_EQ(p.close_all(), Code::Ok);
@@ -373,7 +376,8 @@ TEST_F(AssetChannels, CloseOneOrAll) {
 TEST_F(AssetChannels, CreateAndDelete) {
   Channels p(store.get(), open_files, {.channels = 1});
   EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 20), Code::NoStructure);
-  const Layout layout = {{FieldType::Chars, 1}, {FieldType::LongReal, 8}, {FieldType::Chars, 1}, {FieldType::LongReal, 8}};
+  const Layout layout = {
+      {FieldType::Chars, 1}, {FieldType::LongReal, 8}, {FieldType::Chars, 1}, {FieldType::LongReal, 8}};
   ASSERT_TRUE(p.define(2, layout));
   EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 0), Code::Illegal);
   EXPECT_EQ(p.create(2, name("PUNTXZ/MP3"), 32768), Code::Illegal);

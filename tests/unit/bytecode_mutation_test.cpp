@@ -64,9 +64,7 @@ std::string golden_dir(const Sample& x) { return std::string(NCC_TEST_DATA "/gol
 std::string compile_sample(const Sample& x) {
   Session s;
   const std::string dir = golden_dir(x);
-  if (*x.machine) {
-    EXPECT_TRUE(load_profile(s, dir + "/" + x.machine));
-  }
+  if (*x.machine) { EXPECT_TRUE(load_profile(s, dir + "/" + x.machine)); }
   if (*x.lib) s.library = dir + "/" + x.lib;
   auto input = read_input(s, dir + "/" + x.file);
   EXPECT_TRUE(input);
@@ -79,7 +77,8 @@ std::string compile_sample(const Sample& x) {
 // The first instruction of each opcode the module's code has, by its pc.
 std::map<vm::Op, size_t> first_instructions(const vm::Module& m) {
   std::map<vm::Op, size_t> first;
-  for (size_t pc = 0; pc < m.code.size(); pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc]))))
+  for (size_t pc = 0; pc < m.code.size();
+       pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc]))))
     first.emplace(static_cast<vm::Op>(m.code[pc]), pc);
   return first;
 }
@@ -112,7 +111,8 @@ struct Sandbox {
   Sandbox() {
     const std::filesystem::path tmp =
         std::filesystem::is_directory("/dev/shm") ? "/dev/shm" : std::filesystem::temp_directory_path();
-    dir = tmp / ("ncc-mutation-" + std::to_string(::getpid()) + "-" + testing::UnitTest::GetInstance()->current_test_info()->name());
+    dir = tmp / ("ncc-mutation-" + std::to_string(::getpid()) + "-" +
+                 testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::remove_all(dir);
     for (int d = 0; d < asset::kDevices; ++d) std::filesystem::create_directories(dir / ("MP" + std::to_string(d)));
   }
@@ -199,12 +199,13 @@ TEST_P(EveryByte, IsRefusedOrRunsSafely) {
   EXPECT_GT(ran, 0u);
 }
 
-INSTANTIATE_TEST_SUITE_P(Goldens, EveryByte, testing::ValuesIn(kSamples), [](const testing::TestParamInfo<Sample>& sample) {
-  std::string name = std::string(sample.param.dialect) + "_" + sample.param.file;
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Goldens, EveryByte, testing::ValuesIn(kSamples),
+                         [](const testing::TestParamInfo<Sample>& sample) {
+                           std::string name = std::string(sample.param.dialect) + "_" + sample.param.file;
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
 
 }  // namespace
 }  // namespace ncc

@@ -44,7 +44,8 @@ vm::Module compile_text(Session& s, const std::string& dialect, const std::strin
 // The pc of the first instruction `op` in the module's code.
 size_t find_op(const vm::Module& m, vm::Op op) {
   size_t pc = 0;
-  while (pc < m.code.size() && m.code[pc] != static_cast<uint8_t>(op)) pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc])));
+  while (pc < m.code.size() && m.code[pc] != static_cast<uint8_t>(op))
+    pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc])));
   EXPECT_LT(pc, m.code.size());
   return pc;
 }
@@ -66,7 +67,8 @@ TEST(Bytecode, AValueTypeOutOfRangeIsRefused) {
   const size_t pc = find_op(m, vm::Op::ShowValue);
   EXPECT_EQ(load_problem(m), "");
   m.code[pc + 1] = static_cast<uint8_t>(VarType::Unavailable);
-  EXPECT_EQ(load_problem(m), fmt::format("'x.ncb' is invalid: ShowValue at {} has an operand out of range (6) [NC5004]", pc));
+  EXPECT_EQ(load_problem(m),
+            fmt::format("'x.ncb' is invalid: ShowValue at {} has an operand out of range (6) [NC5004]", pc));
 }
 
 TEST(Bytecode, AnAssetFileNameThatIsNoneIsRefused) {
@@ -76,7 +78,8 @@ TEST(Bytecode, AnAssetFileNameThatIsNoneIsRefused) {
   const size_t pc = find_op(m, vm::Op::AssetDelete);
   for (const std::string& bad : {std::string("PUN\0XZ/MP3", 10), std::string("../X"), std::string("PUNTXZ/MP7")}) {
     m.strings[vm::read_operand(&m.code[pc + 1], 4)] = bad;
-    EXPECT_EQ(load_problem(m), fmt::format("'x.ncb' is invalid: AssetDelete at {} has an operand out of range (0) [NC5004]", pc));
+    EXPECT_EQ(load_problem(m),
+              fmt::format("'x.ncb' is invalid: AssetDelete at {} has an operand out of range (0) [NC5004]", pc));
   }
 }
 
@@ -245,9 +248,18 @@ TEST(SourceMap, AnyBlockInAnyOrder) {
   SourceMap map;
   std::vector<SourceBlock> blocks;
   for (uint32_t i = 0; i < 100; ++i) {
-    SourceBlock b{i % 3, 10 + i * 2 - (i % 7 == 0 ? 5 : 0), 1 + i % 4, 10 + i * 2, 40, i % 2 == 0, false, i % 5 == 0, i % 2 == 0 ? i * 10 : 0};
+    SourceBlock b{i % 3,
+                  10 + i * 2 - (i % 7 == 0 ? 5 : 0),
+                  1 + i % 4,
+                  10 + i * 2,
+                  40,
+                  i % 2 == 0,
+                  false,
+                  i % 5 == 0,
+                  i % 2 == 0 ? i * 10 : 0};
     std::vector<WordPosition> w;
-    for (uint32_t k = 0; k < i % 6; ++k) w.push_back({static_cast<uint8_t>(k), static_cast<int16_t>(int(k) - 1), b.line, 3 + 4 * k, 6 + 4 * k});
+    for (uint32_t k = 0; k < i % 6; ++k)
+      w.push_back({static_cast<uint8_t>(k), static_cast<int16_t>(int(k) - 1), b.line, 3 + 4 * k, 6 + 4 * k});
     map.add(b, w);
     blocks.push_back(b);
   }
@@ -287,21 +299,21 @@ TEST(Verifier, AcceptsSoundCode) {
 
 TEST(Verifier, RejectsEachKindOfUnsoundCode) {
   using vm::Op;
-  EXPECT_NE(verify_code({kStep, 0xEE}), "");                                       // unknown opcode
-  EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0}), "");                        // cut off
-  EXPECT_NE(verify_code({kStep, op(Op::Const), 5, 0, 0, 0, op(Op::End)}), "");     // constant out of range
-  EXPECT_NE(verify_code({kStep, op(Op::Add), op(Op::End)}), "");                   // stack underflow
-  EXPECT_NE(verify_code({kStep, op(Op::Jump), 4, 0, 0, 0, op(Op::End)}), "");      // jump into an instruction
-  EXPECT_NE(verify_code({kStep, op(Op::Jump), 99, 0, 0, 0, op(Op::End)}), "");     // jump outside the code
-  EXPECT_NE(verify_code({kStep, op(Op::Nop)}), "");                                // runs off the end
-  EXPECT_NE(verify_code({kStep, op(Op::Code), 0, 0, op(Op::End)}), "");            // no such G/M code
+  EXPECT_NE(verify_code({kStep, 0xEE}), "");                                               // unknown opcode
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0}), "");                                // cut off
+  EXPECT_NE(verify_code({kStep, op(Op::Const), 5, 0, 0, 0, op(Op::End)}), "");             // constant out of range
+  EXPECT_NE(verify_code({kStep, op(Op::Add), op(Op::End)}), "");                           // stack underflow
+  EXPECT_NE(verify_code({kStep, op(Op::Jump), 4, 0, 0, 0, op(Op::End)}), "");              // jump into an instruction
+  EXPECT_NE(verify_code({kStep, op(Op::Jump), 99, 0, 0, 0, op(Op::End)}), "");             // jump outside the code
+  EXPECT_NE(verify_code({kStep, op(Op::Nop)}), "");                                        // runs off the end
+  EXPECT_NE(verify_code({kStep, op(Op::Code), 0, 0, op(Op::End)}), "");                    // no such G/M code
   EXPECT_NE(verify_code({kStep, op(Op::Word), kWordSlots, 0, 0, 0, 0, op(Op::End)}), "");  // no such word slot
   // A decimal of 9 places is sound, one of 10 is not (m / 10^p: there is no 10^10).
   EXPECT_EQ(verify_code({kStep, op(Op::WordDec), 23, 9, 1, 0, 0, 0, op(Op::End)}), "");
   EXPECT_NE(verify_code({kStep, op(Op::WordDec), 23, 10, 1, 0, 0, 0, op(Op::End)}), "");
-  EXPECT_NE(verify_code({kStep, op(Op::Load), 0, 0, 0, 0, 0, op(Op::End)}), "");   // no such variable space
-  EXPECT_NE(verify_code({kStep, op(Op::Call1), 6, op(Op::End)}), "");              // atan2 takes two arguments
-  EXPECT_NE(verify_code({op(Op::Nop), kStep, op(Op::End)}), "");                   // the entry is not a Step
+  EXPECT_NE(verify_code({kStep, op(Op::Load), 0, 0, 0, 0, 0, op(Op::End)}), "");  // no such variable space
+  EXPECT_NE(verify_code({kStep, op(Op::Call1), 6, op(Op::End)}), "");             // atan2 takes two arguments
+  EXPECT_NE(verify_code({op(Op::Nop), kStep, op(Op::End)}), "");                  // the entry is not a Step
   // A loop that passes no Step: --max-steps could not stop it.
   EXPECT_NE(verify_code({kStep, op(Op::Nop), op(Op::Jump), 1, 0, 0, 0}), "");
   // A value left on the stack at the end.
@@ -324,8 +336,40 @@ TEST(Verifier, ChecksEachOperandKindsRange) {
     m.strings = {"SA0=1"};
     m.spaces.push_back({"SA", 16, {}});
     m.spaces[0].memory = true;
-    m.code = {kStep, op(Op::Const), 0, 0, 0, 0, op(Op::Const), 0, 0, 0, 0, op(Op::ProcWaitUntil), 0, 1, relation, 0, 0, 0, 0,
-              op(Op::Const), 0, 0, 0, 0, op(Op::Const), 0, 0, 0, 0, op(Op::CopyText), 0, 0, bytes, op(Op::End)};
+    m.code = {kStep,
+              op(Op::Const),
+              0,
+              0,
+              0,
+              0,
+              op(Op::Const),
+              0,
+              0,
+              0,
+              0,
+              op(Op::ProcWaitUntil),
+              0,
+              1,
+              relation,
+              0,
+              0,
+              0,
+              0,
+              op(Op::Const),
+              0,
+              0,
+              0,
+              0,
+              op(Op::Const),
+              0,
+              0,
+              0,
+              0,
+              op(Op::CopyText),
+              0,
+              0,
+              bytes,
+              op(Op::End)};
     m.source_map.files.push_back("x.nc");
     m.source_map.add({}, {});
     m.entries.push_back({"%1", vm::EntryKind::Program, 0});

@@ -36,7 +36,10 @@ std::string text(const std::vector<cycle::Step>& steps) {
       case Kind::Tap: one += "tap " + number(s.level); break;
       case Kind::TapOut: one += "tap out " + number(s.level); break;
       case Kind::Spindle:
-        one += s.spindle == Fn::SpindleCw ? "M03" : s.spindle == Fn::SpindleCcw ? "M04" : s.spindle == Fn::SpindleStop ? "M05" : "M19";
+        one += s.spindle == Fn::SpindleCw     ? "M03"
+               : s.spindle == Fn::SpindleCcw  ? "M04"
+               : s.spindle == Fn::SpindleStop ? "M05"
+                                              : "M19";
         if (s.always) one += "!";
         break;
     }
@@ -97,8 +100,8 @@ TEST(CycleSteps, IsoBoringShiftsOffTheWall) {
   cycle::Hole h = from(20, 2, -5);
   h.shift = 1;
   h.return_level = true;
-  EXPECT_EQ(text(cycle::iso_hole(pattern(CyclePattern::In::Feed, CyclePattern::Out::Rapid, CyclePattern::Bottom::OrientShift),
-                                 h, {})),
+  EXPECT_EQ(text(cycle::iso_hole(
+                pattern(CyclePattern::In::Feed, CyclePattern::Out::Rapid, CyclePattern::Bottom::OrientShift), h, {})),
             "over, rapid 2, feed -5, M19, X+1 feed -5, rapid 2, X+0 rapid 2, M03");
 }
 
@@ -108,7 +111,8 @@ TEST(CycleSteps, GostMakesEveryMoveAndFeedsOutAllTheWay) {
   cycle::Hole h = from(10, 1, -6);
   EXPECT_EQ(text(cycle::hole(pattern(CyclePattern::In::Feed, CyclePattern::Out::Feed), h)),
             "over, rapid 1, feed -6, feed 10");
-  EXPECT_EQ(text(cycle::hole(pattern(CyclePattern::In::SpindleFeed, CyclePattern::Out::Rapid, CyclePattern::Bottom::Stop), h)),
+  EXPECT_EQ(text(cycle::hole(
+                pattern(CyclePattern::In::SpindleFeed, CyclePattern::Out::Rapid, CyclePattern::Bottom::Stop), h)),
             "over, rapid 1, M03, feed -6, M05!, rapid 10");
   EXPECT_EQ(text(cycle::hole(pattern(CyclePattern::In::Feed, CyclePattern::Out::Manual), h)),
             "over, rapid 1, feed -6, manual 10");
@@ -139,7 +143,8 @@ TEST(CycleSteps, Nc110TapsItsOwnWay) {
   h.pecks.r1 = 5;
   h.pecks.bottom = -20;
   h.direction = -1;
-  EXPECT_EQ(text(cycle::nc110_hole(pattern(CyclePattern::In::Feed, CyclePattern::Out::Feed, CyclePattern::Bottom::Reverse), h)),
+  EXPECT_EQ(text(cycle::nc110_hole(
+                pattern(CyclePattern::In::Feed, CyclePattern::Out::Feed, CyclePattern::Bottom::Reverse), h)),
             "over, rapid 5, tap -20, M03!, tap out 5, rapid 12, M04!");
 }
 

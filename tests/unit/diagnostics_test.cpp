@@ -85,9 +85,10 @@ TEST(Diagnostics, JsonEscapes) {
   uint32_t f = sources.add("p\"q.nc", "X\n");
   Diagnostics diags;
   diags.report(DiagId::NoDigits, {f, 1, 1, 1, 2}, "X");
-  EXPECT_EQ(format_all(diags.all(), sources, DiagFormat::Json),
-            R"({"code":"NC2002","name":"no-digits","severity":"error","message":"word X has no digits; a value of zero is written with at least one zero","range":{"file":"p\"q.nc","line":1,"column":1,"end_line":1,"end_column":2},"notes":[]})"
-            "\n");
+  EXPECT_EQ(
+      format_all(diags.all(), sources, DiagFormat::Json),
+      R"({"code":"NC2002","name":"no-digits","severity":"error","message":"word X has no digits; a value of zero is written with at least one zero","range":{"file":"p\"q.nc","line":1,"column":1,"end_line":1,"end_column":2},"notes":[]})"
+      "\n");
 }
 
 TEST(Diagnostics, SarifNamesRulesAndResults) {

@@ -23,8 +23,10 @@ WrittenNumber written(std::string_view text) {
     ++i;
   }
   for (; i < text.size(); ++i) {
-    if (text[i] == '.') n.has_point = true;
-    else (n.has_point ? n.after : n.before) += text[i];
+    if (text[i] == '.')
+      n.has_point = true;
+    else
+      (n.has_point ? n.after : n.before) += text[i];
   }
   return n;
 }

@@ -134,8 +134,10 @@ TEST(Tables, GostTablesLoadCompletely) {
 TEST(Tables, BadRowsAreReported) {
   Diagnostics diags;
   std::map<int, stdlib::CodeEntry> codes;
-  auto table = stdlib::parse_table("x.tsv", "G05 a modal motion.rapid \"ok\"\nG06 a sometimes motion.rapid \"\"\n"
-                                   "G07 a modal warp.speed \"\"\nG08 a modal\n", 5, diags);
+  auto table = stdlib::parse_table("x.tsv",
+                                   "G05 a modal motion.rapid \"ok\"\nG06 a sometimes motion.rapid \"\"\n"
+                                   "G07 a modal warp.speed \"\"\nG08 a modal\n",
+                                   5, diags);
   stdlib::read_code_table(table, 'G', {}, codes, diags);
   EXPECT_EQ(codes.size(), 1u);
   ASSERT_EQ(diags.all().size(), 3u);
@@ -147,8 +149,10 @@ TEST(Tables, BadRowsAreReported) {
 TEST(Tables, BlockOnlyCodesMustBeRestorable) {
   Diagnostics diags;
   std::map<int, stdlib::CodeEntry> codes;
-  auto table = stdlib::parse_table("m.tsv", "M70 before block - coolant.flood \"flood for one block\"\n"
-                                   "M71 before block - spindle.cw \"spindle for one block\"\n", 6, diags);
+  auto table = stdlib::parse_table("m.tsv",
+                                   "M70 before block - coolant.flood \"flood for one block\"\n"
+                                   "M71 before block - spindle.cw \"spindle for one block\"\n",
+                                   6, diags);
   stdlib::read_code_table(table, 'M', {}, codes, diags);
   EXPECT_EQ(codes.size(), 1u);
   ASSERT_EQ(diags.all().size(), 1u);
@@ -158,7 +162,8 @@ TEST(Tables, BlockOnlyCodesMustBeRestorable) {
 TEST(Profile, NumbersMustBeFinite) {
   SourceManager sources;
   Diagnostics diags;
-  auto p = stdlib::Profile::parse(sources, "m.toml", "[gost]\narc_tolerance = inf\n[machine]\ninitial_position = { Y = nan }\n", diags);
+  auto p = stdlib::Profile::parse(sources, "m.toml",
+                                  "[gost]\narc_tolerance = inf\n[machine]\ninitial_position = { Y = nan }\n", diags);
   ASSERT_TRUE(p);
   EXPECT_FALSE(p->number("gost.arc_tolerance", diags));
   stdlib::load_machine_config(*p, diags);

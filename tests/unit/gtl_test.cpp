@@ -89,7 +89,8 @@ TEST(GtlShape, FormsOfTheManual) {
   EXPECT_EQ(form_error(Def(Kind::Line).p(1).a(30).shape(), false), "");
   EXPECT_EQ(form_error(Def(Kind::Point).l(1).c(2).shape(), true), "");
   EXPECT_EQ(form_error(Def(Kind::Circle).p(1).c(2).shape(), true), "");
-  EXPECT_EQ(form_error(Def(Kind::Line).p(1).r(5).shape(), false), "a line is not defined by a point and a radius (§2.11.6)");
+  EXPECT_EQ(form_error(Def(Kind::Line).p(1).r(5).shape(), false),
+            "a line is not defined by a point and a radius (§2.11.6)");
   EXPECT_EQ(form_error(Def(Kind::Line).p(1).p(2).shape(), true),
             "s2 chooses the second of two solutions; a line defined by a point and a point has one (§2.11.6)");
   EXPECT_EQ(form_error(Def(Kind::Point).p(1).shape(), false), "a point is not defined by a point (§2.11.5)");
@@ -178,7 +179,8 @@ TEST(GtlLine, TangentToACircle) {
   EXPECT_NEAR(side_distance(back, {45, 30}), 15, 1e-9);
   EXPECT_GT(back.dir.dot(Vec(10, 15) - contact(back, {45, 30}, 15)), 0);  // from the contact to the point
   Def(Kind::Point, 2).xy(45, 31).into(s);
-  EXPECT_EQ(Def(Kind::Line).p(2).c(1).in(s).why, "the point lies inside the circle: no line through it touches the circle");
+  EXPECT_EQ(Def(Kind::Line).p(2).c(1).in(s).why,
+            "the point lies inside the circle: no line through it touches the circle");
   // Figure 2.65: a tangent at 45 degrees touches at (88.284, 51.716).
   const Element l = Def(Kind::Line).centre(60, 80, 40).a(45).into(s);
   EXPECT_NEAR(side_distance(l, {60, 80}), 40, 1e-9);
@@ -208,7 +210,7 @@ TEST(GtlLine, TangentToTwoCircles) {
 TEST(GtlLine, Parallel) {
   Store s;
   Def(Kind::Line, 1).xy(0, 0).a(0).into(s);
-  expect_at(Def(Kind::Line).l(1).d(20).into(s).at, 0, 20);  // figure 2.75: left
+  expect_at(Def(Kind::Line).l(1).d(20).into(s).at, 0, 20);    // figure 2.75: left
   expect_at(Def(Kind::Line).l(1).d(-15).into(s).at, 0, -15);  // figure 2.76: right
   const Element back = Def(Kind::Line).l(1, true).d(5).into(s);
   expect_at(back.at, 0, -5);
@@ -248,13 +250,14 @@ TEST(GtlCircle, ThroughThreePointsAndConcentric) {
   Def(Kind::Point, 3).xy(-10, 0).into(s);
   Element c1 = Def(Kind::Circle, 1).p(1).p(2).p(3).into(s);
   expect_at(c1.at, 0, 0);
-  EXPECT_NEAR(c1.r, 10, 1e-9);  // counter-clockwise: p1, p2, p3 turn left
+  EXPECT_NEAR(c1.r, 10, 1e-9);                                         // counter-clockwise: p1, p2, p3 turn left
   EXPECT_NEAR(Def(Kind::Circle).p(3).p(2).p(1).into(s).r, -10, 1e-9);  // figure 2.95
   Def(Kind::Point, 4).xy(20, 0).into(s);
   EXPECT_EQ(Def(Kind::Circle).p(1).p(4).p(3).in(s).why, "the three points lie on one line");
   EXPECT_NEAR(Def(Kind::Circle).c(1).d(4).into(s).r, 6, 1e-9);  // to the left of a counter-clockwise circle: inside
   EXPECT_NEAR(Def(Kind::Circle).c(1, true).d(4).into(s).r, -14, 1e-9);  // figure 2.97's form, reversed
-  EXPECT_EQ(Def(Kind::Circle).c(1).d(12).in(s).why, "the distance 12 is not less than the radius 10: no circle is left");
+  EXPECT_EQ(Def(Kind::Circle).c(1).d(12).in(s).why,
+            "the distance 12 is not less than the radius 10: no circle is left");
 }
 
 TEST(GtlCircle, GivenRadiusSmallerArcFromFirstToSecond) {
@@ -330,10 +333,17 @@ TEST(GtlProfile, Example1ClosedWithFillets) {
   run.profile.close_with({Kind::Line, 3}, 23);
   run.take();
   ASSERT_FALSE(run.profile.take_problem());
-  const std::vector<std::pair<size_t, Vec>> expected = {
-      {12, {8, 8}},           {13, {47.337, 12.441}}, {14, {50, 15.422}},     {15, {50, 24.031}},
-      {16, {49.464, 25.742}}, {17, {46.569, 48.717}}, {18, {44.383, 54.790}}, {19, {34.859, 60.288}},
-      {20, {28.617, 59.274}}, {21, {11.903, 52.612}}, {22, {8, 8}}};
+  const std::vector<std::pair<size_t, Vec>> expected = {{12, {8, 8}},
+                                                        {13, {47.337, 12.441}},
+                                                        {14, {50, 15.422}},
+                                                        {15, {50, 24.031}},
+                                                        {16, {49.464, 25.742}},
+                                                        {17, {46.569, 48.717}},
+                                                        {18, {44.383, 54.790}},
+                                                        {19, {34.859, 60.288}},
+                                                        {20, {28.617, 59.274}},
+                                                        {21, {11.903, 52.612}},
+                                                        {22, {8, 8}}};
   ASSERT_EQ(run.pieces.size(), expected.size());
   for (size_t i = 0; i < expected.size(); ++i) {
     EXPECT_EQ(run.pieces[i].tag, expected[i].first) << i;

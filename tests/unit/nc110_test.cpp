@@ -98,8 +98,10 @@ TEST(Nc110Frontend, ThreeLetterCodesBecomeCodesWithOperandWords) {
   auto words = [&](size_t i) {
     std::string s;
     for (const ir::Word& w : r.block(i).words)
-      if (w.kind == ir::WordKind::Code) s += w.address + ":";
-      else s += (s.back() == ':' ? "" : " ") + slot_name(w.slot) + "=" + r.expr(w.value);
+      if (w.kind == ir::WordKind::Code)
+        s += w.address + ":";
+      else
+        s += (s.back() == ':' ? "" : " ") + slot_name(w.slot) + "=" + r.expr(w.value);
     return s;
   };
   EXPECT_EQ(words(0), "UOT:#1=1 X=-50 Y=E31");

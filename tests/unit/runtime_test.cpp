@@ -179,7 +179,8 @@ TEST(Runtime, EndOfProgramResetsAndReports) {
   EXPECT_EQ(r.block({"M02"}, {}), BlockResult::ProgramEnd);
   std::vector<EventKind> tail;
   for (size_t i = r.trace.events.size() - 4; i < r.trace.events.size(); ++i) tail.push_back(r.trace.events[i].kind);
-  EXPECT_EQ(tail, (std::vector<EventKind>{EventKind::SpindleStop, EventKind::Coolant, EventKind::Plane, EventKind::End}));
+  EXPECT_EQ(tail,
+            (std::vector<EventKind>{EventKind::SpindleStop, EventKind::Coolant, EventKind::Plane, EventKind::End}));
   EXPECT_EQ(r.trace.events[r.trace.events.size() - 2].n, 0);  // back to XY
 }
 

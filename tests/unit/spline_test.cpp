@@ -57,8 +57,8 @@ TEST(Spline, PassesThroughEveryPoint) {
 }
 
 TEST(Spline, FirstAndSecondDerivativesContinuousAtInteriorKnots) {
-  for (auto [start, end] : {std::pair{kNatural, kNatural}, std::pair{clamped(0, 1), kNatural},
-                            std::pair{clamped(-1, 1), clamped(1, 1)}}) {
+  for (auto [start, end] :
+       {std::pair{kNatural, kNatural}, std::pair{clamped(0, 1), kNatural}, std::pair{clamped(-1, 1), clamped(1, 1)}}) {
     auto spans = cubic_spline(kZigzag, start, end);
     ASSERT_EQ(spans.size(), kZigzag.size() - 1);
     for (size_t i = 0; i + 1 < spans.size(); ++i) {
@@ -148,8 +148,7 @@ TEST(Spline, HalfCircleThroughSevenPoints) {
 
   // The midpoints' distance from the circle (negative: inside), end spans first. The same
   // numbers come from an independent solve for the second derivatives at the knots.
-  const double expected_mid[6] = {-0.004440813, -0.000404783, -0.002556173,
-                                  -0.002556173, -0.000404783, -0.004440813};
+  const double expected_mid[6] = {-0.004440813, -0.000404783, -0.002556173, -0.002556173, -0.000404783, -0.004440813};
   double max_mid = 0, max_any = 0, total = 0;
   for (size_t i = 0; i < spans.size(); ++i) {
     const BezierSpan& b = spans[i];

@@ -17,14 +17,14 @@ namespace ncc::sim {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr double kAccel = 1000;  // mm/s², every axis
-constexpr double kJerk = 1e5;  // mm/s³, every axis
+constexpr double kAccel = 1000;      // mm/s², every axis
+constexpr double kJerk = 1e5;        // mm/s³, every axis
 constexpr double kDeviation = 0.01;  // mm
 
 MachineConfig test_machine() {
   MachineConfig m;
   for (AxisConfig& a : m.axes) {
-    a.rapid = 12000;  // 200 mm/s
+    a.rapid = 12000;    // 200 mm/s
     a.max_feed = 6000;  // 100 mm/s
     a.acceleration = kAccel;
     a.jerk = kJerk;

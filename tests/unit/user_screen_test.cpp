@@ -65,16 +65,21 @@ TEST(UserScreen, WhatIsRefused) {
   EXPECT_EQ(s.define(1, 21, 1, number(0), std::nullopt, {}), "row 21 is not on the screen: rows are 1 to 20");
   EXPECT_EQ(s.define(1, 1, 65, number(0), std::nullopt, {}), "column 65 is not one a field starts at: 1 to 64");
   EXPECT_EQ(s.define(0, 1, 1, number(0), std::nullopt, {}), "field 0 does not exist: fields are numbered from 1");
-  EXPECT_EQ(s.define(1, 1, 1, text("X"), Format::Integer, {}), "a text does not fit format 3 (IN): its format is 7 (CH)");
-  EXPECT_EQ(s.define(1, 1, 1, number(1), Format::Chars, {}), "a number does not fit format 7 (CH): give its own format, 1 to 6");
-  EXPECT_EQ(s.define(1, 1, 1, std::nullopt, std::nullopt, {}), "a field without an initial value needs a numeric format, 1 to 6");
-  EXPECT_EQ(s.define(1, 1, 64, text(std::string(20, 'X')), std::nullopt, {}), "the field ends at column 83, past the screen's 78");
+  EXPECT_EQ(s.define(1, 1, 1, text("X"), Format::Integer, {}),
+            "a text does not fit format 3 (IN): its format is 7 (CH)");
+  EXPECT_EQ(s.define(1, 1, 1, number(1), Format::Chars, {}),
+            "a number does not fit format 7 (CH): give its own format, 1 to 6");
+  EXPECT_EQ(s.define(1, 1, 1, std::nullopt, std::nullopt, {}),
+            "a field without an initial value needs a numeric format, 1 to 6");
+  EXPECT_EQ(s.define(1, 1, 64, text(std::string(20, 'X')), std::nullopt, {}),
+            "the field ends at column 83, past the screen's 78");
   s.switch_on();
   ASSERT_EQ(s.define(1, 1, 1, std::nullopt, Format::Byte, {}), "");
   EXPECT_EQ(s.show(2, false), "field 2 is not defined (DEF)");
   ASSERT_EQ(s.show(1, true), "");
   EXPECT_TRUE(s.attributes(1).inverse);
-  EXPECT_EQ(s.define(1, 2, 1, number(0), std::nullopt, {}), "field 1 is on the screen: switch it off (SCR,OFF) to define it again");
+  EXPECT_EQ(s.define(1, 2, 1, number(0), std::nullopt, {}),
+            "field 1 is on the screen: switch it off (SCR,OFF) to define it again");
   EXPECT_EQ(s.show_with(1, text("A")), "field 1 is of format 2 (BY): a number goes there, not a text");
   ASSERT_EQ(s.define(2, 2, 1, text("AB"), std::nullopt, {}), "");
   EXPECT_EQ(s.show_with(2, text("ABC")), "field 2 holds 2 characters, not 3");

@@ -32,15 +32,28 @@ TEST(Utf8, DecodesEachLengthToItsBounds) {
 
 TEST(Utf8, RefusesEveryInvalidClass) {
   const char* invalid[] = {
-      "\x80", "\xBF",                  // a continuation byte without its lead
-      "\xC0\x80", "\xC1\xBF",          // overlong two-byte forms (of U+0000, U+007F)
-      "\xE0\x80\x80", "\xE0\x9F\xBF",  // overlong three-byte forms (below U+0800)
-      "\xF0\x80\x80\x80", "\xF0\x8F\xBF\xBF",  // overlong four-byte forms (below U+10000)
-      "\xED\xA0\x80", "\xED\xBF\xBF",  // surrogates U+D800, U+DFFF
-      "\xF4\x90\x80\x80",              // U+110000: the byte sequence
-      "\xF5\x80\x80\x80", "\xF7\xBF\xBF\xBF", "\xF8\x88\x80\x80\x80", "\xFF", "\xFE",  // no such lead byte
-      "\xC3", "\xE2\x82", "\xF0\x9F\x98",  // cut off before the end
-      "\xC3\x41", "\xE2\x41\xAC", "\xF0\x9F\x41\x80",  // a byte that is no continuation
+      "\x80",
+      "\xBF",  // a continuation byte without its lead
+      "\xC0\x80",
+      "\xC1\xBF",  // overlong two-byte forms (of U+0000, U+007F)
+      "\xE0\x80\x80",
+      "\xE0\x9F\xBF",  // overlong three-byte forms (below U+0800)
+      "\xF0\x80\x80\x80",
+      "\xF0\x8F\xBF\xBF",  // overlong four-byte forms (below U+10000)
+      "\xED\xA0\x80",
+      "\xED\xBF\xBF",      // surrogates U+D800, U+DFFF
+      "\xF4\x90\x80\x80",  // U+110000: the byte sequence
+      "\xF5\x80\x80\x80",
+      "\xF7\xBF\xBF\xBF",
+      "\xF8\x88\x80\x80\x80",
+      "\xFF",
+      "\xFE",  // no such lead byte
+      "\xC3",
+      "\xE2\x82",
+      "\xF0\x9F\x98",  // cut off before the end
+      "\xC3\x41",
+      "\xE2\x41\xAC",
+      "\xF0\x9F\x41\x80",  // a byte that is no continuation
   };
   for (const char* bytes : invalid) {
     EXPECT_EQ(decode_utf8(bytes, 0).length, 0) << testing::PrintToString(std::string(bytes));
@@ -51,19 +64,25 @@ TEST(Utf8, RefusesEveryInvalidClass) {
 TEST(Utf8, FindsTheFirstBadByte) {
   EXPECT_EQ(find_invalid_utf8("G1 X10 (ДЕТАЛЬ) – M30"), std::string_view::npos);
   EXPECT_EQ(find_invalid_utf8(""), std::string_view::npos);
-  EXPECT_EQ(find_invalid_utf8("G1 X\xF4\x90\x80\x80" "0 Y0\nM30\n"), 4u);
+  EXPECT_EQ(find_invalid_utf8("G1 X\xF4\x90\x80\x80"
+                              "0 Y0\nM30\n"),
+            4u);
   EXPECT_EQ(find_invalid_utf8("(\xCF\xC5\xD0)"), 1u);  // CP1251 "ПЕР"
-  EXPECT_EQ(find_invalid_utf8("ДЕ\xD0"), 4u);  // cut off at the end of the text
+  EXPECT_EQ(find_invalid_utf8("ДЕ\xD0"), 4u);          // cut off at the end of the text
 }
 
 TEST(Utf8, EscapesBadBytesAndKeepsTheRest) {
-  EXPECT_EQ(escape_invalid_utf8("X\xF4\x90\x80\x80" "1 Д"), "X\\xF4\\x90\\x80\\x801 Д");
+  EXPECT_EQ(escape_invalid_utf8("X\xF4\x90\x80\x80"
+                                "1 Д"),
+            "X\\xF4\\x90\\x80\\x801 Д");
   EXPECT_EQ(escape_invalid_utf8("plain"), "plain");
 }
 
 TEST(Utf8, QuotedLineEscapesBadBytesWithTheCaretUnderThem) {
   SourceManager sources;
-  const uint32_t f = sources.add("p.nc", "(Д) X\xF4\x90\x80\x80" "0 Y0\n");
+  const uint32_t f = sources.add("p.nc",
+                                 "(Д) X\xF4\x90\x80\x80"
+                                 "0 Y0\n");
   Diagnostics diags;
   // The bad byte at byte column 7 prints as four columns after five.
   Diagnostic* d = diags.report(DiagId::SyntaxError, {f, 1, 7, 1, 8}, "byte 0xF4");

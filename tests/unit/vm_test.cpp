@@ -3,8 +3,8 @@
 // verified and run. What a program computes is observed through the motion it makes.
 #include <gtest/gtest.h>
 
-#include "collect_issues.h"
 #include "check/check.h"
+#include "collect_issues.h"
 #include "lower/lower.h"
 #include "runtime/machine.h"
 #include "vm/vm.h"
@@ -26,7 +26,13 @@ struct Builder {
     p.semantics.conventions.axes = "XYZ";
     p.units.push_back({});
     p.units.back().name = "%1";
-    VarSpace e{"E", 40, {{0, VarType::Byte}, {10, VarType::Integer}, {20, VarType::Long}, {25, VarType::Real}, {30, VarType::LongReal}}};
+    VarSpace e{"E",
+               40,
+               {{0, VarType::Byte},
+                {10, VarType::Integer},
+                {20, VarType::Long},
+                {25, VarType::Real},
+                {30, VarType::LongReal}}};
     p.spaces.push_back(e);
     VarSpace memory{"M", 16, {}};
     memory.memory = true;
@@ -191,9 +197,9 @@ TEST(Vm, DomainErrors) {
 TEST(Vm, TypedVariables) {
   Builder t;
   ir::Block& b = t.block();
-  t.assign(b, t.var(1), t.num(3.5));    // byte: rounded half away from zero to 4
+  t.assign(b, t.var(1), t.num(3.5));      // byte: rounded half away from zero to 4
   t.assign(b, t.var(26), t.num(1000.1));  // real (float)
-  t.assign(b, t.var(31), t.num(0.1));   // long real
+  t.assign(b, t.var(31), t.num(0.1));     // long real
   t.move_x(t.block(), t.var(1));
   t.move_x(t.block(), t.var(26));
   t.move_x(t.block(), t.var(31));
@@ -351,12 +357,12 @@ TEST(Vm, BlockSkipDropsSkippableBlocksAndOptionalWords) {
 TEST(Vm, MemoryFormatsAreLittleEndianAtIndexTimesSize) {
   Builder t;
   ir::Block& b = t.block();
-  t.assign(b, t.mem(MemFormat::Integer, 1), t.num(-2));       // bytes 2-3: FE FF
-  t.assign(b, t.mem(MemFormat::Bit, 33), t.num(1));           // byte 4, bit 1
-  t.assign(b, t.mem(MemFormat::Real, 2), t.num(0.5));         // bytes 8-11
-  t.move_x(t.block(), t.mem(MemFormat::Byte, 2));             // 0xFE
-  t.move_x(t.block(), t.mem(MemFormat::Byte, 4));             // 2
-  t.move_x(t.block(), t.mem(MemFormat::Long, 0));             // bytes 0-3: 0xFFFE0000
+  t.assign(b, t.mem(MemFormat::Integer, 1), t.num(-2));  // bytes 2-3: FE FF
+  t.assign(b, t.mem(MemFormat::Bit, 33), t.num(1));      // byte 4, bit 1
+  t.assign(b, t.mem(MemFormat::Real, 2), t.num(0.5));    // bytes 8-11
+  t.move_x(t.block(), t.mem(MemFormat::Byte, 2));        // 0xFE
+  t.move_x(t.block(), t.mem(MemFormat::Byte, 4));        // 2
+  t.move_x(t.block(), t.mem(MemFormat::Long, 0));        // bytes 0-3: 0xFFFE0000
   t.move_x(t.block(), t.mem(MemFormat::Real, 2));
   t.move_x(t.block(), t.mem(MemFormat::Bit, 33));
   auto r = t.run();
@@ -365,9 +371,10 @@ TEST(Vm, MemoryFormatsAreLittleEndianAtIndexTimesSize) {
 }
 
 TEST(Vm, MemoryStoresCheckTheFormatAndTheSize) {
-  for (auto [format, index, value, id] :
-       {std::tuple{MemFormat::Bit, 0.0, 2.0, DiagId::ValueOverflow}, {MemFormat::Byte, 0.0, 256.0, DiagId::ValueOverflow},
-        {MemFormat::LongReal, 2.0, 1.0, DiagId::MemoryRange}, {MemFormat::Integer, 8.0, 1.0, DiagId::MemoryRange}}) {
+  for (auto [format, index, value, id] : {std::tuple{MemFormat::Bit, 0.0, 2.0, DiagId::ValueOverflow},
+                                          {MemFormat::Byte, 0.0, 256.0, DiagId::ValueOverflow},
+                                          {MemFormat::LongReal, 2.0, 1.0, DiagId::MemoryRange},
+                                          {MemFormat::Integer, 8.0, 1.0, DiagId::MemoryRange}}) {
     Builder t;
     t.assign(t.block(), t.mem(format, index), t.num(value));
     auto r = t.run();
@@ -388,7 +395,9 @@ TEST(Vm, TextIsStoredComparedCopiedAndShown) {
   ir::Block& l1 = t.block();
   l1.label = "L1";
   ir::Stmt show(ir::StmtKind::Display, l1.range);
-  show.items = {{t.string("K="), VarType::LongReal}, {t.text(7, 3), VarType::LongReal}, {t.num(0.5), VarType::LongReal},
+  show.items = {{t.string("K="), VarType::LongReal},
+                {t.text(7, 3), VarType::LongReal},
+                {t.num(0.5), VarType::LongReal},
                 {t.num(3), VarType::Byte}};
   l1.stmts.push_back(show);
   t.move_x(t.block(), t.p.add({ir::ExprOp::TextEq, Builtin::Sin, 0, 0, t.text(0, 3), t.text(1, 3), {}}));
@@ -554,7 +563,8 @@ TEST(Vm, CheckStopsAValueOutsideItsRule) {
   EXPECT_EQ(r.xs, (std::vector<double>{4}));
   ASSERT_EQ(r.issues.size(), 1u);
   EXPECT_EQ(r.issues[0].id, DiagId::ParameterValue);
-  EXPECT_EQ(r.issues[0].message, "Q 2.5, given by a parameter, is outside the values the address takes: whole numbers from 1 to 9999");
+  EXPECT_EQ(r.issues[0].message,
+            "Q 2.5, given by a parameter, is outside the values the address takes: whole numbers from 1 to 9999");
 }
 
 TEST(Vm, ThousandthsRoundHalfAwayFromZero) {
@@ -584,16 +594,18 @@ TEST(Vm, VacantVariables) {
   vars.vacant = true;
   const uint16_t s = t.space(vars);
   auto var = [&](double i) { return t.var_in(s, i); };
-  auto zero_if_vacant = [&](ir::ExprId e) { return t.p.add({ir::ExprOp::ZeroIfVacant, Builtin::Sin, 0, 0, e, ir::kNoExpr, {}}); };
+  auto zero_if_vacant = [&](ir::ExprId e) {
+    return t.p.add({ir::ExprOp::ZeroIfVacant, Builtin::Sin, 0, 0, e, ir::kNoExpr, {}});
+  };
   t.move_x(t.block(), t.num(5));
-  t.move_x(t.block(), var(1));                                                     // left out: X stays 5
+  t.move_x(t.block(), var(1));                                                    // left out: X stays 5
   t.move_x(t.block(), t.bin(ir::ExprOp::Add, zero_if_vacant(var(1)), t.num(2)));  // 0 + 2
   ir::Block& b = t.block();
-  t.assign(b, var(2), var(1));                                                     // a copy stays vacant
-  t.move_x(t.block(), t.bin(ir::ExprOp::Eq, var(2), var(0)));                     // 1: both vacant
-  t.move_x(t.block(), t.bin(ir::ExprOp::Eq, var(2), t.num(0)));                   // 0: vacant is not 0
+  t.assign(b, var(2), var(1));                                   // a copy stays vacant
+  t.move_x(t.block(), t.bin(ir::ExprOp::Eq, var(2), var(0)));    // 1: both vacant
+  t.move_x(t.block(), t.bin(ir::ExprOp::Eq, var(2), t.num(0)));  // 0: vacant is not 0
   ir::Block& set0 = t.block();
-  t.assign(set0, var(0), t.num(1));                                                // #0 cannot be set
+  t.assign(set0, var(0), t.num(1));  // #0 cannot be set
   auto r = t.run();
   EXPECT_EQ(r.xs, (std::vector<double>{5, 2, 1, 0}));
   ASSERT_EQ(r.issues.size(), 1u);

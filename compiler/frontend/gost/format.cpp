@@ -81,8 +81,12 @@ std::optional<Format> parse_format(std::string_view text, std::vector<FormatProb
     if (end == std::string_view::npos) end = text.size();
     std::string_view item = text.substr(pos, end - pos);
     pos = end;
-    bool* flag = item == "%" ? &f.program_start : item == ":" ? &f.main_block : item == "/" ? &f.block_skip
-               : item == "DS" ? &f.decimal_sign : item == "." ? &f.tab : nullptr;
+    bool* flag = item == "%"    ? &f.program_start
+                 : item == ":"  ? &f.main_block
+                 : item == "/"  ? &f.block_skip
+                 : item == "DS" ? &f.decimal_sign
+                 : item == "."  ? &f.tab
+                                : nullptr;
     if (flag) {
       if (*flag) fail(item, "the item is given twice");
       *flag = true;
@@ -134,8 +138,7 @@ std::optional<Format> parse_format(std::string_view text, std::vector<FormatProb
             w.suppress = Suppress::Leading;
             w.int_digits = d(1);
             w.frac_digits = d(2);
-            if (d(2) == 0)
-              problems.push_back({false, std::string(item), fmt::format("{}", d(1))});
+            if (d(2) == 0) problems.push_back({false, std::string(item), fmt::format("{}", d(1))});
           } else if (d(2) == 0) {  // ab0: trailing zeros may be omitted
             w.suppress = Suppress::Trailing;
             w.int_digits = d(0);
@@ -176,9 +179,9 @@ std::optional<double> decode(char letter, const WordFormat& format, const Writte
   }
   if (n.has_sign && !format.is_signed) {
     diags.report(DiagId::SignNotAllowed, range, word,
-                 format.dimension ? fmt::format("format {} has no '+', so values are positive and unsigned",
-                                                format.text)
-                                  : std::string("it is a non-dimension word"));
+                 format.dimension
+                     ? fmt::format("format {} has no '+', so values are positive and unsigned", format.text)
+                     : std::string("it is a non-dimension word"));
     return std::nullopt;
   }
   const int a = format.int_digits;

@@ -17,10 +17,10 @@ namespace ncc::gost {
 enum class Suppress : uint8_t { None, Leading, Trailing };
 
 struct WordFormat {
-  std::string text;  // "X+053", for messages
+  std::string text;        // "X+053", for messages
   bool dimension = false;  // dimension/feed form: [+]ab or [+]abc
   bool is_signed = false;
-  int int_digits = 0;   // dimension: digits before the implied point; non-dimension: digit count
+  int int_digits = 0;  // dimension: digits before the implied point; non-dimension: digit count
   int frac_digits = 0;
   Suppress suppress = Suppress::None;
 };
@@ -59,14 +59,14 @@ struct WrittenNumber {
   bool negative = false;
   std::string before;  // digits before the decimal sign (or all digits)
   bool has_point = false;
-  std::string after;   // digits after the decimal sign
+  std::string after;  // digits after the decimal sign
 };
 
 enum class Mode : uint8_t { Strict, Default, Lenient, Pedantic };
 
 struct DecodeOptions {
-  bool decimal_sign = false;       // the format has DS
-  bool ds_implied = false;         // ds_integer_rule = implied
+  bool decimal_sign = false;  // the format has DS
+  bool ds_implied = false;    // ds_integer_rule = implied
   Mode mode = Mode::Default;
 };
 

@@ -65,8 +65,8 @@ class ErrorListener final : public antlr4::BaseErrorListener {
 // Reads one file. The ANTLR objects are made once and reset for every line.
 class Reader final : public ncc_gost::GostParserBaseVisitor {
  public:
-  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
-         Diagnostics& diags, const ReadOptions& options)
+  Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file, Diagnostics& diags,
+         const ReadOptions& options)
       : s_(settings), program_(program), source_(source), file_(file), diags_(diags), fast_path_(options.fast_path),
         sink_(options.sink) {
     lexer_.removeErrorListeners();
@@ -113,7 +113,7 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   Diagnostics& diags_;
   bool fast_path_;
   PlainBlock plain_;  // the fast path's words, kept from line to line
-  BlockSink* sink_;  // takes each finished block (the reader keeps nothing of them)
+  BlockSink* sink_;   // takes each finished block (the reader keeps nothing of them)
 
   antlr4::ANTLRInputStream input_;
   GostLexer lexer_{&input_};
@@ -131,8 +131,8 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   bool first_block_ = true;
   bool any_program_ = false;
   ir::Block block_;
-  bool seen_element_ = false;   // something other than a leading '/' was read
-  bool optional_rest_ = false;  // a '/' inside the block made the rest optional
+  bool seen_element_ = false;                 // something other than a leading '/' was read
+  bool optional_rest_ = false;                // a '/' inside the block made the rest optional
   size_t optional_comments_from_ = SIZE_MAX;  // comments from this index on are optional too
 };
 
@@ -214,7 +214,8 @@ void Reader::start_program(std::string_view line, uint32_t line_no, uint32_t col
   bool first_program = !any_program_;
   any_program_ = true;
   if (line.empty()) return;  // a format without '%': the program starts at its first block
-  if (!block_fits(line.size(), {file_, line_no, col + 1, line_no, col + 1 + static_cast<uint32_t>(line.size())}, diags_))
+  if (!block_fits(line.size(), {file_, line_no, col + 1, line_no, col + 1 + static_cast<uint32_t>(line.size())},
+                  diags_))
     return;
   parse(line, line_no, col);
   GostParser::ProgramStartContext* ctx = parser_.programStart();
@@ -409,8 +410,10 @@ WrittenNumber Reader::written_number(GostParser::SignContext* sign, GostParser::
     if (!terminal) continue;
     antlr4::Token* t = terminal->getSymbol();
     tokens.push_back(t);
-    if (t->getType() == GostLexer::POINT) n.has_point = true;
-    else (n.has_point ? n.after : n.before) += t->getText();
+    if (t->getType() == GostLexer::POINT)
+      n.has_point = true;
+    else
+      (n.has_point ? n.after : n.before) += t->getText();
   }
   // Ignored characters between the digits are dropped (Table 2 note 2) but worth
   // a warning: `X10 30` is read as X1030.
@@ -541,8 +544,10 @@ bool Reader::scan_plain(std::string_view t) {
     const std::string text(t.substr(p.from + 1, p.to - p.from - 1));
     const WrittenNumber number{p.sign != 0, p.sign == '-', std::string(p.before), p.point, std::string(p.after)};
     seen_element_ = true;
-    if (p.letter == 'N') block_number(false, number, r, text);
-    else address_word(p.letter, number, r, text);
+    if (p.letter == 'N')
+      block_number(false, number, r, text);
+    else
+      address_word(p.letter, number, r, text);
   }
   return true;
 }

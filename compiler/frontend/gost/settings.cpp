@@ -10,8 +10,8 @@ namespace {
 
 // Reads `key` as one of `choices`; reports anything else.
 template <typename E>
-bool choose(const stdlib::Profile& p, const std::string& key, std::initializer_list<std::pair<std::string_view, E>> choices,
-            E& out, Diagnostics& diags) {
+bool choose(const stdlib::Profile& p, const std::string& key,
+            std::initializer_list<std::pair<std::string_view, E>> choices, E& out, Diagnostics& diags) {
   auto v = p.string(key, diags);
   if (!v) return true;
   std::string names;
@@ -89,13 +89,15 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   bool implied = false;
   ok &= choose(p, "gost.ds_integer_rule", {{"standard", false}, {"implied", true}}, implied, diags);
   s.decode.ds_implied = implied;
-  ok &= choose(p, "gost.mode",
-               {{"strict", Mode::Strict}, {"default", Mode::Default}, {"lenient", Mode::Lenient},
-                {"pedantic", Mode::Pedantic}},
-               s.decode.mode, diags);
+  ok &= choose(
+      p, "gost.mode",
+      {{"strict", Mode::Strict}, {"default", Mode::Default}, {"lenient", Mode::Lenient}, {"pedantic", Mode::Pedantic}},
+      s.decode.mode, diags);
   if (auto v = p.string("machine.control_type", diags)) {
-    if (s.tables.power_on.count(*v)) s.control_type = *v;
-    else ok &= (p.report_value(diags, "machine.control_type", "must be positioning, contouring or lathe"), false);
+    if (s.tables.power_on.count(*v))
+      s.control_type = *v;
+    else
+      ok &= (p.report_value(diags, "machine.control_type", "must be positioning, contouring or lathe"), false);
   }
 
   Conventions& c = s.conventions;
@@ -116,8 +118,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   if (auto v = p.boolean("gost.arc_single_quadrant", diags)) c.arc_single_quadrant = *v;
   if (auto v = p.boolean("gost.m06_stops_spindle", diags)) c.m06_stops_spindle = *v;
   if (auto v = p.number("gost.arc_tolerance", diags)) {
-    if (*v >= 0) c.arc_tolerance = *v;
-    else ok &= (p.report_value(diags, "gost.arc_tolerance", "must not be negative"), false);
+    if (*v >= 0)
+      c.arc_tolerance = *v;
+    else
+      ok &= (p.report_value(diags, "gost.arc_tolerance", "must not be negative"), false);
   }
   if (auto v = p.string("gost.tool_offset_axes", diags)) {
     for (char axis : *v)
@@ -151,8 +155,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
 
   // Table 4 note 2: G04 alone in its block, or a member of group a.
   std::string g04 = "block_only";
-  ok &= choose(p, "gost.g04_mode", {{"block_only", std::string("block_only")}, {"group_a", std::string("group_a")},
-                                    {"own_group", std::string("own_group")}},
+  ok &= choose(p, "gost.g04_mode",
+               {{"block_only", std::string("block_only")},
+                {"group_a", std::string("group_a")},
+                {"own_group", std::string("own_group")}},
                g04, diags);
   if (g04 == "group_a") set_code(s.tables, 4, "a", Scope::Modal, {{Fn::MotionDwell}}, "");
   if (g04 == "own_group") set_code(s.tables, 4, "g04", Scope::Block, {{Fn::Dwell}}, "");

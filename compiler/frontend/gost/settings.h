@@ -16,7 +16,7 @@ struct Settings {
   Format format;
   DecodeOptions decode;
   std::string control_type = "contouring";
-  int tool_digits = 0;    // tool_word_split: T = tool digits + offset digits
+  int tool_digits = 0;  // tool_word_split: T = tool digits + offset digits
   int offset_digits = 0;
   Conventions conventions;
   stdlib::DialectTables tables;

@@ -23,8 +23,13 @@ class IsoFrontend final : public DialectFrontend<Settings> {
   ir::Program read(SourceManager& sources, uint32_t file, Diagnostics& diags, const ReadOptions& options) override {
     ir::Program program = start_program("iso", file);
     // #0..#999 (decision 3): #1-#33 local to each macro call, all vacant at the start.
-    VarSpace vars{"#", 1000, {{0, VarType::LongReal}, {34, VarType::Unavailable}, {100, VarType::LongReal},
-                              {200, VarType::Unavailable}, {500, VarType::LongReal}}};
+    VarSpace vars{"#",
+                  1000,
+                  {{0, VarType::LongReal},
+                   {34, VarType::Unavailable},
+                   {100, VarType::LongReal},
+                   {200, VarType::Unavailable},
+                   {500, VarType::LongReal}}};
     vars.locals = 34;
     vars.vacant = true;
     const auto space = static_cast<uint16_t>(program.spaces.size());
@@ -42,7 +47,8 @@ class IsoFrontend final : public DialectFrontend<Settings> {
       pending.pop_front();
       if (missing.count(call.name)) program.units[call.unit].blocks[call.block].has_errors = true;
       if (!known.insert(call.name).second) continue;
-      auto f = load_called_file(sources, root, call.name, {"", ".nc", ".ngc", ".tap", ".txt"}, call.name, call.range, diags);
+      auto f =
+          load_called_file(sources, root, call.name, {"", ".nc", ".ngc", ".tap", ".txt"}, call.name, call.range, diags);
       if (!f) {
         program.units[call.unit].blocks[call.block].has_errors = true;
         missing.insert(call.name);

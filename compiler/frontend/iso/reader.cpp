@@ -14,8 +14,8 @@ namespace ncc::iso {
 
 namespace {
 
-constexpr uint32_t kMaxCount = 999;     // L of M97, M98, G65 (§8.16, §8.33)
-constexpr int kMaxLoopDepth = 3;        // DO1..DO3 (§8.34.3)
+constexpr uint32_t kMaxCount = 999;  // L of M97, M98, G65 (§8.16, §8.33)
+constexpr int kMaxLoopDepth = 3;     // DO1..DO3 (§8.34.3)
 
 // #0..#33 are local to a macro call (§8.16), #100..#199 and #500..#999 common
 // (decision 3); #0 is always vacant.
@@ -24,10 +24,26 @@ bool variable_exists(uint32_t n) { return n <= 33 || (n >= 100 && n <= 199) || (
 // G65 argument specification I (§8.16): the letter's local variable; 0 = not an argument.
 uint32_t argument_of(char letter) {
   switch (letter) {
-    case 'A': return 1;  case 'B': return 2;  case 'C': return 3;  case 'I': return 4;  case 'J': return 5;
-    case 'K': return 6;  case 'D': return 7;  case 'E': return 8;  case 'F': return 9;  case 'H': return 11;
-    case 'M': return 13; case 'Q': return 17; case 'R': return 18; case 'S': return 19; case 'T': return 20;
-    case 'U': return 21; case 'V': return 22; case 'W': return 23; case 'X': return 24; case 'Y': return 25;
+    case 'A': return 1;
+    case 'B': return 2;
+    case 'C': return 3;
+    case 'I': return 4;
+    case 'J': return 5;
+    case 'K': return 6;
+    case 'D': return 7;
+    case 'E': return 8;
+    case 'F': return 9;
+    case 'H': return 11;
+    case 'M': return 13;
+    case 'Q': return 17;
+    case 'R': return 18;
+    case 'S': return 19;
+    case 'T': return 20;
+    case 'U': return 21;
+    case 'V': return 22;
+    case 'W': return 23;
+    case 'X': return 24;
+    case 'Y': return 25;
     case 'Z': return 26;
     default: return 0;
   }
@@ -38,10 +54,10 @@ uint32_t argument_of(char letter) {
 // A stretch of text between block ends: a block, or a brace of a multi-line IF.
 struct Reader::Piece {
   enum Kind { Text, Open, Close } kind = Text;
-  uint32_t line = 0, col = 0;  // 1-based, of its first character
-  size_t begin = 0, end = 0;   // byte offsets in the file
+  uint32_t line = 0, col = 0;                       // 1-based, of its first character
+  size_t begin = 0, end = 0;                        // byte offsets in the file
   std::vector<std::pair<size_t, size_t>> comments;  // byte ranges of '(' ... ')'
-  bool semicolon = false;      // ends at ';' (an empty one is an empty block)
+  bool semicolon = false;                           // ends at ';' (an empty one is an empty block)
 };
 
 // An open WHILE/DO loop (§8.34.3).
@@ -57,11 +73,11 @@ struct Reader::Loop {
 // An open multi-line IF (§8.34.2): the jump to the next branch, the jumps to its end.
 struct Reader::Branch {
   SourceRange range;
-  std::optional<std::pair<size_t, size_t>> next;   // (block, stmt) of the condition's false jump
-  std::vector<std::pair<size_t, size_t>> exits;     // the jumps of the bodies to the end
+  std::optional<std::pair<size_t, size_t>> next;  // (block, stmt) of the condition's false jump
+  std::vector<std::pair<size_t, size_t>> exits;   // the jumps of the bodies to the end
   bool in_body = false, closed = false, has_else = false;
-  std::optional<size_t> close_block;                // the '}' block of the last body
-  SourceRange head;                                 // of its last IF, ELIF or ELSE
+  std::optional<size_t> close_block;  // the '}' block of the last body
+  SourceRange head;                   // of its last IF, ELIF or ELSE
 };
 
 // Maps ANTLR syntax errors to diagnostics at the right column.
@@ -81,7 +97,8 @@ class Reader::Errors final : public antlr4::BaseErrorListener {
       size_t length = 1;
       std::string_view original = r_.source_.text().substr(r_.source_.line_offset(r_.line_) + r_.base_);
       std::string what = describe_char(original, at, length);
-      r_.diags_.report(DiagId::CharInvalid, {r_.file_, r_.line_, col, r_.line_, col + static_cast<uint32_t>(length)}, what);
+      r_.diags_.report(DiagId::CharInvalid, {r_.file_, r_.line_, col, r_.line_, col + static_cast<uint32_t>(length)},
+                       what);
       return;
     }
     std::string what = eof ? std::string("end of text") : fmt::format("'{}'", token->getText());
@@ -171,8 +188,8 @@ void Reader::cut() {
         // A comment runs to its ')' on the same line (comments do not nest).
         size_t end = line.find(')', i + 1);
         if (end == std::string_view::npos) {
-          diags_.report(DiagId::CommentUnterminated,
-                        {file_, line_no, static_cast<uint32_t>(i + 1), line_no, static_cast<uint32_t>(line.size() + 1)});
+          diags_.report(DiagId::CommentUnterminated, {file_, line_no, static_cast<uint32_t>(i + 1), line_no,
+                                                      static_cast<uint32_t>(line.size() + 1)});
           end = line.size() - 1;
         }
         piece.comments.push_back({base + i, base + end + 1});
@@ -181,7 +198,8 @@ void Reader::cut() {
         close(base + i);
       } else if (c == '{' || c == '}') {
         close(base + i);
-        take({c == '{' ? Piece::Open : Piece::Close, line_no, static_cast<uint32_t>(i + 1), base + i, base + i + 1, {}});
+        take(
+            {c == '{' ? Piece::Open : Piece::Close, line_no, static_cast<uint32_t>(i + 1), base + i, base + i + 1, {}});
       }
     }
     close(base + line.size());
@@ -226,7 +244,8 @@ IsoParser::BlockContext* Reader::parse() {
   lexer_.setInputStream(&input_);
   tokens_.setTokenSource(&lexer_);
   tokens_.fill();
-  if (!expression_fits(tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_))
+  if (!expression_fits(
+          tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_))
     return nullptr;
   parser_.setTokenStream(&tokens_);
   return parser_.block();
@@ -285,7 +304,9 @@ void Reader::end_unit() {
       unit_.blocks[call.block].has_errors = true;
     } else if (was_streamed || (unit_.kind == ir::UnitKind::Program && (!end_block_ || i <= *end_block_))) {
       diags_.report(DiagId::ProgramStructure, call.range,
-                    fmt::format("M97 calls {}, which stands before M02/M30: an internal subprogram is written after the end of the main program", call.label));
+                    fmt::format("M97 calls {}, which stands before M02/M30: an internal subprogram is written after "
+                                "the end of the main program",
+                                call.label));
       unit_.blocks[call.block].has_errors = true;
     }
   }
@@ -297,9 +318,11 @@ void Reader::end_unit() {
     for (const ir::Block& b : unit_.blocks)
       if (!b.stmts.empty()) last = &b;
     const bool returns = last && std::any_of(last->stmts.begin(), last->stmts.end(), [](const ir::Stmt& s) {
-      return s.kind == ir::StmtKind::Return && s.cond == ir::kNoExpr;
-    });
-    if (!returns) diags_.report(DiagId::ProgramStructure, last ? last->range : unit_.range, fmt::format("{} does not end with M99", unit_.name));
+                           return s.kind == ir::StmtKind::Return && s.cond == ir::kNoExpr;
+                         });
+    if (!returns)
+      diags_.report(DiagId::ProgramStructure, last ? last->range : unit_.range,
+                    fmt::format("{} does not end with M99", unit_.name));
   }
   // §8.34.2: a block number used twice that a GOTO or M97 names: it goes to the
   // first. (CAM output numbers its blocks round and round: only a target matters.)
@@ -395,7 +418,8 @@ void Reader::close_brace(const Piece& at) {
 // ---- Blocks -----------------------------------------------------------------------------
 
 void Reader::read(const Piece& piece) {
-  SourceRange whole{file_, piece.line, piece.col, piece.line, piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
+  SourceRange whole{file_, piece.line, piece.col, piece.line,
+                    piece.col + static_cast<uint32_t>(piece.end - piece.begin)};
   if (!block_fits(piece.end - piece.begin, whole, diags_)) {
     corner_.reset();
     ir::Block& refused = new_block(whole);
@@ -418,7 +442,8 @@ void Reader::read(const Piece& piece) {
   // §8.3 (E-05): what follows a chamfer or fillet is a move, not an empty or comment block.
   const bool after_corner = corner_.has_value();
   if (after_corner && trim(sanitized_).empty()) {
-    diags_.report(DiagId::ProgramStructure, whole, "a comment block cannot follow a block with a chamfer or fillet (E-05)");
+    diags_.report(DiagId::ProgramStructure, whole,
+                  "a comment block cannot follow a block with a chamfer or fillet (E-05)");
     new_block(whole).has_errors = true;
     corner_.reset();
   }
@@ -469,7 +494,8 @@ void Reader::read(const Piece& piece) {
   }
   if (head && !head->IF() && !continues) {
     diags_.report(DiagId::ProgramStructure, range(head),
-                  fmt::format("{} has no IF before it: it continues a multi-line IF right after its '}}'", head->ELSE() ? "ELSE" : "ELIF"));
+                  fmt::format("{} has no IF before it: it continues a multi-line IF right after its '}}'",
+                              head->ELSE() ? "ELSE" : "ELIF"));
     orphan_head(whole);
     return;
   }
@@ -514,15 +540,15 @@ void Reader::read(const Piece& piece) {
     }
     const std::string name = program_name(n);
     if (called_) {
-      const bool blocks_before = std::any_of(unit_.blocks.begin(), unit_.blocks.end(), [](const ir::Block& b) {
-        return !b.words.empty() || !b.stmts.empty();
-      });
+      const bool blocks_before = std::any_of(unit_.blocks.begin(), unit_.blocks.end(),
+                                             [](const ir::Block& b) { return !b.words.empty() || !b.stmts.empty(); });
       if (name != *called_ || blocks_before)
         diags_.report(DiagId::ProgramStructure, r,
                       fmt::format("{} stands in the file of {}: a program file holds its own program", name, *called_));
       return;
     }
-    if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && !unit_.streamed && in_unit_ && unit_.name == "%") {
+    if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && !unit_.streamed && in_unit_ &&
+        unit_.name == "%") {
       unit_.name = name;  // the main program's own number
       unit_.range = r;
       unit_.title = std::move(title);
@@ -564,7 +590,8 @@ void Reader::read(const Piece& piece) {
         words(i->words(), cond);
       }
     } else if (head) {
-      if (head->IF()) branches_.push_back({range(head), std::nullopt, {}, false, false, false, std::nullopt, range(head)});
+      if (head->IF())
+        branches_.push_back({range(head), std::nullopt, {}, false, false, false, std::nullopt, range(head)});
       Branch& b = branches_.back();
       b.head = range(head);
       if (b.next) unit_.blocks[b.next->first].stmts[b.next->second].label = label_of(index);
@@ -583,10 +610,13 @@ void Reader::read(const Piece& piece) {
       const int n = parse_number<int>(w->NUMBER()->getText()).value_or(0);
       SourceRange r = range(w);
       if (w->NUMBER()->getText().find('.') != std::string::npos || n < 1 || n > kMaxLoopDepth)
-        diags_.report(DiagId::RepeatUnbalanced, r, fmt::format("the loop index is 1, 2 or 3, not {}", w->NUMBER()->getText()));
+        diags_.report(DiagId::RepeatUnbalanced, r,
+                      fmt::format("the loop index is 1, 2 or 3, not {}", w->NUMBER()->getText()));
       Loop loop{n, r, index, std::nullopt, ir::kNoExpr, std::nullopt};
       for (const Loop& l : loops_)
-        if (l.index == n) diags_.report(DiagId::RepeatUnbalanced, r, fmt::format("DO{} stands inside the loop DO{} of the same index", n, n));
+        if (l.index == n)
+          diags_.report(DiagId::RepeatUnbalanced, r,
+                        fmt::format("DO{} stands inside the loop DO{} of the same index", n, n));
       if (loops_.size() == kMaxLoopDepth) diags_.report(DiagId::RepeatDepth, r, loops_.size() + 1, kMaxLoopDepth);
       if (w->WHILE()) {
         loop.cond = condition(w->expr(), "WHILE");
@@ -601,8 +631,9 @@ void Reader::read(const Piece& piece) {
       SourceRange r = range(e);
       if (loops_.empty() || loops_.back().index != n) {
         diags_.report(DiagId::RepeatUnbalanced, r,
-                      loops_.empty() ? fmt::format("END{} has no DO{} before it", n, n)
-                                     : fmt::format("END{} stands where END{} closes the innermost loop", n, loops_.back().index));
+                      loops_.empty()
+                          ? fmt::format("END{} has no DO{} before it", n, n)
+                          : fmt::format("END{} stands where END{} closes the innermost loop", n, loops_.back().index));
         block_.has_errors = true;
       } else {
         Loop loop = loops_.back();
@@ -665,7 +696,8 @@ bool Reader::scan_plain(FastBlock& out) {
   out.has_errors = false;
   if (!scan_plain_words(sanitized_, kRules, block)) return false;
   auto at = [&](size_t from, size_t to) {
-    return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_, base_ + static_cast<uint32_t>(to) + 1};
+    return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_,
+                       base_ + static_cast<uint32_t>(to) + 1};
   };
   out.skip = block.skip;
   for (const PlainWord& p : block.words) {
@@ -761,13 +793,15 @@ ir::ExprId Reader::condition(IsoParser::ExprContext* ctx, const char* what) {
 
 std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what) {
   if (!program_.is_constant(w.value)) {
-    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{} written as a number", what), w.address + w.text);
+    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{} written as a number", what),
+                  w.address + w.text);
     block_.has_errors = true;
     return std::nullopt;
   }
   const std::optional<uint32_t> v = whole_in(program_.exprs[w.value].number, min, max);
   if (!v) {
-    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{}, a whole number {} to {}", what, min, max), w.address + w.text);
+    diags_.report(DiagId::ValueForm, w.range, w.address, fmt::format("{}, a whole number {} to {}", what, min, max),
+                  w.address + w.text);
     block_.has_errors = true;
   }
   return v;
@@ -776,7 +810,7 @@ std::optional<uint32_t> Reader::whole(const ir::Word& w, uint32_t min, uint32_t 
 void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond) {
   // The codes written as numbers: only those below 1000 are asked about.
   std::bitset<1000> g, m;
-  const size_t first = block_.words.size();  // after the block number
+  const size_t first = block_.words.size();                      // after the block number
   block_.words.reserve(first + list.size() + (corner ? 1 : 0));  // the block keeps them: no spare room
   // §8.16: in a G65 block M is argument #13, not an M code.
   bool macro_call = false;
@@ -809,9 +843,12 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
         (letter == 'G' ? g : m).set(static_cast<size_t>(*n));
         const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
         auto it = table.find(*n);
-        if (it == table.end()) w.code = -1;  // the checks report it
-        else if (it->second.desc.calls.empty()) w.kind = ir::WordKind::Control;  // G65 M97 M98 M99
-        else w.code = program_code(program_, it->second.desc);
+        if (it == table.end())
+          w.code = -1;  // the checks report it
+        else if (it->second.desc.calls.empty())
+          w.kind = ir::WordKind::Control;  // G65 M97 M98 M99
+        else
+          w.code = program_code(program_, it->second.desc);
       }
     } else {
       w.kind = ir::WordKind::Parameter;
@@ -833,7 +870,8 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       w.slot = static_cast<uint8_t>(second_slot(letter));
       corner_ = w.range;
     } else {
-      diags_.report(DiagId::ValueForm, w.range, "','", "C (a chamfer) or R (a fillet) after it", fmt::format(",{}{}", w.address[0], w.text));
+      diags_.report(DiagId::ValueForm, w.range, "','", "C (a chamfer) or R (a fillet) after it",
+                    fmt::format(",{}{}", w.address[0], w.text));
       w.kind = ir::WordKind::Ignored;
       block_.has_errors = true;
     }
@@ -846,9 +884,11 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     if (!g.test(own)) continue;
     for (const ir::Word& w : block_.words) {
       const bool code = w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Control;
-      const int n = code && program_.is_constant(w.value) ? whole_in(program_.exprs[w.value].number, 0, 999).value_or(-1) : -1;
-      const bool allowed = w.kind == ir::WordKind::BlockNumber || (w.kind == ir::WordKind::Parameter && w.address != "F" &&
-                           w.address != "S" && w.address != "T" && w.address != "D" && w.address != "H") ||
+      const int n =
+          code && program_.is_constant(w.value) ? whole_in(program_.exprs[w.value].number, 0, 999).value_or(-1) : -1;
+      const bool allowed = w.kind == ir::WordKind::BlockNumber ||
+                           (w.kind == ir::WordKind::Parameter && w.address != "F" && w.address != "S" &&
+                            w.address != "T" && w.address != "D" && w.address != "H") ||
                            (code && w.address == "G" && (n == own || n == 90 || n == 91 || (n >= 17 && n <= 19)));
       if (!allowed) {
         diags_.report(DiagId::ProgramStructure, w.range,
@@ -889,15 +929,15 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
         break;
       }
   bool action = false;
-  for (const ir::Word& w : block_.words) action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
+  for (const ir::Word& w : block_.words)
+    action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
   if (action) {
     ir::Stmt s{ir::StmtKind::Machine, block_.range};
     s.cond = cond;
     block_.stmts.push_back(std::move(s));
   }
   if (m.test(99)) {
-    if (unit_.kind == ir::UnitKind::Program && !main_done_)
-      diags_.report(DiagId::ReturnInMain, block_.range);
+    if (unit_.kind == ir::UnitKind::Program && !main_done_) diags_.report(DiagId::ReturnInMain, block_.range);
     ir::Stmt s{ir::StmtKind::Return, block_.range};
     s.cond = cond;
     block_.stmts.push_back(std::move(s));
@@ -913,18 +953,23 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
 // axis words after it are its values (the axes' second words, read after the move).
 void Reader::g92_words(size_t first) {
   size_t at = first;
-  while (at < block_.words.size() && !(block_.words[at].kind == ir::WordKind::Code && block_.words[at].address == "G" &&
-                                       program_.is_constant(block_.words[at].value) && program_.exprs[block_.words[at].value].number == 92))
+  while (at < block_.words.size() &&
+         !(block_.words[at].kind == ir::WordKind::Code && block_.words[at].address == "G" &&
+           program_.is_constant(block_.words[at].value) && program_.exprs[block_.words[at].value].number == 92))
     ++at;
-  auto axis = [](const ir::Word& w) { return w.kind == ir::WordKind::Parameter && std::string_view("XYZ").find(w.address[0]) != std::string_view::npos; };
+  auto axis = [](const ir::Word& w) {
+    return w.kind == ir::WordKind::Parameter && std::string_view("XYZ").find(w.address[0]) != std::string_view::npos;
+  };
   bool motion_before = false;
   for (size_t i = first; i < at; ++i) motion_before = motion_before || axis(block_.words[i]);
   for (size_t i = at + 1; i < block_.words.size(); ++i) {
     const ir::Word& w = block_.words[i];
     if (w.kind == ir::WordKind::Code && w.address == "G" && program_.is_constant(w.value) &&
         program_.exprs[w.value].number <= 3) {
-      diags_.report(DiagId::ProgramStructure, w.range,
-                    fmt::format("G{} follows G92: in a block with a motion, G92 and its values stand after the motion's words", w.text));
+      diags_.report(
+          DiagId::ProgramStructure, w.range,
+          fmt::format("G{} follows G92: in a block with a motion, G92 and its values stand after the motion's words",
+                      w.text));
       block_.has_errors = true;
       return;
     }
@@ -952,7 +997,7 @@ bool Reader::call_words(ir::ExprId cond) {
   }
   ir::Stmt call{ir::StmtKind::Call, block_.range};
   call.cond = cond;
-  call.shares_locals = !macro;  // §8.16: only a macro call opens new locals
+  call.shares_locals = !macro;            // §8.16: only a macro call opens new locals
   std::map<uint32_t, std::string> given;  // G65: argument variable -> the word that gives it
   int set = -1;
   char last = 'K';
@@ -978,12 +1023,14 @@ bool Reader::call_words(ir::ExprId cond) {
       if (var == 0 || var > 33) {
         diags_.report(DiagId::MacroArgument, w.range,
                       var ? fmt::format("{}{} would be argument #{}: at most 10 sets of I J K", a, w.text, var)
-                          : fmt::format("{}{} is not a G65 argument: the arguments are the letters A-Z but G L N O P", a, w.text));
+                          : fmt::format("{}{} is not a G65 argument: the arguments are the letters A-Z but G L N O P",
+                                        a, w.text));
         block_.has_errors = true;
         continue;
       }
       if (auto [it, fresh] = given.emplace(var, w.address + w.text); !fresh) {
-        diags_.report(DiagId::MacroArgument, w.range, fmt::format("#{} is given twice, by {} and by {}", var, it->second, w.address + w.text));
+        diags_.report(DiagId::MacroArgument, w.range,
+                      fmt::format("#{} is given twice, by {} and by {}", var, it->second, w.address + w.text));
         block_.has_errors = true;
         continue;
       }
@@ -992,7 +1039,8 @@ bool Reader::call_words(ir::ExprId cond) {
     } else if (w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter) {
       machine_words = true;
     } else if (w.kind == ir::WordKind::Control) {
-      diags_.report(DiagId::MacroArgument, w.range, fmt::format("{} and {} cannot share a block", code->address + code->text, w.address + w.text));
+      diags_.report(DiagId::MacroArgument, w.range,
+                    fmt::format("{} and {} cannot share a block", code->address + code->text, w.address + w.text));
       block_.has_errors = true;
     }
   }
@@ -1002,7 +1050,10 @@ bool Reader::call_words(ir::ExprId cond) {
     block_.has_errors = true;
     return false;
   }
-  std::optional<uint32_t> number = whole(*p, 0, what == "M97" ? kMaxBlockNumber : what == "M98" ? 9999999 : 9999,
+  std::optional<uint32_t> number = whole(*p, 0,
+                                         what == "M97"   ? kMaxBlockNumber
+                                         : what == "M98" ? 9999999
+                                                         : 9999,
                                          what == "M97" ? "a block number" : "a program number");
   uint32_t count = 0;
   if (number && what == "M98" && *number > 9999) {
@@ -1011,7 +1062,8 @@ bool Reader::call_words(ir::ExprId cond) {
   }
   if (l) {
     if (count) {
-      diags_.report(DiagId::MacroArgument, l->range, fmt::format("{}{} already holds the count {}", p->address, p->text, count));
+      diags_.report(DiagId::MacroArgument, l->range,
+                    fmt::format("{}{} already holds the count {}", p->address, p->text, count));
       block_.has_errors = true;
     } else if (program_.is_constant(l->value)) {
       whole(*l, 1, kMaxCount, "the number of calls");
@@ -1095,8 +1147,12 @@ ir::ExprId Reader::compare(IsoParser::CompareContext* ctx) {
   ir::ExprId a = sum(parts[0]);
   if (parts.size() == 1) return a;
   ir::ExprId b = sum(parts[1]);
-  ir::ExprOp op = ctx->EQ() ? ir::ExprOp::Eq : ctx->NE() ? ir::ExprOp::Ne : ctx->GT() ? ir::ExprOp::Gt
-                : ctx->GE() ? ir::ExprOp::Ge : ctx->LT() ? ir::ExprOp::Lt : ir::ExprOp::Le;
+  ir::ExprOp op = ctx->EQ()   ? ir::ExprOp::Eq
+                  : ctx->NE() ? ir::ExprOp::Ne
+                  : ctx->GT() ? ir::ExprOp::Gt
+                  : ctx->GE() ? ir::ExprOp::Ge
+                  : ctx->LT() ? ir::ExprOp::Lt
+                              : ir::ExprOp::Le;
   // EQ and NE tell vacant from 0 (`#1 EQ #0`); the order comparisons read it as 0.
   if (op != ir::ExprOp::Eq && op != ir::ExprOp::Ne) {
     a = operand(a);
@@ -1135,9 +1191,9 @@ ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
   auto args = c->expr();
   ir::ExprId a = operand(expr(args[0]));
   static const std::map<std::string, Builtin> kFunctions = {
-      {"SIN", Builtin::Sin},   {"COS", Builtin::Cos},   {"TAN", Builtin::Tan},     {"ASIN", Builtin::Asin},
-      {"ACOS", Builtin::Acos}, {"ATAN", Builtin::Atan}, {"SQRT", Builtin::Sqrt},   {"ABS", Builtin::Abs},
-      {"ROUND", Builtin::Round}, {"EXP", Builtin::Exp}, {"LN", Builtin::Ln},       {"FIX", Builtin::Trunc},
+      {"SIN", Builtin::Sin},     {"COS", Builtin::Cos},   {"TAN", Builtin::Tan},   {"ASIN", Builtin::Asin},
+      {"ACOS", Builtin::Acos},   {"ATAN", Builtin::Atan}, {"SQRT", Builtin::Sqrt}, {"ABS", Builtin::Abs},
+      {"ROUND", Builtin::Round}, {"EXP", Builtin::Exp},   {"LN", Builtin::Ln},     {"FIX", Builtin::Trunc},
       {"FUP", Builtin::Away}};
   Builtin b = kFunctions.at(name);
   ir::ExprId second = ir::kNoExpr;
@@ -1154,7 +1210,8 @@ ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
     // §8.34.1: after an address ROUND keeps 3 decimals (mm) or 4 (inch).
     ir::ExprId inch = program_.add({ir::ExprOp::Sys, Builtin::Sin, 0, 0, ir::kNoExpr, ir::kNoExpr, range(ctx)});
     program_.exprs[inch].sys = SysRef{SysVar::InchMode, 0}.packed();
-    ir::ExprId places = program_.add({ir::ExprOp::Add, Builtin::Sin, 0, 0, program_.number(3, range(ctx)), inch, range(ctx)});
+    ir::ExprId places =
+        program_.add({ir::ExprOp::Add, Builtin::Sin, 0, 0, program_.number(3, range(ctx)), inch, range(ctx)});
     return program_.add({ir::ExprOp::Call, Builtin::RoundTo, 0, 0, a, places, range(ctx)});
   }
   return program_.add({ir::ExprOp::Call, b, 0, 0, a, second, range(ctx)});
@@ -1173,7 +1230,8 @@ ir::ExprId Reader::variable(IsoParser::VariableContext* ctx, bool target) {
     text = ctx->getText().substr(1);
     index = operand(expr(ctx->expr()));  // #[...]: checked when it runs, unless it is a number
   }
-  if (!program_.is_constant(index)) return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, index, ir::kNoExpr, r});
+  if (!program_.is_constant(index))
+    return program_.add({ir::ExprOp::Var, Builtin::Sin, space_, 0, index, ir::kNoExpr, r});
   // A variable number that is written (decision 3): #12 or #[12].
   const std::optional<uint32_t> n = whole_in<uint32_t>(program_.exprs[index].number, 0, UINT32_MAX);
   if (n && *n >= 1000) {

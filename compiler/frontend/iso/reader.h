@@ -52,7 +52,7 @@ class Reader {
   void cut();
   void take(const Piece& piece);
   void read(const Piece& piece);
-  void load(const Piece& piece);  // the block's text, as the lexer reads it, into sanitized_
+  void load(const Piece& piece);     // the block's text, as the lexer reads it, into sanitized_
   IsoParser::BlockContext* parse();  // sanitized_ by the parser
   void open_brace(const Piece& at);
   void close_brace(const Piece& at);
@@ -84,13 +84,13 @@ class Reader {
   struct RawWord {
     char letter = 0;
     ir::ExprId value = ir::kNoExpr;
-    std::string text;     // the value as written, without blanks: "-10.5", "#1", "[#2+1]"
-    SourceRange range;    // the whole word
-    bool literal = false; // a number written without a decimal point
+    std::string text;      // the value as written, without blanks: "-10.5", "#1", "[#2+1]"
+    SourceRange range;     // the whole word
+    bool literal = false;  // a number written without a decimal point
   };
-  struct FastBlock {      // a block of address words only (the fast path)
+  struct FastBlock {  // a block of address words only (the fast path)
     bool skip = false;
-    bool has_errors = false;  // a number out of range (reported)
+    bool has_errors = false;                                      // a number out of range (reported)
     std::optional<std::pair<std::string, SourceRange>> sequence;  // N's digits
     std::vector<RawWord> words;
   };
@@ -134,7 +134,7 @@ class Reader {
 
   ir::Unit unit_;
   bool in_unit_ = false;
-  bool main_done_ = false;     // the main program has ended (M02/M30): O units may follow
+  bool main_done_ = false;           // the main program has ended (M02/M30): O units may follow
   std::optional<size_t> end_block_;  // the main program's M02/M30 block
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;
@@ -146,7 +146,7 @@ class Reader {
   };
   std::vector<LocalCall> local_calls_;  // the M97 calls of this unit
   size_t next_label_ = 0;
-  bool in_word_ = false;       // reading an address's value (ROUND keeps decimals there)
+  bool in_word_ = false;               // reading an address's value (ROUND keeps decimals there)
   std::optional<SourceRange> corner_;  // the ,C or ,R of the block before (E-05)
   std::vector<ProgramCall> calls_;
   ir::Block block_;  // being read

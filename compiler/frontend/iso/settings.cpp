@@ -56,8 +56,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   // §8.7: the units at the start are an application setting.
   std::string units = "mm";
   if (auto v = p.string("iso.units", diags)) {
-    if (*v == "mm" || *v == "inch") units = *v;
-    else ok = (p.report_value(diags, "iso.units", "must be \"mm\" or \"inch\""), false);
+    if (*v == "mm" || *v == "inch")
+      units = *v;
+    else
+      ok = (p.report_value(diags, "iso.units", "must be \"mm\" or \"inch\""), false);
   }
   s.power_on.push_back(units == "mm" ? "G21" : "G20");
   if (auto v = p.string("iso.program_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
@@ -65,46 +67,56 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   Conventions& c = s.conventions;
   c.arc_centre = ArcCentre::Incremental;  // §8.2: I J K from the arc's start point
   c.centre_words = CentreWords::PerAxis;
-  c.radius_word = 'R';                    // §8.2: R+ up to 180 degrees, R- beyond
-  c.helix_by_end = true;                  // §8.2: a helix is its end point; no lead word
-  c.dwell_word = 'P';                     // seconds: the reader applies the decimal-point rule
+  c.radius_word = 'R';    // §8.2: R+ up to 180 degrees, R- beyond
+  c.helix_by_end = true;  // §8.2: a helix is its end point; no lead word
+  c.dwell_word = 'P';     // seconds: the reader applies the decimal-point rule
   c.dwell_seconds_per_unit = 1;
   c.peck_word = 'Q';
   c.cycle_level_word = 'R';
-  c.fanuc_cycles = true;                  // §8.21-§8.27
-  c.cycle_repeat_words = "LK";            // §8.23: K may stand for L
-  c.peck_clearance = 0.254;               // decision 19
-  c.chip_break_retract = 0;               // §8.25: back to the depth of the pass before
+  c.fanuc_cycles = true;        // §8.21-§8.27
+  c.cycle_repeat_words = "LK";  // §8.23: K may stand for L
+  c.peck_clearance = 0.254;     // decision 19
+  c.chip_break_retract = 0;     // §8.25: back to the depth of the pass before
   auto length = [&](const char* key, double& out) {
     if (auto v = p.number(key, diags)) {
-      if (*v >= 0 && *v <= 100) out = *v;
-      else ok = (p.report_value(diags, key, "must be a length in mm from 0 to 100"), false);
+      if (*v >= 0 && *v <= 100)
+        out = *v;
+      else
+        ok = (p.report_value(diags, key, "must be a length in mm from 0 to 100"), false);
     }
   };
-  c.tool_change_iso = true;               // §8.31
-  c.fanuc_rules = true;                   // §8.8-§8.31 (E-08..E-27)
-  c.corners = true;                       // §8.3
-  c.cutter = CutterStyle::FanucA;        // §8.10
+  c.tool_change_iso = true;        // §8.31
+  c.fanuc_rules = true;            // §8.8-§8.31 (E-08..E-27)
+  c.corners = true;                // §8.3
+  c.cutter = CutterStyle::FanucA;  // §8.10
   c.tool_change_retract = true;
   if (auto v = p.boolean("iso.tool_change_retract", diags)) c.tool_change_retract = *v;
   if (auto v = p.number("iso.initial_feed", diags)) {
     // the seed's examples feed without F; a machine may start with a feed.
-    if (*v >= 0 && *v <= 100000) c.initial_feed = *v;
-    else ok = (p.report_value(diags, "iso.initial_feed", "must be a feed from 0 (none) to 100000"), false);
+    if (*v >= 0 && *v <= 100000)
+      c.initial_feed = *v;
+    else
+      ok = (p.report_value(diags, "iso.initial_feed", "must be a feed from 0 (none) to 100000"), false);
   }
   length("iso.peck_clearance", c.peck_clearance);
   length("iso.chip_break_retract", c.chip_break_retract);
   if (auto v = p.string("iso.boring_shift", diags)) {
-    if (*v == "+" || *v == "-") c.boring_shift = *v == "+" ? 1 : -1;
-    else ok = (p.report_value(diags, "iso.boring_shift", "must be \"+\" or \"-\": the direction of the plane's first axis"), false);
+    if (*v == "+" || *v == "-")
+      c.boring_shift = *v == "+" ? 1 : -1;
+    else
+      ok =
+          (p.report_value(diags, "iso.boring_shift", "must be \"+\" or \"-\": the direction of the plane's first axis"),
+           false);
   }
-  c.tool_offset_axes = "Z";               // §8.11: the length acts along Z only
-  c.axes = "XYZ";                         // a three-axis vertical machining centre
-  c.max_call_depth = 20;                  // §8.16: 20 nested macros; subprograms share it (decision 13)
+  c.tool_offset_axes = "Z";  // §8.11: the length acts along Z only
+  c.axes = "XYZ";            // a three-axis vertical machining centre
+  c.max_call_depth = 20;     // §8.16: 20 nested macros; subprograms share it (decision 13)
   c.arc_tolerance = 0.01;
   if (auto v = p.number("iso.arc_tolerance", diags)) {
-    if (*v > 0 && *v <= 1) c.arc_tolerance = *v;
-    else ok = (p.report_value(diags, "iso.arc_tolerance", "must be a length in mm above 0 and at most 1"), false);
+    if (*v > 0 && *v <= 1)
+      c.arc_tolerance = *v;
+    else
+      ok = (p.report_value(diags, "iso.arc_tolerance", "must be a length in mm above 0 and at most 1"), false);
   }
   if (!ok) return std::nullopt;
   return s;

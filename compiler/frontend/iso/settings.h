@@ -19,7 +19,7 @@ inline constexpr uint32_t kMaxBlockNumber = 99999;  // N, GOTO's and M97's block
 struct Settings {
   stdlib::DialectTables tables;
   std::vector<std::string> power_on;
-  std::string library;  // where called O programs are ("" = beside the program)
+  std::string library;                // where called O programs are ("" = beside the program)
   std::map<uint32_t, SysRef> system;  // #3000...: the system variables (system_variables.tsv)
   Conventions conventions;
 };

@@ -72,21 +72,29 @@ struct NumericOperand {
 // ASSET (§5.3.1) and the user screen (§5.6.2): a channel, a structure or a record
 // count, a field, row, column or format, a constant or any E parameter; a record, a
 // constant or an IN parameter.
-constexpr NumericOperand kNumericOperands[] = {
-    {OperandKind::Origin, 0, 99, true, "IN"},       {OperandKind::Count, 0, 99, true, "BY"},
-    {OperandKind::Zone, 1, 3, true, "BY"},          {OperandKind::Condition, 0, 3, true, "BY"},
-    {OperandKind::Mode, 1, 3, true, "BY"},
-    {OperandKind::Tool, 1, 9999, true, "IN"},       {OperandKind::Corrector, 1, 9999, true, "IN"},
-    {OperandKind::Distance, 0.001, 9999.999, false, "LR"}, {OperandKind::Speed, 1, 99999, false, "LR"},
-    {OperandKind::Virtual, 0, 4, true, "BY"},       {OperandKind::Value, -99999.9999, 99999.9999, false, nullptr},
-    {OperandKind::Angle, -99999.9999, 99999.9999, false, "RE"},
-    {OperandKind::Factor, 0.0001, 99999.9999, false, "RE"},
-    {OperandKind::Seconds, 0, 32, false, "LR"},
-    {OperandKind::Channel, 0, 255, true, nullptr},  {OperandKind::Structure, 0, 255, true, nullptr},
-    {OperandKind::Records, 1, asset::kMaxRecords, true, nullptr}, {OperandKind::Record, 1, asset::kMaxRecords, true, "IN"},
-    {OperandKind::Field, 1, 255, true, nullptr},    {OperandKind::Row, 1, 20, true, nullptr},
-    {OperandKind::Column, 1, 64, true, nullptr},    {OperandKind::Format, 1, 7, true, nullptr},
-    {OperandKind::Process, 1, 5, true, "BY"}};
+constexpr NumericOperand kNumericOperands[] = {{OperandKind::Origin, 0, 99, true, "IN"},
+                                               {OperandKind::Count, 0, 99, true, "BY"},
+                                               {OperandKind::Zone, 1, 3, true, "BY"},
+                                               {OperandKind::Condition, 0, 3, true, "BY"},
+                                               {OperandKind::Mode, 1, 3, true, "BY"},
+                                               {OperandKind::Tool, 1, 9999, true, "IN"},
+                                               {OperandKind::Corrector, 1, 9999, true, "IN"},
+                                               {OperandKind::Distance, 0.001, 9999.999, false, "LR"},
+                                               {OperandKind::Speed, 1, 99999, false, "LR"},
+                                               {OperandKind::Virtual, 0, 4, true, "BY"},
+                                               {OperandKind::Value, -99999.9999, 99999.9999, false, nullptr},
+                                               {OperandKind::Angle, -99999.9999, 99999.9999, false, "RE"},
+                                               {OperandKind::Factor, 0.0001, 99999.9999, false, "RE"},
+                                               {OperandKind::Seconds, 0, 32, false, "LR"},
+                                               {OperandKind::Channel, 0, 255, true, nullptr},
+                                               {OperandKind::Structure, 0, 255, true, nullptr},
+                                               {OperandKind::Records, 1, asset::kMaxRecords, true, nullptr},
+                                               {OperandKind::Record, 1, asset::kMaxRecords, true, "IN"},
+                                               {OperandKind::Field, 1, 255, true, nullptr},
+                                               {OperandKind::Row, 1, 20, true, nullptr},
+                                               {OperandKind::Column, 1, 64, true, nullptr},
+                                               {OperandKind::Format, 1, 7, true, nullptr},
+                                               {OperandKind::Process, 1, 5, true, "BY"}};
 
 const NumericOperand& numeric_operand(OperandKind kind) {
   for (const NumericOperand& n : kNumericOperands)
@@ -109,19 +117,19 @@ struct Reader::Operand {
   OperandKind kind = OperandKind::Origin;
   SourceRange range;
   std::string text;
-  ir::ExprId value = ir::kNoExpr;   // a number, an E parameter, a memory or system value, a text
-  ir::ExprId second = ir::kNoExpr;  // the upper value of a pair
+  ir::ExprId value = ir::kNoExpr;       // a number, an E parameter, a memory or system value, a text
+  ir::ExprId second = ir::kNoExpr;      // the upper value of a pair
   std::string first_text, second_text;  // an axis value as written: "-300"
   char axis = 0;
-  std::string name, device;         // a label or a program
-  std::optional<uint32_t> parameter; // an axis value that is an E parameter: its index
-  bool is_text = false;             // value is a String or a Text
-  uint32_t chars = 0;               // of a Text
-  VarType type = VarType::LongReal; // how DIS shows the value
+  std::string name, device;           // a label or a program
+  std::optional<uint32_t> parameter;  // an axis value that is an E parameter: its index
+  bool is_text = false;               // value is a String or a Text
+  uint32_t chars = 0;                 // of a Text
+  VarType type = VarType::LongReal;   // how DIS shows the value
 };
 
 std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces, OperandKind kind,
-                                                const std::string& code) {
+                                               const std::string& code) {
   Operand op;
   op.kind = kind;
   op.range = {file_, line_no_, pieces.front().range.col, line_no_, pieces.back().range.end_col};
@@ -196,7 +204,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       return false;
     }
     if (whole && *v != std::trunc(*v)) return fail("it must be a whole number"), false;
-    if (*v < lo || *v > hi) return fail(fmt::format("it must lie between {} and {}", shortest(lo), shortest(hi))), false;
+    if (*v < lo || *v > hi)
+      return fail(fmt::format("it must lie between {} and {}", shortest(lo), shortest(hi))), false;
     op.value = program_.number(*v, op.range);
     return true;
   };
@@ -208,8 +217,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       return fail(fmt::format("{} is not an axis of this machine ({})", axis, s_.conventions.axes)), false;
     ++at;
     if (letter_o(at) && adjacent(at)) return fail("the letter O where the digit 0 is meant"), false;
-    if ((type(at) == Nc110Lexer::PLUS || type(at) == Nc110Lexer::MINUS) && adjacent(at) && type(at + 1) == Nc110Lexer::LETTER &&
-        pieces[at + 1].text == "E") {
+    if ((type(at) == Nc110Lexer::PLUS || type(at) == Nc110Lexer::MINUS) && adjacent(at) &&
+        type(at + 1) == Nc110Lexer::LETTER && pieces[at + 1].text == "E") {
       diags_.report(DiagId::SignedParameter, op.range, op.text);
       block_.has_errors = true;
       return false;
@@ -245,7 +254,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
   auto names_memory = [&](size_t end) {
     std::string letters;
     for (size_t i = 0; i < end && pieces[i].type == Nc110Lexer::LETTER; ++i) letters += pieces[i].text;
-    return std::any_of(s_.memories.begin(), s_.memories.end(), [&](const Memory& m) { return letters.starts_with(m.name); });
+    return std::any_of(s_.memories.begin(), s_.memories.end(),
+                       [&](const Memory& m) { return letters.starts_with(m.name); });
   };
   auto variable = [&](const std::vector<std::string>& classes, const char* what, std::optional<MemoryRef>& ref) {
     if (auto e = parameter_at()) {
@@ -298,7 +308,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     case OperandKind::Process: {
       const NumericOperand& n = numeric_operand(kind);
       std::vector<std::string> classes;
-      if (n.param_class) classes.push_back(n.param_class);
+      if (n.param_class)
+        classes.push_back(n.param_class);
       else
         for (const ParameterClass& c : s_.classes) classes.push_back(c.name);
       if (!value(n.lo, n.hi, n.whole, classes)) return std::nullopt;
@@ -328,7 +339,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       uint32_t packed = 0;
       for (size_t i = 0; i < op.name.size(); ++i) {
         const char a = op.name[i];
-        if (s_.conventions.axes.find(a) == std::string::npos) return fail(fmt::format("{} is not an axis of this machine ({})", a, s_.conventions.axes));
+        if (s_.conventions.axes.find(a) == std::string::npos)
+          return fail(fmt::format("{} is not an axis of this machine ({})", a, s_.conventions.axes));
         if (op.name.find(a) != i) return fail(fmt::format("{} is written twice", a));
         packed |= static_cast<uint32_t>(axis_index(a) + 1) << (4 * i);
       }
@@ -344,9 +356,11 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       char second = 0;
       if (!axis_word(op.axis, op.value, op.first_text)) return std::nullopt;
       if (at == pieces.size())
-        return fail(fmt::format("the second value of {0} is missing (a pair is written {0}-300 {0}300, with a blank)", op.axis));
+        return fail(fmt::format("the second value of {0} is missing (a pair is written {0}-300 {0}300, with a blank)",
+                                op.axis));
       if (!axis_word(second, op.second, op.second_text)) return std::nullopt;
-      if (second != op.axis) return fail(fmt::format("the two values must belong to one axis, not {} and {}", op.axis, second));
+      if (second != op.axis)
+        return fail(fmt::format("the two values must belong to one axis, not {} and {}", op.axis, second));
       break;
     }
     case OperandKind::Label: {
@@ -368,11 +382,13 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       bool ok = false;
       op.name = letters_and_digits(ok);
       if (!ok) return fail("a program name is written without blanks");
-      if (!capitals_and_digits(op.name, 1, 6)) return fail("a program name is 1 to 6 capitals and digits, a letter first");
+      if (!capitals_and_digits(op.name, 1, 6))
+        return fail("a program name is 1 to 6 capitals and digits, a letter first");
       if (type(at) == Nc110Lexer::SLASH) {
         ++at;
         op.device = letters_and_digits(ok);
-        if (!ok || !capitals_and_digits(op.device, 2, 3)) return fail("a device name is 2 or 3 capitals and digits, a letter first");
+        if (!ok || !capitals_and_digits(op.device, 2, 3))
+          return fail("a device name is 2 or 3 capitals and digits, a letter first");
       }
       break;
     }
@@ -384,12 +400,14 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         name += "/" + letters_and_digits(ok);
       }
       auto file = ok ? asset::parse_file_name(name, 1) : std::nullopt;  // MP1 unless named (§5.3.2.1)
-      if (!file) return fail("a file is 1 to 6 capitals and digits, a letter first, then /MP0 to /MP6 or nothing (MP1)");
+      if (!file)
+        return fail("a file is 1 to 6 capitals and digits, a letter first, then /MP0 to /MP6 or nothing (MP1)");
       op.name = file->text();
       break;
     }
     case OperandKind::Access:
-      if (pieces.size() != 1 || (pieces[0].text != "R" && pieces[0].text != "W")) return fail("R (read) or W (read and write)");
+      if (pieces.size() != 1 || (pieces[0].text != "R" && pieces[0].text != "W"))
+        return fail("R (read) or W (read and write)");
       op.name = pieces[0].text;
       at = 1;
       break;
@@ -397,13 +415,16 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       // Table 5.1: IN, RE, LR and CH; E0-E9 (BY) and E20-E24 (LI) have none of them,
       // and a memory's own format (BY, BL) is not one either: it is written.
       std::optional<MemoryRef> ref;
-      if (!variable({"IN", "RE", "LR"}, "an IN, RE or LR E parameter, or SYVAR, SA or SK with .IN, .RE, .LR or .kCH", ref))
+      if (!variable({"IN", "RE", "LR"}, "an IN, RE or LR E parameter, or SYVAR, SA or SK with .IN, .RE, .LR or .kCH",
+                    ref))
         return std::nullopt;
       if (!ref) break;
       const bool asset_format = ref->chars > 0 || ref->format == MemFormat::Integer || ref->format == MemFormat::Real ||
                                 ref->format == MemFormat::LongReal;
-      if (!asset_format) return fail(fmt::format("{} is not of an ASSET format: write .IN, .RE, .LR or .kCH (table 5.1)", ref->text));
-      if (ref->chars > asset::kMaxChars) return fail(fmt::format("an ASSET field holds at most {} characters", asset::kMaxChars));
+      if (!asset_format)
+        return fail(fmt::format("{} is not of an ASSET format: write .IN, .RE, .LR or .kCH (table 5.1)", ref->text));
+      if (ref->chars > asset::kMaxChars)
+        return fail(fmt::format("an ASSET field holds at most {} characters", asset::kMaxChars));
       op.value = memory_expr(*ref, op.range);
       op.is_text = ref->chars > 0;
       op.chars = ref->chars;
@@ -432,7 +453,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       unsigned colour = 256;
       const bool colour_ok = op.name.size() > 1 && op.name[0] == 'A' &&
                              std::from_chars(op.name.data() + 1, op.name.data() + op.name.size(), colour).ptr ==
-                                 op.name.data() + op.name.size() && colour <= 255;
+                                 op.name.data() + op.name.size() &&
+                             colour <= 255;
       if (!ok || (op.name != "R" && !colour_ok)) return fail("R (inverse) or A and a colour 0..255 (A179)");
       break;
     }
@@ -457,7 +479,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       SourceRange left{file_, line_no_, pieces[0].range.col, line_no_, pieces[relop - 1].range.end_col};
       auto ref = memory_ref(line_.substr(left.col - 1, left.end_col - left.col), left);
       if (!ref) return std::nullopt;
-      if (ref->chars > 0 || (ref->format != MemFormat::Bit && ref->format != MemFormat::Byte && ref->format != MemFormat::Integer))
+      if (ref->chars > 0 ||
+          (ref->format != MemFormat::Bit && ref->format != MemFormat::Byte && ref->format != MemFormat::Integer))
         return fail(fmt::format("{} is not of format BL, BY or IN: a wait compares those only", ref->text));
       if (rel != "=" && ref->format == MemFormat::Bit)
         return fail(fmt::format("{} is a bit (BL): it is waited for with '=' only", ref->text));
@@ -466,7 +489,10 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       std::vector<std::string> classes;
       for (const ParameterClass& c : s_.classes) classes.push_back(c.name);
       if (!value(-1e15, 1e15, false, classes)) return std::nullopt;
-      const ir::ExprOp compare = rel == "=" ? ir::ExprOp::Eq : rel == "<" ? ir::ExprOp::Lt : rel == ">" ? ir::ExprOp::Gt : ir::ExprOp::Ne;
+      const ir::ExprOp compare = rel == "="   ? ir::ExprOp::Eq
+                                 : rel == "<" ? ir::ExprOp::Lt
+                                 : rel == ">" ? ir::ExprOp::Gt
+                                              : ir::ExprOp::Ne;
       op.value = program_.add({compare, Builtin::Sin, 0, 0, memory_expr(*ref, left), op.value, op.range});
       op.name = op.text;  // the condition, as written
       break;
@@ -490,7 +516,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
       if (letter_o(0) && pieces.size() == 1) return fail("the letter O where the digit 0 is meant");
       if (pieces.size() == 2 && type(0) == Nc110Lexer::LETTER && type(1) == Nc110Lexer::DIGITS && adjacent(1) &&
           pieces[0].text.size() == 1 && kGtlElements.find(pieces[0].text[0]) != std::string_view::npos) {
-        return fail(fmt::format("{} is a GTL element, not a value: FEP, FEL and FEC read its numbers (§2.12)", op.text));
+        return fail(
+            fmt::format("{} is a GTL element, not a value: FEP, FEL and FEC read its numbers (§2.12)", op.text));
       }
       if (type(0) == Nc110Lexer::LETTER) {
         bool ok = false;
@@ -500,8 +527,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
           op.value = memory_expr(*ref, op.range);
           op.is_text = ref->chars > 0;
           op.chars = ref->chars;
-          static constexpr VarType kShow[] = {VarType::Byte,    VarType::Byte, VarType::Integer,
-                                              VarType::Long,    VarType::Real, VarType::LongReal};
+          static constexpr VarType kShow[] = {VarType::Byte, VarType::Byte, VarType::Integer,
+                                              VarType::Long, VarType::Real, VarType::LongReal};
           op.type = kShow[static_cast<int>(ref->format)];
           at = pieces.size();
           break;
@@ -520,7 +547,7 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
         if (!ref) return std::nullopt;
         op.value = system_expr(*ref, op.range);
         // Shown as its class: the flags and RMS as integers, TIM and TOT as reals (§2.10).
-        op.type = entry->value == "flag" || entry->value == "BY" ? VarType::Byte
+        op.type = entry->value == "flag" || entry->value == "BY"   ? VarType::Byte
                   : entry->value == "RE" || entry->value == "expr" ? VarType::Real
                                                                    : VarType::LongReal;
         break;
@@ -534,7 +561,8 @@ std::optional<Reader::Operand> Reader::operand(const std::vector<Piece>& pieces,
     }
   }
   if (at < pieces.size())
-    return fail(fmt::format("'{}' is left over", line_.substr(pieces[at].range.col - 1, op.range.end_col - pieces[at].range.col)));
+    return fail(fmt::format("'{}' is left over",
+                            line_.substr(pieces[at].range.col - 1, op.range.end_col - pieces[at].range.col)));
   return op;
 }
 
@@ -546,21 +574,25 @@ bool Reader::virtual_operands(const CodeSignature& sig, const std::vector<Operan
     return false;
   };
   const ir::Expr& m = program_.exprs[ops[0].value];
-  if (m.op != ir::ExprOp::Number) return fail(ops[0], "the mode is written as a number: the operands after it depend on it");
+  if (m.op != ir::ExprOp::Number)
+    return fail(ops[0], "the mode is written as a number: the operands after it depend on it");
   const auto mode = static_cast<size_t>(m.number);
   const VirtualForm& form = kVirtualForms[mode];
   const size_t expected = mode == 0 ? 1 : 3 + form.values;
   if (ops.size() != expected) {
     if (ops.size() > expected) return fail(ops[expected], fmt::format("mode {} is written {}", mode, form.written));
-    diags_.report(DiagId::OperandMissing, code_range, sig.code, fmt::format("the operands of mode {}: {}", mode, form.written));
+    diags_.report(DiagId::OperandMissing, code_range, sig.code,
+                  fmt::format("the operands of mode {}: {}", mode, form.written));
     block_.has_errors = true;
     return false;
   }
   if (mode == 0) return true;
   const Operand& real = ops[1];
   const Operand& virt = ops[2];
-  if (real.name.size() < form.real_lo || real.name.size() > form.real_hi) return fail(real, fmt::format("mode {} is written {}", mode, form.written));
-  if (virt.name.size() < form.virt_lo || virt.name.size() > form.virt_hi) return fail(virt, fmt::format("mode {} is written {}", mode, form.written));
+  if (real.name.size() < form.real_lo || real.name.size() > form.real_hi)
+    return fail(real, fmt::format("mode {} is written {}", mode, form.written));
+  if (virt.name.size() < form.virt_lo || virt.name.size() > form.virt_hi)
+    return fail(virt, fmt::format("mode {} is written {}", mode, form.written));
   for (char a : virt.name)
     if (real.name.find(a) != std::string::npos) return fail(virt, fmt::format("{} stands in both lists", a));
   if (mode != 3) return true;
@@ -580,8 +612,10 @@ bool Reader::virtual_operands(const CodeSignature& sig, const std::vector<Operan
 
 void Reader::unsynced(const std::string& code, SourceRange at, const char* why) {
   auto it = std::find_if(unsynced_.begin(), unsynced_.end(), [&](const Unsynced& u) { return u.code == code; });
-  if (it == unsynced_.end()) unsynced_.push_back({code, at, why, 0});
-  else ++it->more;
+  if (it == unsynced_.end())
+    unsynced_.push_back({code, at, why, 0});
+  else
+    ++it->more;
 }
 
 bool Reader::measured(const std::vector<Operand>& operands) const {
@@ -610,7 +644,9 @@ void Reader::code_block(Nc110Parser::TlcBlockContext* ctx) {
         return;
       }
     // As written: "(U RT)" shows the blank that makes it unknown.
-    diags_.report(DiagId::TlcUnknown, code_range, code.empty() ? code : std::string(line_.substr(code_range.col - 1, code_range.end_col - code_range.col)));
+    diags_.report(
+        DiagId::TlcUnknown, code_range,
+        code.empty() ? code : std::string(line_.substr(code_range.col - 1, code_range.end_col - code_range.col)));
     block_.has_errors = true;
     return;
   }
@@ -667,8 +703,10 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
         Operand none;
         none.kind = item.kind;
         none.range = at;
-        if (item.kind == OperandKind::Prompt) none.is_text = true;
-        else none.value = program_.number(1, at);
+        if (item.kind == OperandKind::Prompt)
+          none.is_text = true;
+        else
+          none.value = program_.number(1, at);
         matched.push_back(std::move(none));
         ++next;
         ++taken;
@@ -685,8 +723,8 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
       ++taken;
       if (!op) return;
       // At most six axes (§2.13.1: "up to 6 axes").
-      if ((item.repeat == '*' || item.repeat == '+') && ++axis_operands > kMaxAxisOperands && sig.action == Action::Function &&
-          op->axis) {
+      if ((item.repeat == '*' || item.repeat == '+') && ++axis_operands > kMaxAxisOperands &&
+          sig.action == Action::Function && op->axis) {
         diags_.report(DiagId::OperandKind, op->range, op->text, kind_name(item.kind), code,
                       fmt::format("a code takes at most {} axes", kMaxAxisOperands));
         block_.has_errors = true;
@@ -703,9 +741,9 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
   if (next < operands.size()) {
     const auto& pieces = operands[next];
     // An empty one is the comma before it (operand i follows comma i).
-    SourceRange at = pieces.empty() ? (next < commas.size() ? commas[next] : code_range)
-                                    : SourceRange{file_, line_no_, pieces.front().range.col, line_no_,
-                                                  pieces.back().range.end_col};
+    SourceRange at =
+        pieces.empty() ? (next < commas.size() ? commas[next] : code_range)
+                       : SourceRange{file_, line_no_, pieces.front().range.col, line_no_, pieces.back().range.end_col};
     diags_.report(DiagId::OperandExtra, at, code, std::string(line_.substr(at.col - 1, at.end_col - at.col)));
     block_.has_errors = true;
     return;
@@ -716,7 +754,8 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
     if (!op.axis || op.kind == OperandKind::Turning) continue;
     if (axes.emplace(op.axis, &op).second) continue;
     if (op.axis == 'K' && op.kind == OperandKind::Increment)  // K is no axis
-      diags_.report(DiagId::OperandKind, op.range, op.text, kind_name(op.kind), code, "K, the diameter's increment, is given twice");
+      diags_.report(DiagId::OperandKind, op.range, op.text, kind_name(op.kind), code,
+                    "K, the diameter's increment, is given twice");
     else
       diags_.report(DiagId::AxisTwice, op.range, op.axis, code);
     block_.has_errors = true;
@@ -738,7 +777,8 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         if (sig.fn == Fn::DwellSeconds) unsynced(sig.code, code_range, "dwells once the motion before it ends");
         if (sig.fn == Fn::GraphicField) unsynced(sig.code, code_range, "in a program waits for the motion before it");
         if (sig.fn == Fn::CorrectorRequalify && !measured(ops))
-          unsynced(sig.code, code_range, "changes the corrector while the moves before it still run, with values no measuring cycle stores");
+          unsynced(sig.code, code_range,
+                   "changes the corrector while the moves before it still run, with values no measuring cycle stores");
       }
       if (sig.fn == Fn::VirtualAxes && !virtual_operands(sig, ops, code_range)) return;
       if (sig.fn == Fn::CorrectorRequalify || sig.fn == Fn::CorrectorModify) {
@@ -763,14 +803,16 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         const Operand& op = ops[i];
         const OperandItem& item = sig.operands[std::min(i, sig.operands.size() - 1)];
         bool listed_axis = op.kind == OperandKind::Axis && item.repeat != '1';
-        if (op.kind == OperandKind::Dim || op.kind == OperandKind::Pair || op.kind == OperandKind::Increment || listed_axis) {
+        if (op.kind == OperandKind::Dim || op.kind == OperandKind::Pair || op.kind == OperandKind::Increment ||
+            listed_axis) {
           add_word(op.axis, letter_slot(op.axis), listed_axis ? program_.number(0, op.range) : op.value, op.first_text,
                    op.range);
-          if (op.kind == OperandKind::Pair) add_word(op.axis, second_slot(op.axis), op.second, op.second_text, op.range);
+          if (op.kind == OperandKind::Pair)
+            add_word(op.axis, second_slot(op.axis), op.second, op.second_text, op.range);
           continue;
         }
         // An axis in a fixed place (DPI, BSP): its number; T of CTL: 1.
-        ir::ExprId value = op.kind == OperandKind::Axis    ? program_.number(axis_index(op.axis), op.range)
+        ir::ExprId value = op.kind == OperandKind::Axis      ? program_.number(axis_index(op.axis), op.range)
                            : op.kind == OperandKind::Turning ? program_.number(1, op.range)
                                                              : op.value;
         add_word('#', operand_slot(operand_number++), value, "=" + op.text, op.range);
@@ -810,13 +852,16 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       if (a.is_text || b.is_text) {
         // Texts compare for equality only, a text reference with a text (decision 11).
         if (!a.is_text || !b.is_text)
-          return fail(DiagId::TextMismatch, (a.is_text ? b : a).range, fmt::format("({}) compares a text with a number", sig.code));
+          return fail(DiagId::TextMismatch, (a.is_text ? b : a).range,
+                      fmt::format("({}) compares a text with a number", sig.code));
         if (c != "eq" && c != "ne")
-          return fail(DiagId::TextMismatch, code_range, fmt::format("({}) cannot compare texts: BEQ and BNE can", sig.code));
+          return fail(DiagId::TextMismatch, code_range,
+                      fmt::format("({}) cannot compare texts: BEQ and BNE can", sig.code));
         const Operand& memory = program_.exprs[a.value].op == ir::ExprOp::Text ? a : b;
         const Operand& other = &memory == &a ? b : a;
         if (program_.exprs[memory.value].op != ir::ExprOp::Text)
-          return fail(DiagId::TextMismatch, code_range, "two quoted texts compare the same way every time: compare a text memory with a text");
+          return fail(DiagId::TextMismatch, code_range,
+                      "two quoted texts compare the same way every time: compare a text memory with a text");
         ir::ExprId right = other.value;
         if (program_.exprs[other.value].op == ir::ExprOp::String) {
           std::string t = program_.texts[program_.exprs[other.value].text];
@@ -834,8 +879,12 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         if (c == "ne") s.cond = program_.add({ir::ExprOp::Not, Builtin::Sin, 0, 0, s.cond, ir::kNoExpr, code_range});
         break;
       }
-      ir::ExprOp op = c == "gt" ? ir::ExprOp::Gt : c == "lt" ? ir::ExprOp::Lt : c == "eq" ? ir::ExprOp::Eq
-                    : c == "ne" ? ir::ExprOp::Ne : c == "ge" ? ir::ExprOp::Ge : ir::ExprOp::Le;
+      ir::ExprOp op = c == "gt"   ? ir::ExprOp::Gt
+                      : c == "lt" ? ir::ExprOp::Lt
+                      : c == "eq" ? ir::ExprOp::Eq
+                      : c == "ne" ? ir::ExprOp::Ne
+                      : c == "ge" ? ir::ExprOp::Ge
+                                  : ir::ExprOp::Le;
       s.cond = program_.add({op, Builtin::Sin, 0, 0, a.value, b.value, code_range});
       break;
     }
@@ -869,14 +918,18 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       s = ir::Stmt(ir::StmtKind::Asset, block_.range);
       s.asset = sig.asset;
       for (const Operand& op : ops) {
-        if (op.kind == OperandKind::File) s.label = op.name;
-        else if (op.kind == OperandKind::Access) s.asset = op.name == "W" ? ir::AssetOp::OpenWrite : ir::AssetOp::OpenRead;
-        else s.items.push_back({op.value, op.type});
+        if (op.kind == OperandKind::File)
+          s.label = op.name;
+        else if (op.kind == OperandKind::Access)
+          s.asset = op.name == "W" ? ir::AssetOp::OpenWrite : ir::AssetOp::OpenRead;
+        else
+          s.items.push_back({op.value, op.type});
       }
       if (s.asset == ir::AssetOp::Close && s.items.empty()) s.asset = ir::AssetOp::CloseAll;
       if (s.asset == ir::AssetOp::Define && s.items.size() - 1 > asset::kMaxFields)
-        return fail(DiagId::OperandKind, ops[asset::kMaxFields + 1].range, ops[asset::kMaxFields + 1].text, kind_name(OperandKind::Binding),
-                    sig.code, fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
+        return fail(DiagId::OperandKind, ops[asset::kMaxFields + 1].range, ops[asset::kMaxFields + 1].text,
+                    kind_name(OperandKind::Binding), sig.code,
+                    fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
       break;
     }
     case Action::Input:
@@ -894,8 +947,10 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         break;
       }
       for (const Operand& op : ops) {
-        if (op.kind == OperandKind::Attribute) s.label = op.name;
-        else s.items.push_back({op.value, op.type});
+        if (op.kind == OperandKind::Attribute)
+          s.label = op.name;
+        else
+          s.items.push_back({op.value, op.type});
       }
       if (sig.screen == ir::StmtKind::ScreenDefine) break;
       // OUT: fields (a constant field may have '-': inverse), at most six; with two
@@ -905,12 +960,15 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         s.items = {{ops[0].value, VarType::Integer}, {ops[1].value, ops[1].type}};
       }
       if (ops.size() > 6)
-        return fail(DiagId::OperandKind, ops[6].range, ops[6].text, "a screen field", sig.code, "OUT shows at most 6 fields");
+        return fail(DiagId::OperandKind, ops[6].range, ops[6].text, "a screen field", sig.code,
+                    "OUT shows at most 6 fields");
       for (size_t i = 0; i < (ops.size() == 2 ? 1 : ops.size()); ++i) {
         const ir::Expr& e = program_.exprs[ops[i].value];
         const bool field = e.op == ir::ExprOp::Var || (e.op == ir::ExprOp::Number && e.number == std::trunc(e.number) &&
                                                        std::fabs(e.number) >= 1 && std::fabs(e.number) <= 255);
-        if (!field) return fail(DiagId::OperandKind, ops[i].range, ops[i].text, "a screen field", sig.code, "a field 1..255, -n for inverse, or an E parameter");
+        if (!field)
+          return fail(DiagId::OperandKind, ops[i].range, ops[i].text, "a screen field", sig.code,
+                      "a field 1..255, -n for inverse, or an E parameter");
       }
       break;
     }
@@ -924,7 +982,8 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
                       "EXE loads from devices MP0 to MP3");
         const std::string device = program.device.empty() ? s_.default_device : program.device;
         s.label = device + "/" + program.name;
-        calls_.push_back({program.name, device, s.label, program.range, program_.units.size(), unit_->blocks.size(), ir::UnitKind::Process});
+        calls_.push_back({program.name, device, s.label, program.range, program_.units.size(), unit_->blocks.size(),
+                          ir::UnitKind::Process});
       }
       if (!ops.empty()) s.value = ops[0].value;
       if (s.kind == ir::StmtKind::ProcessWait && !ops[0].name.empty()) {

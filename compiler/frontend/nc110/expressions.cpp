@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <charconv>
 
-#include "reader.h"
 #include "frontend/frontend.h"
+#include "reader.h"
 #include "support/text.h"
 
 namespace ncc::nc110 {
@@ -27,9 +27,10 @@ struct Function {
 };
 // §1.2.29, §2.12: trigonometry in degrees; SQR is the square root; INT the integer part.
 constexpr Function kFunctions[] = {
-    {"SIN", 1, Builtin::Sin},  {"COS", 1, Builtin::Cos},   {"TAN", 1, Builtin::Tan},        {"ARS", 1, Builtin::Asin},
-    {"ARC", 1, Builtin::Acos}, {"ART", 1, Builtin::Atan},  {"SQR", 1, Builtin::Sqrt},       {"ABS", 1, Builtin::Abs},
-    {"INT", 1, Builtin::Trunc}, {"NEG", 1, std::nullopt},  {"MOD", 2, std::nullopt},        {"FEL", 2, Builtin::GtlLine},
+    {"SIN", 1, Builtin::Sin},      {"COS", 1, Builtin::Cos},      {"TAN", 1, Builtin::Tan},
+    {"ARS", 1, Builtin::Asin},     {"ARC", 1, Builtin::Acos},     {"ART", 1, Builtin::Atan},
+    {"SQR", 1, Builtin::Sqrt},     {"ABS", 1, Builtin::Abs},      {"INT", 1, Builtin::Trunc},
+    {"NEG", 1, std::nullopt},      {"MOD", 2, std::nullopt},      {"FEL", 2, Builtin::GtlLine},
     {"FEP", 2, Builtin::GtlPoint}, {"FEC", 2, Builtin::GtlCircle}};
 
 const Function* function(std::string_view name) {
@@ -72,7 +73,8 @@ bool Reader::check_class(uint32_t index, const std::vector<std::string>& classes
   std::string takes = "constants only";
   if (!classes.empty()) {
     takes.clear();
-    for (size_t i = 0; i < classes.size(); ++i) takes += (i ? (i + 1 == classes.size() ? " or " : ", ") : "") + classes[i];
+    for (size_t i = 0; i < classes.size(); ++i)
+      takes += (i ? (i + 1 == classes.size() ? " or " : ", ") : "") + classes[i];
     takes += " parameters";
   }
   diags_.report(DiagId::ParameterClass, r, fmt::format("E{}", index), c.name, what, takes);
@@ -124,7 +126,7 @@ std::optional<Reader::MemoryRef> Reader::memory_ref(std::string_view written, So
   if (ref.format == MemFormat::Bit && !ref.chars) size = 1;
   if (first + size > ref.memory->bytes) {
     diags_.report(DiagId::ValueRange, r, text, fmt::format("{} ({} bytes)", ref.memory->name, ref.memory->bytes), 0,
-                  ref.chars ? static_cast<int64_t>(ref.memory->bytes) - ref.chars
+                  ref.chars                      ? static_cast<int64_t>(ref.memory->bytes) - ref.chars
                   : ref.format == MemFormat::Bit ? ref.memory->bytes * 8 - 1
                                                  : ref.memory->bytes / mem_size(ref.format) - 1);
     block_.has_errors = true;
@@ -135,9 +137,13 @@ std::optional<Reader::MemoryRef> Reader::memory_ref(std::string_view written, So
 
 ir::ExprId Reader::memory_expr(const MemoryRef& ref, SourceRange r) {
   if (ref.memory->synchronised && block_.sync != '&') block_.waits_motion = true;
-  ir::Expr e{ref.chars ? ir::ExprOp::Text : ir::ExprOp::Mem, Builtin::Sin,
-             static_cast<uint16_t>(1 + (ref.memory - s_.memories.data())), 0, program_.number(ref.index, r),
-             ir::kNoExpr, r};
+  ir::Expr e{ref.chars ? ir::ExprOp::Text : ir::ExprOp::Mem,
+             Builtin::Sin,
+             static_cast<uint16_t>(1 + (ref.memory - s_.memories.data())),
+             0,
+             program_.number(ref.index, r),
+             ir::kNoExpr,
+             r};
   e.format = ref.format;
   e.count = static_cast<uint8_t>(ref.chars);
   return program_.add(e);
@@ -171,15 +177,17 @@ std::optional<SysRef> Reader::system_ref(const std::string& name, std::optional<
   if (it == s_.system.end()) return fail(DiagId::SystemUnknown, shown);
   const SystemName& n = it->second;
   if (!n.var)
-    return fail(DiagId::SystemNotWritable, shown,
-                writing ? "is set from the keyboard, not by a program" : "is a keyboard command, not a value a program reads");
+    return fail(
+        DiagId::SystemNotWritable, shown,
+        writing ? "is set from the keyboard, not by a program" : "is a keyboard command, not a value a program reads");
   // RMNpq: process p, axis q 1..9 (§2.10.10).
   const bool axis_digit = n.var != SysVar::RemainingPath || !number || *number % 10 != 0;
   if (n.numbered != number.has_value() || (number && (*number < n.first || *number > n.last)) || !axis_digit)
     return fail(DiagId::ValueForm, name,
-                n.var == SysVar::RemainingPath ? fmt::format("a number pq: process p 1 to {}, axis q 1 to 9", n.last / 10)
-                : n.numbered                   ? fmt::format("a number {} to {}", n.first, n.last)
-                                               : "no number",
+                n.var == SysVar::RemainingPath
+                    ? fmt::format("a number pq: process p 1 to {}, axis q 1 to 9", n.last / 10)
+                : n.numbered ? fmt::format("a number {} to {}", n.first, n.last)
+                             : "no number",
                 shown);
   SysRef ref{*n.var, static_cast<uint8_t>(number.value_or(0))};
   if (writing && (n.value == "-" || !sys_writable(ref))) return fail(DiagId::SystemNotWritable, shown, "is read-only");
@@ -249,7 +257,8 @@ ir::ExprId Reader::primary(Nc110Parser::PrimaryContext* ctx) {
     auto ref = memory_ref(m->VARREF()->getText(), r);
     if (!ref) return invalid();
     if (ref->chars) {
-      diags_.report(DiagId::TextMismatch, r, fmt::format("{} is a text; it cannot be part of an expression", ref->text));
+      diags_.report(DiagId::TextMismatch, r,
+                    fmt::format("{} is a text; it cannot be part of an expression", ref->text));
       block_.has_errors = true;
       return invalid();
     }
@@ -273,7 +282,8 @@ ir::ExprId Reader::primary(Nc110Parser::PrimaryContext* ctx) {
     }
     ir::ExprId a = expr(args[0]);
     ir::ExprId b = args.size() > 1 ? expr(args[1]) : ir::kNoExpr;
-    if (!f->builtin) return program_.add({name == "NEG" ? ir::ExprOp::Neg : ir::ExprOp::Mod, Builtin::Sin, 0, 0, a, b, r});
+    if (!f->builtin)
+      return program_.add({name == "NEG" ? ir::ExprOp::Neg : ir::ExprOp::Mod, Builtin::Sin, 0, 0, a, b, r});
     return program_.add({ir::ExprOp::Call, *f->builtin, 0, 0, a, b, r});
   }
   auto* s = dynamic_cast<Nc110Parser::SystemPrimaryContext*>(ctx);
@@ -316,7 +326,8 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
     // §2.12: En = expression, converted to the class of En.
     auto index = parameter(target->EREF()->getText(), target_range);
     if (!index) return;
-    if (string_value) return fail(DiagId::TextMismatch, value_range, fmt::format("{} holds a number, not a text", target_text));
+    if (string_value)
+      return fail(DiagId::TextMismatch, value_range, fmt::format("{} holds a number, not a text", target_text));
     s.target = parameter_expr(*index, target_range);
     s.value = expr(value->expr());
     // A constant that cannot fit is known now (decision 8); others at run time.
@@ -341,7 +352,8 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
         for (unsigned char c : string_text) chars += (c & 0xC0) != 0x80;
         if (chars != string_text.size())
           return fail(DiagId::TextMismatch, value_range, "a text in memory holds one byte a character: ASCII only");
-        if (chars > ref->chars) return fail(DiagId::TextTooLong, value_range, string_text, chars, ref->text, ref->chars);
+        if (chars > ref->chars)
+          return fail(DiagId::TextTooLong, value_range, string_text, chars, ref->text, ref->chars);
         string_text.resize(ref->chars, ' ');
         s.value = string_expr(string_text, value_range);
       } else {
@@ -353,14 +365,15 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
         auto source = only ? memory_ref(only->VARREF()->getText(), value_range) : std::nullopt;
         if (!source || source->chars != ref->chars)
           return fail(DiagId::TextMismatch, value_range,
-                      fmt::format("{} holds a text of {}: assign a \"text\" or a reference .{}CH", ref->text, ref->chars,
-                                  ref->chars));
+                      fmt::format("{} holds a text of {}: assign a \"text\" or a reference .{}CH", ref->text,
+                                  ref->chars, ref->chars));
         s.value = memory_expr(*source, value_range);
       }
       block_.stmts.push_back(s);
       return;
     }
-    if (string_value) return fail(DiagId::TextMismatch, value_range, fmt::format("{} holds a number, not a text", ref->text));
+    if (string_value)
+      return fail(DiagId::TextMismatch, value_range, fmt::format("{} holds a number, not a text", ref->text));
     s.value = expr(value->expr());
     block_.stmts.push_back(s);
     return;
@@ -373,19 +386,20 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
   const SystemName* entry = nullptr;
   auto ref = system_ref(name, number, target_range, true, &entry);
   if (!ref) return;
-  if (string_value) return fail(DiagId::TextMismatch, value_range, fmt::format("{} holds a number, not a text", target_text));
+  if (string_value)
+    return fail(DiagId::TextMismatch, value_range, fmt::format("{} holds a number, not a text", target_text));
   s.target = system_expr(*ref, target_range);
   auto* e = value->expr();
   if (entry->value != "expr") {
     // A constant, or one E parameter of the class the manual gives (§2.10, decision 38).
     auto* f = e->term().size() == 1 && e->term(0)->factor().size() == 1 ? e->term(0)->factor(0) : nullptr;
     auto* number_value = f ? dynamic_cast<Nc110Parser::NumberPrimaryContext*>(f->primary()) : nullptr;
-    auto* parameter_value = f && !f->PLUS() && !f->MINUS() ? dynamic_cast<Nc110Parser::ParameterPrimaryContext*>(f->primary())
-                                                           : nullptr;
+    auto* parameter_value =
+        f && !f->PLUS() && !f->MINUS() ? dynamic_cast<Nc110Parser::ParameterPrimaryContext*>(f->primary()) : nullptr;
     std::string cls = entry->value == "flag" ? "BY" : entry->value;
     if (!number_value && !parameter_value)
-      return fail(DiagId::ValueForm, value_range, name,
-                  fmt::format("a constant or an E parameter of class {}", cls), "an expression is not allowed here");
+      return fail(DiagId::ValueForm, value_range, name, fmt::format("a constant or an E parameter of class {}", cls),
+                  "an expression is not allowed here");
     if (parameter_value) {
       auto index = parameter(parameter_value->EREF()->getText(), value_range);
       if (!index || !check_class(*index, {cls}, value_range, name)) return;

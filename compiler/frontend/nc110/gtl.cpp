@@ -33,11 +33,16 @@ struct GtlGroup {
       default: return true;
     }
   }
-  bool element() const { return op != gtl::Operand::Angle && op != gtl::Operand::Radius && op != gtl::Operand::Distance; }
+  bool element() const {
+    return op != gtl::Operand::Angle && op != gtl::Operand::Radius && op != gtl::Operand::Distance;
+  }
 };
 
 gtl::Kind kind_of(char letter) {
-  return letter == 'o' ? gtl::Kind::Origin : letter == 'p' ? gtl::Kind::Point : letter == 'l' ? gtl::Kind::Line : gtl::Kind::Circle;
+  return letter == 'o'   ? gtl::Kind::Origin
+         : letter == 'p' ? gtl::Kind::Point
+         : letter == 'l' ? gtl::Kind::Line
+                         : gtl::Kind::Circle;
 }
 
 }  // namespace
@@ -85,8 +90,8 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
   };
   const char target_letter = ctx->LETTER()->getText()[0];
   const gtl::Kind target = kind_of(target_letter);
-  const SourceRange target_range = range(ctx->LETTER()->getSymbol(), ctx->wordValue() ? ctx->wordValue()->getStop()
-                                                                                       : ctx->LETTER()->getSymbol());
+  const SourceRange target_range =
+      range(ctx->LETTER()->getSymbol(), ctx->wordValue() ? ctx->wordValue()->getStop() : ctx->LETTER()->getSymbol());
   auto index = gtl_value(target_letter, false, ctx->wordValue(), target_range);
   if (!index) return;
 
@@ -96,13 +101,16 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
   std::optional<GtlValue> origin;
   std::optional<SourceRange> s2;
   bool comma = false;
-  auto open_group = [&]() -> GtlGroup* { return groups.empty() || groups.back().complete() ? nullptr : &groups.back(); };
+  auto open_group = [&]() -> GtlGroup* {
+    return groups.empty() || groups.back().complete() ? nullptr : &groups.back();
+  };
   auto start = [&](gtl::Operand op, SourceRange r) -> bool {
     if (GtlGroup* g = open_group()) {
-      fail(g->range, g->letters == "A" ? "A is the axis A; the angle of a GTL definition is a lower-case a (§2.11.3)"
-                     : g->op == gtl::Operand::Coordinates ? "a point is given by both axes of the plane, e.g. X10 Y20 (§2.11.5)"
-                     : g->op == gtl::Operand::Centre    ? "a circle is given by its centre and radius, I.. J.. r.. (§2.11.7)"
-                                                        : "a polar point is given by its modulus and angle, m.. a.. (§2.11.5)");
+      fail(g->range,
+           g->letters == "A" ? "A is the axis A; the angle of a GTL definition is a lower-case a (§2.11.3)"
+           : g->op == gtl::Operand::Coordinates ? "a point is given by both axes of the plane, e.g. X10 Y20 (§2.11.5)"
+           : g->op == gtl::Operand::Centre      ? "a circle is given by its centre and radius, I.. J.. r.. (§2.11.7)"
+                                           : "a polar point is given by its modulus and angle, m.. a.. (§2.11.5)");
       return false;
     }
     GtlGroup g{op, {}, r, ""};
@@ -111,8 +119,9 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
       g.values.push_back(origin ? *origin : GtlValue{program_.number(-1, r), "o", "", r, true});
       origin.reset();
     } else if (origin) {
-      fail(origin->range, fmt::format("o{} gives the origin of the coordinates after it: X.. Y.., I.. J.. or m.. a.. (§2.11.4)",
-                                      origin->text));
+      fail(origin->range,
+           fmt::format("o{} gives the origin of the coordinates after it: X.. Y.., I.. J.. or m.. a.. (§2.11.4)",
+                       origin->text));
       return false;
     }
     if (g.element() && !groups.empty() && !comma) {
@@ -131,10 +140,15 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
     const char letter = item->LETTER()->getText()[0];
     const bool minus = item->MINUS() != nullptr;
     const SourceRange r = range(item);
-    const std::string written = item->wordValue() ? text(item->wordValue()->getStart(), item->wordValue()->getStop()) : "";
+    const std::string written =
+        item->wordValue() ? text(item->wordValue()->getStart(), item->wordValue()->getStop()) : "";
     if (minus && letter != 'l' && letter != 'c') {
-      fail(r, letter == 'p' ? "a point has no direction to reverse: '-' goes before a line or a circle (§2.11.1)"
-                            : fmt::format("'-' reverses a line or a circle; a negative value is written after the letter: {}-.. (§2.11.1)", letter));
+      fail(r,
+           letter == 'p'
+               ? "a point has no direction to reverse: '-' goes before a line or a circle (§2.11.1)"
+               : fmt::format(
+                     "'-' reverses a line or a circle; a negative value is written after the letter: {}-.. (§2.11.1)",
+                     letter));
       return;
     }
     auto value = gtl_value(letter, minus, item->wordValue(), r);
@@ -149,7 +163,10 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
       case 'p':
       case 'l':
       case 'c':
-        if (!start(letter == 'p' ? gtl::Operand::PointRef : letter == 'l' ? gtl::Operand::LineRef : gtl::Operand::CircleRef, r))
+        if (!start(letter == 'p'   ? gtl::Operand::PointRef
+                   : letter == 'l' ? gtl::Operand::LineRef
+                                   : gtl::Operand::CircleRef,
+                   r))
           return;
         groups.back().values = {v, GtlValue{program_.number(minus ? 1 : 0, r), "-", "", r, true}};
         break;
@@ -164,7 +181,10 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
           g->letters += letter;
           break;
         }
-        if (!start(letter == 'a' ? gtl::Operand::Angle : letter == 'r' ? gtl::Operand::Radius : gtl::Operand::Distance, r))
+        if (!start(letter == 'a'   ? gtl::Operand::Angle
+                   : letter == 'r' ? gtl::Operand::Radius
+                                   : gtl::Operand::Distance,
+                   r))
           return;
         groups.back().values.push_back(v);
         break;
@@ -176,8 +196,8 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
         break;
       case 'I':
       case 'J':
-        if (g && g->op == gtl::Operand::Centre && g->letters.size() < 2 && g->letters.find(letter) == std::string::npos &&
-            (letter == 'J') == (g->letters == "I")) {
+        if (g && g->op == gtl::Operand::Centre && g->letters.size() < 2 &&
+            g->letters.find(letter) == std::string::npos && (letter == 'J') == (g->letters == "I")) {
           g->values.push_back(v);
           g->letters += letter;
         } else if (letter == 'I' && start(gtl::Operand::Centre, r)) {
@@ -195,10 +215,13 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
       }
       default: {
         const int axis = axis_index(letter);
-        if (letter == 'O') return fail(r, "the letter O where the digit 0 is meant: a GTL definition has no O (§2.11.3)");
+        if (letter == 'O')
+          return fail(r, "the letter O where the digit 0 is meant: a GTL definition has no O (§2.11.3)");
         if (axis < 0 || letter == 'E') {
-          fail(r, fmt::format("'{}' is not a word of a GTL definition: it takes the plane's two axes (X Y, U V...), I J, m, a, r, d, "
-                              "o, p, l, c and s2 (§2.11.3)", letter));
+          fail(r, fmt::format("'{}' is not a word of a GTL definition: it takes the plane's two axes (X Y, U V...), I "
+                              "J, m, a, r, d, "
+                              "o, p, l, c and s2 (§2.11.3)",
+                              letter));
           return;
         }
         GtlValue axis_number{program_.number(axis, r), "", "", r, true};
@@ -223,8 +246,10 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
     start(gtl::Operand::Angle, g->range);  // reports what it lacks
     return;
   }
-  if (origin) return fail(origin->range, fmt::format("o{} gives the origin of the coordinates after it: X.. Y.., I.. J.. "
-                                                     "or m.. a.. (§2.11.4)", origin->text));
+  if (origin)
+    return fail(origin->range, fmt::format("o{} gives the origin of the coordinates after it: X.. Y.., I.. J.. "
+                                           "or m.. a.. (§2.11.4)",
+                                           origin->text));
   if (groups.size() > 3) return fail(groups[3].range, "a definition has at most three operands (§2.11.3)");
   gtl::Shape shape;
   shape.target = target;
@@ -238,8 +263,10 @@ void Reader::gtl_block(Nc110Parser::GtlBlockContext* ctx) {
   add_word(0, 0, program_.number(0, whole), "", whole, ir::WordKind::Code,
            program_code(program_, {name, Scope::Block, Timing::None, {{Fn::GtlDefine, shape.pack()}}}));
   block_.words.back().address = name;
-  std::vector<GtlValue> values{{*index, std::string(1, target_letter), ctx->wordValue() ? text(ctx->wordValue()->getStart(), ctx->wordValue()->getStop()) : "", target_range, false},
-                               {program_.number(s2 ? 1 : 0, s2.value_or(whole)), "s", s2 ? "2" : "", s2.value_or(whole), !s2}};
+  std::vector<GtlValue> values{
+      {*index, std::string(1, target_letter),
+       ctx->wordValue() ? text(ctx->wordValue()->getStart(), ctx->wordValue()->getStop()) : "", target_range, false},
+      {program_.number(s2 ? 1 : 0, s2.value_or(whole)), "s", s2 ? "2" : "", s2.value_or(whole), !s2}};
   for (const GtlGroup& g : groups) values.insert(values.end(), g.values.begin(), g.values.end());
   for (size_t i = 0; i < values.size(); ++i) {
     add_word(values[i].address.empty() ? '#' : values[i].address[0], operand_slot(static_cast<int>(i)), values[i].value,

@@ -19,9 +19,9 @@ namespace fs = std::filesystem;
 class Nc110Frontend final : public DialectFrontend<Settings> {
  public:
   explicit Nc110Frontend(Settings settings) : DialectFrontend(std::move(settings)) {
-    rules_.max_repeat_depth = 3;    // §2.13.2.1: up to two RPT inside another
-    rules_.unique_labels = true;    // decision 14
-    rules_.block_ranges = true;     // (EPP,from,to) §2.13.2.3
+    rules_.max_repeat_depth = 3;        // §2.13.2.1: up to two RPT inside another
+    rules_.unique_labels = true;        // decision 14
+    rules_.block_ranges = true;         // (EPP,from,to) §2.13.2.3
     rules_.block_number_order = false;  // N numbers may repeat and go down (decision 7)
     rules_.processes = 5;               // chapter 4: up to five processes
   }
@@ -55,8 +55,9 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
     for (auto it = options.processes.rbegin(); it != options.processes.rend(); ++it) {
       const auto& [process, name] = *it;
       size_t slash = name.find('/');
-      CallSite site{name.substr(0, slash), slash == std::string::npos ? s_.default_device : name.substr(slash + 1), "", {}, 0, 0,
-                    ir::UnitKind::Process};
+      CallSite site{
+          name.substr(0, slash), slash == std::string::npos ? s_.default_device : name.substr(slash + 1), "", {}, 0, 0,
+          ir::UnitKind::Process};
       // As EXE names a program (decision 62).
       if (!capitals_and_digits(site.name, 1, 6) || !exe_device(site.device)) {
         diags.report(DiagId::ProcessOption, {}, fmt::format("{}={}", process, name),
@@ -87,7 +88,8 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
       // Lexically normal, so that messages and the trace name each file one way.
       fs::path root = (!options.library.empty() ? fs::path(options.library)
                        : !s_.library.empty()    ? fs::path(s_.library)
-                                                : main_path.parent_path()).lexically_normal();
+                                                : main_path.parent_path())
+                          .lexically_normal();
       // <library>/<device>/<name>, with or without .nc (decision 8).
       std::vector<fs::path> candidates = {root / call.device / call.name, root / call.device / (call.name + ".nc")};
       std::optional<std::string> text;
@@ -100,7 +102,8 @@ class Nc110Frontend final : public DialectFrontend<Settings> {
         }
       if (!text) {
         if (!reported)
-          diags.report(DiagId::ProgramNotFound, call.range, call.entry, (root / call.device / call.name).string() + "[.nc]");
+          diags.report(DiagId::ProgramNotFound, call.range, call.entry,
+                       (root / call.device / call.name).string() + "[.nc]");
         missing.insert(call.entry);
         unread();
         continue;

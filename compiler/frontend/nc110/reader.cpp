@@ -10,18 +10,18 @@ namespace ncc::nc110 {
 
 namespace {
 
-constexpr size_t kMaxBlockLength = 128;  // characters (§2.4.4)
+constexpr size_t kMaxBlockLength = 128;                    // characters (§2.4.4)
 constexpr std::string_view kLowerCase = "abcdlmoprstuvw";  // Table 2.1
-constexpr std::string_view kDefinitionLetters = "oadm";  // of GTL definitions only (§2.11.3)
+constexpr std::string_view kDefinitionLetters = "oadm";    // of GTL definitions only (§2.11.3)
 
 bool blank(char c) { return c == ' ' || c == '\t'; }
 
 // The Latin letter a Cyrillic one looks like, or 0.
 char latin_twin(uint32_t cp) {
   static constexpr std::pair<uint32_t, char> kTwins[] = {
-      {0x410, 'A'}, {0x412, 'B'}, {0x415, 'E'}, {0x41A, 'K'}, {0x41C, 'M'}, {0x41D, 'H'}, {0x41E, 'O'},
-      {0x420, 'P'}, {0x421, 'C'}, {0x422, 'T'}, {0x425, 'X'}, {0x430, 'a'}, {0x435, 'e'}, {0x43E, 'o'},
-      {0x440, 'p'}, {0x441, 'c'}, {0x443, 'y'}, {0x445, 'x'}};
+      {0x410, 'A'}, {0x412, 'B'}, {0x415, 'E'}, {0x41A, 'K'}, {0x41C, 'M'}, {0x41D, 'H'},
+      {0x41E, 'O'}, {0x420, 'P'}, {0x421, 'C'}, {0x422, 'T'}, {0x425, 'X'}, {0x430, 'a'},
+      {0x435, 'e'}, {0x43E, 'o'}, {0x440, 'p'}, {0x441, 'c'}, {0x443, 'y'}, {0x445, 'x'}};
   for (auto [c, l] : kTwins)
     if (c == cp) return l;
   return 0;
@@ -106,17 +106,22 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
           bool dash = (cp >= 0x2010 && cp <= 0x2015) || cp == 0x2212;
           size_t length = 0;
           const std::string keyboard = text == "," ? r_.keyboard_form(range.col - 1) : std::string();
-          r_.diags_.report(DiagId::CharInvalid, range,
-                           !keyboard.empty()      ? fmt::format("',' (\"{0},\" is how the keyboard takes a code; a program writes it in parentheses: ({0},...))", keyboard)
-                           : c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
-                           : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
-                           : dash  ? fmt::format("'{}' (U+{:04X}, a typographic dash: a minus is written '-')", text, cp)
-                                   : describe_char(text, 0, length));
+          r_.diags_.report(
+              DiagId::CharInvalid, range,
+              !keyboard.empty() ? fmt::format("',' (\"{0},\" is how the keyboard takes a code; a program writes it in "
+                                              "parentheses: ({0},...))",
+                                              keyboard)
+              : c >= 0x20 && c < 0x7F ? fmt::format("'{}'", text)
+              : quote ? fmt::format("'{}' (U+{:04X}, a typographic quote: a text is written in '\"')", text, cp)
+              : dash  ? fmt::format("'{}' (U+{:04X}, a typographic dash: a minus is written '-')", text, cp)
+                      : describe_char(text, 0, length));
         }
         return;
       case Nc110Lexer::TRAILING:
-        if (text[0] == ';') r_.diags_.report(DiagId::CommentInline, {range.file, range.line, range.col, range.line, range.col + 1});
-        else r_.diags_.report(DiagId::OneInstruction, range, fmt::format("words after a three-letter code, '{}'", text));
+        if (text[0] == ';')
+          r_.diags_.report(DiagId::CommentInline, {range.file, range.line, range.col, range.line, range.col + 1});
+        else
+          r_.diags_.report(DiagId::OneInstruction, range, fmt::format("words after a three-letter code, '{}'", text));
         return;
       default: {
         if (r_.second_instruction(range.col - 1)) return;
@@ -125,9 +130,10 @@ class Reader::Listener final : public antlr4::BaseErrorListener {
         while (!before.empty() && before.back() == ' ') before.remove_suffix(1);
         const bool sign_alone = before.size() >= 2 && (before.back() == '-' || before.back() == '+') &&
                                 std::isalpha(static_cast<unsigned char>(before[before.size() - 2]));
-        r_.diags_.report(DiagId::SyntaxError, range,
-                         sign_alone ? fmt::format("'{}' ('{}' has a sign and no value)", text, before.substr(before.size() - 2))
-                                    : fmt::format("'{}'", text));
+        r_.diags_.report(
+            DiagId::SyntaxError, range,
+            sign_alone ? fmt::format("'{}' ('{}' has a sign and no value)", text, before.substr(before.size() - 2))
+                       : fmt::format("'{}'", text));
       }
     }
   }
@@ -144,7 +150,8 @@ std::string Reader::keyboard_form(size_t comma) const {
   std::string_view code = before.substr(before.size() - 3);
   std::string_view rest = before.substr(0, before.size() - 3);
   while (!rest.empty() && rest.back() == ' ') rest.remove_suffix(1);
-  const bool numbered = rest.empty() || (rest[0] == 'N' && rest.find_first_not_of("0123456789", 1) == std::string_view::npos);
+  const bool numbered =
+      rest.empty() || (rest[0] == 'N' && rest.find_first_not_of("0123456789", 1) == std::string_view::npos);
   return numbered && s_.codes.count(std::string(code)) ? std::string(code) : std::string();
 }
 
@@ -174,7 +181,8 @@ bool Reader::second_instruction(size_t at) {
     if (at > 0 && before != std::string_view::npos && std::isalpha(static_cast<unsigned char>(line_[before]))) {
       size_t close = line_.find(')', at);
       size_t end = close == std::string_view::npos ? line_.size() : close + 1;
-      diags_.report(DiagId::ExpressionInWord, {file_, line_no_, static_cast<uint32_t>(before + 1), line_no_, static_cast<uint32_t>(end + 1)},
+      diags_.report(DiagId::ExpressionInWord,
+                    {file_, line_no_, static_cast<uint32_t>(before + 1), line_no_, static_cast<uint32_t>(end + 1)},
                     std::string(1, line_[before]));
       return true;
     }
@@ -185,7 +193,8 @@ bool Reader::second_instruction(size_t at) {
   }
   size_t end = line_.find_last_not_of(" \t\r") + 1;
   if (kind_ == Kind::Iso && line_.find(')', start) != std::string_view::npos) end = line_.find(')', start) + 1;
-  diags_.report(DiagId::OneInstruction, {file_, line_no_, static_cast<uint32_t>(start + 1), line_no_, static_cast<uint32_t>(end + 1)},
+  diags_.report(DiagId::OneInstruction,
+                {file_, line_no_, static_cast<uint32_t>(start + 1), line_no_, static_cast<uint32_t>(end + 1)},
                 fmt::format("{}, '{}'", what, line_.substr(start, end - start)));
   return true;
 }
@@ -195,8 +204,10 @@ void Reader::report_cyrillic(const SourceRange& range, const std::string& letter
   // A twin only where the Latin letter is one of Table 2.1 (no lower-case y).
   char twin = latin_twin(cp);
   if (twin >= 'a' && twin <= 'z' && kLowerCase.find(twin) == std::string_view::npos) twin = 0;
-  if (twin) diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", letter, cp), twin);
-  else diags_.report(DiagId::CharInvalid, range, fmt::format("'{}' (U+{:04X})", letter, cp));
+  if (twin)
+    diags_.report(DiagId::Homoglyph, range, fmt::format("'{}' (U+{:04X})", letter, cp), twin);
+  else
+    diags_.report(DiagId::CharInvalid, range, fmt::format("'{}' (U+{:04X})", letter, cp));
   block_.has_errors = true;
 }
 
@@ -250,7 +261,8 @@ void Reader::run(ir::Unit& unit) {
     if (sink_) sink_->take(program_, *unit_);
   }
   for (const Unsynced& u : unsynced_)
-    diags_.report(DiagId::SyncNeeded, u.at, u.code, u.why, u.more ? fmt::format(" (and in {} more block{})", u.more, u.more == 1 ? "" : "s") : "");
+    diags_.report(DiagId::SyncNeeded, u.at, u.code, u.why,
+                  u.more ? fmt::format(" (and in {} more block{})", u.more, u.more == 1 ? "" : "s") : "");
 }
 
 void Reader::read_line(std::string_view line, uint32_t line_no) {
@@ -277,8 +289,10 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
     const Utf8Char c = decode_utf8(line, i);
     const size_t length = c.length;
     byte_of_.push_back(static_cast<uint32_t>(i));
-    if (length && !(i == 0 && c.code_point == 0xFEFF)) decoded_.append(line.substr(i, length));
-    else decoded_ += '\x01';
+    if (length && !(i == 0 && c.code_point == 0xFEFF))
+      decoded_.append(line.substr(i, length));
+    else
+      decoded_ += '\x01';
     i += std::max<size_t>(length, 1);
   }
   byte_of_.push_back(static_cast<uint32_t>(line.size()));
@@ -298,9 +312,9 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   }
   size_t body = skip_leading(line, first);
   const Kind kind = body < line.size() && line[body] == '(' ? Kind::Code
-                    : gtl_definition(line, body)             ? Kind::Gtl
-                    : has_equals(line.substr(body))          ? Kind::Assign
-                                                             : Kind::Iso;
+                    : gtl_definition(line, body)            ? Kind::Gtl
+                    : has_equals(line.substr(body))         ? Kind::Assign
+                                                            : Kind::Iso;
   kind_ = kind;
 
   input_.load(decoded_);
@@ -319,7 +333,8 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
                                         {Nc110Lexer::NUMBER, Nc110Lexer::EREF, Nc110Lexer::VARREF, Nc110Lexer::NAME,
                                          Nc110Lexer::RPAREN, Nc110Lexer::DIGITS}};
   tokens_.fill();
-  if (!expression_fits(tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_)) {
+  if (!expression_fits(
+          tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_)) {
     block_.has_errors = block_.unread = true;
     return keep_block();
   }
@@ -329,26 +344,34 @@ void Reader::read_line(std::string_view line, uint32_t line_no) {
   switch (kind) {
     case Kind::Iso: {
       auto* ctx = parser_.isoBlock();
-      if (block_.has_errors) leading(ctx->leading(), true);
-      else iso_block(ctx);
+      if (block_.has_errors)
+        leading(ctx->leading(), true);
+      else
+        iso_block(ctx);
       break;
     }
     case Kind::Gtl: {
       auto* ctx = parser_.gtlBlock();
-      if (block_.has_errors) leading(ctx->leading(), true);
-      else gtl_block(ctx);
+      if (block_.has_errors)
+        leading(ctx->leading(), true);
+      else
+        gtl_block(ctx);
       break;
     }
     case Kind::Assign: {
       auto* ctx = parser_.assignBlock();
-      if (block_.has_errors) leading(ctx->leading(), true);
-      else assign_block(ctx);
+      if (block_.has_errors)
+        leading(ctx->leading(), true);
+      else
+        assign_block(ctx);
       break;
     }
     case Kind::Code: {
       auto* ctx = parser_.tlcBlock();
-      if (block_.has_errors) leading(ctx->leading(), true);
-      else code_block(ctx);
+      if (block_.has_errors)
+        leading(ctx->leading(), true);
+      else
+        code_block(ctx);
       break;
     }
   }
@@ -385,7 +408,8 @@ void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
         break;
       case Nc110Lexer::STRING: {
         if (stage >= 2) {
-          out_of_order(stage == 2 ? "a block has one label" : "the label must come before the block number and '#'/'&'");
+          out_of_order(stage == 2 ? "a block has one label"
+                                  : "the label must come before the block number and '#'/'&'");
           break;
         }
         stage = 2;
@@ -403,7 +427,7 @@ void Reader::leading(Nc110Parser::LeadingContext* ctx, bool has_body) {
           i += length;
         }
         if (count == 0 || count > 6 || !bad.empty()) {
-          std::string why = count == 0 ? "is empty"
+          std::string why = count == 0  ? "is empty"
                             : count > 6 ? fmt::format("has {} characters; a label has at most 6", count)
                                         : fmt::format("holds '{}': a label is made of capital letters and digits", bad);
           diags_.report(DiagId::LabelInvalid, r, fmt::format("\"{}\"", label), why);
@@ -483,7 +507,8 @@ std::optional<double> Reader::constant(char letter, std::string_view written, bo
   std::string_view fraction = point == std::string_view::npos ? std::string_view() : written.substr(point + 1);
   while (!fraction.empty() && fraction.back() == '0') fraction.remove_suffix(1);
   if (static_cast<int>(fraction.size()) > a.decimals) {
-    if (a.decimals == 0) diags_.report(DiagId::WholeNumber, r, shown);
+    if (a.decimals == 0)
+      diags_.report(DiagId::WholeNumber, r, shown);
     else {
       // The format as §1.2.6 writes it: X5.4 (the integer digits of the range's bound).
       const auto whole = static_cast<long long>(std::max(std::fabs(a.min), std::fabs(a.max)));
@@ -520,9 +545,12 @@ void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
   leading(ctx->leading(), !ctx->isoWord().empty());
   last_operand_.clear();
   for (auto* w : ctx->isoWord()) {
-    if (auto* a = dynamic_cast<Nc110Parser::AddressWordContext*>(w)) address_word(a);
-    else if (auto* t = dynamic_cast<Nc110Parser::ToolWordContext*>(w)) tool_word(t);
-    else if (auto* e = dynamic_cast<Nc110Parser::ResultWordContext*>(w)) result_word(e);
+    if (auto* a = dynamic_cast<Nc110Parser::AddressWordContext*>(w))
+      address_word(a);
+    else if (auto* t = dynamic_cast<Nc110Parser::ToolWordContext*>(w))
+      tool_word(t);
+    else if (auto* e = dynamic_cast<Nc110Parser::ResultWordContext*>(w))
+      result_word(e);
   }
   finish_iso_block();
 }
@@ -534,7 +562,8 @@ void Reader::iso_block(Nc110Parser::IsoBlockContext* ctx) {
 bool Reader::scan_plain(std::string_view line) {
   static constexpr PlainRules kRules{"ABCDFGHIJKLMNOPQRSUVWXYZ", true, true, true};
   if (!scan_plain_words(line, kRules, plain_)) return false;
-  if (!plain_.words.empty() && plain_.words.front().letter == 'N' && (plain_.words.front().sign || plain_.words.front().point))
+  if (!plain_.words.empty() && plain_.words.front().letter == 'N' &&
+      (plain_.words.front().sign || plain_.words.front().point))
     return false;  // a block number is digits
   const uint32_t errors = diags_.error_count();
   block_.skippable = plain_.skip;
@@ -557,7 +586,8 @@ bool Reader::scan_plain(std::string_view line) {
 void Reader::finish_iso_block() {
   check_iso_block();
   bool action = false;
-  for (const ir::Word& w : block_.words) action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
+  for (const ir::Word& w : block_.words)
+    action = action || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
   if (action) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
 }
 
@@ -589,7 +619,8 @@ void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
   }
   if (letter == 's' && !(v && v->eref.empty() && !v->sign && v->number == "2"))
     return fail(DiagId::GtlSyntax, "s2 takes the second solution; the first is taken without s (§2.8.6)");
-  if (letter == 'N') return fail(DiagId::LeadingFieldOrder, "the block number N comes first in the block, with its digits");
+  if (letter == 'N')
+    return fail(DiagId::LeadingFieldOrder, "the block number N comes first in the block, with its digits");
   if (letter == 'E') return fail(DiagId::ParameterNumber, s_.e_count - 1);
   auto entry = s_.tables.addresses.find(letter);
   if (entry == s_.tables.addresses.end() || entry->second.word_class == stdlib::WordClass::Undefined)
@@ -620,8 +651,8 @@ void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
     return;
   }
   // A constant, or nothing: zero for G, the axes, I J K and R (§2.4.3, decision 4).
-  bool zero_allowed = letter == 'G' || a.word_class == stdlib::WordClass::Dimension || letter == 'I' || letter == 'J' ||
-                      letter == 'K';
+  bool zero_allowed =
+      letter == 'G' || a.word_class == stdlib::WordClass::Dimension || letter == 'I' || letter == 'J' || letter == 'K';
   if (!v && !zero_allowed) return fail(DiagId::ValueMissing, shown);
   std::string number_text = v ? std::string(v->number) : "0";
   if (letter == 'G' || letter == 'M') {
@@ -631,7 +662,9 @@ void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
     if (digits.size() > 2) return fail(DiagId::TooManyDigits, shown, digits.size(), std::string(1, letter) + "2", 2);
     const int number = parse_number<int>(digits).value_or(0);  // at most 2 digits
     int32_t code = code_index(letter, number);
-    if (code < 0) return fail(letter == 'G' ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, fmt::format("{}{:02}", letter, number));
+    if (code < 0)
+      return fail(letter == 'G' ? DiagId::GCodeUndefined : DiagId::MCodeUndefined,
+                  fmt::format("{}{:02}", letter, number));
     add_word(letter, letter_slot(letter), program_.number(number, r), v ? written : "", r, ir::WordKind::Code, code);
     return;
   }
@@ -710,7 +743,8 @@ void Reader::check_iso_block() {
     if (w.kind != ir::WordKind::Parameter) continue;
     if (w.address == "E") result = &w;
     if (w.address == "r") radius = &w;
-    if (w.address.size() == 1 && s_.conventions.axes.find(w.address[0]) != std::string::npos) ++axes;
+    if (w.address.size() == 1 && s_.conventions.axes.find(w.address[0]) != std::string::npos)
+      ++axes;
     else if (w.address.size() == 1 && kAxisLetters.find(w.address[0]) != std::string_view::npos &&
              s_.conventions.axes.find(w.address[0]) == std::string::npos)
       diags_.report(DiagId::AxisAbsent, w.range, w.address, s_.conventions.axes);
@@ -720,7 +754,8 @@ void Reader::check_iso_block() {
     block_.has_errors = true;
   };
   const bool hole = measure && measure->address == "G" && program_.semantics.codes[measure->code].name == "G73";
-  if (result && !measure) fail(result->range, "an E parameter alone names where G72, G73 or G74 store what they measure");
+  if (result && !measure)
+    fail(result->range, "an E parameter alone names where G72, G73 or G74 store what they measure");
   if (measure && !result)
     fail(measure->range, fmt::format("{} needs the E parameter its results go to, e.g. E40",
                                      program_.semantics.codes[measure->code].name));
@@ -739,7 +774,8 @@ void Reader::check_iso_block() {
     if (!hole && (axes < 1 || axes > 3))
       fail(measure->range, fmt::format("{} measures 1 to 3 axes; this block has {}", name, axes));
     uint32_t count = hole ? 3 : static_cast<uint32_t>(std::max(axes, 1));
-    const uint32_t first = whole_in<uint32_t>(program_.exprs[result->value].number, 0, s_.e_count - 1).value_or(0);  // result_word() checked it
+    const uint32_t first = whole_in<uint32_t>(program_.exprs[result->value].number, 0, s_.e_count - 1)
+                               .value_or(0);  // result_word() checked it
     uint32_t last = first + count - 1;
     if (last >= s_.e_count) {
       diags_.report(DiagId::ParameterRange, result->range, fmt::format("E{}", last), s_.e_count - 1);
@@ -771,8 +807,8 @@ void Reader::check_iso_block() {
   if (axes > 8) {  // §2.8.1.1: at most 8 axes; reported at the ninth
     int seen = 0;
     for (const ir::Word& w : block_.words)
-      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 && s_.conventions.axes.find(w.address[0]) != std::string::npos &&
-          ++seen == 9)
+      if (w.kind == ir::WordKind::Parameter && w.address.size() == 1 &&
+          s_.conventions.axes.find(w.address[0]) != std::string::npos && ++seen == 9)
         diags_.report(DiagId::TooManyWords, w.range, axes, "axis", 8);
     block_.has_errors = true;
   }

@@ -10,9 +10,9 @@
 
 #include "Nc110Lexer.h"
 #include "Nc110Parser.h"
-#include "ir/ir.h"
 #include "frontend/frontend.h"
 #include "frontend/plain_words.h"
+#include "ir/ir.h"
 #include "settings.h"
 
 namespace ncc::nc110 {
@@ -23,7 +23,7 @@ struct CallSite {
   std::string device;  // MP2, or the default
   std::string entry;   // the unit's name: MP2/P800
   SourceRange range;
-  size_t unit = 0, block = 0;  // where the call stands
+  size_t unit = 0, block = 0;                    // where the call stands
   ir::UnitKind kind = ir::UnitKind::Subprogram;  // Process: a program EXE starts
 };
 
@@ -108,7 +108,8 @@ class Reader {
   ir::ExprId memory_expr(const MemoryRef& ref, SourceRange r);
   // A system variable by name and number, to read or (writing) to write.
   // The number after a system variable's name (TIM1), which must be whole.
-  bool system_number(antlr4::tree::TerminalNode* n, const std::string& name, SourceRange r, std::optional<uint32_t>& out);
+  bool system_number(antlr4::tree::TerminalNode* n, const std::string& name, SourceRange r,
+                     std::optional<uint32_t>& out);
   std::optional<SysRef> system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r, bool writing,
                                    const SystemName** entry = nullptr);
   ir::ExprId system_expr(SysRef ref, SourceRange r);
@@ -143,7 +144,8 @@ class Reader {
     size_t more;
   };
   std::vector<Unsynced> unsynced_;
-  bool virtual_operands(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);  // UAV's, by mode
+  bool virtual_operands(const CodeSignature& sig, const std::vector<Operand>& operands,
+                        SourceRange code_range);  // UAV's, by mode
   // The three-letter code a line starts with before the comma at `comma`, typed as at
   // the keyboard ("DPT, 10, 12, 1000"), or "".
   std::string keyboard_form(size_t comma) const;

@@ -11,21 +11,47 @@ namespace {
 
 // "origin dim+", "[factor axis*]": the operand kinds of a code.
 bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
-  static const std::map<std::string_view, OperandKind> kKinds = {
-      {"origin", OperandKind::Origin},       {"axis", OperandKind::Axis},       {"dim", OperandKind::Dim},
-      {"pair", OperandKind::Pair},           {"angle", OperandKind::Angle},     {"factor", OperandKind::Factor},
-      {"count", OperandKind::Count},         {"program", OperandKind::Program}, {"label", OperandKind::Label},
-      {"comparand", OperandKind::Comparand}, {"item", OperandKind::Item},       {"seconds", OperandKind::Seconds},
-      {"zone", OperandKind::Zone},           {"turning", OperandKind::Turning}, {"condition", OperandKind::Condition},
-      {"mode", OperandKind::Mode},           {"tool", OperandKind::Tool},       {"corrector", OperandKind::Corrector},
-      {"increment", OperandKind::Increment}, {"distance", OperandKind::Distance}, {"speed", OperandKind::Speed},
-      {"virtual", OperandKind::Virtual},     {"axes", OperandKind::Axes},       {"value", OperandKind::Value},
-      {"channel", OperandKind::Channel},     {"structure", OperandKind::Structure}, {"record", OperandKind::Record},
-      {"records", OperandKind::Records},     {"file", OperandKind::File},       {"access", OperandKind::Access},
-      {"binding", OperandKind::Binding},     {"prompt", OperandKind::Prompt},   {"target", OperandKind::Target},
-      {"process", OperandKind::Process},     {"wait", OperandKind::Wait},
-      {"field", OperandKind::Field},         {"row", OperandKind::Row},         {"column", OperandKind::Column},
-      {"format", OperandKind::Format},       {"switch", OperandKind::Switch},   {"attribute", OperandKind::Attribute}};
+  static const std::map<std::string_view, OperandKind> kKinds = {{"origin", OperandKind::Origin},
+                                                                 {"axis", OperandKind::Axis},
+                                                                 {"dim", OperandKind::Dim},
+                                                                 {"pair", OperandKind::Pair},
+                                                                 {"angle", OperandKind::Angle},
+                                                                 {"factor", OperandKind::Factor},
+                                                                 {"count", OperandKind::Count},
+                                                                 {"program", OperandKind::Program},
+                                                                 {"label", OperandKind::Label},
+                                                                 {"comparand", OperandKind::Comparand},
+                                                                 {"item", OperandKind::Item},
+                                                                 {"seconds", OperandKind::Seconds},
+                                                                 {"zone", OperandKind::Zone},
+                                                                 {"turning", OperandKind::Turning},
+                                                                 {"condition", OperandKind::Condition},
+                                                                 {"mode", OperandKind::Mode},
+                                                                 {"tool", OperandKind::Tool},
+                                                                 {"corrector", OperandKind::Corrector},
+                                                                 {"increment", OperandKind::Increment},
+                                                                 {"distance", OperandKind::Distance},
+                                                                 {"speed", OperandKind::Speed},
+                                                                 {"virtual", OperandKind::Virtual},
+                                                                 {"axes", OperandKind::Axes},
+                                                                 {"value", OperandKind::Value},
+                                                                 {"channel", OperandKind::Channel},
+                                                                 {"structure", OperandKind::Structure},
+                                                                 {"record", OperandKind::Record},
+                                                                 {"records", OperandKind::Records},
+                                                                 {"file", OperandKind::File},
+                                                                 {"access", OperandKind::Access},
+                                                                 {"binding", OperandKind::Binding},
+                                                                 {"prompt", OperandKind::Prompt},
+                                                                 {"target", OperandKind::Target},
+                                                                 {"process", OperandKind::Process},
+                                                                 {"wait", OperandKind::Wait},
+                                                                 {"field", OperandKind::Field},
+                                                                 {"row", OperandKind::Row},
+                                                                 {"column", OperandKind::Column},
+                                                                 {"format", OperandKind::Format},
+                                                                 {"switch", OperandKind::Switch},
+                                                                 {"attribute", OperandKind::Attribute}};
   bool group = false;
   size_t i = 0;
   while (i < text.size()) {
@@ -45,7 +71,8 @@ bool parse_signature(std::string_view text, std::vector<OperandItem>& out) {
     if (it == kKinds.end()) return false;
     OperandItem item{it->second, '1', group};
     i = end;
-    if (i < text.size() && (text[i] == '?' || text[i] == '*' || text[i] == '+' || text[i] == '~')) item.repeat = text[i++];
+    if (i < text.size() && (text[i] == '?' || text[i] == '*' || text[i] == '+' || text[i] == '~'))
+      item.repeat = text[i++];
     out.push_back(item);
   }
   // Only the last item (of the signature or of its group) may repeat.
@@ -80,8 +107,8 @@ void read_codes(Settings& s, Diagnostics& diags) {
       if (it != kOps.end()) code.asset = it->second;
     } else if ((action.starts_with("@screen(") || action.starts_with("@process(")) && action.ends_with(")")) {
       static const std::map<std::string_view, ir::StmtKind> kKinds = {
-          {"screen(switch", ir::StmtKind::ScreenSwitch}, {"screen(define", ir::StmtKind::ScreenDefine},
-          {"screen(show", ir::StmtKind::ScreenShow},     {"process(start", ir::StmtKind::ProcessStart},
+          {"screen(switch", ir::StmtKind::ScreenSwitch},     {"screen(define", ir::StmtKind::ScreenDefine},
+          {"screen(show", ir::StmtKind::ScreenShow},         {"process(start", ir::StmtKind::ProcessStart},
           {"process(release", ir::StmtKind::ProcessRelease}, {"process(wait", ir::StmtKind::ProcessWait},
           {"process(signal", ir::StmtKind::ProcessSignal}};
       auto it = kKinds.find(action.substr(1, action.size() - 2));
@@ -90,8 +117,10 @@ void read_codes(Settings& s, Diagnostics& diags) {
       if (it != kKinds.end()) code.screen = it->second;
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {
-          {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat}, {"@call", Action::Call},
-          {"@call_range", Action::CallRange}, {"@jump", Action::Jump}, {"@display", Action::Display}, {"@input", Action::Input}};
+          {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat},
+          {"@call", Action::Call},     {"@call_range", Action::CallRange},
+          {"@jump", Action::Jump},     {"@display", Action::Display},
+          {"@input", Action::Input}};
       auto it = kActions.find(action);
       ok = ok && it != kActions.end();
       if (it != kActions.end()) code.action = it->second;
@@ -123,7 +152,9 @@ void read_system(Settings& s, Diagnostics& diags) {
     if (c[2] != "-") {
       size_t dots = c[2].find("..");
       uint32_t lo = parse_number<uint32_t>(std::string_view(c[2]).substr(0, dots)).value_or(UINT32_MAX);
-      uint32_t hi = dots == std::string::npos ? UINT32_MAX : parse_number<uint32_t>(std::string_view(c[2]).substr(dots + 2)).value_or(UINT32_MAX);
+      uint32_t hi = dots == std::string::npos
+                        ? UINT32_MAX
+                        : parse_number<uint32_t>(std::string_view(c[2]).substr(dots + 2)).value_or(UINT32_MAX);
       ok = ok && hi != UINT32_MAX && lo <= hi && (!n.var || hi < sys_indices(*n.var));
       n.numbered = true;
       n.first = lo;
@@ -173,7 +204,7 @@ void read_memories(Settings& s, Diagnostics& diags) {
   auto table = stdlib::load_table("nc110", "memories.tsv", 5, diags);
   if (!table) return;
   static const std::map<std::string_view, MemFormat> kFormats = {
-      {"BL", MemFormat::Bit}, {"BY", MemFormat::Byte}, {"IN", MemFormat::Integer},
+      {"BL", MemFormat::Bit},  {"BY", MemFormat::Byte}, {"IN", MemFormat::Integer},
       {"LI", MemFormat::Long}, {"RE", MemFormat::Real}, {"LR", MemFormat::LongReal}};
   for (const stdlib::TableRow& row : table->rows) {
     const auto& c = row.cells;
@@ -213,8 +244,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   if (p.user_sets("nc110.tables.g_codes")) stdlib::add_class_pairs(s.tables);
 
   if (auto v = p.number("nc110.e_count", diags)) {
-    if (auto n = whole_in<uint32_t>(*v, 1, 65536)) s.e_count = *n;
-    else ok = (p.report_value(diags, "nc110.e_count", "must be a whole number from 1 to 65536"), false);
+    if (auto n = whole_in<uint32_t>(*v, 1, 65536))
+      s.e_count = *n;
+    else
+      ok = (p.report_value(diags, "nc110.e_count", "must be a whole number from 1 to 65536"), false);
   }
   if (auto sizes = p.number_table("nc110.memories", diags)) {
     for (const auto& [name, bytes] : *sizes) {
@@ -232,13 +265,21 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   if (auto v = p.string("nc110.default_device", diags)) {
     // As a CLS operand writes it (§2.13.2.2): 2 or 3 capitals and digits, a letter first.
     bool valid = v->size() >= 2 && v->size() <= 3 && std::isupper(static_cast<unsigned char>((*v)[0])) &&
-                 std::all_of(v->begin(), v->end(), [](char ch) { return std::isupper(static_cast<unsigned char>(ch)) || std::isdigit(static_cast<unsigned char>(ch)); });
-    if (valid) s.default_device = *v;
-    else ok = (p.report_value(diags, "nc110.default_device", "must be a device name of 2 or 3 capitals and digits, a letter first (MP0)"), false);
+                 std::all_of(v->begin(), v->end(), [](char ch) {
+                   return std::isupper(static_cast<unsigned char>(ch)) || std::isdigit(static_cast<unsigned char>(ch));
+                 });
+    if (valid)
+      s.default_device = *v;
+    else
+      ok = (p.report_value(diags, "nc110.default_device",
+                           "must be a device name of 2 or 3 capitals and digits, a letter first (MP0)"),
+            false);
   }
   if (auto v = p.string("nc110.mirror", diags)) {
-    if (*v == "set" || *v == "toggle") s.conventions.mirror_toggles = *v == "toggle";
-    else ok = (p.report_value(diags, "nc110.mirror", "must be set or toggle"), false);
+    if (*v == "set" || *v == "toggle")
+      s.conventions.mirror_toggles = *v == "toggle";
+    else
+      ok = (p.report_value(diags, "nc110.mirror", "must be set or toggle"), false);
   }
 
   // The power-on state: Table 2.2, then the codes the profile puts in their place.
@@ -251,7 +292,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       std::string code = v->substr(at, end - at);
       at = end + 1;
       if (code.empty()) continue;
-      auto number = code.size() > 1 && code[0] == 'G' ? parse_number<uint32_t>(std::string_view(code).substr(1)) : std::nullopt;
+      auto number =
+          code.size() > 1 && code[0] == 'G' ? parse_number<uint32_t>(std::string_view(code).substr(1)) : std::nullopt;
       auto entry = number ? s.tables.g_codes.find(static_cast<int>(*number)) : s.tables.g_codes.end();
       if (entry == s.tables.g_codes.end()) {
         ok = (p.report_value(diags, "nc110.power_on", fmt::format("'{}' is not a G code of the NC-110", code)), false);
@@ -259,7 +301,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       }
       // It replaces the code of its class.
       std::erase_if(s.power_on, [&](const std::string& other) {
-        auto n = other.size() > 1 && other[0] == 'G' ? parse_number<uint32_t>(std::string_view(other).substr(1)) : std::nullopt;
+        auto n = other.size() > 1 && other[0] == 'G' ? parse_number<uint32_t>(std::string_view(other).substr(1))
+                                                     : std::nullopt;
         auto e = n ? s.tables.g_codes.find(static_cast<int>(*n)) : s.tables.g_codes.end();
         return e != s.tables.g_codes.end() && e->second.group == entry->second.group;
       });
@@ -289,8 +332,10 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.arc_tolerance = 0.01;
   c.lead_resolution = 0.0001;
   if (auto v = p.number("nc110.arc_tolerance", diags)) {
-    if (*v >= 0) c.arc_tolerance = *v;
-    else ok = (p.report_value(diags, "nc110.arc_tolerance", "must not be negative"), false);
+    if (*v >= 0)
+      c.arc_tolerance = *v;
+    else
+      ok = (p.report_value(diags, "nc110.arc_tolerance", "must not be negative"), false);
   }
   c.axes = "XYZABCUVW";
   if (auto v = p.string("nc110.axes", diags)) {
@@ -299,15 +344,21 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
       if (v->find(axis) != std::string::npos) axes += axis;
     bool valid = !v->empty();
     for (char axis : *v) valid = valid && kAxisLetters.find(axis) != std::string_view::npos;
-    if (valid) c.axes = axes;
-    else ok = (p.report_value(diags, "nc110.axes", "must list axis letters of X Y Z A B C U V W P Q D"), false);
+    if (valid)
+      c.axes = axes;
+    else
+      ok = (p.report_value(diags, "nc110.axes", "must list axis letters of X Y Z A B C U V W P Q D"), false);
   }
   if (auto v = p.string("nc110.tool_offset_axes", diags)) {
     bool valid = !v->empty();
     for (size_t i = 0; i < v->size(); ++i)
       valid = valid && c.axes.find((*v)[i]) != std::string::npos && v->find((*v)[i], i + 1) == std::string::npos;
-    if (valid) c.tool_offset_axes = *v;
-    else ok = (p.report_value(diags, "nc110.tool_offset_axes", fmt::format("must list axes of the machine ({}), each once", c.axes)), false);
+    if (valid)
+      c.tool_offset_axes = *v;
+    else
+      ok = (p.report_value(diags, "nc110.tool_offset_axes",
+                           fmt::format("must list axes of the machine ({}), each once", c.axes)),
+            false);
   }
   if (!ok) return std::nullopt;
   return s;

@@ -11,9 +11,9 @@ namespace ncc::pp {
 
 namespace {
 
-constexpr size_t kLineLimit = 80;        // §2.2.1 f
-constexpr uint32_t kParameters = 96;     // R0..R95
-constexpr size_t kSubprograms = 99;      // §2.3.3
+constexpr size_t kLineLimit = 80;     // §2.2.1 f
+constexpr uint32_t kParameters = 96;  // R0..R95
+constexpr size_t kSubprograms = 99;   // §2.3.3
 
 bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
@@ -66,18 +66,8 @@ std::string Reader::macro_name(uint32_t number) { return fmt::format("L{:04}", n
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
                Diagnostics& diags, Spaces& spaces, std::optional<uint32_t> macro, bool fast_path, BlockSink* sink)
-    : s_(settings),
-      program_(program),
-      source_(source),
-      file_(file),
-      diags_(diags),
-      spaces_(spaces),
-      macro_(macro),
-      fast_path_(fast_path),
-      sink_(sink),
-      first_unit_(program.units.size()),
-      in_main_(!macro),
-      streaming_(!macro) {
+    : s_(settings), program_(program), source_(source), file_(file), diags_(diags), spaces_(spaces), macro_(macro),
+      fast_path_(fast_path), sink_(sink), first_unit_(program.units.size()), in_main_(!macro), streaming_(!macro) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.getInterpreter<antlr4::atn::ParserATNSimulator>()->setPredictionMode(antlr4::atn::PredictionMode::SLL);
@@ -122,13 +112,13 @@ void Reader::read_tape() {
     for (size_t i = 0; i < line.size(); ++i)
       if ((static_cast<unsigned char>(line[i]) & 0xC0) != 0x80 && ++chars == kLineLimit + 1) col81 = i;
     if (chars > kLineLimit)
-      diags_.report(DiagId::LineTooLong, {file_, line_no, static_cast<uint32_t>(col81 + 1), line_no,
-                                          static_cast<uint32_t>(line.size() + 1)},
+      diags_.report(DiagId::LineTooLong,
+                    {file_, line_no, static_cast<uint32_t>(col81 + 1), line_no, static_cast<uint32_t>(line.size() + 1)},
                     chars, kLineLimit);
     if (line_no == start_line) continue;  // the program-start line
     bool comment = false;
     size_t junk = std::string_view::npos;  // text before the first block, on this line
-    size_t from = 0;                        // where a comment's text begins
+    size_t from = 0;                       // where a comment's text begins
     // A comment line before the first block continues the program start's (§2.2.1 c):
     // the title.
     auto title = [&](size_t end) {
@@ -170,7 +160,8 @@ void Reader::read_tape() {
   close(text.size());
   if (!star && s_.require_star) {
     uint32_t last = source_.line_count();
-    diags_.report(DiagId::NoStar, SourceRange::point(file_, last, static_cast<uint32_t>(source_.line(last).size() + 1)));
+    diags_.report(DiagId::NoStar,
+                  SourceRange::point(file_, last, static_cast<uint32_t>(source_.line(last).size() + 1)));
   }
 }
 
@@ -192,7 +183,8 @@ void Reader::read_start(uint32_t line_no, size_t pct) {
     if (ec != std::errc() || end != digits.data() + digits.size() || v < 1 || v > 999999)
       diags_.report(DiagId::ValueForm, r, "The program number", "a whole number from 1 to 999999",
                     fmt::format("'{}'", digits));
-    else number_ += std::to_string(v);
+    else
+      number_ += std::to_string(v);
   } else {
     diags_.report(DiagId::ValueForm, start_range_, "'%'", "the program number", "a whole number from 1 to 999999");
   }
@@ -205,8 +197,9 @@ void Reader::read_start(uint32_t line_no, size_t pct) {
     std::string_view rest = line.substr(pct - base + t->getStartIndex());
     while (!rest.empty() && is_space(rest.back())) rest.remove_suffix(1);
     SourceRange r = range(t, elements.back()->getStop());
-    diags_.report(DiagId::ProgramStructure, r,
-                  fmt::format("'{}' stands on the program-start line, which holds the program number and a comment only", rest));
+    diags_.report(
+        DiagId::ProgramStructure, r,
+        fmt::format("'{}' stands on the program-start line, which holds the program number and a comment only", rest));
   }
 }
 
@@ -236,7 +229,8 @@ SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
 }
 
 std::string Reader::comment_text(antlr4::Token* t) const {
-  std::string_view text = source_.text().substr(piece_.begin + t->getStartIndex(), t->getStopIndex() - t->getStartIndex() + 1);
+  std::string_view text =
+      source_.text().substr(piece_.begin + t->getStartIndex(), t->getStopIndex() - t->getStartIndex() + 1);
   text.remove_prefix(1);
   if (t->getType() == PpLexer::COMMENT) text.remove_suffix(1);
   return std::string(text);
@@ -262,7 +256,8 @@ void Reader::read_block(const Piece& piece) {
     load(piece);
     PpParser::BlockContext* ctx = parser_.block();
     antlr4::Token* n = ctx->number;
-    block_number(trim_left(std::string_view(n->getText()).substr(1)), range(n, n), n->getType() == PpLexer::BARE_ADDRESS);
+    block_number(trim_left(std::string_view(n->getText()).substr(1)), range(n, n),
+                 n->getType() == PpLexer::BARE_ADDRESS);
     auto elements = ctx->element();
     for (size_t i = 0; i < elements.size(); ++i) element(elements[i], i, elements);
   }
@@ -280,8 +275,11 @@ bool Reader::scan_plain(const Piece& piece) {
   const size_t eol = std::min(text.find('\n'), text.size());
   if (text.substr(eol).find_first_not_of(" \t\r\n") != std::string_view::npos) return false;
   text = text.substr(0, eol);
-  if (!scan_plain_words(text, kRules, plain_) || plain_.words.empty() || plain_.words.front().letter != 'N') return false;
-  auto at = [&](uint32_t from, uint32_t to) { return SourceRange{file_, piece.line, piece.col + from, piece.line, piece.col + to}; };
+  if (!scan_plain_words(text, kRules, plain_) || plain_.words.empty() || plain_.words.front().letter != 'N')
+    return false;
+  auto at = [&](uint32_t from, uint32_t to) {
+    return SourceRange{file_, piece.line, piece.col + from, piece.line, piece.col + to};
+  };
   const PlainWord& n = plain_.words.front();
   block_.words.reserve(plain_.words.size());  // the block keeps them: no spare room
   block_number(text.substr(n.value_from, n.to - n.value_from), at(n.from, n.to), false);
@@ -344,7 +342,8 @@ void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vec
     if (b >= all.size()) return false;
     antlr4::Token* x = all[a]->getStop();
     antlr4::Token* y = all[b]->getStart();
-    std::string_view between = std::string_view(sanitized_).substr(x->getStopIndex() + 1, y->getStartIndex() - x->getStopIndex() - 1);
+    std::string_view between =
+        std::string_view(sanitized_).substr(x->getStopIndex() + 1, y->getStartIndex() - x->getStopIndex() - 1);
     return between.find_first_not_of(" \t") == std::string_view::npos;
   };
   auto type = [&](size_t i) { return i < all.size() ? all[i]->getStart()->getType() : 0; };
@@ -355,8 +354,9 @@ void Reader::element(PpParser::ElementContext* ctx, size_t index, const std::vec
         size_t last = index + 1;
         if (type(last) == PpLexer::SIGN && type(last + 1) == PpLexer::NUMBER && adjacent(last, last + 1)) ++last;
         SourceRange whole = range(t, all[last]->getStop());
-        diags_.report(DiagId::SpaceInValue, whole, t->getText(),
-                      sanitized_.substr(t->getStartIndex(), all[last]->getStop()->getStopIndex() - t->getStartIndex() + 1));
+        diags_.report(
+            DiagId::SpaceInValue, whole, t->getText(),
+            sanitized_.substr(t->getStartIndex(), all[last]->getStop()->getStopIndex() - t->getStartIndex() + 1));
       } else {
         diags_.report(DiagId::NoDigits, r, t->getText());
       }
@@ -441,8 +441,10 @@ std::optional<ir::ExprId> Reader::value(std::string_view text, char letter, cons
   }
   if (dimensionless) {
     // §2.1.3: digits only.
-    if (w.has_sign) return (diags_.report(DiagId::SignNotAllowed, r, shown, "it is a number without dimension"), std::nullopt);
-    if (w.point) return (diags_.report(DiagId::PointNotAllowed, r, shown, "it is a number without dimension"), std::nullopt);
+    if (w.has_sign)
+      return (diags_.report(DiagId::SignNotAllowed, r, shown, "it is a number without dimension"), std::nullopt);
+    if (w.point)
+      return (diags_.report(DiagId::PointNotAllowed, r, shown, "it is a number without dimension"), std::nullopt);
   } else {
     // The maximum block format (§2.2): ±5.3.
     if (size_t n = significant_integer_digits(w.before); n > 5)
@@ -548,7 +550,8 @@ Reader::Flow Reader::flow_of(const ir::Block& b) const {
     }
     if (w.address == "L" && w.kind != ir::WordKind::Ignored) {
       f.l_word = &w;
-      if (program_.is_constant(w.value)) f.l = whole_in<uint32_t>(program_.exprs[w.value].number, 0, UINT32_MAX);  // 1..9999: the table
+      if (program_.is_constant(w.value))
+        f.l = whole_in<uint32_t>(program_.exprs[w.value].number, 0, UINT32_MAX);  // 1..9999: the table
     }
     if (w.address == "Q" && w.kind != ir::WordKind::Ignored) f.q_word = &w;
   }
@@ -601,11 +604,12 @@ void Reader::finish_block() {
                   "ncc resolves calls and jumps before the run");
     block_.has_errors = true;
   } else if (uses_l && !f.l_word && !block_.has_errors) {
-    const ir::Word* code = f.control_word[static_cast<size_t>(has(Control::Entry) ? Control::Entry
-                                                              : has(Control::Jump) ? Control::Jump
+    const ir::Word* code = f.control_word[static_cast<size_t>(has(Control::Entry)       ? Control::Entry
+                                                              : has(Control::Jump)      ? Control::Jump
                                                               : has(Control::CallMacro) ? Control::CallMacro
                                                                                         : Control::CallSubprogram)];
-    diags_.report(DiagId::ValueMissing, code->range, fmt::format("{}{} (L in the same block)", code->address, code->text));
+    diags_.report(DiagId::ValueMissing, code->range,
+                  fmt::format("{}{} (L in the same block)", code->address, code->text));
     block_.has_errors = true;
   }
   // §2.2.1 j: with G04, Q is the dwell and a call or jump runs once.
@@ -629,7 +633,8 @@ void Reader::finish_block() {
     block_.stmts.push_back(s);
   }
   bool machine = false;
-  for (const ir::Word& w : block_.words) machine = machine || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
+  for (const ir::Word& w : block_.words)
+    machine = machine || w.kind == ir::WordKind::Code || w.kind == ir::WordKind::Parameter;
   if (machine) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
   place_block();
 }
@@ -671,7 +676,8 @@ void Reader::place_block() {
 }
 
 const Reader::Numbered* Reader::numbered(uint32_t number) const {
-  auto it = std::lower_bound(rising_.begin(), rising_.end(), number, [](const Numbered& n, uint32_t v) { return n.number < v; });
+  auto it = std::lower_bound(rising_.begin(), rising_.end(), number,
+                             [](const Numbered& n, uint32_t v) { return n.number < v; });
   if (it != rising_.end() && it->number == number) return &*it;
   auto other = others_.find(number);
   return other != others_.end() ? &other->second : nullptr;
@@ -689,7 +695,8 @@ bool Reader::flow(ir::Block& b, const Flow& f, size_t unit, const ir::Unit& in) 
   call.value = f.q_word && f.q_word->kind == ir::WordKind::Control ? f.q_word->value : program_.number(1, b.range);
   if (const ir::Word* w = word(Control::CallSubprogram)) {
     if (macro_) {
-      diags_.report(DiagId::ProgramStructure, w->range, "a macro cannot call a subprogram: subprograms belong to their part program (§2.3.3)");
+      diags_.report(DiagId::ProgramStructure, w->range,
+                    "a macro cannot call a subprogram: subprograms belong to their part program (§2.3.3)");
       return true;
     }
     call.label = fmt::format("L{}", *f.l);
@@ -724,8 +731,9 @@ void Reader::build_units() {
   while (i < blocks_.size()) {
     Flow f = flow_of(blocks_[i]);
     if (!f.control_word[static_cast<size_t>(Control::Entry)]) {
-      structure(blocks_[i], macro_ ? "a macro file holds one macro: G79 L<number> ... G70 (§2.3.5)"
-                                   : "after the main part (M02, M30) come only subprograms: G79 L<number> ... G70 (§2.3.2)");
+      structure(blocks_[i],
+                macro_ ? "a macro file holds one macro: G79 L<number> ... G70 (§2.3.5)"
+                       : "after the main part (M02, M30) come only subprograms: G79 L<number> ... G70 (§2.3.2)");
       ++i;
       continue;
     }
@@ -740,17 +748,20 @@ void Reader::build_units() {
       structure(blocks_[i], fmt::format("{} L{} does not end: a block with G70 ends it (§2.3.3)",
                                         macro_ ? "macro" : "subprogram", n));
     if (macro_ && n != *macro_)
-      structure(blocks_[i], fmt::format("the macro in file {} must be L{}, not L{} (§2.3.5)", macro_name(*macro_), *macro_, n));
-    if (macro_ && !spans.empty())
-      structure(blocks_[i], "a macro file holds one macro: G79 L<number> ... G70 (§2.3.5)");
-    if (f.l && !defined.insert(n).second && !macro_) structure(blocks_[i], fmt::format("subprogram L{} is defined twice", n));
+      structure(blocks_[i],
+                fmt::format("the macro in file {} must be L{}, not L{} (§2.3.5)", macro_name(*macro_), *macro_, n));
+    if (macro_ && !spans.empty()) structure(blocks_[i], "a macro file holds one macro: G79 L<number> ... G70 (§2.3.5)");
+    if (f.l && !defined.insert(n).second && !macro_)
+      structure(blocks_[i], fmt::format("subprogram L{} is defined twice", n));
     if (defined.size() == kSubprograms + 1 && !macro_)
       structure(blocks_[i], fmt::format("a part program holds at most {} subprograms (§2.3.3)", kSubprograms));
     // §2.3.3: the entry block holds G79 and L only.
     for (const ir::Word& w : blocks_[i].words)
-      if (w.kind != ir::WordKind::BlockNumber && w.address != "L" && !(w.address == "G" && &w == f.control_word[static_cast<size_t>(Control::Entry)]))
+      if (w.kind != ir::WordKind::BlockNumber && w.address != "L" &&
+          !(w.address == "G" && &w == f.control_word[static_cast<size_t>(Control::Entry)]))
         diags_.report(DiagId::ProgramStructure, w.range,
-                      fmt::format("{}{} stands in the entry block of L{}, which holds G79 and L only (§2.3.3)", w.address, w.text, n));
+                      fmt::format("{}{} stands in the entry block of L{}, which holds G79 and L only (§2.3.3)",
+                                  w.address, w.text, n));
     for (size_t k = i; k <= last; ++k) {
       ir::Block& b = blocks_[k];
       Flow bf = flow_of(b);
@@ -793,15 +804,21 @@ void Reader::resolve_jumps(const std::vector<Span>& spans) {
       b.has_errors = true;
       continue;
     }
-    ir::ExprId count = f.q_word && f.q_word->kind == ir::WordKind::Control ? f.q_word->value : program_.number(1, b.range);
+    ir::ExprId count =
+        f.q_word && f.q_word->kind == ir::WordKind::Control ? f.q_word->value : program_.number(1, b.range);
     ir::ExprId index = program_.number(spaces_.next_counter++, b.range);
-    auto counter = [&] { return program_.add({ir::ExprOp::Var, Builtin::Sin, spaces_.counters, 0, index, ir::kNoExpr, b.range}); };
-    auto bin = [&](ir::ExprOp o, ir::ExprId a, ir::ExprId c) { return program_.add({o, Builtin::Sin, 0, 0, a, c, b.range}); };
+    auto counter = [&] {
+      return program_.add({ir::ExprOp::Var, Builtin::Sin, spaces_.counters, 0, index, ir::kNoExpr, b.range});
+    };
+    auto bin = [&](ir::ExprOp o, ir::ExprId a, ir::ExprId c) {
+      return program_.add({o, Builtin::Sin, 0, 0, a, c, b.range});
+    };
     // Unarmed (0): arm with Q + 1; then count down, and jump while it lasts.
     ir::Stmt arm(ir::StmtKind::Assign, b.range);
     arm.target = counter();
-    arm.value = bin(ir::ExprOp::Add, bin(ir::ExprOp::Mul, bin(ir::ExprOp::Eq, counter(), program_.number(0, b.range)),
-                                         bin(ir::ExprOp::Add, count, program_.number(1, b.range))),
+    arm.value = bin(ir::ExprOp::Add,
+                    bin(ir::ExprOp::Mul, bin(ir::ExprOp::Eq, counter(), program_.number(0, b.range)),
+                        bin(ir::ExprOp::Add, count, program_.number(1, b.range))),
                     counter());
     ir::Stmt down(ir::StmtKind::Assign, b.range);
     down.target = counter();

@@ -49,14 +49,14 @@ class Reader {
   static std::string macro_name(uint32_t number);
 
  private:
-  struct Piece {  // where a block's text starts
+  struct Piece {                 // where a block's text starts
     uint32_t line = 0, col = 0;  // 1-based
     size_t begin = 0, end = 0;   // byte offsets in the file
   };
   // What a block does to the program's structure and flow.
   struct Flow {
     const ir::Word* control_word[9] = {};  // by Control: the code that asked for it
-    std::optional<uint32_t> l;              // L, when written as a number
+    std::optional<uint32_t> l;             // L, when written as a number
     const ir::Word* l_word = nullptr;
     const ir::Word* q_word = nullptr;
     const ir::Word* ends_main = nullptr;  // M02 or M30
@@ -84,8 +84,8 @@ class Reader {
   void word(std::string_view written, SourceRange r);  // "X 12.5"
   void parameter(antlr4::Token* t);
   void damaged(antlr4::Token* t, antlr4::Token* previous);
-  std::optional<ir::ExprId> value(std::string_view text, char letter, const stdlib::AddressEntry& entry,
-                                  SourceRange r, const std::string& shown);
+  std::optional<ir::ExprId> value(std::string_view text, char letter, const stdlib::AddressEntry& entry, SourceRange r,
+                                  const std::string& shown);
   ir::ExprId r_value(uint32_t index, bool negative, SourceRange r);
   std::string comment_text(antlr4::Token* t) const;
 
@@ -109,18 +109,18 @@ class Reader {
   antlr4::CommonTokenStream tokens_{&lexer_};
   PpParser parser_{&tokens_};
   std::string sanitized_;
-  Piece piece_;  // the text being parsed
+  Piece piece_;                 // the text being parsed
   bool char_reported_ = false;  // the block's first character outside the alphabet is
 
   std::string number_;  // the program number, "%35"
   std::string title_;
   SourceRange start_range_;
-  ir::Unit main_;              // the main part, as the sink leaves it
-  bool in_main_;               // up to the block with M02 or M30
-  bool streaming_;             // the sink takes the main part's blocks
+  ir::Unit main_;                  // the main part, as the sink leaves it
+  bool in_main_;                   // up to the block with M02 or M30
+  bool streaming_;                 // the sink takes the main part's blocks
   std::vector<ir::Block> blocks_;  // after the main part, or the macro file's
-  uint32_t read_ = 0;          // the blocks read so far
-  SourceRange last_range_;     // of the last of them
+  uint32_t read_ = 0;              // the blocks read so far
+  SourceRange last_range_;         // of the last of them
   // The file's block numbers: they rise in most files, so those stand in order in a
   // vector (a binary search finds them), the others in a map.
   struct Numbered {

@@ -23,10 +23,13 @@ void read_control(Settings& s, Diagnostics& diags) {
       code.action = Control::Plane;
       code.plane = {action[6], action[7]};
     } else {
-      static const std::map<std::string_view, Control> kActions = {
-          {"entry", Control::Entry},         {"end", Control::End},   {"call_subprogram", Control::CallSubprogram},
-          {"call_macro", Control::CallMacro}, {"jump", Control::Jump}, {"dwell", Control::Dwell},
-          {"unsupported", Control::Unsupported}};
+      static const std::map<std::string_view, Control> kActions = {{"entry", Control::Entry},
+                                                                   {"end", Control::End},
+                                                                   {"call_subprogram", Control::CallSubprogram},
+                                                                   {"call_macro", Control::CallMacro},
+                                                                   {"jump", Control::Jump},
+                                                                   {"dwell", Control::Dwell},
+                                                                   {"unsupported", Control::Unsupported}};
       auto it = kActions.find(action);
       ok = it != kActions.end();
       if (ok) code.action = it->second;
@@ -107,8 +110,13 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
     bool valid = v->size() == 3 && (*v)[0] != (*v)[1] && (*v)[0] != (*v)[2] && (*v)[1] != (*v)[2];
     for (size_t i = 0; valid && i < 3; ++i)
       valid = std::string_view(i < 2 ? "ABCUVW" : "ABC").find((*v)[i]) != std::string_view::npos;
-    if (valid) s.axis_letters = *v;
-    else ok = (p.report_value(diags, "pp.axis_letters", "must name axes 4., 5., 6. with three different letters: A B C U V W for 4. and 5., A B C for 6."), false);
+    if (valid)
+      s.axis_letters = *v;
+    else
+      ok = (p.report_value(
+                diags, "pp.axis_letters",
+                "must name axes 4., 5., 6. with three different letters: A B C U V W for 4. and 5., A B C for 6."),
+            false);
   }
   if (auto v = p.string("pp.macro_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
   if (auto v = p.boolean("pp.require_star", diags)) s.require_star = *v;
@@ -128,12 +136,12 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
 
   Conventions& c = s.conventions;
-  c.arc_centre = ArcCentre::Incremental;      // I, J from the start point (decision 17)
-  c.centre_words = CentreWords::Plane;        // I along the first axis, J the second
+  c.arc_centre = ArcCentre::Incremental;  // I, J from the start point (decision 17)
+  c.centre_words = CentreWords::Plane;    // I along the first axis, J the second
   c.helix_lead = HelixLead::PerRevolution;
-  c.dwell_word = 'Q';                         // G04: Q in 10 ms units (dictionary)
+  c.dwell_word = 'Q';  // G04: Q in 10 ms units (dictionary)
   c.dwell_seconds_per_unit = 0.01;
-  c.peck_word = 'I';                          // decision 21
+  c.peck_word = 'I';  // decision 21
   c.cycle_level_word = 'K';
   c.tool_offset_axes = "Z";
   c.axes = "XYZ";
@@ -147,13 +155,18 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.feed_limits[2][1] = 99.999;
   c.diameter_axis = 'X';
   if (auto v = p.string("pp.diameter_axis", diags)) {
-    if (v->size() == 1 && c.axes.find((*v)[0]) != std::string::npos) c.diameter_axis = (*v)[0];
-    else ok = (p.report_value(diags, "pp.diameter_axis", fmt::format("must be one of the machine's axes {}", c.axes)), false);
+    if (v->size() == 1 && c.axes.find((*v)[0]) != std::string::npos)
+      c.diameter_axis = (*v)[0];
+    else
+      ok = (p.report_value(diags, "pp.diameter_axis", fmt::format("must be one of the machine's axes {}", c.axes)),
+            false);
   }
-  c.max_call_depth = 8;                       // decision 15
+  c.max_call_depth = 8;  // decision 15
   if (auto v = p.number("pp.max_call_depth", diags)) {
-    if (auto n = whole_in<uint8_t>(*v, 1, 32)) c.max_call_depth = *n;
-    else ok = (p.report_value(diags, "pp.max_call_depth", "must be a whole number from 1 to 32"), false);
+    if (auto n = whole_in<uint8_t>(*v, 1, 32))
+      c.max_call_depth = *n;
+    else
+      ok = (p.report_value(diags, "pp.max_call_depth", "must be a whole number from 1 to 32"), false);
   }
   if (!ok) return std::nullopt;
   return s;

@@ -18,9 +18,9 @@ enum class Control : uint8_t { Formula, Entry, End, CallSubprogram, CallMacro, J
 
 struct ControlCode {
   Control action = Control::Unsupported;
-  char op = 0;                     // Formula: + - * /
-  std::string plane;               // Plane: two axes, "Z4"
-  std::string note;                // Unsupported: why
+  char op = 0;        // Formula: + - * /
+  std::string plane;  // Plane: two axes, "Z4"
+  std::string note;   // Unsupported: why
 };
 
 struct Settings {
