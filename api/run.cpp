@@ -2,9 +2,9 @@
 
 #include <atomic>
 
+#include "contract/block_machine.h"
 #include "host_sink.h"
 #include "internal.h"
-#include "runtime/machine.h"
 
 namespace ncc::api {
 
@@ -146,7 +146,7 @@ std::optional<Block> Run::next_block() const {
 }
 
 State Run::state() const {
-  const Machine* machine = impl_->run->machine();
+  const BlockMachine* machine = impl_->run->machine();
   State out;
   if (!machine) return out;
   const MachineState s = machine->state();

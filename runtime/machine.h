@@ -19,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "contract/block_machine.h"
 #include "contract/machine_config.h"
 #include "contract/program_semantics.h"
 #include "contract/system_vars.h"
@@ -33,141 +34,50 @@ namespace cycle {
 struct Step;
 }
 
-// The words of one block by slot (contract/word_slots.h); `present` marks those written.
-struct BlockWords {
-  std::array<double, kWordSlots> value{};
-  std::bitset<kWordSlots> present;
-
-  bool has_slot(int slot) const { return slot >= 0 && slot < kWordSlots && present[slot]; }
-  void set(int slot, double v) {
-    value[slot] = v;
-    present.set(slot);
-  }
-  void clear() { present.reset(); }
-};
-
-struct BlockRequest {
-  const uint16_t* codes = nullptr;  // indices into ProgramSemantics::codes, in written order
-  size_t code_count = 0;
-  const BlockWords* words = nullptr;
-  uint32_t source = 0;         // SourceMap::blocks index
-  uint64_t dynamic_codes = 0;  // bit i: codes[i] was chosen at run time; check it may share the block
-};
-
-// A problem found while running a block. `slot` is the word it concerns (-1 = the
-// whole block); the driver turns it into a located diagnostic.
-struct RuntimeIssue {
-  DiagId id;
-  std::string message;
-  uint32_t source = 0;
-  int slot = -1;
-  int code = -1;  // or the G/M code (ProgramSemantics::codes index) it concerns
-  int nth = 0;    // of the block's words of `slot`, the one meant (GE2 GE3: 1 is GE3)
-  std::vector<std::pair<uint32_t, std::string>> notes = {};  // (source block, text): where else it concerns
-};
-
-class RuntimeIssues {
- public:
-  virtual ~RuntimeIssues() = default;
-  virtual void issue(const RuntimeIssue& issue) = 0;
-};
-
-enum class BlockResult { Continue, ProgramEnd, EndOfInformation, Error };
-
-// NC-110 RMNpq in a run of several processes: the path a process has still to go on
-// an axis (kAxisLetters index) when the block that reads it is evaluated.
-class RemainingPaths {
- public:
-  virtual ~RemainingPaths() = default;
-  virtual double remaining(int process, int axis) = 0;
-};
-
-// What a machine holds between blocks, for its host to show (the API's Run::state).
-struct MachineState {
-  AxisValues position{};  // as the trace gives it: the active work frame, the program's units
-  AxisValues machine{};   // machine coordinates, mm and degrees
-  bool inch = false;
-  bool absolute = true;
-  Plane plane;
-  int feed_mode = 1;           // 0 inverse time, 1 per minute, 2 per revolution
-  std::optional<double> feed;  // as programmed
-  double speed = 0;
-  int spindle = 0;  // 1 clockwise, -1 counter-clockwise, 0 stopped, 2 oriented
-  int tool = 0;     // in the spindle
-  int tool_selected = 0;
-  int work_offset = 0;  // 0: none
-  int cutter_comp = 0;  // 0 off, 1 left, 2 right
-  double cutter_radius = 0;
-  int length_offset = 0;  // 0 off, 1 plus, -1 minus
-  std::string motion;     // the code that set the motion mode ("G01"), "" before one
-  bool mist = false, flood = false;
-  double clock = 0;  // seconds of the run so far
-};
-
-class Machine {
+// The motion runtime as a BlockMachine: what each call does is said there; what it
+// holds, and how a block runs, is said here.
+class Machine final : public BlockMachine {
  public:
   Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
 
   // Power-on: position, modal state and registers as the dialect defines them.
   void power_on();
-  // Runs one block. With stop_on_error (a real run) an error ends the block with
-  // Error; without (the dry run of `ncc check`) the machine reports, recovers as if
-  // the block had done what it says, and continues.
-  BlockResult execute(const BlockRequest& block);
+  // With stop_on_error (a real run) an error ends the block; without (the dry run of
+  // `ncc check`) the machine reports and recovers.
+  void set_stop_on_error(bool on) { stop_on_error_ = on; }
   // A run of several processes: RMN reads the paths they have to go, and this machine
   // keeps its recent moves in time to answer for itself.
   void set_remaining_paths(RemainingPaths* paths) { remaining_paths_ = paths; }
-  // The path `axis` has still to go at `seconds`: of the block moving then, linear in time.
-  double remaining_at(int axis, double seconds) const;
-  // The end of a program unit: pending multi-block constructs must be complete.
-  void end_of_unit(uint32_t source);
-  // The run is over: what waits goes to the trace (after an error as it stands, no
-  // exit move made up for it).
-  void end_run(bool stopped_by_error);
-  // Operator text of a block (a comment), shown when the block runs.
-  void comment(const std::string& text, uint32_t source);
-  // A block starts (the trace's `block` events, pp P-10.2).
-  void block_start(uint32_t source);
-  // A message the program shows the operator (NC-110 DIS).
-  void message(const std::string& text, uint32_t source);
-  // An ASSET statement ran (NC-110 §5.3): the trace shows it; IOSTA takes its code
-  // (§5.4). True when the run goes on: it worked, or ERR=1.
-  bool asset_done(const std::string& what, int code, uint32_t source);
-  // The operator answered INP (NC-110 §5.5): the prompt and value offered, the answer.
-  void operator_input(const std::string& shown, double answer, uint32_t source);
-  void operator_input(const std::string& shown, const std::string& answer, uint32_t source);  // into a text
-  // The user screen changed (NC-110 SCR, OUT): "on", "field 2 row 3 column 19 "0      "".
-  void screen_event(const std::string& what, uint32_t source);
-  // The program ends without a block that ends it (NC-110 REL): as M02 ends it.
-  void end_program(uint32_t source);
-  // A process met the others (NC-110 EXE, REL, WAI, SND): "restart process 2".
-  void sync_event(const std::string& what, uint32_t source);
-  // The process waited for another until `seconds` of its run (NC-110 chapter 4):
-  // its clock goes on from there.
-  void wait_until(double seconds) { clock_ = std::max(clock_, seconds); }
-  double clock() const { return clock_; }
-  void set_stop_on_error(bool on) { stop_on_error_ = on; }
 
-  // The block-skip switch: '/' blocks are skipped while it is on.
-  bool block_skip() const { return block_skip_; }
-  // System variables (contract/system_vars.def), read and written by the program; a value a
-  // variable cannot take is reported at `source`.
-  double system(SysRef ref) const;
-  bool set_system(SysRef ref, double value, uint32_t source);
-  // NC-110 FEP, FEL, FEC (§2.12): field 1..3 of GTL element `index` of kind (gtl::Kind);
-  // false if it is not defined.
-  bool gtl_field(int kind, double index, double field, double& out) const;
-  // Values the last block measured, by index of the result space (NC-110 G72-G74).
-  std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
-  // What the runtime holds that grows with the blocks a run makes (the run's memory
-  // budget, limits.run_memory_mib): the events cutter radius compensation and a
-  // corner hold back for a later move, the points of a spline; in bytes, and in words.
-  uint64_t held_bytes() const;
-  std::string held_what() const;
-  // The moves blocks made beyond their first (a cycle's holes and pecks): work a run's
-  // step budget counts besides its blocks (--max-steps).
-  uint64_t moves_beyond_first() const { return moves_beyond_first_; }
-  MachineState state() const;
+  BlockResult execute(const BlockRequest& block) override;
+  std::vector<std::pair<uint32_t, double>> take_results() override { return std::exchange(results_, {}); }
+  void end_of_unit(uint32_t source) override;
+  void end_run(bool stopped_by_error) override;
+  void end_program(uint32_t source) override;
+
+  void comment(const std::string& text, uint32_t source) override;
+  void block_start(uint32_t source) override;  // pp P-10.2
+  void message(const std::string& text, uint32_t source) override;
+  bool asset_done(const std::string& what, int code, uint32_t source) override;  // IOSTA: §5.4
+  void operator_input(const std::string& shown, double answer, uint32_t source) override;
+  void operator_input(const std::string& shown, const std::string& answer, uint32_t source) override;
+  void screen_event(const std::string& what, uint32_t source) override;
+  void sync_event(const std::string& what, uint32_t source) override;
+
+  double clock() const override { return clock_; }
+  void wait_until(double seconds) override { clock_ = std::max(clock_, seconds); }
+  bool block_skip() const override { return block_skip_; }
+  double system(SysRef ref) const override;
+  bool set_system(SysRef ref, double value, uint32_t source) override;
+  bool gtl_field(int kind, double index, double field, double& out) const override;
+  double remaining_at(int axis, double seconds) const override;
+
+  // Held: the events cutter radius compensation and a corner hold back for a later
+  // move, the points of a spline (limits.run_memory_mib).
+  uint64_t held_bytes() const override;
+  std::string held_what() const override;
+  uint64_t moves_beyond_first() const override { return moves_beyond_first_; }
+  MachineState state() const override;
 
  private:
   struct Modal {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <iterator>
 
-#include "asset_store.h"
+#include "contract/asset_files.h"
 #include "support/diagnostics.h"
 #include "support/text.h"
 

@@ -10,6 +10,7 @@
 
 #include "contract/asset_files.h"
 #include "contract/builtins.h"
+#include "contract/machine_config.h"
 #include "contract/system_vars.h"
 #include "opcodes.h"
 #include "support/bytes.h"

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "contract/program_semantics.h"
+#include "contract/source_map.h"
 #include "contract/variables.h"
-#include "runtime/trace.h"
 #include "support/diagnostics.h"
 
 namespace ncc::vm {

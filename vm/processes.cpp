@@ -10,8 +10,7 @@
 namespace ncc::vm {
 
 struct Processes::Slot {
-  std::unique_ptr<ProcessSink> sink;  // a run of several: the trace marks the process
-  std::unique_ptr<Machine> machine;
+  std::unique_ptr<BlockMachine> machine;
   std::unique_ptr<asset::Channels> channels;
   std::unique_ptr<Vm> vm;
   bool running = false;    // a program is loaded (it may wait: vm->waiting(), at vm->pc())
@@ -32,11 +31,7 @@ Processes::Slot& Processes::slot(uint8_t n) {
   std::unique_ptr<Slot>& s = slots_[n - 1];
   if (s) return *s;
   s = std::make_unique<Slot>();
-  TraceSink* trace = &setup_.trace;
-  if (several_) trace = (s->sink = std::make_unique<ProcessSink>(setup_.trace, n)).get();
-  s->machine = std::make_unique<Machine>(setup_.module.semantics, setup_.config, *trace, setup_.issues);
-  s->machine->set_stop_on_error(!setup_.dry);
-  if (several_) s->machine->set_remaining_paths(this);
+  s->machine = setup_.make_machine(n, several_ ? this : nullptr);
   VmOptions options = setup_.options;
   if (setup_.files) {
     s->channels = std::make_unique<asset::Channels>(setup_.store, open_files_, setup_.channels);
@@ -47,9 +42,8 @@ Processes::Slot& Processes::slot(uint8_t n) {
   options.process = n;
   options.slice = several_;
   options.by_block = setup_.by_block;
-  if (several_) options.look_ahead = setup_.config.look_ahead;
+  if (!several_) options.look_ahead = 0;
   s->vm = std::make_unique<Vm>(setup_.module, *s->machine, setup_.issues, options);
-  s->machine->power_on();
   return *s;
 }
 
@@ -148,7 +142,7 @@ bool Processes::running() const {
   return std::any_of(slots_.begin(), slots_.end(), [](const auto& s) { return s && s->running; });
 }
 
-const Machine* Processes::machine(uint8_t n) const {
+const BlockMachine* Processes::machine(uint8_t n) const {
   return n >= 1 && n <= slots_.size() && slots_[n - 1] ? slots_[n - 1]->machine.get() : nullptr;
 }
 

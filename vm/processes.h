@@ -6,11 +6,12 @@
 #pragma once
 
 #include <deque>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
 
-#include "runtime/asset_channels.h"
+#include "devices/asset_channels.h"
 #include "vm.h"
 
 namespace ncc::vm {
@@ -24,13 +25,19 @@ struct PlcWrite {
   std::string text;  // as the script writes it
 };
 
+// A process's machine, powered on, made by whoever runs the module (the VM knows no
+// machine): `others` is the scheduler in a run of several processes (RMN reads their
+// paths, and the trace marks each event with its process), none in a run of one.
+using MachineMaker = std::function<std::unique_ptr<BlockMachine>(uint8_t process, RemainingPaths* others)>;
+
 struct ProcessSetup {
   const Module& module;
-  const MachineConfig& config;
-  TraceSink& trace;
+  MachineMaker make_machine;
   RuntimeIssues& issues;
-  VmOptions options;  // each process's VM (its asset, shared, processes, process and slice are set here)
-  bool dry = false;   // the dry run of `ncc check`: the machines recover from errors, conditions are assumed met
+  // Each process's VM (its asset, shared, processes, process and slice are set here;
+  // look_ahead only in a run of several).
+  VmOptions options;
+  bool dry = false;  // the dry run of `ncc check`: the machines recover from errors, conditions are assumed met
   uint8_t processes = kMaxProcesses;  // configured (profile)
   // ASSET files: a process's channels are its own, the files open are the run's.
   asset::Store* store = nullptr;
@@ -55,9 +62,9 @@ class Processes final : public ProcessHost, public RemainingPaths {
   bool begin(size_t first);
   Turn step();
   void finish(bool ok);
-  const Machine* machine(uint8_t process) const;  // none before it runs
-  bool running() const;                           // a process has a program to go on with
-  std::optional<uint32_t> next_source() const;    // the block process 1 runs next (none: it ended)
+  const BlockMachine* machine(uint8_t process) const;  // none before it runs
+  bool running() const;                                // a process has a program to go on with
+  std::optional<uint32_t> next_source() const;         // the block process 1 runs next (none: it ended)
   uint64_t steps() const;
   const screen::UserScreen& user_screen() const { return shared_.screen; }
 

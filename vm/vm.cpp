@@ -73,7 +73,7 @@ std::string show(VarType type, double v) {
 
 }  // namespace
 
-Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions options)
+Vm::Vm(const Module& module, BlockMachine& machine, RuntimeIssues& issues, VmOptions options)
     : m_(module), machine_(machine), issues_(issues), options_(options),
       shared_(options.shared ? *options.shared : own_) {
   const bool fresh = shared_.memories.empty();

@@ -1,5 +1,6 @@
 // The deterministic VM: runs a verified Module on the motion runtime. Control flow,
-// expressions and variables live here; geometry lives in the runtime (Machine).
+// expressions and variables live here; geometry lives in the machine it drives
+// (contract/block_machine.h).
 #pragma once
 
 #include <cstdint>
@@ -7,11 +8,11 @@
 #include <optional>
 #include <vector>
 
+#include "contract/block_machine.h"
+#include "devices/asset_channels.h"
+#include "devices/user_screen.h"
 #include "module.h"
 #include "opcodes.h"
-#include "runtime/asset_channels.h"
-#include "runtime/machine.h"
-#include "runtime/user_screen.h"
 
 namespace ncc::vm {
 
@@ -71,7 +72,7 @@ enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error, Released,
 
 class Vm {
  public:
-  Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions options);
+  Vm(const Module& module, BlockMachine& machine, RuntimeIssues& issues, VmOptions options);
 
   // Runs from entry point `entry` until the unit ends, the program ends (M02), the
   // information ends (M30) or an error stops it.
@@ -191,7 +192,7 @@ class Vm {
   void restore_locals(const std::vector<double>& saved);
 
   const Module& m_;
-  Machine& machine_;
+  BlockMachine& machine_;
   RuntimeIssues& issues_;
   VmOptions options_;
   uint64_t steps_ = 0;

@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "runtime/asset_store.h"
+#include "devices/asset_store.h"
 #include "support/diagnostics.h"
 #include "support/source.h"
 

@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "check/check.h"
+#include "devices/asset_store.h"
 #include "frontend/frontend.h"
 #include "lower/lower.h"
 #include "runtime/machine.h"
@@ -224,6 +225,7 @@ struct ModuleRun::Parts {
   std::unique_ptr<IssueReporter> reporter;
   std::unique_ptr<asset::Store> store;
   std::vector<vm::Answer> answers;
+  std::deque<ProcessSink> process_sinks;  // a run of several processes: each event marked with its process
   std::unique_ptr<vm::Processes> processes;
 };
 
@@ -250,7 +252,17 @@ ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& setting
                        : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
                                      blocks, kDryRunExtraSteps)));
   options.trace_blocks = settings.trace_blocks;
-  vm::ProcessSetup setup{m, config, trace, *parts_->reporter, options};
+  options.look_ahead = config.look_ahead;
+  // Each process runs on the motion runtime's Machine.
+  auto make_machine = [this, &m, &trace, dry](uint8_t process, RemainingPaths* others) {
+    TraceSink& sink = others ? parts_->process_sinks.emplace_back(trace, process) : trace;
+    auto machine = std::make_unique<Machine>(m.semantics, parts_->config, sink, *parts_->reporter);
+    machine->set_stop_on_error(!dry);
+    machine->set_remaining_paths(others);
+    machine->power_on();
+    return std::unique_ptr<BlockMachine>(std::move(machine));
+  };
+  vm::ProcessSetup setup{m, make_machine, *parts_->reporter, options};
   setup.dry = dry;
   setup.by_block = by_block;
   setup.processes = config.processes;
@@ -316,7 +328,7 @@ ModuleRun::State ModuleRun::end(State how) {
 
 uint64_t ModuleRun::steps() const { return parts_->processes ? parts_->processes->steps() : 0; }
 
-const Machine* ModuleRun::machine() const { return parts_->processes ? parts_->processes->machine(1) : nullptr; }
+const BlockMachine* ModuleRun::machine() const { return parts_->processes ? parts_->processes->machine(1) : nullptr; }
 
 std::optional<uint32_t> ModuleRun::next_block() const {
   return state_ == State::Running ? parts_->processes->next_source() : std::nullopt;

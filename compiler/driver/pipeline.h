@@ -119,7 +119,7 @@ class ModuleRun {
   State step();
   State stop();  // ends it now: what the runtime holds back goes to the trace as it stands
   uint64_t steps() const;
-  const Machine* machine() const;              // process 1's (none if it never started)
+  const BlockMachine* machine() const;         // process 1's (none if it never started)
   std::optional<uint32_t> next_block() const;  // the source block process 1 runs next
   const screen::UserScreen* user_screen() const;
   // A problem at a block, as the runtime reports one (once).

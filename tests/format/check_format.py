@@ -11,8 +11,6 @@ import subprocess
 import sys
 
 VERSION = 14  # Debian 12's clang-format
-FOLDERS = ["support", "contract", "stdlib", "runtime", "vm", "compiler", "sim", "api", "include", "examples",
-           "tests", "bench"]
 
 
 def main():
@@ -26,7 +24,9 @@ def main():
     if not major or int(major.group(1)) != VERSION:
         print(f"format: skipped, {tool} is not clang-format {VERSION}: {version.strip()}")
         return 77
-    files = sorted(str(p) for folder in FOLDERS for p in (root / folder).rglob("*")
+    # Every folder but build trees (build, build-sanitize, ...) and hidden ones.
+    folders = [d for d in root.iterdir() if d.is_dir() and not d.name.startswith(("build", "."))]
+    files = sorted(str(p) for folder in folders for p in folder.rglob("*")
                    if p.suffix in (".h", ".cpp") and p.is_file())
     result = subprocess.run([tool, "--dry-run", "--Werror", "--style=file", *files], capture_output=True, text=True)
     if result.returncode:

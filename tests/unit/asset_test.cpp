@@ -12,8 +12,8 @@
 #include <random>
 #include <set>
 
-#include "runtime/asset_channels.h"
-#include "runtime/asset_store.h"
+#include "devices/asset_channels.h"
+#include "devices/asset_store.h"
 
 namespace ncc::asset {
 namespace {

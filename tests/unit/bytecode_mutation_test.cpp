@@ -13,8 +13,8 @@
 #include <random>
 #include <set>
 
+#include "devices/asset_store.h"
 #include "driver/pipeline.h"
-#include "runtime/asset_store.h"
 #include "support/bytes.h"
 #include "vm/opcodes.h"
 

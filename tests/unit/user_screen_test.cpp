@@ -1,7 +1,7 @@
 // The NC-110 user screen (video frame 8, §5.6): fields, widths, masks, the grid.
 #include <gtest/gtest.h>
 
-#include "runtime/user_screen.h"
+#include "devices/user_screen.h"
 
 namespace ncc::screen {
 namespace {

@@ -16,30 +16,6 @@
 
 namespace ncc::asset {
 
-// Table 5.2: what an ASSET statement leaves in IOSTA (0: it worked).
-enum class Code : uint8_t {
-  Ok = 0,
-  ChannelState = 1,  // channel already open / still closed
-  BadChannel = 2,
-  NoChannel = 3,
-  NotFound = 4,
-  Exists = 5,
-  Illegal = 6,
-  AlreadyOpen = 7,
-  NotOpen = 8,
-  Protected = 9,
-  Format = 10,
-  NoRecord = 11,
-  Hardware = 12,
-  EndOfFile = 13,
-  Logical = 14,  // the file is not a well-formed ASSET file (docs/asset.md)
-  BadDevice = 15,
-  NoStructure = 16,
-  Overflow = 17,
-  NotConfigured = 18,
-};
-std::string_view meaning(Code c);  // the table's words
-
 // Table 5.1: the formats a field may have, and their bytes.
 enum class FieldType : uint8_t { Integer = 1, Real = 2, LongReal = 3, Chars = 4 };
 struct Field {

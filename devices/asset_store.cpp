@@ -57,29 +57,6 @@ Code code_of_errno(int e) { return e == ENOSPC || e == EDQUOT ? Code::Overflow :
 
 }  // namespace
 
-std::string_view meaning(Code c) {
-  static constexpr std::string_view kText[] = {"no error",
-                                               "channel already open or still closed",
-                                               "invalid channel number",
-                                               "no permitted channel",
-                                               "file not found",
-                                               "file already exists",
-                                               "illegal operation",
-                                               "file already open",
-                                               "file not open",
-                                               "protected file",
-                                               "format error",
-                                               "record not found",
-                                               "hardware error",
-                                               "end of file",
-                                               "logical I/O error",
-                                               "invalid device",
-                                               "record structure not defined",
-                                               "memory overflow",
-                                               "ASSET area not configured"};
-  return kText[static_cast<size_t>(c)];
-}
-
 std::string field_text(const Field& f) {
   switch (f.type) {
     case FieldType::Integer: return "IN";
