@@ -657,7 +657,7 @@ void Machine::registers() {
   // keeps it (Table 5).
   if (has('F')) {
     // pp: what F may be depends on the feed mode (mm/min or mm/rev).
-    const double* range = conv_.feed_limits[modal_.feed_mode];
+    const auto& range = conv_.feed_limits[modal_.feed_mode];
     if (range[1] > 0 && !(word('F') >= range[0] && word('F') <= range[1]))
       report(DiagId::FeedRange, 'F', shortest(word('F')), kFeedModes[modal_.feed_mode], shortest(range[0]),
              shortest(range[1]));

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <type_traits>
 
 #include "contract/asset_files.h"
 #include "contract/builtins.h"
@@ -41,58 +42,112 @@ std::string tag_name(uint32_t t) {
   return s;
 }
 
+// --- conventions (contract/conventions.def) ----------------------------------
+
+// A convention's bytes, by its C++ type: one byte, a float64, a string.
+void put(ByteWriter& w, bool v) { w.u8(v); }
+void put(ByteWriter& w, char v) { w.u8(static_cast<uint8_t>(v)); }
+void put(ByteWriter& w, uint8_t v) { w.u8(v); }
+void put(ByteWriter& w, int8_t v) { w.u8(static_cast<uint8_t>(v)); }
+void put(ByteWriter& w, double v) { w.f64(v); }
+void put(ByteWriter& w, const std::string& v) { w.str(v); }
+template <typename E>
+requires std::is_enum_v<E>
+void put(ByteWriter& w, E v) { w.u8(static_cast<uint8_t>(v)); }
+void put(ByteWriter& w, const FeedRanges& v) {
+  for (const auto& range : v)
+    for (double x : range) w.f64(x);
+}
+
+// And back; false when the bytes cannot be one (an enum beyond its last value).
+template <typename T, typename Check>
+bool get(ByteReader& r, T& out, Check) {
+  if constexpr (std::is_same_v<T, std::string>)
+    out = r.str();
+  else if constexpr (std::is_same_v<T, double>)
+    out = r.f64();
+  else if constexpr (std::is_same_v<T, FeedRanges>)
+    for (auto& range : out)
+      for (double& x : range) x = r.f64();
+  else
+    out = static_cast<T>(r.u8());
+  return true;
+}
+template <typename E>
+bool get(ByteReader& r, E& out, convention::Enum<E> check) {
+  const uint8_t v = r.u8();
+  out = static_cast<E>(v);
+  return v <= static_cast<uint8_t>(check.last);
+}
+
+// What is wrong with a convention's value by its check, or "".
+bool letter(char c) { return c >= 'A' && c <= 'Z'; }
+std::string problem(bool, convention::Flag) { return ""; }
+std::string problem(uint8_t, convention::Count) { return ""; }
+std::string problem(uint8_t, convention::Space) { return ""; }  // against the module's spaces: verify()
+std::string shown(char c) { return printable(std::string(1, c)); }
+std::string problem(char c, convention::Letter) {
+  return c == 0 || letter(c) ? "" : fmt::format("'{}' is not an address letter", shown(c));
+}
+std::string problem(const std::string& s, convention::Letters) {
+  return std::all_of(s.begin(), s.end(), letter) ? "" : "holds what is not an address letter";
+}
+std::string problem(char c, convention::Axis) {
+  return c == 0 || (letter(c) && kAxisLetters.find(c) != std::string_view::npos)
+             ? ""
+             : fmt::format("'{}' is not an axis", shown(c));
+}
+std::string problem(const std::string& s, convention::Axes) {
+  for (size_t i = 0; i < s.size(); ++i)
+    if (!letter(s[i]) || kAxisLetters.find(s[i]) == std::string_view::npos || s.find(s[i]) != i)
+      return fmt::format("holds '{}', which is not an axis or appears twice", printable(s.substr(i, 1)));
+  return "";
+}
+std::string problem(int8_t v, convention::Sign) { return v == 1 || v == -1 ? "" : "is neither 1 nor -1"; }
+std::string problem(double v, convention::Length) {
+  return v >= 0 && std::isfinite(v) ? "" : "is negative or not finite";
+}
+std::string problem(double v, convention::Positive) {
+  return v > 0 && std::isfinite(v) ? "" : "is not a finite number above 0";
+}
+std::string problem(const FeedRanges& v, convention::FeedLimits) {
+  for (const auto& range : v)
+    if (!(range[0] >= 0 && range[1] >= range[0] && std::isfinite(range[1])))
+      return "holds what is not a range of feeds";
+  return "";
+}
+template <typename E>
+std::string problem(E v, convention::Enum<E> check) {
+  return v <= check.last ? "" : "is beyond its last value";
+}
+
+void write_conventions(ByteWriter& w, const Conventions& c) {
+#define NCC_CONVENTION_WRITE(name, type, init, check, doc) put(w, c.name);
+  NCC_CONVENTIONS(NCC_CONVENTION_WRITE)
+#undef NCC_CONVENTION_WRITE
+}
+
+bool read_conventions(ByteReader& r, Conventions& c) {
+#define NCC_CONVENTION_READ(name, type, init, check, doc) \
+  if (!get(r, c.name, convention::check)) return false;
+  NCC_CONVENTIONS(NCC_CONVENTION_READ)
+#undef NCC_CONVENTION_READ
+  return true;
+}
+
+std::string convention_problem(const Conventions& c) {
+#define NCC_CONVENTION_CHECK(name, type, init, check, doc) \
+  if (std::string why = problem(c.name, convention::check); !why.empty()) return "the convention " #name ": " + why;
+  NCC_CONVENTIONS(NCC_CONVENTION_CHECK)
+#undef NCC_CONVENTION_CHECK
+  return "";
+}
+
 // --- writing ---------------------------------------------------------------
 
 void write_semantics(ByteWriter& w, const ProgramSemantics& s) {
   w.str(s.dialect);
-  const Conventions& c = s.conventions;
-  w.u8(static_cast<uint8_t>(c.arc_centre));
-  w.u8(static_cast<uint8_t>(c.helix_lead));
-  w.u8(static_cast<uint8_t>(c.parabola_tangent));
-  w.u8(static_cast<uint8_t>(c.angle_unit));
-  w.u8(static_cast<uint8_t>(c.dwell_word));
-  w.f64(c.dwell_seconds_per_unit);
-  w.u8(static_cast<uint8_t>(c.peck_word));
-  w.u8(static_cast<uint8_t>(c.cycle_level_word));
-  w.u8(static_cast<uint8_t>(c.pitch_change_word));
-  w.u8(c.thread_allow_j);
-  w.u8(c.arc_single_quadrant);
-  w.f64(c.arc_tolerance);
-  w.f64(c.lead_resolution);
-  w.u8(c.m06_stops_spindle);
-  w.str(c.tool_offset_axes);
-  w.str(c.axes);
-  w.u8(c.max_call_depth);
-  w.u8(c.result_space);
-  w.u8(static_cast<uint8_t>(c.centre_words));
-  w.u8(static_cast<uint8_t>(c.radius_word));
-  w.u8(c.helix_by_end);
-  w.u8(c.fanuc_cycles);
-  w.str(c.cycle_repeat_words);
-  w.f64(c.peck_clearance);
-  w.f64(c.chip_break_retract);
-  w.u8(static_cast<uint8_t>(c.boring_shift));
-  w.u8(c.tool_change_iso);
-  w.u8(c.tool_change_retract);
-  w.f64(c.initial_feed);
-  w.u8(c.fanuc_rules);
-  w.u8(c.corners);
-  w.u8(static_cast<uint8_t>(c.cutter));
-  w.u8(c.cycle_two_levels);
-  w.u8(c.cycle_defines_only);
-  w.u8(c.cycle_needs_cancel);
-  w.u8(static_cast<uint8_t>(c.peck_factor_word));
-  w.u8(static_cast<uint8_t>(c.peck_minimum_word));
-  w.u8(static_cast<uint8_t>(c.tap_pitch_word));
-  w.u8(c.corrector_in_tool_word);
-  w.u8(c.mirror_toggles);
-  w.u8(static_cast<uint8_t>(c.diameter_axis));
-  w.str(c.link_axes);
-  w.str(c.aux_words);
-  w.u8(static_cast<uint8_t>(c.comp_length_word));
-  w.u8(static_cast<uint8_t>(c.comp_radius_word));
-  for (const auto& limits : c.feed_limits)
-    for (double v : limits) w.f64(v);
+  write_conventions(w, s.conventions);
   w.u32(static_cast<uint32_t>(s.codes.size()));
   for (const CodeDesc& code : s.codes) {
     w.str(code.name);
@@ -217,55 +272,8 @@ bool enum_value(ByteReader& r, E limit, E& out) {
 
 bool read_semantics(ByteReader& r, ProgramSemantics& s) {
   s.dialect = r.str();
-  Conventions& c = s.conventions;
-  bool ok = enum_value(r, ArcCentre::Absolute, c.arc_centre) && enum_value(r, HelixLead::PerRevolution, c.helix_lead) &&
-            enum_value(r, ParabolaTangent::Incremental, c.parabola_tangent) &&
-            enum_value(r, AngleUnit::Revolution, c.angle_unit);
-  c.dwell_word = static_cast<char>(r.u8());
-  c.dwell_seconds_per_unit = r.f64();
-  c.peck_word = static_cast<char>(r.u8());
-  c.cycle_level_word = static_cast<char>(r.u8());
-  c.pitch_change_word = static_cast<char>(r.u8());
-  c.thread_allow_j = r.u8();
-  c.arc_single_quadrant = r.u8();
-  c.arc_tolerance = r.f64();
-  c.lead_resolution = r.f64();
-  c.m06_stops_spindle = r.u8();
-  c.tool_offset_axes = r.str();
-  c.axes = r.str();
-  c.max_call_depth = r.u8();
-  c.result_space = r.u8();
-  ok = ok && enum_value(r, CentreWords::Plane, c.centre_words);
-  c.radius_word = static_cast<char>(r.u8());
-  c.helix_by_end = r.u8();
-  c.fanuc_cycles = r.u8();
-  c.cycle_repeat_words = r.str();
-  c.peck_clearance = r.f64();
-  c.chip_break_retract = r.f64();
-  c.boring_shift = static_cast<int8_t>(r.u8());
-  c.tool_change_iso = r.u8();
-  c.tool_change_retract = r.u8();
-  c.initial_feed = r.f64();
-  c.fanuc_rules = r.u8();
-  c.corners = r.u8();
-  c.cutter = static_cast<CutterStyle>(std::min<uint8_t>(r.u8(), 2));
-  c.cycle_two_levels = r.u8();
-  c.cycle_defines_only = r.u8();
-  c.cycle_needs_cancel = r.u8();
-  c.peck_factor_word = static_cast<char>(r.u8());
-  c.peck_minimum_word = static_cast<char>(r.u8());
-  c.tap_pitch_word = static_cast<char>(r.u8());
-  c.corrector_in_tool_word = r.u8();
-  c.mirror_toggles = r.u8();
-  c.diameter_axis = static_cast<char>(r.u8());
-  c.link_axes = r.str();
-  c.aux_words = r.str();
-  c.comp_length_word = static_cast<char>(r.u8());
-  c.comp_radius_word = static_cast<char>(r.u8());
-  for (auto& limits : c.feed_limits)
-    for (double& v : limits) v = r.f64();
   uint32_t n = 0;
-  if (!ok || !count(r, 10, n)) return false;
+  if (!read_conventions(r, s.conventions) || !count(r, 10, n)) return false;
   s.codes.resize(n);
   for (CodeDesc& code : s.codes) {
     code.name = r.str();
@@ -680,27 +688,8 @@ std::optional<Module> read_module(int fd, uint64_t size, const std::string& name
 
 std::string verify(const Module& m) {
   const ProgramSemantics& s = m.semantics;
-  auto letter_ok = [](char c) { return c == 0 || (c >= 'A' && c <= 'Z'); };
   const Conventions& c = s.conventions;
-  if (!letter_ok(c.dwell_word) || !letter_ok(c.peck_word) || !letter_ok(c.cycle_level_word) ||
-      !letter_ok(c.pitch_change_word) || !letter_ok(c.radius_word) || !letter_ok(c.peck_factor_word) ||
-      !letter_ok(c.peck_minimum_word) || !letter_ok(c.tap_pitch_word) || !letter_ok(c.comp_length_word) ||
-      !letter_ok(c.comp_radius_word) || !std::all_of(c.aux_words.begin(), c.aux_words.end(), letter_ok))
-    return "a convention names an address that is not a letter";
-  if (c.diameter_axis && kAxisLetters.find(c.diameter_axis) == std::string_view::npos)
-    return "the diameter axis is not an axis";
-  for (const auto& limits : c.feed_limits)
-    if (!(limits[0] >= 0 && limits[1] >= limits[0] && std::isfinite(limits[1])))
-      return "a feed range is not a range of feeds";
-  for (const std::string* axes : {&c.axes, &c.tool_offset_axes, &c.link_axes})
-    for (size_t i = 0; i < axes->size(); ++i)
-      if (kAxisLetters.find((*axes)[i]) == std::string_view::npos || axes->find((*axes)[i]) != i)
-        return fmt::format("'{}' in \"{}\" is not an axis, or appears twice", printable(axes->substr(i, 1)),
-                           printable(*axes));
-  if (!(c.arc_tolerance >= 0 && std::isfinite(c.arc_tolerance)) ||
-      !(c.lead_resolution >= 0 && std::isfinite(c.lead_resolution)) ||
-      !(c.dwell_seconds_per_unit > 0 && std::isfinite(c.dwell_seconds_per_unit)))
-    return "a convention holds a number that is negative or not finite";
+  if (std::string why = convention_problem(c); !why.empty()) return why;
   // Two-level cycles take their drilling axis from the block that defines them.
   if (c.cycle_two_levels && !c.cycle_defines_only) return "two-level cycles need cycles that their own block defines";
   for (const CodeDesc& code : s.codes)
