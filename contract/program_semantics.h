@@ -85,6 +85,7 @@ struct Conventions {
   NCC_CONVENTIONS(NCC_CONVENTION_FIELD)
 #undef NCC_CONVENTION_FIELD
   bool comp_path() const { return cutter != CutterStyle::Programmed; }
+  bool operator==(const Conventions&) const = default;
 };
 
 // A code a program selects at run time by its number (NC-110 `GE1`).

@@ -83,6 +83,87 @@ TEST(Bytecode, AnAssetFileNameThatIsNoneIsRefused) {
   }
 }
 
+TEST(Bytecode, EveryConventionRoundTrips) {
+  // contract/conventions.def makes the writer and the reader: each field, away from its
+  // default, comes back as it went.
+  Session s;
+  vm::Module m = compile_example(s);
+  Conventions& c = m.semantics.conventions;
+  c.arc_centre = ArcCentre::Absolute;
+  c.helix_lead = HelixLead::PerRevolution;
+  c.parabola_tangent = ParabolaTangent::Incremental;
+  c.angle_unit = AngleUnit::Radian;
+  c.dwell_word = 'X';
+  c.dwell_seconds_per_unit = 0.001;
+  c.peck_word = 'K';
+  c.cycle_level_word = 'W';
+  c.pitch_change_word = 'E';
+  c.thread_allow_j = c.arc_single_quadrant = c.m06_stops_spindle = c.helix_by_end = c.fanuc_cycles = true;
+  c.arc_tolerance = 0.01;
+  c.lead_resolution = 0.0001;
+  c.tool_offset_axes = "XZ";
+  c.axes = "XYZAC";
+  c.max_call_depth = 8;
+  VarSpace& results = m.spaces.emplace_back();  // the example has none
+  results.name = "R";
+  results.size = 10;
+  c.result_space = static_cast<uint8_t>(m.spaces.size() - 1);
+  c.centre_words = CentreWords::Plane;
+  c.radius_word = 'R';
+  c.cycle_repeat_words = "LK";
+  c.peck_clearance = 0.254;
+  c.chip_break_retract = 0.1;
+  c.boring_shift = -1;
+  c.tool_change_iso = c.tool_change_retract = c.fanuc_rules = c.corners = true;
+  c.initial_feed = 250;
+  c.cutter = CutterStyle::Nc110;
+  c.cycle_two_levels = c.cycle_defines_only = c.cycle_needs_cancel = true;
+  c.peck_factor_word = 'K';
+  c.peck_minimum_word = 'J';
+  c.tap_pitch_word = 'K';
+  c.corrector_in_tool_word = c.mirror_toggles = true;
+  c.diameter_axis = 'X';
+  c.link_axes = "XZ";
+  c.aux_words = "HP";
+  c.comp_length_word = 'L';
+  c.comp_radius_word = 'R';
+  c.feed_limits = {{{0, 0}, {1, 24000}, {0.001, 99.999}}};
+  EXPECT_EQ(load_problem(m), "");
+  auto back = vm::read_module(vm::write_module(m), "x.ncb", s.diags);
+  ASSERT_TRUE(back);
+  EXPECT_TRUE(back->semantics.conventions == c);
+  EXPECT_FALSE(back->semantics.conventions == Conventions{});
+}
+
+TEST(Bytecode, EachConventionCheckRefuses) {
+  // A convention outside what conventions.def lets it hold is refused by name.
+  struct Case {
+    void (*spoil)(Conventions&);
+    std::string why;
+  };
+  const Case cases[] = {
+      {[](Conventions& c) { c.dwell_word = '1'; }, "the convention dwell_word: '1' is not an address letter"},
+      {[](Conventions& c) { c.aux_words = "H1"; }, "the convention aux_words: holds what is not an address letter"},
+      {[](Conventions& c) { c.diameter_axis = 'E'; }, "the convention diameter_axis: 'E' is not an axis"},
+      {[](Conventions& c) { c.axes = "XYZX"; },
+       "the convention axes: holds 'X', which is not an axis or appears twice"},
+      {[](Conventions& c) { c.boring_shift = 0; }, "the convention boring_shift: is neither 1 nor -1"},
+      {[](Conventions& c) { c.peck_clearance = -1; }, "the convention peck_clearance: is negative or not finite"},
+      {[](Conventions& c) { c.dwell_seconds_per_unit = 0; },
+       "the convention dwell_seconds_per_unit: is not a finite number above 0"},
+      {[](Conventions& c) {
+         c.feed_limits[1] = {10, 5};
+       },
+       "the convention feed_limits: holds what is not a range of feeds"},
+  };
+  for (const Case& k : cases) {
+    Session s;
+    vm::Module m = compile_example(s);
+    k.spoil(m.semantics.conventions);
+    EXPECT_EQ(load_problem(m), fmt::format("'x.ncb' is invalid: {} [NC5004]", k.why));
+  }
+}
+
 TEST(Bytecode, RoundTripKeepsEverything) {
   Session s;
   vm::Module m = compile_example(s);
