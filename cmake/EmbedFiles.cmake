@@ -21,4 +21,7 @@ function(ncc_embed_files output namespace)
     WORKING_DIRECTORY "${base}"
     COMMENT "Embedding ${namespace} data files"
     VERBATIM)
+  # Data, not code: a file's contents are one string literal, longer than -Wpedantic
+  # (-Woverlength-strings) likes; every compiler ncc builds with takes them.
+  set_source_files_properties("${output}" PROPERTIES COMPILE_OPTIONS -Wno-overlength-strings)
 endfunction()

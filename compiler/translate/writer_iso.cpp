@@ -75,7 +75,7 @@ class IsoWriter final : public Writer {
 
  private:
   // Fanuc reads a length without a decimal point in thousandths: every length has one.
-  std::string number(const OutWord& w) const {
+  std::string number(const OutWord& w) const override {
     switch (w.kind) {
       case Value::Code:  // G5.1: a code with a decimal
         return w.value == std::floor(w.value) ? fmt::format("{:02}", static_cast<int>(w.value)) : exact(w.value, false);
