@@ -316,17 +316,17 @@ class Machine {
   // belongs to (a GTL element's).
   uint32_t source() const { return event_source_ ? *event_source_ : block_.request ? block_.request->source : 0; }
   template <typename... Args>
-  void report(DiagId id, char word, const Args&... args) {
-    issue({id, diag_message(id, args...), source(), word ? letter_slot(word) : -1, -1});
+  void report(DiagIdFor<Args...> id, char word, const Args&... args) {
+    issue({id.id(), diag_message(id, args...), source(), word ? letter_slot(word) : -1, -1});
   }
   template <typename... Args>
-  void report_slot(DiagId id, int slot, const Args&... args) {
-    issue({id, diag_message(id, args...), source(), slot, -1});
+  void report_slot(DiagIdFor<Args...> id, int slot, const Args&... args) {
+    issue({id.id(), diag_message(id, args...), source(), slot, -1});
   }
   // A problem with the code being applied (located at its word).
   template <typename... Args>
-  void report_code(DiagId id, const Args&... args) {
-    issue({id, diag_message(id, args...), source(), -1, block_.code});
+  void report_code(DiagIdFor<Args...> id, const Args&... args) {
+    issue({id.id(), diag_message(id, args...), source(), -1, block_.code});
   }
   void issue(const RuntimeIssue& i) {
     issues_.issue(i);

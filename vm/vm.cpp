@@ -92,13 +92,13 @@ Vm::Vm(const Module& module, Machine& machine, RuntimeIssues& issues, VmOptions 
 }
 
 template <typename... Args>
-RunStatus Vm::fail(uint32_t pc, DiagId id, const Args&... args) {
+RunStatus Vm::fail(uint32_t pc, DiagIdFor<Args...> id, const Args&... args) {
   return fail_at(pc, -1, 0, id, args...);
 }
 
 template <typename... Args>
-RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args) {
-  issues_.issue({id, diag_message(id, args...), m_.source_of(pc), slot, -1, nth});
+RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagIdFor<Args...> id, const Args&... args) {
+  issues_.issue({id.id(), diag_message(id, args...), m_.source_of(pc), slot, -1, nth});
   return RunStatus::Error;
 }
 
@@ -793,7 +793,7 @@ bool Vm::asset_store(const std::vector<AssetField>& fields, const std::vector<as
 
 bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
   auto pop = [&] { return pop_value(); };
-  auto stop = [&](DiagId id, const auto&... args) {  // a run-time error: the run stops
+  auto stop = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {  // a run-time error: the run stops
     fail(pc, id, args...);
     return false;
   };
@@ -975,7 +975,7 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
 // NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps the value
 // offered. A run reads the answers of --input, in order; a dry run keeps every value.
 bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
-  auto refuse = [&](DiagId id, const auto&... args) {
+  auto refuse = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {
     fail(pc, id, args...);
     return false;
   };

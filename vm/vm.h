@@ -133,9 +133,9 @@ class Vm {
 
   // A run-time error of the block at pc; at its word of `slot`, if it has one.
   template <typename... Args>
-  RunStatus fail(uint32_t pc, DiagId id, const Args&... args);
+  RunStatus fail(uint32_t pc, DiagIdFor<Args...> id, const Args&... args);
   template <typename... Args>
-  RunStatus fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args);
+  RunStatus fail_at(uint32_t pc, int slot, int nth, DiagIdFor<Args...> id, const Args&... args);
   // The variable `index` names in `space`, or none (reported).
   std::optional<uint32_t> variable(uint8_t space, double index, uint32_t pc);
   double load(uint8_t space, double index, uint32_t pc, bool& ok);
