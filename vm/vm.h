@@ -131,7 +131,10 @@ class Vm {
     std::vector<Loop> loops;
   };
 
-  // A run-time error of the block at pc; at its word of `slot`, if it has one.
+  // A run-time error of the block at pc; at its word of `slot`, if it has one. fail()
+  // is report_error() as the status that stops the run: `return fail(...)`.
+  template <typename... Args>
+  void report_error(uint32_t pc, DiagIdFor<Args...> id, const Args&... args);
   template <typename... Args>
   RunStatus fail(uint32_t pc, DiagIdFor<Args...> id, const Args&... args);
   template <typename... Args>
