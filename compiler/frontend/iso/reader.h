@@ -104,7 +104,7 @@ class Reader {
   void finish_read(size_t index);
   void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
   void words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond);
-  bool call_words(ir::ExprId cond);
+  void call_words(ir::ExprId cond);
   void g92_words(size_t first);
   std::optional<uint32_t> whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what);
 
