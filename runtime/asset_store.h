@@ -17,6 +17,8 @@
 namespace ncc::asset {
 
 // Table 5.2: what an ASSET statement leaves in IOSTA (0: it worked).
+// [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+enum class [[nodiscard]] Code : uint8_t;
 enum class Code : uint8_t {
   Ok = 0,
   ChannelState = 1,  // channel already open / still closed

@@ -72,6 +72,8 @@ class RuntimeIssues {
   virtual void issue(const RuntimeIssue& issue) = 0;
 };
 
+// [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+enum class [[nodiscard]] BlockResult;
 enum class BlockResult { Continue, ProgramEnd, EndOfInformation, Error };
 
 // NC-110 RMNpq in a run of several processes: the path a process has still to go on

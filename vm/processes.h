@@ -51,6 +51,8 @@ class Processes final : public ProcessHost, public RemainingPaths {
   // The same in steps, as a host drives a run: begin (false: it cannot start,
   // reported), then step until it returns Ended or Error, then finish. With
   // ProcessSetup::by_block a step runs one block.
+  // [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+  enum class [[nodiscard]] Turn;
   enum class Turn { Continue, Ended, Error };
   bool begin(size_t first);
   Turn step();

@@ -29,6 +29,8 @@ struct SharedState {
 // chapter 4): the scheduler (processes.h) answers for the process it is running.
 class ProcessHost {
  public:
+  // [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+  enum class [[nodiscard]] Answer;
   enum class Answer { Done, Wait, Error };  // Error: reported at the block
   virtual ~ProcessHost() = default;
   virtual Answer start(double process, uint32_t entry, uint32_t pc) = 0;  // EXE
@@ -67,6 +69,8 @@ struct VmOptions {
 // Released: REL ended the program (NC-110). Yield: the block is done, others may run
 // (VmOptions::slice). Blocked: an instruction waits for another process; resume()
 // runs it again.
+// [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+enum class [[nodiscard]] RunStatus;
 enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error, Released, Yield, Blocked };
 
 class Vm {

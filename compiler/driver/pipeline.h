@@ -89,7 +89,7 @@ void dry_run(Session& s, const vm::Module& module, const RunSettings& settings);
 // Loads a bytecode file (and registers its source files for diagnostics).
 std::optional<vm::Module> load_module(Session& s, uint32_t file);
 
-struct RunResult {
+struct [[nodiscard]] RunResult {
   bool ok = true;
   bool usage_error = false;  // the run could not start: profile, start block
   uint64_t steps = 0;
