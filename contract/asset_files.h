@@ -25,6 +25,6 @@ struct FileName {
   bool operator==(const FileName&) const = default;
 };
 // `text` with or without "/MPn"; nothing when it is not a name a file may have.
-std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device);
+[[nodiscard]] std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device);
 
 }  // namespace ncc::asset

@@ -134,7 +134,7 @@ class Machine {
   void message(const std::string& text, uint32_t source);
   // An ASSET statement ran (NC-110 §5.3): the trace shows it; IOSTA takes its code
   // (§5.4). True when the run goes on: it worked, or ERR=1.
-  bool asset_done(const std::string& what, int code, uint32_t source);
+  [[nodiscard]] bool asset_done(const std::string& what, int code, uint32_t source);
   // The operator answered INP (NC-110 §5.5): the prompt and value offered, the answer.
   void operator_input(const std::string& shown, double answer, uint32_t source);
   void operator_input(const std::string& shown, const std::string& answer, uint32_t source);  // into a text
@@ -155,10 +155,10 @@ class Machine {
   // System variables (contract/system_vars.def), read and written by the program; a value a
   // variable cannot take is reported at `source`.
   double system(SysRef ref) const;
-  bool set_system(SysRef ref, double value, uint32_t source);
+  [[nodiscard]] bool set_system(SysRef ref, double value, uint32_t source);
   // NC-110 FEP, FEL, FEC (§2.12): field 1..3 of GTL element `index` of kind (gtl::Kind);
   // false if it is not defined.
-  bool gtl_field(int kind, double index, double field, double& out) const;
+  [[nodiscard]] bool gtl_field(int kind, double index, double field, double& out) const;
   // Values the last block measured, by index of the result space (NC-110 G72-G74).
   std::vector<std::pair<uint32_t, double>> take_results() { return std::exchange(results_, {}); }
   // What the runtime holds that grows with the blocks a run makes (the run's memory
@@ -307,7 +307,7 @@ class Machine {
   double length_units(double v) const { return modal_.inch ? v * 25.4 : v; }
   double to_program(double mm) const { return modal_.inch ? mm / 25.4 : mm; }
   double angle_degrees(double v) const;
-  std::optional<int> whole_number(char letter, const char* what);  // T, D, H
+  [[nodiscard]] std::optional<int> whole_number(char letter, const char* what);  // T, D, H
   bool is_linear(int axis) const { return config_.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear; }
   // A written axis value in machine units (mm, degrees), and back.
   double axis_units(int axis, double v) const;
@@ -386,42 +386,44 @@ class Machine {
   bool has_axis_word() const;
   bool frame_function(FnCall call);    // the NC-110 three-letter functions
   bool tooling_function(FnCall call);  // ... of the tool table and the probe (machine_tooling.cpp)
-  std::optional<int> whole_operand(int i, int lo, int hi,
-                                   const char* what);  // operand i, reported unless whole in lo..hi
-  void select_offset(int n);                           // the corrector or offset entry n in force
-  int usable_tool(int tool);                           // tool, or the sister that replaces it once unusable
+  // Operand i, reported unless whole in lo..hi.
+  [[nodiscard]] std::optional<int> whole_operand(int i, int lo, int hi, const char* what);
+  void select_offset(int n);  // the corrector or offset entry n in force
+  int usable_tool(int tool);  // tool, or the sister that replaces it once unusable
   // NC-110 UAV (machine_virtual.cpp).
   bool virtual_function(FnCall call);
   void virtual_event(const std::string& what);
-  void virtual_off();                                      // the real axes where the virtual ones took them
-  bool virtual_axes_programmed();                          // a driven axis programmed: reported
-  bool virtual_path(const std::vector<AxisValues>& path);  // mode 1: outside the minimum radius; C's turns
+  void virtual_off();                            // the real axes where the virtual ones took them
+  [[nodiscard]] bool virtual_axes_programmed();  // a driven axis programmed: reported
+  // Mode 1: outside the minimum radius; C's turns.
+  [[nodiscard]] bool virtual_path(const std::vector<AxisValues>& path);
   static constexpr double kChord = 1e-4;  // mm: the largest sagitta of the chords an arc's path checks use
   void origin_event();
   void transform_event();
-  bool path_allowed(const std::vector<AxisValues>& path);  // a position's range, limits and protected zones
-  bool position_in_range(int axis, double v);              // false (reported) beyond any machine's reach
+  // A position's range, limits and protected zones.
+  [[nodiscard]] bool path_allowed(const std::vector<AxisValues>& path);
+  [[nodiscard]] bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
   void set_position();
-  void load_offset();                              // pp G92
-  void load_compensation();                        // pp G93
-  void reference_approach();                       // pp G30
-  void reference_return();                         // ISO G28
-  void reference_leave();                          // ISO G29
-  void set_local_offset();                         // ISO G52
-  void length_zeroed(bool zero);                   // ISO G28/G29: the length offset's event, zero or back
-  void scaling_on();                               // ISO G51
-  void rotation_on();                              // ISO G68
-  bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
-  bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
-  bool block_has(Fn fn) const;                     // a code of the block calls fn
-  void arc_block_rules();                          // ISO E-11, E-13, E-14, E-15: what an arc block may change
+  void load_offset();                                            // pp G92
+  void load_compensation();                                      // pp G93
+  void reference_approach();                                     // pp G30
+  void reference_return();                                       // ISO G28
+  void reference_leave();                                        // ISO G29
+  void set_local_offset();                                       // ISO G52
+  void length_zeroed(bool zero);                                 // ISO G28/G29: the length offset's event, zero or back
+  void scaling_on();                                             // ISO G51
+  void rotation_on();                                            // ISO G68
+  [[nodiscard]] bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
+  [[nodiscard]] bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
+  bool block_has(Fn fn) const;                                   // a code of the block calls fn
+  void arc_block_rules();  // ISO E-11, E-13, E-14, E-15: what an arc block may change
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
   Event motion_event(EventKind kind, const AxisValues& machine_target) const;
   void rapid(const AxisValues& t);
-  bool need_feed(const char* what, const AxisValues& t);
+  [[nodiscard]] bool need_feed(const char* what, const AxisValues& t);
   double block_seconds();
   void linear(const AxisValues& t);
   void arc(const AxisValues& t, bool clockwise);
@@ -464,9 +466,9 @@ class Machine {
   void cycle_registers();
   void nc110_cycle_registers(bool definition);
   void nc110_cycle();
-  bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
-  bool nc110_levels_ok(const CyclePattern& pattern);
-  bool nc110_registers_ok(const CyclePattern& pattern);
+  [[nodiscard]] bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
+  [[nodiscard]] bool nc110_levels_ok(const CyclePattern& pattern);
+  [[nodiscard]] bool nc110_registers_ok(const CyclePattern& pattern);
   void tap_feed(const AxisValues& t, bool out);
   void measure();
 

@@ -12,7 +12,7 @@ namespace ncc::fuzz {
 void start_session(Session& s) {
   static const Session loaded = [] {
     Session t;
-    load_profile(t, "");
+    if (!load_profile(t, "")) fail("the built-in profile does not load");
     return t;
   }();
   // The profile's ranges name its files by their place in the session's sources.

@@ -1066,7 +1066,7 @@ void Reader::call_words(ir::ExprId cond) {
                     fmt::format("{}{} already holds the count {}", p->address, p->text, count));
       block_.has_errors = true;
     } else if (program_.is_constant(l->value)) {
-      whole(*l, 1, kMaxCount, "the number of calls");
+      (void)whole(*l, 1, kMaxCount, "the number of calls");  // reported, and the block marked, if not whole
     }
     // From a variable, checked when the call runs (§8.16, §8.33: at most 999).
     call.value = program_.is_constant(l->value) ? l->value : checked(operand(l->value), *l, "L", 1, kMaxCount);
