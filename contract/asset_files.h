@@ -26,9 +26,11 @@ struct FileName {
   bool operator==(const FileName&) const = default;
 };
 // `text` with or without "/MPn"; nothing when it is not a name a file may have.
-std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device);
+[[nodiscard]] std::optional<FileName> parse_file_name(std::string_view text, uint8_t default_device);
 
 // Table 5.2: what an ASSET statement leaves in IOSTA (0: it worked).
+// [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+enum class [[nodiscard]] Code : uint8_t;
 enum class Code : uint8_t {
   Ok = 0,
   ChannelState = 1,  // channel already open / still closed

@@ -59,6 +59,8 @@ class RuntimeIssues {
   virtual void issue(const RuntimeIssue& issue) = 0;
 };
 
+// [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+enum class [[nodiscard]] BlockResult;
 enum class BlockResult { Continue, ProgramEnd, EndOfInformation, Error };
 
 // NC-110 RMNpq in a run of several processes: the path a process has still to go on
@@ -119,7 +121,7 @@ class BlockMachine {
   virtual void comment(const std::string& text, uint32_t source) = 0;
   virtual void block_start(uint32_t source) = 0;
   virtual void message(const std::string& text, uint32_t source) = 0;
-  virtual bool asset_done(const std::string& what, int code, uint32_t source) = 0;
+  [[nodiscard]] virtual bool asset_done(const std::string& what, int code, uint32_t source) = 0;
   virtual void operator_input(const std::string& shown, double answer, uint32_t source) = 0;
   virtual void operator_input(const std::string& shown, const std::string& answer, uint32_t source) = 0;
   virtual void screen_event(const std::string& what, uint32_t source) = 0;
@@ -134,10 +136,10 @@ class BlockMachine {
   // System variables (contract/system_vars.def), read and written by the program; a
   // value a variable cannot take is reported at `source`.
   virtual double system(SysRef ref) const = 0;
-  virtual bool set_system(SysRef ref, double value, uint32_t source) = 0;
+  [[nodiscard]] virtual bool set_system(SysRef ref, double value, uint32_t source) = 0;
   // NC-110 FEP, FEL, FEC (§2.12): field 1..3 of GTL element `index` of kind (gtl::Kind);
   // false if it is not defined.
-  virtual bool gtl_field(int kind, double index, double field, double& out) const = 0;
+  [[nodiscard]] virtual bool gtl_field(int kind, double index, double field, double& out) const = 0;
   // The path `axis` has still to go at `seconds`: of the block moving then, linear in
   // time (NC-110 RMN in a run of several processes).
   virtual double remaining_at(int axis, double seconds) const = 0;

@@ -47,6 +47,6 @@ std::optional<Builtin> builtin_by_name(std::string_view name);
 
 // Evaluates b on args; on a domain error returns false and names the rule in `why`
 // ("undefined" for a GTL element that is not defined).
-bool eval_builtin(Builtin b, const double* args, double& out, std::string_view& why);
+[[nodiscard]] bool eval_builtin(Builtin b, const double* args, double& out, std::string_view& why);
 
 }  // namespace ncc

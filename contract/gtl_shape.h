@@ -43,6 +43,6 @@ struct Shape {
 // The classes of the operands, the key of a form: "LCr" is a line, a circle and a radius.
 std::string signature(const Shape& shape);
 // Why the shape is none of the forms of §2.11.4-2.11.7 (with s2 when `s2`), or "".
-std::string form_error(const Shape& shape, bool s2);
+[[nodiscard]] std::string form_error(const Shape& shape, bool s2);
 
 }  // namespace ncc::gtl

@@ -49,7 +49,7 @@ class SourceMap {
   // `encoded` bytes of `count` blocks from a file, checked (false if they are not
   // exactly that), and keeps them as they are.
   std::string_view encoded() const { return bytes_; }
-  bool read(std::string encoded, uint32_t count);
+  [[nodiscard]] bool read(std::string encoded, uint32_t count);
   bool operator==(const SourceMap& o) const {
     return files == o.files && count_ == o.count_ && encoded() == o.encoded();
   }

@@ -32,6 +32,6 @@ bool sys_writable(SysRef ref);
 
 // Why `value` cannot be stored in `ref` ("it is 0 or 1"), or nothing: the rule of
 // each variable (NC-110 §2.10), for the run and for constants the compiler sees.
-std::optional<std::string_view> sys_value_error(SysRef ref, double value);
+[[nodiscard]] std::optional<std::string_view> sys_value_error(SysRef ref, double value);
 
 }  // namespace ncc

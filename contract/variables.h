@@ -61,6 +61,6 @@ struct VarSpace {
 };
 
 // Converts `v` to what a variable of `type` holds; false if it does not fit.
-bool convert_value(VarType type, double limit, double& v);
+[[nodiscard]] bool convert_value(VarType type, double limit, double& v);
 
 }  // namespace ncc

@@ -53,7 +53,7 @@ class Channels {
 
   const Settings& settings() const { return settings_; }
   // DER: false when `structure` is not 1..structures or the layout is not one.
-  bool define(uint32_t structure, const Layout& layout);
+  [[nodiscard]] bool define(uint32_t structure, const Layout& layout);
   Code open(uint32_t channel, const FileName& name, bool write);  // OPN
   // RED and WRT; `at`, when given, takes the record they went to.
   Code read(uint32_t channel, uint32_t structure, std::optional<uint32_t> record, std::vector<Value>& out,

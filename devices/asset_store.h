@@ -27,7 +27,7 @@ using Layout = std::vector<Field>;
 
 // "IN", "RE", "LR", "5CH" (and back); a well-formed layout has 1..17 such fields.
 std::string field_text(const Field& f);
-std::optional<Field> parse_field(std::string_view text);
+[[nodiscard]] std::optional<Field> parse_field(std::string_view text);
 bool well_formed(const Layout& layout);
 size_t record_length(const Layout& layout);
 
@@ -46,8 +46,8 @@ File blank_file(const Layout& layout, uint32_t records);
 // hold: IN a whole number -32768..32767, RE a finite binary32, CH at most its length.
 double number(const File& f, uint32_t record, size_t field);
 std::string_view chars(const File& f, uint32_t record, size_t field);
-bool set_number(File& f, uint32_t record, size_t field, double value);
-bool set_chars(File& f, uint32_t record, size_t field, std::string_view text);
+[[nodiscard]] bool set_number(File& f, uint32_t record, size_t field, double value);
+[[nodiscard]] bool set_chars(File& f, uint32_t record, size_t field, std::string_view text);
 std::string encode(const File& f);
 // Code::Ok, or Code::Logical when `bytes` are not a well-formed file of this version.
 Code decode(std::string_view bytes, File& f);
@@ -61,7 +61,7 @@ class Store {
     uint64_t device_bytes = 1 << 20;  // the files of one device together, at most (17 beyond)
   };
   // The sandbox at `dir`, or nothing and why.
-  static std::unique_ptr<Store> open(const std::string& dir, const Options& options, std::string& why);
+  [[nodiscard]] static std::unique_ptr<Store> open(const std::string& dir, const Options& options, std::string& why);
   // Whether any device folder MP0..MP6 exists (`ncc files init` makes them).
   bool prepared() const;
   ~Store();

@@ -44,11 +44,11 @@ class UserScreen {
 
   // Each returns "" when done, else why not (the program's error).
   // DEF: field n at row, column, its width from `init` or `format` (table 5.3).
-  std::string define(uint32_t field, int row, int column, const std::optional<Content>& init,
-                     std::optional<Format> format, Attributes attributes);
-  std::string show(uint32_t field, bool inverse);                 // OUT n, OUT -n
-  std::string show_all();                                         // OUT: the fields not shown yet
-  std::string show_with(uint32_t field, const Content& content);  // OUT n, value
+  [[nodiscard]] std::string define(uint32_t field, int row, int column, const std::optional<Content>& init,
+                                   std::optional<Format> format, Attributes attributes);
+  [[nodiscard]] std::string show(uint32_t field, bool inverse);                 // OUT n, OUT -n
+  [[nodiscard]] std::string show_all();                                         // OUT: the fields not shown yet
+  [[nodiscard]] std::string show_with(uint32_t field, const Content& content);  // OUT n, value
   // The text of field n, as its prompt (INP with a field number).
   std::optional<std::string> text(uint32_t field) const;
 

@@ -43,6 +43,6 @@ std::vector<Vec> offsets_meet(const Element& a, const Element& b, double size, i
 
 // A chamfer whose ends lie at the straight distance `size` from the corner on each
 // element, or a fillet of radius `size` tangent to both; the reason when there is none.
-std::optional<Cut> cut(const Element& in, const Element& out, bool fillet, double size, std::string& why);
+[[nodiscard]] std::optional<Cut> cut(const Element& in, const Element& out, bool fillet, double size, std::string& why);
 
 }  // namespace ncc::corner

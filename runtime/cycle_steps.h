@@ -62,7 +62,7 @@ struct Pecks {
   }
   // How many pecks reach the bottom; nullopt when a peck (`stuck`) would not get
   // deeper than the clearance it comes back (the hole would never end).
-  std::optional<double> count(double& stuck) const;
+  [[nodiscard]] std::optional<double> count(double& stuck) const;
 };
 
 // One hole of NC-110's cycles (§2.8.9.4), in program coordinates along the drilling

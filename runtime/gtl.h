@@ -61,7 +61,7 @@ struct Tolerance {
 
 // An element, or why there is none ("" when an element it is defined from failed
 // before). `axis_letters` name the axes by number (kAxisLetters) in messages.
-struct Result {
+struct [[nodiscard]] Result {
   std::optional<Element> element;
   std::string why;
 };

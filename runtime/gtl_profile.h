@@ -65,7 +65,7 @@ class Profile {
     std::string what;
     bool warning = false;  // the profile goes on
   };
-  std::optional<Problem> take_problem() { return std::exchange(problem_, std::nullopt); }
+  [[nodiscard]] std::optional<Problem> take_problem() { return std::exchange(problem_, std::nullopt); }
 
  private:
   struct Call {
@@ -88,8 +88,8 @@ class Profile {
   };
 
   bool fail(size_t tag, std::string what);
-  std::optional<Call> call(const Element& e, ElementId id, bool s2, size_t tag);
-  std::optional<Junction> join(const Call& a, const Call& b, const Connector& c);
+  [[nodiscard]] std::optional<Call> call(const Element& e, ElementId id, bool s2, size_t tag);
+  [[nodiscard]] std::optional<Junction> join(const Call& a, const Call& b, const Connector& c);
   bool on(const Element& e, const Vec& p) const;
   Vec beside(const Element& e, const Vec& p) const { return p + side_ * radius_ * left(tangent(e, p)); }
   void move(const Call& c, const Vec& exit_nominal, const Vec& exit);

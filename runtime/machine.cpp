@@ -31,8 +31,10 @@ CompRules Machine::comp_rules(CutterStyle style) {
 void Machine::path_report(void* self, uint32_t source, const std::string& what) {
   // An error of the path stops the run at the block being run, as any error does.
   Machine& m = *static_cast<Machine*>(self);
-  const DiagId id = m.conv_.cutter == CutterStyle::Nc110 ? DiagId::CompPath : DiagId::ArcForm;
-  m.issue({id, diag_message(id, what), source, -1, -1});
+  if (m.conv_.cutter == CutterStyle::Nc110)
+    m.issue({DiagId::CompPath, diag_message(DiagId::CompPath, what), source, -1, -1});
+  else
+    m.issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, what), source, -1, -1});
 }
 
 void Machine::end_run(bool stopped_by_error) {
@@ -897,9 +899,10 @@ void Machine::check_dynamic_codes() {
                            dynamic(j) ? slot_of(r.codes[j]) : -1,
                            dynamic(j) ? -1 : r.codes[j],
                            dynamic(j) ? nth : 0};
-        issue.message = p.function.empty()
-                            ? diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name)
-                            : diag_message(issue.id, sem_.codes[p.a].name, sem_.codes[p.b].name, p.function);
+        issue.message =
+            p.function.empty()
+                ? diag_message(DiagId::CodesIncompatible, sem_.codes[p.a].name, sem_.codes[p.b].name)
+                : diag_message(DiagId::MCodeConflict, sem_.codes[p.a].name, sem_.codes[p.b].name, p.function);
         this->issue(issue);
         break;
       }

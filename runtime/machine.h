@@ -58,7 +58,7 @@ class Machine final : public BlockMachine {
   void comment(const std::string& text, uint32_t source) override;
   void block_start(uint32_t source) override;  // pp P-10.2
   void message(const std::string& text, uint32_t source) override;
-  bool asset_done(const std::string& what, int code, uint32_t source) override;  // IOSTA: §5.4
+  [[nodiscard]] bool asset_done(const std::string& what, int code, uint32_t source) override;  // IOSTA: §5.4
   void operator_input(const std::string& shown, double answer, uint32_t source) override;
   void operator_input(const std::string& shown, const std::string& answer, uint32_t source) override;
   void screen_event(const std::string& what, uint32_t source) override;
@@ -68,8 +68,8 @@ class Machine final : public BlockMachine {
   void wait_until(double seconds) override { clock_ = std::max(clock_, seconds); }
   bool block_skip() const override { return block_skip_; }
   double system(SysRef ref) const override;
-  bool set_system(SysRef ref, double value, uint32_t source) override;
-  bool gtl_field(int kind, double index, double field, double& out) const override;
+  [[nodiscard]] bool set_system(SysRef ref, double value, uint32_t source) override;
+  [[nodiscard]] bool gtl_field(int kind, double index, double field, double& out) const override;
   double remaining_at(int axis, double seconds) const override;
 
   // Held: the events cutter radius compensation and a corner hold back for a later
@@ -215,7 +215,7 @@ class Machine final : public BlockMachine {
   double length_units(double v) const { return modal_.inch ? v * 25.4 : v; }
   double to_program(double mm) const { return modal_.inch ? mm / 25.4 : mm; }
   double angle_degrees(double v) const;
-  std::optional<int> whole_number(char letter, const char* what);  // T, D, H
+  [[nodiscard]] std::optional<int> whole_number(char letter, const char* what);  // T, D, H
   bool is_linear(int axis) const { return config_.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear; }
   // A written axis value in machine units (mm, degrees), and back.
   double axis_units(int axis, double v) const;
@@ -226,17 +226,17 @@ class Machine final : public BlockMachine {
   // belongs to (a GTL element's).
   uint32_t source() const { return event_source_ ? *event_source_ : block_.request ? block_.request->source : 0; }
   template <typename... Args>
-  void report(DiagId id, char word, const Args&... args) {
-    issue({id, diag_message(id, args...), source(), word ? letter_slot(word) : -1, -1});
+  void report(DiagIdFor<Args...> id, char word, const Args&... args) {
+    issue({id.id(), diag_message(id, args...), source(), word ? letter_slot(word) : -1, -1});
   }
   template <typename... Args>
-  void report_slot(DiagId id, int slot, const Args&... args) {
-    issue({id, diag_message(id, args...), source(), slot, -1});
+  void report_slot(DiagIdFor<Args...> id, int slot, const Args&... args) {
+    issue({id.id(), diag_message(id, args...), source(), slot, -1});
   }
   // A problem with the code being applied (located at its word).
   template <typename... Args>
-  void report_code(DiagId id, const Args&... args) {
-    issue({id, diag_message(id, args...), source(), -1, block_.code});
+  void report_code(DiagIdFor<Args...> id, const Args&... args) {
+    issue({id.id(), diag_message(id, args...), source(), -1, block_.code});
   }
   void issue(const RuntimeIssue& i) {
     issues_.issue(i);
@@ -294,42 +294,44 @@ class Machine final : public BlockMachine {
   bool has_axis_word() const;
   bool frame_function(FnCall call);    // the NC-110 three-letter functions
   bool tooling_function(FnCall call);  // ... of the tool table and the probe (machine_tooling.cpp)
-  std::optional<int> whole_operand(int i, int lo, int hi,
-                                   const char* what);  // operand i, reported unless whole in lo..hi
-  void select_offset(int n);                           // the corrector or offset entry n in force
-  int usable_tool(int tool);                           // tool, or the sister that replaces it once unusable
+  // Operand i, reported unless whole in lo..hi.
+  [[nodiscard]] std::optional<int> whole_operand(int i, int lo, int hi, const char* what);
+  void select_offset(int n);  // the corrector or offset entry n in force
+  int usable_tool(int tool);  // tool, or the sister that replaces it once unusable
   // NC-110 UAV (machine_virtual.cpp).
   bool virtual_function(FnCall call);
   void virtual_event(const std::string& what);
-  void virtual_off();                                      // the real axes where the virtual ones took them
-  bool virtual_axes_programmed();                          // a driven axis programmed: reported
-  bool virtual_path(const std::vector<AxisValues>& path);  // mode 1: outside the minimum radius; C's turns
+  void virtual_off();                            // the real axes where the virtual ones took them
+  [[nodiscard]] bool virtual_axes_programmed();  // a driven axis programmed: reported
+  // Mode 1: outside the minimum radius; C's turns.
+  [[nodiscard]] bool virtual_path(const std::vector<AxisValues>& path);
   static constexpr double kChord = 1e-4;  // mm: the largest sagitta of the chords an arc's path checks use
   void origin_event();
   void transform_event();
-  bool path_allowed(const std::vector<AxisValues>& path);  // a position's range, limits and protected zones
-  bool position_in_range(int axis, double v);              // false (reported) beyond any machine's reach
+  // A position's range, limits and protected zones.
+  [[nodiscard]] bool path_allowed(const std::vector<AxisValues>& path);
+  [[nodiscard]] bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
   void set_position();
-  void load_offset();                              // pp G92
-  void load_compensation();                        // pp G93
-  void reference_approach();                       // pp G30
-  void reference_return();                         // ISO G28
-  void reference_leave();                          // ISO G29
-  void set_local_offset();                         // ISO G52
-  void length_zeroed(bool zero);                   // ISO G28/G29: the length offset's event, zero or back
-  void scaling_on();                               // ISO G51
-  void rotation_on();                              // ISO G68
-  bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
-  bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
-  bool block_has(Fn fn) const;                     // a code of the block calls fn
-  void arc_block_rules();                          // ISO E-11, E-13, E-14, E-15: what an arc block may change
+  void load_offset();                                            // pp G92
+  void load_compensation();                                      // pp G93
+  void reference_approach();                                     // pp G30
+  void reference_return();                                       // ISO G28
+  void reference_leave();                                        // ISO G29
+  void set_local_offset();                                       // ISO G52
+  void length_zeroed(bool zero);                                 // ISO G28/G29: the length offset's event, zero or back
+  void scaling_on();                                             // ISO G51
+  void rotation_on();                                            // ISO G68
+  [[nodiscard]] bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
+  [[nodiscard]] bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
+  bool block_has(Fn fn) const;                                   // a code of the block calls fn
+  void arc_block_rules();  // ISO E-11, E-13, E-14, E-15: what an arc block may change
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
   Event motion_event(EventKind kind, const AxisValues& machine_target) const;
   void rapid(const AxisValues& t);
-  bool need_feed(const char* what, const AxisValues& t);
+  [[nodiscard]] bool need_feed(const char* what, const AxisValues& t);
   double block_seconds();
   void linear(const AxisValues& t);
   void arc(const AxisValues& t, bool clockwise);
@@ -372,9 +374,9 @@ class Machine final : public BlockMachine {
   void cycle_registers();
   void nc110_cycle_registers(bool definition);
   void nc110_cycle();
-  bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
-  bool nc110_levels_ok(const CyclePattern& pattern);
-  bool nc110_registers_ok(const CyclePattern& pattern);
+  [[nodiscard]] bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
+  [[nodiscard]] bool nc110_levels_ok(const CyclePattern& pattern);
+  [[nodiscard]] bool nc110_registers_ok(const CyclePattern& pattern);
   void tap_feed(const AxisValues& t, bool out);
   void measure();
 

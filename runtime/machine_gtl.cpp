@@ -239,8 +239,11 @@ void Machine::gtl_moves() {
   }
   feed_ = feed;
   if (auto problem = g.profile.take_problem()) {
-    const DiagId id = problem->warning ? DiagId::GtlProfileEnd : DiagId::GtlProfile;
-    issue({id, diag_message(id, problem->what), g.blocks[problem->tag - g.first_tag].source, -1, -1});
+    const uint32_t source = g.blocks[problem->tag - g.first_tag].source;
+    if (problem->warning)
+      issue({DiagId::GtlProfileEnd, diag_message(DiagId::GtlProfileEnd, problem->what), source, -1, -1});
+    else
+      issue({DiagId::GtlProfile, diag_message(DiagId::GtlProfile, problem->what), source, -1, -1});
   }
   // The blocks no piece waits for any more.
   if (!g.profile.active()) {

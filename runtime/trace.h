@@ -185,7 +185,7 @@ enum class TraceFormat { Text, Jsonl, Canon };
 
 // A sink writing `format` to `out` through a buffer; `axes` are the letters the
 // machine has (conventions.axes), `main_file` the file whose lines need no name.
-std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
-                                             std::string axes);
+[[nodiscard]] std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
+                                                           std::string axes);
 
 }  // namespace ncc

@@ -9,7 +9,7 @@
 namespace ncc::sim {
 
 enum class View : uint8_t { XY, XZ, YZ, Iso };
-bool parse_view(std::string_view name, View& out);  // "xy", "xz", "yz", "iso"
+[[nodiscard]] bool parse_view(std::string_view name, View& out);  // "xy", "xz", "yz", "iso"
 
 struct PlotInput {
   const Toolpath* path = nullptr;

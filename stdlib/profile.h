@@ -24,27 +24,30 @@ class Profile {
  public:
   // Parses a profile file (path "" = the default alone). Syntax errors are reported
   // with their location; the result is empty on error.
-  static std::optional<Profile> load(SourceManager& sources, const std::string& path, Diagnostics& diags);
+  [[nodiscard]] static std::optional<Profile> load(SourceManager& sources, const std::string& path, Diagnostics& diags);
   // Parses profile text already in memory (e.g. stored in a bytecode file).
-  static std::optional<Profile> parse(SourceManager& sources, std::string name, std::string text, Diagnostics& diags);
+  [[nodiscard]] static std::optional<Profile> parse(SourceManager& sources, std::string name, std::string text,
+                                                    Diagnostics& diags);
 
   const std::string& name() const { return name_; }
   const std::string& text() const { return text_; }  // the user's text; "" for the default
   std::string resolve_path(std::string_view relative) const;
   // The text of the file the string `key` names (from the profile's folder), and its
   // path; nothing, reported at the key, if it cannot be read.
-  std::optional<std::string> file_text(std::string_view key, const std::string& file, std::string& path,
-                                       Diagnostics& diags) const;
+  [[nodiscard]] std::optional<std::string> file_text(std::string_view key, const std::string& file, std::string& path,
+                                                     Diagnostics& diags) const;
 
   // Typed lookups by dotted key ("gost.format"). A key of the wrong type is
   // reported and treated as absent.
-  std::optional<std::string> string(std::string_view key, Diagnostics& diags) const;
-  std::optional<double> number(std::string_view key, Diagnostics& diags) const;
-  std::optional<bool> boolean(std::string_view key, Diagnostics& diags) const;
-  std::optional<std::vector<double>> numbers(std::string_view key, Diagnostics& diags) const;
+  [[nodiscard]] std::optional<std::string> string(std::string_view key, Diagnostics& diags) const;
+  [[nodiscard]] std::optional<double> number(std::string_view key, Diagnostics& diags) const;
+  [[nodiscard]] std::optional<bool> boolean(std::string_view key, Diagnostics& diags) const;
+  [[nodiscard]] std::optional<std::vector<double>> numbers(std::string_view key, Diagnostics& diags) const;
   // An inline or nested table of numbers or strings: {X = 1, Y = 2}.
-  std::optional<std::map<std::string, double>> number_table(std::string_view key, Diagnostics& diags) const;
-  std::optional<std::map<std::string, std::string>> string_table(std::string_view key, Diagnostics& diags) const;
+  [[nodiscard]] std::optional<std::map<std::string, double>> number_table(std::string_view key,
+                                                                          Diagnostics& diags) const;
+  [[nodiscard]] std::optional<std::map<std::string, std::string>> string_table(std::string_view key,
+                                                                               Diagnostics& diags) const;
   // The keys of a collection table, from the user's profile if it has the table.
   std::vector<std::string> keys(std::string_view table) const;
   // The length of an array ("probe.contacts"); its items are "probe.contacts[0]"...

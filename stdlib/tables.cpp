@@ -1,6 +1,7 @@
 #include "tables.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <map>
 #include <mutex>
@@ -313,8 +314,16 @@ DialectTables read_dialect_tables(std::string_view dialect, Diagnostics& diags) 
     for (const TableRow& row : table->rows) {
       auto& list = t.power_on[row.cells[0]];
       for (size_t col = 1; col < 3; ++col)
-        for (const std::string& token : split(row.cells[col], ' '))
-          if (!token.empty()) list.push_back(token);
+        for (const std::string& token : split(row.cells[col], ' ')) {
+          if (token.empty()) continue;
+          // A token that is not a G or M code names functions ("units.mm").
+          const bool code = token.size() > 1 && (token[0] == 'G' || token[0] == 'M') &&
+                            std::isdigit(static_cast<unsigned char>(token[1]));
+          std::vector<FnCall> calls;
+          std::string error;
+          if (!code && !parse_functions(token, t.cycles, calls, error)) report(diags, *table, row.line, error);
+          list.push_back(token);
+        }
     }
   }
   // The compatibility matrix: a pair is incompatible if either row says so, or if

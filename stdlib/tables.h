@@ -33,8 +33,8 @@ Table parse_table(std::string name, std::string_view text, size_t columns, Diagn
 void report(Diagnostics& diags, const Table& t, uint32_t line, std::string_view what);
 
 // Loads stdlib/dialects/<dialect>/<file> from the embedded data.
-std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns, Diagnostics& diags,
-                                size_t max_columns = 0);
+[[nodiscard]] std::optional<Table> load_table(std::string_view dialect, std::string_view file, size_t columns,
+                                              Diagnostics& diags, size_t max_columns = 0);
 // The embedded file, if there is one.
 std::optional<std::string_view> embedded_file(std::string_view path);
 
@@ -88,8 +88,8 @@ struct DialectTables {
 
 // Parses "motion.rapid", "comp.off+length.off", "offset(3)", "cycle(G81)" (the
 // cycle argument names a row of `cycles`). Returns false with `error` set.
-bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cycles, std::vector<FnCall>& out,
-                     std::string& error);
+[[nodiscard]] bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cycles,
+                                   std::vector<FnCall>& out, std::string& error);
 
 // Reads a G or M code table; rows replace codes already in `codes`.
 void read_code_table(const Table& table, char letter, const std::vector<CyclePattern>& cycles,

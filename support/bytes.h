@@ -57,7 +57,7 @@ class ByteWriter {
   const std::string& data() const { return out_; }
 
   // A stream: passes the rest on; false if a write failed.
-  bool finish() {
+  [[nodiscard]] bool finish() {
     pass_on();
     return ok_;
   }

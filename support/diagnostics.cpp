@@ -149,6 +149,19 @@ std::string json_range(const SourceRange& r, const SourceManager& sources) {
 
 const DiagInfo& diag_info(DiagId id) { return kCatalogue[static_cast<size_t>(id)]; }
 
+// Every message of diagnostics.def is well formed, the ones no call site names too.
+constexpr bool all_messages_well_formed() {
+  for (std::string_view message : diag_check::kMessages)
+    if (diag_check::placeholders(message).malformed) return false;
+  return true;
+}
+static_assert(all_messages_well_formed(), "a message of diagnostics.def is malformed: see diag_check::placeholders");
+
+std::string diag_mismatch_message(DiagId id, size_t given) {
+  return fmt::format("internal error: the arguments of {} do not fit its message: {} given, {} taken", diag_code(id),
+                     given, diag_check::placeholders(diag_info(id).message).count);
+}
+
 std::string diag_code(DiagId id) { return fmt::format("NC{:04}", diag_info(id).number); }
 
 std::string_view severity_name(Severity s) {

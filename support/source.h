@@ -69,7 +69,7 @@ inline constexpr FileLimit kProgramFile{UINT32_MAX - 1, "a program file (positio
 // too, piece by piece). Nothing if it cannot be read, and why in `error`: EISDIR a
 // directory, EFBIG more than `limit` bytes (a regular file's size is checked before it
 // is read), EINVAL not a regular file where `limit` wants one, or the system's errno.
-std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, int& error);
+[[nodiscard]] std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, int& error);
 // Why read_file gave nothing, as a message says it: "it is a directory".
 std::string read_error(int error, const FileLimit& limit);
 // A program's text as its author sees it: the bytes of its file without the UTF-8
@@ -78,7 +78,7 @@ std::string read_error(int error, const FileLimit& limit);
 std::string program_text(std::string bytes);
 
 // read_file, reporting why not at `at` (NC6001).
-std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, Diagnostics& diags,
-                                     SourceRange at = {});
+[[nodiscard]] std::optional<std::string> read_file(const std::string& path, const FileLimit& limit, Diagnostics& diags,
+                                                   SourceRange at = {});
 
 }  // namespace ncc

@@ -26,7 +26,7 @@ std::string_view trim(std::string_view s);
 // The number all of `s` is, in std::from_chars' syntax (no blanks, no '+'); nothing
 // if it is not one or does not fit T.
 template <typename T>
-std::optional<T> parse_number(std::string_view s) {
+[[nodiscard]] std::optional<T> parse_number(std::string_view s) {
   T v{};
   auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
   if (ec != std::errc() || end != s.data() + s.size()) return std::nullopt;

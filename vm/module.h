@@ -57,14 +57,14 @@ struct Module {
 std::string write_module(const Module& m);
 // The same bytes to a file opened for writing (seekable: the checksum goes in last),
 // holding only a small buffer; false if a write failed.
-bool write_module(const Module& m, std::FILE* out);
+[[nodiscard]] bool write_module(const Module& m, std::FILE* out);
 // Parses, checks the checksum and verifies; reports and returns nothing on failure.
-std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags);
+[[nodiscard]] std::optional<Module> read_module(std::string_view bytes, const std::string& name, Diagnostics& diags);
 // The same from the `size` bytes of the file open at `fd`, read a section at a time:
 // loading holds the module, not the file beside it.
-std::optional<Module> read_module(int fd, uint64_t size, const std::string& name, Diagnostics& diags);
+[[nodiscard]] std::optional<Module> read_module(int fd, uint64_t size, const std::string& name, Diagnostics& diags);
 // "" when the module is sound, else the first problem found.
-std::string verify(const Module& m);
+[[nodiscard]] std::string verify(const Module& m);
 std::string disassemble(const Module& m);
 
 }  // namespace ncc::vm

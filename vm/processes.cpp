@@ -64,8 +64,8 @@ bool Processes::begin(size_t first) {
   for (size_t i = 0; i < entries.size(); ++i)
     for (uint8_t n = 2; n <= kMaxProcesses; ++n) {
       if (!(entries[i].processes >> (n - 1) & 1)) continue;
-      if (n > slots_.size()) {  // selected for a process this machine lacks
-        number(n, entries[i].pc, "--process");
+      if (n > slots_.size()) {  // selected for a process this machine lacks: number() reports it
+        (void)number(n, entries[i].pc, "--process");
         one.running = false;
         return false;
       }

@@ -54,12 +54,14 @@ class Processes final : public ProcessHost, public RemainingPaths {
 
   // Runs entry `first` and the programs after it on the medium in process 1, and the
   // programs selected for other processes; false if an error stopped the run.
-  bool run(size_t first);
+  [[nodiscard]] bool run(size_t first);
   // The same in steps, as a host drives a run: begin (false: it cannot start,
   // reported), then step until it returns Ended or Error, then finish. With
   // ProcessSetup::by_block a step runs one block.
+  // [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+  enum class [[nodiscard]] Turn;
   enum class Turn { Continue, Ended, Error };
-  bool begin(size_t first);
+  [[nodiscard]] bool begin(size_t first);
   Turn step();
   void finish(bool ok);
   const BlockMachine* machine(uint8_t process) const;  // none before it runs
@@ -76,10 +78,10 @@ class Processes final : public ProcessHost, public RemainingPaths {
 
  private:
   struct Slot;
-  Slot& slot(uint8_t n);                                          // made (its machine powered on) at first use
-  uint8_t number(double process, uint32_t pc, const char* what);  // 0: not a process (reported)
-  bool waits_at(const Slot& s, Op op, uint8_t partner) const;     // s is blocked at `op` naming `partner`
-  bool next_program(Slot& s);                                     // process 1: the next program on the medium
+  Slot& slot(uint8_t n);  // made (its machine powered on) at first use
+  [[nodiscard]] uint8_t number(double process, uint32_t pc, const char* what);  // 0: not a process (reported)
+  bool waits_at(const Slot& s, Op op, uint8_t partner) const;                   // s is blocked at `op` naming `partner`
+  bool next_program(Slot& s);  // process 1: the next program on the medium
   void deadlock();
   Answer meet(double process, uint32_t pc, const char* what, Op partner);
 

@@ -92,13 +92,19 @@ Vm::Vm(const Module& module, BlockMachine& machine, RuntimeIssues& issues, VmOpt
 }
 
 template <typename... Args>
-RunStatus Vm::fail(uint32_t pc, DiagId id, const Args&... args) {
-  return fail_at(pc, -1, 0, id, args...);
+void Vm::report_error(uint32_t pc, DiagIdFor<Args...> id, const Args&... args) {
+  issues_.issue({id.id(), diag_message(id, args...), m_.source_of(pc), -1, -1, 0});
 }
 
 template <typename... Args>
-RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args) {
-  issues_.issue({id, diag_message(id, args...), m_.source_of(pc), slot, -1, nth});
+RunStatus Vm::fail(uint32_t pc, DiagIdFor<Args...> id, const Args&... args) {
+  report_error(pc, id, args...);
+  return RunStatus::Error;
+}
+
+template <typename... Args>
+RunStatus Vm::fail_at(uint32_t pc, int slot, int nth, DiagIdFor<Args...> id, const Args&... args) {
+  issues_.issue({id.id(), diag_message(id, args...), m_.source_of(pc), slot, -1, nth});
   return RunStatus::Error;
 }
 
@@ -106,10 +112,11 @@ std::optional<uint32_t> Vm::variable(uint8_t space, double index, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   const std::optional<uint32_t> i = s.size ? whole_in<uint32_t>(index, 0, s.size - 1) : std::nullopt;
   if (!i)
-    fail(pc, DiagId::DomainError, fmt::format("index {}", shortest(index)),
-         s.size ? fmt::format("{}: 0 to {}", s.name, s.size - 1) : fmt::format("{}, which has no variables", s.name));
+    report_error(
+        pc, DiagId::DomainError, fmt::format("index {}", shortest(index)),
+        s.size ? fmt::format("{}: 0 to {}", s.name, s.size - 1) : fmt::format("{}, which has no variables", s.name));
   else if (type_at(space, *i) == VarType::Unavailable)
-    return (fail(pc, DiagId::VariableNumber, *i), std::nullopt);
+    return (report_error(pc, DiagId::VariableNumber, *i), std::nullopt);
   return i;
 }
 
@@ -122,7 +129,7 @@ double Vm::load(uint8_t space, double index, uint32_t pc, bool& ok) {
 bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   if (s.vacant && index == 0) {
-    fail(pc, DiagId::VacantVariable, fmt::format("{}0", s.name));
+    report_error(pc, DiagId::VacantVariable, fmt::format("{}0", s.name));
     return false;
   }
   const std::optional<uint32_t> i = variable(space, index, pc);
@@ -133,7 +140,7 @@ bool Vm::store(uint8_t space, double index, double value, uint32_t pc) {
   }
   double v = value;
   if (!convert_value(type_at(space, *i), s.limit, v)) {
-    fail(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, *i));
+    report_error(pc, DiagId::ValueOverflow, shortest(value), fmt::format("{}{}", s.name, *i));
     return false;
   }
   vars_[space][*i] = v;
@@ -144,7 +151,7 @@ uint8_t* Vm::bytes(uint8_t space, double index, uint32_t count, uint32_t pc) {
   const VarSpace& s = m_.spaces[space];
   const std::optional<uint32_t> at = count <= s.size ? whole_in<uint32_t>(index, 0, s.size - count) : std::nullopt;
   if (!at) {
-    fail(pc, DiagId::MemoryRange, s.name, shortest(index), count, s.size);
+    report_error(pc, DiagId::MemoryRange, s.name, shortest(index), count, s.size);
     return nullptr;
   }
   return shared_.memories[space].data() + *at;
@@ -172,8 +179,8 @@ bool Vm::store_mem(uint8_t space, MemFormat f, double index, double value, uint3
   bool fits = f == MemFormat::Bit ? (v == 0 || v == 1) : convert_value(kTypes[static_cast<int>(f)], 0, v);
   if (!fits) {
     static constexpr const char* kNames[] = {"BL", "BY", "IN", "LI", "RE", "LR"};
-    fail(pc, DiagId::ValueOverflow, shortest(value),
-         fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
+    report_error(pc, DiagId::ValueOverflow, shortest(value),
+                 fmt::format("{}{}.{}", s.name, shortest(index), kNames[static_cast<int>(f)]));
     return false;
   }
   uint8_t* p = bytes(space, first_byte(index, f), mem_size(f), pc);
@@ -793,8 +800,8 @@ bool Vm::asset_store(const std::vector<AssetField>& fields, const std::vector<as
 
 bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
   auto pop = [&] { return pop_value(); };
-  auto stop = [&](DiagId id, const auto&... args) {  // a run-time error: the run stops
-    fail(pc, id, args...);
+  auto stop = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {  // a run-time error: the run stops
+    report_error(pc, id, args...);
     return false;
   };
   auto file = [&] { return asset::parse_file_name(m_.strings[read_operand(operands, 4)], 1); };
@@ -954,7 +961,7 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
   const std::string process = shortest(n);
   ProcessHost::Answer a = ProcessHost::Answer::Error;
   if (!options_.processes) {
-    fail(pc, DiagId::ProcessError, process, "this run has one process");
+    report_error(pc, DiagId::ProcessError, process, "this run has one process");
   } else if (op == Op::ProcStart) {
     const uint16_t entry = u16_at(operands);
     a = answer(options_.processes->start(n, entry, pc),
@@ -975,8 +982,8 @@ ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) 
 // NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps the value
 // offered. A run reads the answers of --input, in order; a dry run keeps every value.
 bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
-  auto refuse = [&](DiagId id, const auto&... args) {
-    fail(pc, id, args...);
+  auto refuse = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {
+    report_error(pc, id, args...);
     return false;
   };
   const bool text = op == Op::InputText || op == Op::InputFieldText;
@@ -1085,7 +1092,7 @@ bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
     default: break;
   }
   if (!why.empty()) {
-    fail(pc, DiagId::ScreenError, why);
+    report_error(pc, DiagId::ScreenError, why);
     return false;
   }
   for (uint32_t n : shared_.screen.take_shown()) {

@@ -30,6 +30,8 @@ struct SharedState {
 // chapter 4): the scheduler (processes.h) answers for the process it is running.
 class ProcessHost {
  public:
+  // [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+  enum class [[nodiscard]] Answer;
   enum class Answer { Done, Wait, Error };  // Error: reported at the block
   virtual ~ProcessHost() = default;
   virtual Answer start(double process, uint32_t entry, uint32_t pc) = 0;  // EXE
@@ -68,6 +70,8 @@ struct VmOptions {
 // Released: REL ended the program (NC-110). Yield: the block is done, others may run
 // (VmOptions::slice). Blocked: an instruction waits for another process; resume()
 // runs it again.
+// [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
+enum class [[nodiscard]] RunStatus;
 enum class RunStatus { UnitEnded, ProgramEnd, EndOfInformation, Error, Released, Yield, Blocked };
 
 class Vm {
@@ -99,7 +103,9 @@ class Vm {
     machine_.wait_until(seconds);
   }
   // The PLC writes a memory (SA, SK: a run's input script): index and value fit.
-  void write_memory(uint8_t space, MemFormat f, uint32_t index, double value) { store_mem(space, f, index, value, 0); }
+  void write_memory(uint8_t space, MemFormat f, uint32_t index, double value) {
+    (void)store_mem(space, f, index, value, 0);  // the script's reader (plc_write) checked index and value
+  }
   const screen::UserScreen& user_screen() const { return shared_.screen; }
 
  private:
@@ -132,23 +138,26 @@ class Vm {
     std::vector<Loop> loops;
   };
 
-  // A run-time error of the block at pc; at its word of `slot`, if it has one.
+  // A run-time error of the block at pc; at its word of `slot`, if it has one. fail()
+  // is report_error() as the status that stops the run: `return fail(...)`.
   template <typename... Args>
-  RunStatus fail(uint32_t pc, DiagId id, const Args&... args);
+  void report_error(uint32_t pc, DiagIdFor<Args...> id, const Args&... args);
   template <typename... Args>
-  RunStatus fail_at(uint32_t pc, int slot, int nth, DiagId id, const Args&... args);
+  RunStatus fail(uint32_t pc, DiagIdFor<Args...> id, const Args&... args);
+  template <typename... Args>
+  RunStatus fail_at(uint32_t pc, int slot, int nth, DiagIdFor<Args...> id, const Args&... args);
   // The variable `index` names in `space`, or none (reported).
-  std::optional<uint32_t> variable(uint8_t space, double index, uint32_t pc);
+  [[nodiscard]] std::optional<uint32_t> variable(uint8_t space, double index, uint32_t pc);
   double load(uint8_t space, double index, uint32_t pc, bool& ok);
-  bool store(uint8_t space, double index, double value, uint32_t pc);
+  [[nodiscard]] bool store(uint8_t space, double index, double value, uint32_t pc);
   // A run of `count` bytes of memory `space` at byte `index`, or nullptr (reported).
-  uint8_t* bytes(uint8_t space, double index, uint32_t count, uint32_t pc);
-  bool load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out);
-  bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
+  [[nodiscard]] uint8_t* bytes(uint8_t space, double index, uint32_t count, uint32_t pc);
+  [[nodiscard]] bool load_mem(uint8_t space, MemFormat f, double index, uint32_t pc, double& out);
+  [[nodiscard]] bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
   // A memory changed now: a WAI condition it meets goes on from this time.
   void wrote_memory() { shared_.written_at = std::max(shared_.written_at, eval_time()); }
   // ASSET (NC-110 chapter 5): one instruction of it; the structures' variables.
-  bool asset(Op op, const uint8_t* operands, uint32_t pc);  // false: the run stops (reported)
+  [[nodiscard]] bool asset(Op op, const uint8_t* operands, uint32_t pc);  // false: the run stops (reported)
   struct AssetField {
     uint8_t space;
     bool memory;
@@ -156,14 +165,15 @@ class Vm {
     uint8_t chars;     // memory: a text of this many bytes (0: a value of `format`)
     uint32_t index;    // variable index, or memory index (bytes for a text)
   };
-  bool asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc);
-  bool asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values, uint32_t pc);
+  [[nodiscard]] bool asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc);
+  [[nodiscard]] bool asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values,
+                                 uint32_t pc);
   std::vector<AssetField> fields_;  // of the structure being defined
   std::map<uint32_t, std::vector<AssetField>> structures_;
   // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
-  bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
-  bool field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c);  // false: reported
-  bool input(Op op, const uint8_t* operands, uint32_t pc);                              // false: reported
+  [[nodiscard]] bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
+  [[nodiscard]] bool field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c);  // false: reported
+  [[nodiscard]] bool input(Op op, const uint8_t* operands, uint32_t pc);                              // false: reported
   double pop_value() {  // the verifier has checked the stack holds it
     const double v = process_.stack.back();
     process_.stack.pop_back();

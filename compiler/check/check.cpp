@@ -71,10 +71,10 @@ const stdlib::CodeEntry* code_entry(const ir::Program& p, const CheckRules& rule
   return it == table.end() ? nullptr : &it->second;
 }
 
-void report_with_note(const ir::Program& p, Diagnostics& diags, DiagId id, const ir::Word& second,
-                      const ir::Word& first, const std::string& a, const std::string& b = {},
-                      const std::string& c = {}) {
-  if (Diagnostic* d = diags.report(id, second.range, a, b, c))
+template <typename... Args>
+void report_with_note(const ir::Program& p, Diagnostics& diags, DiagIdFor<Args...> id, const ir::Word& second,
+                      const ir::Word& first, const Args&... args) {
+  if (Diagnostic* d = diags.report(id, second.range, args...))
     d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
 }
 
@@ -131,7 +131,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         break;
       }
       case stdlib::Repeat::Feed:
-        if (feed) report_with_note(p, diags, DiagId::SeveralFeeds, w, *feed, "");
+        if (feed) report_with_note(p, diags, DiagId::SeveralFeeds, w, *feed);
         if (!feed) feed = &w;
         break;
       case stdlib::Repeat::Group:
@@ -139,7 +139,10 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         if (w.kind != ir::WordKind::Code) break;
         const stdlib::CodeEntry* entry = code_entry(p, rules, w);
         if (!entry) {
-          diags.report(w.address == "G" ? DiagId::GCodeUndefined : DiagId::MCodeUndefined, w.range, word_text(p, w));
+          if (w.address == "G")
+            diags.report(DiagId::GCodeUndefined, w.range, word_text(p, w));
+          else
+            diags.report(DiagId::MCodeUndefined, w.range, word_text(p, w));
           break;
         }
         if (addr->second.repeat == stdlib::Repeat::Group && matrix) {

@@ -24,8 +24,9 @@ struct Simulation {
 // Runs `m` for the simulator, in machine coordinates, the events going on to `trace`
 // too if given. `progress`: what the progress line says; `output_on_terminal`: the
 // command's output goes to the terminal (no progress line then).
-std::optional<Simulation> simulate(Session& s, const vm::Module& m, RunSettings settings, const std::string& progress,
-                                   bool output_on_terminal, TraceSink* trace = nullptr);
+[[nodiscard]] std::optional<Simulation> simulate(Session& s, const vm::Module& m, RunSettings settings,
+                                                 const std::string& progress, bool output_on_terminal,
+                                                 TraceSink* trace = nullptr);
 // "N40 part.nc:12" for each block of the module's source map: a move's label.
 std::vector<std::string> block_labels(const vm::Module& m);
 // The page of `ncc view`: the run, the sources, the diagnostics so far.
@@ -33,6 +34,6 @@ sim::ViewInput view_input(Session& s, const vm::Module& m, const Simulation& sim
 // The stock: `text` ("X0:100,Y0:60,Z-20:0") if given, else the profile's [stock], else
 // the box round the cutting moves (and the tool's radius) from their lowest point up to
 // the work zero (or their highest point, when they stay above it). "" when good, else why not.
-std::string stock_box(const Simulation& sim, const std::string& text, double min[3], double max[3]);
+[[nodiscard]] std::string stock_box(const Simulation& sim, const std::string& text, double min[3], double max[3]);
 
 }  // namespace ncc

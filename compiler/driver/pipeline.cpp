@@ -618,7 +618,7 @@ vm::Module lower_program(Session& s, const ir::Program& program) { return lower(
 
 void dry_run(Session& s, const vm::Module& module, const RunSettings& settings) {
   NullSink none;
-  execute(s, module, settings, none, true);
+  (void)execute(s, module, settings, none, true);  // its problems are the session's diagnostics
 }
 
 std::optional<vm::Module> load_module(Session& s, uint32_t file) {

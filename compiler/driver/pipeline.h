@@ -32,7 +32,7 @@ struct Session {
 std::vector<Diagnostic> diagnostics_in_order(const Session& s);
 
 // Loads the machine profile; path "" = the built-in default.
-bool load_profile(Session& s, const std::string& path);
+[[nodiscard]] bool load_profile(Session& s, const std::string& path);
 
 struct RunSettings {
   std::optional<uint64_t> max_steps;  // default: the program's blocks + 100,000,000; a dry run's: + 1,000,000
@@ -50,17 +50,17 @@ struct RunSettings {
 
 enum class FileKind { Source, Bytecode };
 // Reads a file into the session; nullopt (reported) if it cannot be read.
-std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::string& path);
+[[nodiscard]] std::optional<std::pair<FileKind, uint32_t>> read_input(Session& s, const std::string& path);
 
 // Front end and checks. The program is returned even with errors (for `ncc ir`).
-std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect);
+[[nodiscard]] std::optional<ir::Program> analyse(Session& s, uint32_t file, const std::string& dialect);
 vm::Module lower_program(Session& s, const ir::Program& program);
 // Front end, checks and lowering at once: the leading blocks of the first unit
 // without a flow statement (most of a CAM file) are checked, lowered and
 // dropped as they are read, so that compiling holds little of the file's IR; the
 // module is the one analyse + lower_program make. Blocks with errors are lowered as
 // lower_program does; nothing if the program cannot be read at all.
-std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect);
+[[nodiscard]] std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect);
 // Sees each block compile_source streams, after its checks and before it is dropped;
 // `next` is the block after it where the observer looks ahead from this one.
 class StreamObserver {
@@ -76,20 +76,20 @@ class StreamObserver {
 };
 // compile_source, showing `observer` each block it streams, and leaving in `rest` the
 // program's IR without them (the units and blocks it holds at the end).
-std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect,
-                                         StreamObserver& observer, ir::Program& rest);
+[[nodiscard]] std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::string& dialect,
+                                                       StreamObserver& observer, ir::Program& rest);
 // A source read whole again, with no sink and its diagnostics not reported (the
 // caller has read it once): for what needs every block at once.
-std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect);
+[[nodiscard]] std::optional<ir::Program> read_whole(Session& s, uint32_t file, const std::string& dialect);
 // The power-on functions of a dialect with the session's profile (an empty program's).
 std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect);
 std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect, const stdlib::Profile& profile);
 // Runs the module with a null trace, reporting what the runtime finds.
 void dry_run(Session& s, const vm::Module& module, const RunSettings& settings);
 // Loads a bytecode file (and registers its source files for diagnostics).
-std::optional<vm::Module> load_module(Session& s, uint32_t file);
+[[nodiscard]] std::optional<vm::Module> load_module(Session& s, uint32_t file);
 
-struct RunResult {
+struct [[nodiscard]] RunResult {
   bool ok = true;
   bool usage_error = false;  // the run could not start: profile, start block
   uint64_t steps = 0;
@@ -116,7 +116,7 @@ class ModuleRun {
             bool by_block = false);
   ~ModuleRun();
   State state() const { return state_; }
-  State step();
+  [[nodiscard]] State step();
   State stop();  // ends it now: what the runtime holds back goes to the trace as it stands
   uint64_t steps() const;
   const BlockMachine* machine() const;         // process 1's (none if it never started)

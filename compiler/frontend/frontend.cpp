@@ -128,8 +128,8 @@ void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, con
       desc = it->second.desc;
     } else {
       desc.name = token;
-      std::string error;
-      stdlib::parse_functions(token, tables.cycles, desc.calls, error);
+      std::string error;  // reported when the table was read (stdlib/tables.cpp)
+      if (!stdlib::parse_functions(token, tables.cycles, desc.calls, error)) continue;
     }
     program.semantics.power_on.push_back(static_cast<uint16_t>(program_code(program, desc)));
   }

@@ -77,7 +77,7 @@ class DialectFrontend : public Frontend {
 
 // The front end T over `settings`, or nothing when they are invalid (reported).
 template <typename T, typename Settings>
-std::unique_ptr<Frontend> make_dialect_frontend(std::optional<Settings> settings) {
+[[nodiscard]] std::unique_ptr<Frontend> make_dialect_frontend(std::optional<Settings> settings) {
   if (!settings) return nullptr;
   return std::make_unique<T>(std::move(*settings));
 }
@@ -87,8 +87,8 @@ std::vector<std::string_view> dialect_names();
 // The text of a program file a program calls (NC-110 CLS, pp G72), a regular file of
 // at most 256 MiB (its IR is held whole); nothing if there is none at `path`, or if
 // there is one that cannot be read: that is reported at `at`, and `reported` set.
-std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at,
-                                            bool& reported);
+[[nodiscard]] std::optional<std::string> read_called_file(const std::string& path, Diagnostics& diags, SourceRange at,
+                                                          bool& reported);
 
 // Where the programs a program calls are: --lib, else the dialect's profile setting,
 // else the calling program's folder.
@@ -96,9 +96,10 @@ std::string library_root(const ReadOptions& options, const std::string& setting,
 // The program file a call names: the first `<root>/<name><extension>` that is one,
 // added to the sources; nothing (reported at `at` as program `shown`) if none is, or
 // if it is not text (admit_text).
-std::optional<uint32_t> load_called_file(SourceManager& sources, const std::string& root, const std::string& name,
-                                         std::initializer_list<std::string_view> extensions, const std::string& shown,
-                                         SourceRange at, Diagnostics& diags);
+[[nodiscard]] std::optional<uint32_t> load_called_file(SourceManager& sources, const std::string& root,
+                                                       const std::string& name,
+                                                       std::initializer_list<std::string_view> extensions,
+                                                       const std::string& shown, SourceRange at, Diagnostics& diags);
 
 // A character outside a comment, for a message: "'*'", "lower-case 'x'", "'Д'
 // (U+0414)", "0x0D (a control character)", one nobody sees by name: "U+00A0 (a
@@ -107,7 +108,7 @@ std::string describe_char(std::string_view text, size_t at, size_t& length);
 
 // A number as a program writes it, digits and a point ("12", "12.5", ".5", "12."): its
 // value, or nothing when it is out of a double's range (reported at `at`, NC1040).
-std::optional<double> read_number(std::string_view written, SourceRange at, Diagnostics& diags);
+[[nodiscard]] std::optional<double> read_number(std::string_view written, SourceRange at, Diagnostics& diags);
 
 // The index of a code in the program's code table, adding it on first use.
 int32_t program_code(ir::Program& program, const CodeDesc& desc);
@@ -118,8 +119,8 @@ void set_power_on(ir::Program& program, const stdlib::DialectTables& tables, con
 // A machine builder's own codes from the profile's `<section>.tables` (`g_codes`,
 // `m_codes`: files in the columns of stdlib/dialects/<dialect>/*_codes.tsv), for the
 // letters given; a row replaces the table's code of its number. False if reported.
-bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std::string_view letters,
-                        stdlib::DialectTables& tables, Diagnostics& diags);
+[[nodiscard]] bool read_machine_codes(const stdlib::Profile& p, std::string_view section, std::string_view letters,
+                                      stdlib::DialectTables& tables, Diagnostics& diags);
 
 // Codes a program chooses at run time (NC-110 `GE1`, pp `G R3`): the program then
 // carries every code of the letters its dynamic words use, except those named in
@@ -131,6 +132,7 @@ void add_dynamic_codes(ir::Program& program, const stdlib::DialectTables& tables
 
 // Builds the front end of `dialect` configured by `profile`; nullptr when the
 // dialect is unknown or its profile settings are invalid (reported).
-std::unique_ptr<Frontend> make_frontend(std::string_view dialect, const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::unique_ptr<Frontend> make_frontend(std::string_view dialect, const stdlib::Profile& profile,
+                                                      Diagnostics& diags);
 
 }  // namespace ncc

@@ -28,11 +28,11 @@ inline constexpr size_t kMaxOperators = 256;    // binary operators in a block
 // A file just read: false when it is binary data (NC1009) or not UTF-8 text (NC1035),
 // reported once at its first bad byte; such a file is not read. Nothing after this
 // sees bytes that are not UTF-8.
-bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags);
+[[nodiscard]] bool admit_text(const SourceFile& source, uint32_t file, Diagnostics& diags);
 
 // A block of `bytes` starting at `at`: false (reported) beyond kMaxBlockBytes, and the
 // block is not read.
-bool block_fits(size_t bytes, SourceRange at, Diagnostics& diags);
+[[nodiscard]] bool block_fits(size_t bytes, SourceRange at, Diagnostics& diags);
 
 // A grammar's token types the expression limits count.
 struct ExpressionTokens {
@@ -48,7 +48,7 @@ struct ExpressionTokens {
 // beyond, whose source range `range` gives. Scanned before parsing, in a loop: a
 // block beyond them is not parsed.
 using TokenRange = std::function<SourceRange(antlr4::Token* first, antlr4::Token* last)>;
-bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens& kinds, const TokenRange& range,
-                     Diagnostics& diags);
+[[nodiscard]] bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens& kinds,
+                                   const TokenRange& range, Diagnostics& diags);
 
 }  // namespace ncc

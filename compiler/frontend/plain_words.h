@@ -39,6 +39,6 @@ struct PlainBlock {
 // True if `text` is only blanks and address words of `rules`: each a letter, an
 // optional sign and a number (`12`, `12.`, `12.5`, `.5`) that ends at a blank, the
 // next address or the end; 'N' only first. Blanks are ' ' and '\t'; CRs may end the text.
-bool scan_plain_words(std::string_view text, const PlainRules& rules, PlainBlock& out);
+[[nodiscard]] bool scan_plain_words(std::string_view text, const PlainRules& rules, PlainBlock& out);
 
 }  // namespace ncc

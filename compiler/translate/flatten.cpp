@@ -215,7 +215,7 @@ void Flattener::start() {
   started_ = true;
   std::vector<OutWord> b;
   for (Fn fn : {Fn::UnitsMm, Fn::DistanceAbsolute, Fn::CompOff, Fn::CycleCancel, Fn::DynamicsPointToPoint})
-    if (code_for({fn})) write_code({fn}, b, source_, "the start");
+    if (code_for({fn})) (void)write_code({fn}, b, source_, "the start");  // code_for found it
   emit_codes(b);
 }
 
@@ -297,7 +297,7 @@ void Flattener::sync_state(uint32_t source) {
       link(source);
     } else if (want_.length_entry == 0) {
       if (code_for({Fn::LengthOff}))
-        write_code({Fn::LengthOff}, b, source, "tool length offset off");
+        (void)write_code({Fn::LengthOff}, b, source, "tool length offset off");  // code_for found it
       else
         told_.length_entry = 0;  // the target has none: never on
     } else if (write_code({want_.length_minus ? Fn::LengthMinus : Fn::LengthPlus}, b, source, "tool length offset")) {
@@ -448,7 +448,7 @@ void Flattener::arc_to(const Event& e, const AxisValues& end) {
   if (std::fabs(dw) > kSame && !told_.helix.value_or(false) &&
       code_for({Fn::HelixOn}, [](FnCall c) { return c.fn == Fn::DynamicsSmooth; })) {
     std::vector<OutWord> b;
-    write_code({Fn::HelixOn}, b, e.source, "helix mode");
+    (void)write_code({Fn::HelixOn}, b, e.source, "helix mode");  // code_for found it
     emit_block(std::move(b));
   }
   // The pieces: one, or the arc cut at the lines through the centre parallel to u and v.
@@ -672,10 +672,11 @@ void Flattener::event(const Event& e) {
     }
     case EventKind::End: {
       std::vector<OutWord> words;
+      // A target with no end code refuses it (reported): the translation then writes nothing.
       if (!code_for({e.n == 1 ? Fn::ProgramEndInformation : Fn::ProgramEnd}) && code_for({Fn::ProgramEndInformation}))
-        write_code({Fn::ProgramEndInformation}, words, e.source, "end of program");
+        (void)write_code({Fn::ProgramEndInformation}, words, e.source, "end of program");
       else
-        write_code({e.n == 1 ? Fn::ProgramEndInformation : Fn::ProgramEnd}, words, e.source, "end of program");
+        (void)write_code({e.n == 1 ? Fn::ProgramEndInformation : Fn::ProgramEnd}, words, e.source, "end of program");
       emit_block(std::move(words));
       w_.end();
       ended_ = true;

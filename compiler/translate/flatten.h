@@ -48,7 +48,7 @@ class Flattener final : public TraceSink {
   };
   // The target's code that calls `call`, and otherwise only functions `fits` allows.
   std::optional<Code> code_for(FnCall call, const std::function<bool(FnCall)>& fits = {}) const;
-  bool write_code(FnCall call, std::vector<OutWord>& words, uint32_t source, const char* what);
+  [[nodiscard]] bool write_code(FnCall call, std::vector<OutWord>& words, uint32_t source, const char* what);
   void write_alone(uint32_t source, FnCall call, const char* what);
   void applied(const Code& code);  // the target state after a code
   void start();

@@ -2982,9 +2982,10 @@ bool structured(Session& s, uint32_t file, const std::string& dialect, const Req
     else if (p->kind == Finding::RoundedRate)
       s.diags.report(DiagId::TranslateRoundedRate, p->at, writer->dialect(), what, writer->rate_decimals(what[0]),
                      rounded_these("value", more));
+    else if (p->kind == Finding::Dropped)
+      s.diags.report(DiagId::TranslateDropped, p->at, writer->dialect(), text);
     else
-      s.diags.report(p->kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused, p->at,
-                     writer->dialect(), text);
+      s.diags.report(DiagId::TranslateRefused, p->at, writer->dialect(), text);
     refused |= p->kind == Finding::Refused;
   }
   if (refused || streamer.spill.failed) return false;

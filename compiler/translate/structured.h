@@ -20,6 +20,7 @@ namespace ncc::translate {
 // program translates in the memory compiling it takes), and writes it in the
 // request's target to `out`. False when the program has errors or something could
 // not be written (reported); the caller then keeps no output.
-bool structured(Session& s, uint32_t file, const std::string& dialect, const Request& request, std::FILE* out);
+[[nodiscard]] bool structured(Session& s, uint32_t file, const std::string& dialect, const Request& request,
+                              std::FILE* out);
 
 }  // namespace ncc::translate

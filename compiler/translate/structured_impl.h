@@ -62,7 +62,7 @@ class Structured {
   // The whole text to `out`: the start, the streamed blocks (`streamed`, a file, or
   // none) where the main program's others begin, then the rest. False if it could
   // not be written.
-  bool emit(std::FILE* streamed, std::FILE* out);
+  [[nodiscard]] bool emit(std::FILE* streamed, std::FILE* out);
   // LinuxCNC: a jump back to a streamed block, where an o-word must open: the
   // program is to be read whole and translated again.
   bool needs_whole() const { return needs_whole_; }
@@ -163,10 +163,10 @@ class Structured {
   std::optional<uint32_t> common_number(const ir::Expr& e) const;
   // A target parameter for source variable `e`: its common number where that lies in
   // [first, end) and is free, else the next free one from `next`; nothing when none is.
-  std::optional<uint32_t> parameter_number(const ir::Expr& e, uint32_t first, uint32_t end, std::set<uint32_t>& taken,
-                                           uint32_t& next) const;
+  [[nodiscard]] std::optional<uint32_t> parameter_number(const ir::Expr& e, uint32_t first, uint32_t end,
+                                                         std::set<uint32_t>& taken, uint32_t& next) const;
   // A dwell of `seconds` as the target's lines (structured_cycle.cpp).
-  bool dwell_lines(double seconds, std::vector<std::string>& lines);
+  [[nodiscard]] bool dwell_lines(double seconds, std::vector<std::string>& lines);
   // Whether the block being written has a code word with function `fn`.
   bool block_has(Fn fn) const;
   bool block_has_call(const std::function<bool(const FnCall&)>& is,
@@ -211,7 +211,7 @@ class Structured {
   std::vector<FnCall> power_on() const;
   // Why work offset (origin) n is not the same on every axis of the target machine,
   // or nothing.
-  std::optional<std::string> partial_offset(int n, std::string_view name) const;
+  [[nodiscard]] std::optional<std::string> partial_offset(int n, std::string_view name) const;
 
   const ir::Program* p_ = nullptr;
   Writer& w_;
@@ -256,7 +256,7 @@ class Structured {
  private:
   struct Mapped;
   void attach(const ir::Program& program);
-  std::optional<uint32_t> space_base(uint16_t index);
+  [[nodiscard]] std::optional<uint32_t> space_base(uint16_t index);
   void begin_main();
   void lead(const ir::Block& b);
   bool at_power_on(const FnCall& c) const;
@@ -305,7 +305,7 @@ class Structured {
   void origin(const ir::Word& w, const CodeDesc& desc, std::vector<Mapped>& out);
   void origin_shift(const ir::Word& w, const CodeDesc& desc);
   std::optional<int> offset_after_change() const;
-  bool corrector_change(bool on);
+  [[nodiscard]] bool corrector_change(bool on);
   int start_work_offset() const;
   bool lowers_parabola() const;
   void parabola(const std::array<const ir::Word*, 6>& words, const Position& start, std::vector<std::string>& out);
@@ -334,8 +334,8 @@ class Structured {
   std::vector<std::string> corner_moves(const ir::Word& corner, const Position& start,
                                         const std::optional<std::array<double, 2>>& chained,
                                         std::vector<std::string>& words);
-  std::optional<std::array<double, 2>> arc_centre(const Position& start);
-  std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
+  [[nodiscard]] std::optional<std::array<double, 2>> arc_centre(const Position& start);
+  [[nodiscard]] std::optional<std::array<double, 2>> centre_by_radius(const ir::Word& r, const Position& start);
   void radius_centre(const ir::Word& r, const Position& start, std::vector<std::string>& words);
   // Rotation, scaling and mirroring where the target lacks one of them: every point
   // written transformed (structured_frame.cpp).
@@ -359,7 +359,7 @@ class Structured {
   void polar_point(const std::array<const ir::Word*, 2>& words, const Position& start, std::vector<std::string>& out,
                    size_t at);
   void helix(const Position& start, const ir::Word* lead, std::vector<std::string>& words, std::string& mode);
-  std::optional<std::string> length(SourceRange at, char to, std::optional<double> v);
+  [[nodiscard]] std::optional<std::string> length(SourceRange at, char to, std::optional<double> v);
   void arc_on_circle(const Position& start);
   void corrector(const ir::Word& w);
   char cycle_word(char letter) const;

@@ -65,8 +65,12 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
       continue;
     }
     const std::string text = what + (r.more ? fmt::format(" (and in {} more blocks)", r.more) : "");
-    const DiagId id = r.kind == Finding::Dropped ? DiagId::TranslateDropped : DiagId::TranslateRefused;
-    report_at_block(s, module, r.source, id, diag_message(id, writer->dialect(), text));
+    if (r.kind == Finding::Dropped)
+      report_at_block(s, module, r.source, DiagId::TranslateDropped,
+                      diag_message(DiagId::TranslateDropped, writer->dialect(), text));
+    else
+      report_at_block(s, module, r.source, DiagId::TranslateRefused,
+                      diag_message(DiagId::TranslateRefused, writer->dialect(), text));
     refused |= r.kind == Finding::Refused;
   }
   return result.ok && !result.usage_error && !refused && !sink.spill.failed && s.diags.error_count() == errors;

@@ -20,6 +20,6 @@ struct Request {
 // motion makes to `out`. False when the target cannot say something the run did
 // (each construct reported once, at its first block, with how many more there are);
 // the caller then keeps no output.
-bool flatten(Session& s, const vm::Module& module, const Request& request, std::FILE* out);
+[[nodiscard]] bool flatten(Session& s, const vm::Module& module, const Request& request, std::FILE* out);
 
 }  // namespace ncc::translate

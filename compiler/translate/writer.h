@@ -101,7 +101,7 @@ class Writer {
   virtual void reserve_number(long) {}  // a number a line will give itself
   // The source's block number n for a line, where no line has it yet (pp: each number
   // once in the file): reserved, true.
-  virtual bool claim_number(long) { return true; }
+  [[nodiscard]] virtual bool claim_number(long) { return true; }
   // The program end (after the block that ends it, if any).
   virtual void end() = 0;
   // The M code a target that must end its program with one writes where the source's
@@ -114,13 +114,13 @@ class Writer {
   virtual std::optional<double> parabola_code() const { return std::nullopt; }
   // A program after the first on the medium, which the target runs after it (GOST
   // 20999 §1.9): its start, with its own number and title. False: the target has none.
-  virtual bool next_program(std::string_view /*number*/, std::string_view /*title*/) { return false; }
+  [[nodiscard]] virtual bool next_program(std::string_view /*number*/, std::string_view /*title*/) { return false; }
   // The smallest length step the target's numbers write (mm): a position it writes
   // is exact to half of it.
   virtual double resolution() const = 0;
   // Why `w` cannot be written in the target (a value beyond the range of its
   // address, docs/dialects: addresses.tsv), or nothing.
-  virtual std::optional<std::string> unwritable(const OutWord& w) const;
+  [[nodiscard]] virtual std::optional<std::string> unwritable(const OutWord& w) const;
   // The decimals the target writes a feed, a speed, a dwell or a count of `letter` with.
   virtual int rate_decimals(char letter) const;
   // Such a value as the target writes it, where that is not its value: rounded to the
@@ -179,11 +179,13 @@ std::string exact(double v, bool point);
 bool is_target(std::string_view dialect);
 // The writer of `dialect` (is_target) with the target's profile; nothing when the
 // profile's settings for it are invalid (reported).
-std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::unique_ptr<Writer> make_writer(std::string_view dialect, const stdlib::Profile& profile,
+                                                  Diagnostics& diags);
 
 // The writers (writer_<dialect>.cpp).
 std::unique_ptr<Writer> make_iso_writer(std::unique_ptr<Frontend> target, bool linuxcnc);
-std::unique_ptr<Writer> make_gost_writer(std::unique_ptr<Frontend> target, const stdlib::Profile& profile);
+[[nodiscard]] std::unique_ptr<Writer> make_gost_writer(std::unique_ptr<Frontend> target,
+                                                       const stdlib::Profile& profile);
 std::unique_ptr<Writer> make_pp_writer(std::unique_ptr<Frontend> target);
 std::unique_ptr<Writer> make_nc110_writer(std::unique_ptr<Frontend> target);
 

@@ -47,7 +47,7 @@ class GostWriter final : public Writer {
   }
 
   // §1.9: the next program starts with its '%'; its numbers and its end are its own.
-  bool next_program(std::string_view number, std::string_view title) override {
+  [[nodiscard]] bool next_program(std::string_view number, std::string_view title) override {
     if (!s_.format.program_start) return false;
     std::string line = "%" + std::string(number);
     append_comment(line, title);
@@ -164,7 +164,7 @@ class GostWriter final : public Writer {
 
   // §9.2: a word the format cannot hold: an address it lacks, more digits than it
   // has, a sign it has no '+' for, decimals it would drop.
-  std::optional<std::string> unwritable(const OutWord& w) const override {
+  [[nodiscard]] std::optional<std::string> unwritable(const OutWord& w) const override {
     if (w.kind == Value::Code) return std::nullopt;
     const gost::WordFormat* f = s_.format.word(w.letter);
     if (!f)

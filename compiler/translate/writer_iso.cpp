@@ -22,7 +22,7 @@ class IsoWriter final : public Writer {
   int rate_decimals(char letter) const override { return letter == 'F' ? 6 : letter == 'S' ? 4 : linuxcnc_ ? 6 : 4; }
 
   // Fanuc's and LinuxCNC's N holds 0 to 99999: a block number beyond is left out.
-  std::optional<std::string> unwritable(const OutWord& w) const override {
+  [[nodiscard]] std::optional<std::string> unwritable(const OutWord& w) const override {
     if (w.letter == 'N' && (w.value < 0 || w.value > iso::kMaxBlockNumber))
       return fmt::format("N{}: {} writes N from 0 to {}", decimal(w.value, 0, false), dialect(), iso::kMaxBlockNumber);
     return Writer::unwritable(w);

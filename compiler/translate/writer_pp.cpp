@@ -123,7 +123,7 @@ class PpWriter final : public Writer {
 
   long fresh_number() override { return std::stol(next_number().substr(1)); }
   void reserve_number(long n) override { take(static_cast<unsigned long>(n)); }
-  bool claim_number(long n) override {
+  [[nodiscard]] bool claim_number(long n) override {
     const auto u = static_cast<unsigned long>(n);
     if (u < taken_.size() && taken_[u]) return false;
     take(u);

@@ -258,9 +258,9 @@ class AssetChannels : public ::testing::Test {
  protected:
   AssetChannels() : store(box.store()) {
     File f = blank_file(kOrigins, 3);
-    set_number(f, 3, 0, 2);
-    set_chars(f, 3, 1, "Z");
-    set_number(f, 3, 2, -12.5);
+    EXPECT_TRUE(set_number(f, 3, 0, 2));
+    EXPECT_TRUE(set_chars(f, 3, 1, "Z"));
+    EXPECT_TRUE(set_number(f, 3, 2, -12.5));
     EXPECT_EQ(store->create(name("ORIG/MP3"), f), Code::Ok);
     File locked = blank_file(kOrigins, 1);
     locked.write_protected = true;

@@ -134,7 +134,7 @@ bool load_disassemble_and_run(const std::string& bytes, const Sandbox& sandbox, 
   settings.files = sandbox.dir.string();
   std::FILE* out = std::fopen("/dev/null", "wb");
   auto writer = make_trace_writer(format, out, m->source_map, m->semantics.conventions.axes);
-  run_module(s, *m, settings, *writer);
+  (void)run_module(s, *m, settings, *writer);  // any outcome will do: the run must only not crash
   writer.reset();
   std::fclose(out);
   return true;

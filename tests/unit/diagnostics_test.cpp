@@ -26,6 +26,44 @@ TEST(Diagnostics, CodesAreUniqueAndDocumented) {
   }
 }
 
+// A DiagId converts to the parameter of diag_message() and report() only in a constant
+// expression that finds the message's placeholders fit the arguments. Made in a template
+// argument, a conversion that does not fit is a substitution failure a concept sees.
+template <DiagId id, typename... Args>
+concept ReportableWith = requires {
+  typename std::integral_constant<DiagId, DiagIdFor<Args...>(id).id()>;
+};
+
+// "{0} appears more than {1} in the block"
+static_assert(ReportableWith<DiagId::WordRepeated, std::string, const char*>);
+static_assert(!ReportableWith<DiagId::WordRepeated, std::string>);
+static_assert(!ReportableWith<DiagId::WordRepeated, std::string, const char*, int>);
+static_assert(ReportableWith<DiagId::DivisionByZero>);
+static_assert(!ReportableWith<DiagId::DivisionByZero, int>);
+// "'{0}' is corrupt: checksum {1:08x} does not match its contents ({2:08x})": x takes an integer.
+static_assert(ReportableWith<DiagId::BytecodeChecksum, std::string, uint32_t, uint32_t>);
+static_assert(!ReportableWith<DiagId::BytecodeChecksum, std::string, std::string, uint32_t>);
+// Every function taking a DiagId and arguments takes the checked one.
+static_assert(std::is_same_v<decltype(&diag_message<int>), std::string (*)(CheckedDiagId<int>, const int&)>);
+static_assert(std::is_same_v<decltype(&Diagnostics::report<int>),
+                             Diagnostic* (Diagnostics::*)(CheckedDiagId<int>, SourceRange, const int&)>);
+
+static_assert(diag_check::placeholders("{1} before {0}").count == 2);
+static_assert(diag_check::placeholders("{0} twice {0}").count == 1);
+static_assert(diag_check::placeholders("{} and {}").count == 2);
+static_assert(diag_check::placeholders("{{0}} is text").count == 0);
+static_assert(diag_check::placeholders("{0} and {2}").malformed);  // {1}: an argument no placeholder shows
+static_assert(diag_check::placeholders("{0").malformed);
+static_assert(diag_check::placeholders("0}").malformed);
+static_assert(diag_check::placeholders("{} and {1}").malformed);
+
+TEST(Diagnostics, RuntimeIdIsCheckedWhenTheMessageIsMade) {
+  volatile DiagId chosen = DiagId::WordRepeated;  // known only at run time
+  EXPECT_EQ(diag_message(runtime_diag(chosen), "X", "once"), "X appears more than once in the block");
+  EXPECT_EQ(diag_message(runtime_diag(chosen), "X"),
+            "internal error: the arguments of NC3001 do not fit its message: 1 given, 2 taken");
+}
+
 TEST(Diagnostics, TextHasLocationCodeLineAndCaret) {
   SourceManager sources;
   uint32_t f = sources.add("p.nc", "%1\nN1 X10 X20\n");

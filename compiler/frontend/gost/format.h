@@ -48,7 +48,7 @@ struct FormatProblem {
 // Parses a descriptor. Problems are returned, not reported: the caller knows where
 // the descriptor came from (a profile key, a .fmt file). `0a0` items read as
 // leading suppression with `a` integer digits, with a warning.
-std::optional<Format> parse_format(std::string_view text, std::vector<FormatProblem>& problems);
+[[nodiscard]] std::optional<Format> parse_format(std::string_view text, std::vector<FormatProblem>& problems);
 // A .fmt file: lines that are only a parenthesised comment are skipped; the first
 // other line is the descriptor.
 std::string_view format_line_of_file(std::string_view file_text);
@@ -72,7 +72,7 @@ struct DecodeOptions {
 
 // Decodes `n` for address `letter` by `format`. Problems are reported at `range`;
 // returns the value unless the word is unusable.
-std::optional<double> decode(char letter, const WordFormat& format, const WrittenNumber& n, const DecodeOptions& opts,
-                             SourceRange range, Diagnostics& diags);
+[[nodiscard]] std::optional<double> decode(char letter, const WordFormat& format, const WrittenNumber& n,
+                                           const DecodeOptions& opts, SourceRange range, Diagnostics& diags);
 
 }  // namespace ncc::gost

@@ -104,7 +104,8 @@ class Reader final : public ncc_gost::GostParserBaseVisitor {
   WrittenNumber written_number(GostParser::SignContext* sign, GostParser::NumberContext* number, char letter);
   void check_comment_text(antlr4::Token* token);
   int32_t code_index(char letter, int number);
-  void report_mode(DiagId id, SourceRange r, Severity strict_severity, const std::string& arg);
+  template <typename... Args>
+  void report_mode(DiagIdFor<Args...> id, SourceRange r, Severity strict_severity, const Args&... args);
 
   const Settings& s_;
   ir::Program& program_;
@@ -143,8 +144,9 @@ SourceRange Reader::range(antlr4::Token* first, antlr4::Token* last) const {
   return {file_, line_no_, begin, line_no_, end};
 }
 
-void Reader::report_mode(DiagId id, SourceRange r, Severity strict_severity, const std::string& arg) {
-  Diagnostic d{id, diag_info(id).severity, r, diag_message(id, arg), {}};
+template <typename... Args>
+void Reader::report_mode(DiagIdFor<Args...> id, SourceRange r, Severity strict_severity, const Args&... args) {
+  Diagnostic d{id.id(), diag_info(id.id()).severity, r, diag_message(id, args...), {}};
   if (s_.decode.mode == Mode::Strict) d.severity = strict_severity;
   diags_.add(std::move(d));
 }
@@ -288,7 +290,7 @@ void Reader::read_block(std::string_view line, uint32_t line_no) {
 void Reader::finish_block() {
   // §1.4: the first block of a program carries its number.
   if (first_block_ && !block_.number)
-    report_mode(DiagId::FirstBlockNoNumber, SourceRange::point(file_, line_no_, 1), Severity::Error, "");
+    report_mode(DiagId::FirstBlockNoNumber, SourceRange::point(file_, line_no_, 1), Severity::Error);
   first_block_ = false;
 
   // The machine action reads the codes and parameter words; comments show first.
@@ -560,7 +562,11 @@ void Reader::check_comment_text(antlr4::Token* token) {
     char c = line_text_[i];
     if (c != '%' && c != ':') continue;
     uint32_t col = base_ + static_cast<uint32_t>(i) + 1;
-    diags_.report(c == '%' ? DiagId::CommentPercent : DiagId::CommentColon, {file_, line_no_, col, line_no_, col + 1});
+    const SourceRange at{file_, line_no_, col, line_no_, col + 1};
+    if (c == '%')
+      diags_.report(DiagId::CommentPercent, at);
+    else
+      diags_.report(DiagId::CommentColon, at);
   }
 }
 

@@ -4,6 +4,6 @@
 
 namespace ncc::gost {
 
-std::unique_ptr<Frontend> make_gost_frontend(const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::unique_ptr<Frontend> make_gost_frontend(const stdlib::Profile& profile, Diagnostics& diags);
 
 }  // namespace ncc::gost

@@ -24,6 +24,6 @@ struct Settings {
 
 // Reads and validates the settings; problems are reported at their place in the
 // profile. Returns nothing if the profile cannot be used.
-std::optional<Settings> load_settings(const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::optional<Settings> load_settings(const stdlib::Profile& profile, Diagnostics& diags);
 
 }  // namespace ncc::gost

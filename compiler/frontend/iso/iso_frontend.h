@@ -4,6 +4,6 @@
 
 namespace ncc::iso {
 
-std::unique_ptr<Frontend> make_iso_frontend(const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::unique_ptr<Frontend> make_iso_frontend(const stdlib::Profile& profile, Diagnostics& diags);
 
 }  // namespace ncc::iso

@@ -984,7 +984,7 @@ void Reader::g92_words(size_t first) {
 
 // M97, M98, G65 (§8.16, §8.33): the block's other words run first (M97/M98), or are
 // the macro's arguments (G65).
-bool Reader::call_words(ir::ExprId cond) {
+void Reader::call_words(ir::ExprId cond) {
   const ir::Word* code = nullptr;
   const ir::Word* p = nullptr;
   const ir::Word* l = nullptr;
@@ -1048,7 +1048,7 @@ bool Reader::call_words(ir::ExprId cond) {
   if (!p) {
     diags_.report(DiagId::ValueMissing, code->range, what + " P");
     block_.has_errors = true;
-    return false;
+    return;
   }
   std::optional<uint32_t> number = whole(*p, 0,
                                          what == "M97"   ? kMaxBlockNumber
@@ -1066,14 +1066,14 @@ bool Reader::call_words(ir::ExprId cond) {
                     fmt::format("{}{} already holds the count {}", p->address, p->text, count));
       block_.has_errors = true;
     } else if (program_.is_constant(l->value)) {
-      whole(*l, 1, kMaxCount, "the number of calls");
+      (void)whole(*l, 1, kMaxCount, "the number of calls");  // reported, and the block marked, if not whole
     }
     // From a variable, checked when the call runs (§8.16, §8.33: at most 999).
     call.value = program_.is_constant(l->value) ? l->value : checked(operand(l->value), *l, "L", 1, kMaxCount);
   } else if (count) {
     call.value = program_.number(count, p->range);
   }
-  if (!number) return false;
+  if (!number) return;
   if (macro && machine_words) block_.has_errors = true;
   if (machine_words) block_.stmts.push_back({ir::StmtKind::Machine, block_.range});
   if (what == "M97") {
@@ -1085,7 +1085,6 @@ bool Reader::call_words(ir::ExprId cond) {
     calls_.push_back({call.label, p->range, program_.units.size(), unit_.blocks.size() - 1});
   }
   block_.stmts.push_back(std::move(call));
-  return true;
 }
 
 // ---- Expressions ------------------------------------------------------------------------

@@ -74,7 +74,7 @@ class Reader {
   ir::ExprId primary(IsoParser::PrimaryContext* ctx);
   ir::ExprId variable(IsoParser::VariableContext* ctx, bool target);
   ir::ExprId value(IsoParser::ValueContext* ctx, bool& literal_integer);
-  std::optional<double> number(antlr4::tree::TerminalNode* n);
+  [[nodiscard]] std::optional<double> number(antlr4::tree::TerminalNode* n);
   ir::ExprId operand(ir::ExprId e);  // vacant reads as 0
   ir::ExprId checked(ir::ExprId e, const ir::Word& w, const std::string& address, double lo, double hi);
   ir::ExprId condition(IsoParser::ExprContext* ctx, const char* what);
@@ -94,7 +94,7 @@ class Reader {
     std::optional<std::pair<std::string, SourceRange>> sequence;  // N's digits
     std::vector<RawWord> words;
   };
-  bool scan_plain(FastBlock& out);
+  [[nodiscard]] bool scan_plain(FastBlock& out);
   // Kept from block to block, so that reading a plain block allocates little.
   FastBlock fast_;
   PlainBlock plain_words_;
@@ -104,9 +104,9 @@ class Reader {
   void finish_read(size_t index);
   void words(IsoParser::WordsContext* ctx, ir::ExprId cond);
   void words(const std::vector<RawWord>& list, const RawWord* corner, ir::ExprId cond);
-  bool call_words(ir::ExprId cond);
+  void call_words(ir::ExprId cond);
   void g92_words(size_t first);
-  std::optional<uint32_t> whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what);
+  [[nodiscard]] std::optional<uint32_t> whole(const ir::Word& w, uint32_t min, uint32_t max, const char* what);
 
   // Structure.
   ir::Block& new_block(SourceRange r);

@@ -26,6 +26,6 @@ struct Settings {
 
 // Reads the tables and the profile's [iso] settings; problems are reported at their
 // place. Returns nothing if the dialect cannot be used.
-std::optional<Settings> load_settings(const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::optional<Settings> load_settings(const stdlib::Profile& profile, Diagnostics& diags);
 
 }  // namespace ncc::iso

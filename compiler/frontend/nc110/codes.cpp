@@ -766,7 +766,7 @@ void Reader::code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignatur
 
 void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& ops, SourceRange code_range) {
   ir::Stmt s(ir::StmtKind::Machine, block_.range);
-  auto fail = [&](DiagId id, SourceRange r, auto... args) {
+  auto fail = [&]<typename... Args>(DiagIdFor<Args...> id, SourceRange r, const Args&... args) {
     diags_.report(id, r, args...);
     block_.has_errors = true;
   };

@@ -168,7 +168,7 @@ std::optional<SysRef> Reader::system_ref(const std::string& name, std::optional<
                                          bool writing, const SystemName** entry) {
   auto it = s_.system.find(name);
   std::string shown = name + (number ? std::to_string(*number) : "");
-  auto fail = [&](DiagId id, auto... args) -> std::optional<SysRef> {
+  auto fail = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) -> std::optional<SysRef> {
     diags_.report(id, r, args...);
     block_.has_errors = true;
     return std::nullopt;
@@ -309,7 +309,7 @@ void Reader::assign_block(Nc110Parser::AssignBlockContext* ctx) {
   SourceRange value_range = range(value);
   std::string target_text = text(target->getStart(), target->getStop());
   ir::Stmt s(ir::StmtKind::Assign, block_.range);
-  auto fail = [&](DiagId id, SourceRange r, auto... args) {
+  auto fail = [&]<typename... Args>(DiagIdFor<Args...> id, SourceRange r, const Args&... args) {
     diags_.report(id, r, args...);
     block_.has_errors = true;
   };

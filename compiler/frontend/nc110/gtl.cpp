@@ -52,7 +52,7 @@ gtl::Kind kind_of(char letter) {
 std::optional<ir::ExprId> Reader::gtl_value(char letter, bool minus, Nc110Parser::WordValueContext* v, SourceRange r) {
   const std::string written = v ? text(v->getStart(), v->getStop()) : std::string();
   const std::string shown = (minus ? "-" : "") + std::string(1, letter) + written;
-  auto fail = [&](DiagId id, auto... args) -> std::optional<ir::ExprId> {
+  auto fail = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) -> std::optional<ir::ExprId> {
     diags_.report(id, r, args...);
     block_.has_errors = true;
     return std::nullopt;

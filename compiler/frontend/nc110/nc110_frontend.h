@@ -4,6 +4,6 @@
 
 namespace ncc::nc110 {
 
-std::unique_ptr<Frontend> make_nc110_frontend(const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::unique_ptr<Frontend> make_nc110_frontend(const stdlib::Profile& profile, Diagnostics& diags);
 
 }  // namespace ncc::nc110

@@ -607,7 +607,7 @@ void Reader::address_word(Nc110Parser::AddressWordContext* ctx) {
 void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
   const std::string written = v ? v->written : std::string();
   const std::string shown = letter + written;
-  auto fail = [&](DiagId id, auto... args) {
+  auto fail = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {
     diags_.report(id, r, args...);
     block_.has_errors = true;
   };
@@ -662,9 +662,8 @@ void Reader::address_word(char letter, const WordValue* v, SourceRange r) {
     if (digits.size() > 2) return fail(DiagId::TooManyDigits, shown, digits.size(), std::string(1, letter) + "2", 2);
     const int number = parse_number<int>(digits).value_or(0);  // at most 2 digits
     int32_t code = code_index(letter, number);
-    if (code < 0)
-      return fail(letter == 'G' ? DiagId::GCodeUndefined : DiagId::MCodeUndefined,
-                  fmt::format("{}{:02}", letter, number));
+    if (code < 0 && letter == 'G') return fail(DiagId::GCodeUndefined, fmt::format("G{:02}", number));
+    if (code < 0) return fail(DiagId::MCodeUndefined, fmt::format("M{:02}", number));
     add_word(letter, letter_slot(letter), program_.number(number, r), v ? written : "", r, ir::WordKind::Code, code);
     return;
   }

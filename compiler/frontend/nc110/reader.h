@@ -63,7 +63,7 @@ class Reader {
   // reader.cpp: the leading fields and ISO blocks.
   void leading(Nc110Parser::LeadingContext* ctx, bool has_body);
   void iso_block(Nc110Parser::IsoBlockContext* ctx);
-  bool scan_plain(std::string_view line);  // the fast path: an ISO block of address words only
+  [[nodiscard]] bool scan_plain(std::string_view line);  // the fast path: an ISO block of address words only
   void finish_iso_block();
   void block_number(std::string_view digits, SourceRange r);
   // An address word's value as written: `sign` 0, '+' or '-'; a NUMBER or an EREF.
@@ -79,8 +79,8 @@ class Reader {
   void check_iso_block();
   int32_t code_index(char letter, int number);
   // A constant of `letter`'s range and format; nullopt (reported) if it is not one.
-  std::optional<double> constant(char letter, std::string_view written, bool negative, SourceRange r,
-                                 const std::string& shown);
+  [[nodiscard]] std::optional<double> constant(char letter, std::string_view written, bool negative, SourceRange r,
+                                               const std::string& shown);
   void add_word(char letter, int slot, ir::ExprId value, std::string text, SourceRange r,
                 ir::WordKind kind = ir::WordKind::Parameter, int32_t code = -1);
 
@@ -92,10 +92,11 @@ class Reader {
   ir::ExprId primary(Nc110Parser::PrimaryContext* ctx);
 
   // An E parameter: `E 35` -> 35, checked against the machine's count.
-  std::optional<uint32_t> parameter(std::string_view text, SourceRange r);
+  [[nodiscard]] std::optional<uint32_t> parameter(std::string_view text, SourceRange r);
   ir::ExprId parameter_expr(uint32_t index, SourceRange r);
   // Reports unless E`index` is of one of `classes`; `what` names the place.
-  bool check_class(uint32_t index, const std::vector<std::string>& classes, SourceRange r, const std::string& what);
+  [[nodiscard]] bool check_class(uint32_t index, const std::vector<std::string>& classes, SourceRange r,
+                                 const std::string& what);
   // SA12, SYVAR1.2CH: the memory, its format (or n characters) and index.
   struct MemoryRef {
     const Memory* memory = nullptr;
@@ -104,14 +105,14 @@ class Reader {
     uint32_t index = 0;
     std::string text;
   };
-  std::optional<MemoryRef> memory_ref(std::string_view text, SourceRange r);
+  [[nodiscard]] std::optional<MemoryRef> memory_ref(std::string_view text, SourceRange r);
   ir::ExprId memory_expr(const MemoryRef& ref, SourceRange r);
   // A system variable by name and number, to read or (writing) to write.
   // The number after a system variable's name (TIM1), which must be whole.
-  bool system_number(antlr4::tree::TerminalNode* n, const std::string& name, SourceRange r,
-                     std::optional<uint32_t>& out);
-  std::optional<SysRef> system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r, bool writing,
-                                   const SystemName** entry = nullptr);
+  [[nodiscard]] bool system_number(antlr4::tree::TerminalNode* n, const std::string& name, SourceRange r,
+                                   std::optional<uint32_t>& out);
+  [[nodiscard]] std::optional<SysRef> system_ref(const std::string& name, std::optional<uint32_t> number, SourceRange r,
+                                                 bool writing, const SystemName** entry = nullptr);
   ir::ExprId system_expr(SysRef ref, SourceRange r);
   ir::ExprId string_expr(std::string text, SourceRange r);
   // The value type DIS shows an E parameter with.
@@ -120,17 +121,19 @@ class Reader {
   // codes.cpp: three-letter codes.
   void code_block(Nc110Parser::TlcBlockContext* ctx);
   void gtl_block(Nc110Parser::GtlBlockContext* ctx);
-  std::optional<ir::ExprId> gtl_value(char letter, bool minus, Nc110Parser::WordValueContext* v, SourceRange r);
+  [[nodiscard]] std::optional<ir::ExprId> gtl_value(char letter, bool minus, Nc110Parser::WordValueContext* v,
+                                                    SourceRange r);
   void code_operands(Nc110Parser::TlcBlockContext* ctx, const CodeSignature& sig, SourceRange code_range);
   struct Piece;
   struct Operand;
   // GTL geometry (§2.11) is later work: an element (`c1`) or a definition (`c1=...`)
   // is reported as not supported.
   // Reports a second instruction starting at byte `at` of the line, if there is one.
-  bool second_instruction(size_t at);
+  [[nodiscard]] bool second_instruction(size_t at);
   // A Cyrillic letter where a Latin one is read: NC1027 naming its Latin twin, if any.
   void report_cyrillic(const SourceRange& range, const std::string& letter);
-  std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind, const std::string& code);
+  [[nodiscard]] std::optional<Operand> operand(const std::vector<Piece>& pieces, OperandKind kind,
+                                               const std::string& code);
   void code_action(const CodeSignature& sig, const std::vector<Operand>& operands, SourceRange code_range);
   // Every value of RQU's increments is an E parameter a measuring cycle above stores.
   bool measured(const std::vector<Operand>& operands) const;
@@ -144,8 +147,8 @@ class Reader {
     size_t more;
   };
   std::vector<Unsynced> unsynced_;
-  bool virtual_operands(const CodeSignature& sig, const std::vector<Operand>& operands,
-                        SourceRange code_range);  // UAV's, by mode
+  [[nodiscard]] bool virtual_operands(const CodeSignature& sig, const std::vector<Operand>& operands,
+                                      SourceRange code_range);  // UAV's, by mode
   // The three-letter code a line starts with before the comma at `comma`, typed as at
   // the keyboard ("DPT, 10, 12, 1000"), or "".
   std::string keyboard_form(size_t comma) const;

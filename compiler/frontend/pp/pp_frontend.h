@@ -4,6 +4,6 @@
 
 namespace ncc::pp {
 
-std::unique_ptr<Frontend> make_pp_frontend(const stdlib::Profile& profile, Diagnostics& diags);
+[[nodiscard]] std::unique_ptr<Frontend> make_pp_frontend(const stdlib::Profile& profile, Diagnostics& diags);
 
 }  // namespace ncc::pp

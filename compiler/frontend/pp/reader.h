@@ -66,7 +66,7 @@ class Reader {
   void load(const Piece& piece);  // hands the text of `piece` to the parser
   void read_start(uint32_t line_no, size_t pct);
   void read_block(const Piece& piece);
-  bool scan_plain(const Piece& piece);  // the fast path: a block of address words only
+  [[nodiscard]] bool scan_plain(const Piece& piece);  // the fast path: a block of address words only
   void block_number(std::string_view digits, SourceRange r, bool bare);
   void place_block();  // the block just read, in the main part or after it
   // Adds a call's statement, or notes a jump for resolve_jumps; true for either.
@@ -84,8 +84,8 @@ class Reader {
   void word(std::string_view written, SourceRange r);  // "X 12.5"
   void parameter(antlr4::Token* t);
   void damaged(antlr4::Token* t, antlr4::Token* previous);
-  std::optional<ir::ExprId> value(std::string_view text, char letter, const stdlib::AddressEntry& entry, SourceRange r,
-                                  const std::string& shown);
+  [[nodiscard]] std::optional<ir::ExprId> value(std::string_view text, char letter, const stdlib::AddressEntry& entry,
+                                                SourceRange r, const std::string& shown);
   ir::ExprId r_value(uint32_t index, bool negative, SourceRange r);
   std::string comment_text(antlr4::Token* t) const;
 
