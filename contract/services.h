@@ -7,6 +7,7 @@
 // scheduler of processes).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <string>
@@ -41,7 +42,19 @@ struct ServiceInfo {
   Device device;
   std::string_view doc;
 };
-const ServiceInfo& service_info(Service s);
+// (Inline, as the verifier reads it for every operand.)
+inline constexpr ServiceInfo kServiceInfo[] = {
+#define SERVICE(name, printed, format, pop, push, device, doc) {printed, format, pop, push, Device::device, doc},
+#include "services.def"
+#undef SERVICE
+};
+constexpr const ServiceInfo& service_info(Service s) { return kServiceInfo[static_cast<size_t>(s)]; }
+// The most values a service pushes.
+inline constexpr size_t kMaxServicePush = [] {
+  size_t most = 0;
+  for (const ServiceInfo& s : kServiceInfo) most = std::max<size_t>(most, s.push);
+  return most;
+}();
 std::string_view device_name(Device d);
 
 // What a service did. Wait: it cannot be done yet (a process waits for another); the

@@ -405,9 +405,14 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
 // build until it has its rule here.
 class OperandRanges {
  public:
-  // The instruction at `at`: a SERVICE names a service (checked before).
-  OperandRanges(const Module& m, const uint8_t* at) : m_(m), op_(static_cast<Op>(at[0])) {
-    if (op_ == Op::Service) service_ = static_cast<Service>(at[1]);
+  OperandRanges(const Module& m, Op op) : m_(m), op_(op) {}
+  // A SERVICE's operands after its number: its service's rules. An ASSET service's
+  // string names a file; a service's space is numbered when an index follows it
+  // (asset.bind).
+  void serve(Service s) {
+    served_ = true;
+    names_file_ = service_info(s).device == Device::Asset;
+    numbered_space_ = service_info(s).format.find("vi") != std::string_view::npos;
   }
   bool fits(Operand kind, uint32_t v) {
     switch (kind) {
@@ -428,16 +433,15 @@ class OperandRanges {
 
   const Module& m_;
   Op op_;
-  Service service_ = Service::Count;  // a SERVICE's
-  uint32_t space_ = 0;                // the Space operand before an Index
+  bool served_ = false, names_file_ = false, numbered_space_ = false;  // a SERVICE's
+  uint32_t space_ = 0;                                                 // the Space operand before an Index
 };
 
 bool OperandRanges::fits_Number(uint32_t v) { return v < m_.numbers.size(); }
 // The ASSET services name their file by a string: a name the store takes (the device
 // prints it in the trace as it is).
 bool OperandRanges::fits_String(uint32_t v) {
-  const bool file = service_ != Service::Count && service_info(service_).device == Device::Asset;
-  return v < m_.strings.size() && (!file || asset::parse_file_name(m_.strings[v], 1));
+  return v < m_.strings.size() && (!names_file_ || asset::parse_file_name(m_.strings[v], 1));
 }
 bool OperandRanges::fits_Code(uint32_t v) { return v < m_.semantics.codes.size(); }
 bool OperandRanges::fits_Slot(uint32_t v) { return v < kWordSlots; }
@@ -447,14 +451,12 @@ bool OperandRanges::fits_Target(uint32_t) {  // on an instruction: checked once 
 }
 // A call names a program to call; a service (process.start) a process entry to start.
 bool OperandRanges::fits_Entry(uint32_t v) {
-  return v < m_.entries.size() && (m_.entries[v].kind == EntryKind::Process) == (service_ != Service::Count);
+  return v < m_.entries.size() && (m_.entries[v].kind == EntryKind::Process) == served_;
 }
-// Numbered variables go through Load/Store, memories through the others; a service's
-// space is numbered when an index follows it (asset.bind).
+// Numbered variables go through Load/Store (and asset.bind), memories through the others.
 bool OperandRanges::fits_Space(uint32_t v) {
   const bool numbered =
-      op_ == Op::Load || op_ == Op::LoadX || op_ == Op::Store || op_ == Op::StoreX || op_ == Op::Arg ||
-      (service_ != Service::Count && service_info(service_).format.find("vi") != std::string_view::npos);
+      op_ == Op::Load || op_ == Op::LoadX || op_ == Op::Store || op_ == Op::StoreX || op_ == Op::Arg || numbered_space_;
   space_ = v;
   return v < m_.spaces.size() && m_.spaces[v].memory != numbered;
 }
@@ -764,21 +766,26 @@ std::string verify(const Module& m) {
   for (size_t pc = 0; pc < code.size();) {
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
     Op op = static_cast<Op>(code[pc]);
+    const OpInfo* info = &op_info(op);
+    size_t size = static_cast<size_t>(instruction_size(op));
+    OperandRanges ranges(m, op);
     // A SERVICE is the instruction of its service: the catalogue gives its operands.
-    if (op == Op::Service && pc + 1 >= code.size())
-      return fmt::format("{} at {} is cut off by the end of the code", op_info(op).name, pc);
-    if (op == Op::Service && code[pc + 1] >= kServiceCount)
-      return fmt::format("{} at {} has an operand out of range ({})", op_info(op).name, pc, code[pc + 1]);
-    const OpInfo& info = instruction_info(&code[pc]);
-    size_t size = static_cast<size_t>(instruction_size(&code[pc]));
-    if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info.name, pc);
-    OperandRanges ranges(m, &code[pc]);
+    if (op == Op::Service) {
+      if (pc + 1 >= code.size()) return fmt::format("{} at {} is cut off by the end of the code", info->name, pc);
+      if (code[pc + 1] >= kServiceCount)
+        return fmt::format("{} at {} has an operand out of range ({})", info->name, pc, code[pc + 1]);
+      const auto service = static_cast<Service>(code[pc + 1]);
+      info = &service_op_info(service);
+      size += static_cast<size_t>(service_operand_size(service));
+      ranges.serve(service);
+    }
+    if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info->name, pc);
     size_t at = pc + 1;
-    for (char f : info.format) {
+    for (char f : info->format) {
       const uint32_t v = read_operand(&code[at], operand_size(f));
       at += static_cast<size_t>(operand_size(f));
       if (!ranges.fits(operand_kind(f), v))
-        return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
+        return fmt::format("{} at {} has an operand out of range ({})", info->name, pc, v);
       if (operand_kind(f) == Operand::Target) {
         if (op == Op::CallRange && ranges.targets == 2)
           range_ends.push_back(v);

@@ -150,7 +150,13 @@ struct OpInfo {
   std::string_view doc;
 };
 
-const OpInfo& op_info(Op op);
+// (Inline, as the verifier reads it for every instruction.)
+inline constexpr OpInfo kOpInfo[] = {
+#define NCC_OP_INFO(name, format, pop, push, doc) {#name, format, pop, push, doc},
+    NCC_OPCODES(NCC_OP_INFO)
+#undef NCC_OP_INFO
+};
+constexpr const OpInfo& op_info(Op op) { return kOpInfo[static_cast<size_t>(op)]; }
 // The kind of an operand letter (Operand::Count: no kind has it).
 constexpr Operand operand_kind(char letter) {
 #define NCC_OPERAND_KIND(kind, l, size, doc) \
@@ -208,7 +214,13 @@ inline int instruction_size(const uint8_t* at) {
 }
 // A SERVICE instruction as its service makes it: the service's name, the format "h"
 // and its own operands, its stack effect.
-const OpInfo& service_op_info(Service s);
+inline constexpr OpInfo kServiceOpInfo[] = {
+#define SERVICE(name, printed, format, pop, push, device, doc) {printed, "h" format, pop, push, doc},
+#include "contract/services.def"
+#undef SERVICE
+};
+static_assert(op_info(Op::Service).format == "h");
+constexpr const OpInfo& service_op_info(Service s) { return kServiceOpInfo[static_cast<size_t>(s)]; }
 // What the instruction at `at` is to the verifier: its opcode's info, or its service's.
 inline const OpInfo& instruction_info(const uint8_t* at) {
   const Op op = static_cast<Op>(at[0]);

@@ -1,6 +1,7 @@
 #include "vm.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -731,7 +732,9 @@ class Vm::Call final : public ServiceCall {
   // Past the catalogue's pops a service reads 0 (a host's mistake must not reach
   // below its operands).
   double pop() override { return next_ > first() ? vm_.process_.stack[--next_] : 0; }
-  void push(double value) override { pushed_.push_back(value); }
+  void push(double value) override {
+    if (pushes_ < pushed_.size()) pushed_[pushes_++] = value;
+  }
   const VarSpace& space(uint8_t space) const override { return vm_.m_.spaces[space]; }
   VarType type_of(uint8_t space, uint32_t index) const override {
     return space < vm_.m_.spaces.size() && index < vm_.m_.spaces[space].size && !vm_.m_.spaces[space].memory
@@ -755,17 +758,16 @@ class Vm::Call final : public ServiceCall {
   uint32_t block() const override { return vm_.m_.source_of(pc_); }
   BlockMachine& machine() override { return vm_.machine_; }
   bool waited() const override { return vm_.waiting_; }
-  void waits_for(std::string what) override { waits_ = std::move(what); }
+  void waits_for(std::string what) override { vm_.waits_ = std::move(what); }
   void report(DiagId id, std::string message) override {
     vm_.issues_.issue({id, std::move(message), vm_.m_.source_of(pc_), -1, -1, 0});
   }
 
-  std::string& waits() { return waits_; }
   // Done: its operands leave the stack, and its results (the catalogue's count) go on.
   void finish() {
     std::vector<double>& stack = vm_.process_.stack;
     stack.resize(first());
-    for (size_t i = 0; i < info_.push; ++i) stack.push_back(i < pushed_.size() ? pushed_[i] : 0);
+    for (size_t i = 0; i < info_.push; ++i) stack.push_back(i < pushes_ ? pushed_[i] : 0);
   }
 
  private:
@@ -775,9 +777,9 @@ class Vm::Call final : public ServiceCall {
   const ServiceInfo& info_;
   const uint8_t* operands_;
   uint32_t pc_;
-  size_t next_;  // the stack above the values it has popped
-  std::vector<double> pushed_;
-  std::string waits_;
+  size_t next_;                                   // the stack above the values it has popped
+  std::array<double, kMaxServicePush> pushed_{};  // beyond the catalogue's pushes: ignored
+  size_t pushes_ = 0;
 };
 
 ServiceResult Vm::call_service(Service service, const uint8_t* operands, uint32_t pc) {
@@ -793,7 +795,6 @@ ServiceResult Vm::call_service(Service service, const uint8_t* operands, uint32_
   waiting_ = result == ServiceResult::Wait;
   if (waiting_) {
     process_.pc = pc;  // to run again, its operands as they were
-    waits_ = std::move(call.waits());
   } else if (result == ServiceResult::Done) {
     call.finish();
   }
