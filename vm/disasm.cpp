@@ -63,6 +63,7 @@ std::string operand_text(const Module& m, Operand kind, uint32_t v, uint32_t pla
     }
     case Operand::Places: break;  // shown with its digits
     case Operand::Digits: return shortest(decimal(places, static_cast<int32_t>(v)));
+    case Operand::Service: return std::string(service_info(static_cast<Service>(v)).name);
     case Operand::Count: break;
   }
   return "?";
@@ -103,12 +104,12 @@ std::string disassemble(const Module& m) {
       if (m.lines[line].pc == pc) out += fmt::format("      ; {}\n", source_text(m, m.lines[line].source));
       ++line;
     }
-    Op op = static_cast<Op>(m.code[pc]);
-    const OpInfo& info = op_info(op);
+    // A SERVICE shows its service's name, then the service's operands.
+    const OpInfo& info = op_info(static_cast<Op>(m.code[pc]));
     std::string operands;
     uint32_t at = pc + 1;
     uint32_t places = 0;
-    for (char f : info.format) {
+    for (char f : instruction_info(&m.code[pc]).format) {
       uint32_t v = read_operand(&m.code[at], operand_size(f));
       at += static_cast<uint32_t>(operand_size(f));
       if (operand_kind(f) == Operand::Places) {  // shown with its digits: WORDDEC X, 12.5

@@ -408,6 +408,14 @@ bool read_section(uint32_t t, ByteReader& r, Module& m) {
 class OperandRanges {
  public:
   OperandRanges(const Module& m, Op op) : m_(m), op_(op) {}
+  // A SERVICE's operands after its number: its service's rules. An ASSET service's
+  // string names a file; a service's space is numbered when an index follows it
+  // (asset.bind).
+  void serve(Service s) {
+    served_ = true;
+    names_file_ = service_info(s).device == Device::Asset;
+    numbered_space_ = service_info(s).format.find("vi") != std::string_view::npos;
+  }
   bool fits(Operand kind, uint32_t v) {
     switch (kind) {
 #define NCC_OPERAND_FITS(kind, letter, size, doc) \
@@ -427,16 +435,15 @@ class OperandRanges {
 
   const Module& m_;
   Op op_;
-  uint32_t space_ = 0;  // the Space operand before an Index
+  bool served_ = false, names_file_ = false, numbered_space_ = false;  // a SERVICE's
+  uint32_t space_ = 0;                                                 // the Space operand before an Index
 };
 
 bool OperandRanges::fits_Number(uint32_t v) { return v < m_.numbers.size(); }
-// The ASSET statements name their file by a string: a name the store takes (the VM
+// The ASSET services name their file by a string: a name the store takes (the device
 // prints it in the trace as it is).
 bool OperandRanges::fits_String(uint32_t v) {
-  const bool file =
-      op_ == Op::AssetOpen || op_ == Op::AssetOpenWrite || op_ == Op::AssetCreate || op_ == Op::AssetDelete;
-  return v < m_.strings.size() && (!file || asset::parse_file_name(m_.strings[v], 1));
+  return v < m_.strings.size() && (!names_file_ || asset::parse_file_name(m_.strings[v], 1));
 }
 bool OperandRanges::fits_Code(uint32_t v) { return v < m_.semantics.codes.size(); }
 bool OperandRanges::fits_Slot(uint32_t v) { return v < kWordSlots; }
@@ -444,13 +451,14 @@ bool OperandRanges::fits_Target(uint32_t) {  // on an instruction: checked once 
   ++targets;
   return true;
 }
+// A call names a program to call; a service (process.start) a process entry to start.
 bool OperandRanges::fits_Entry(uint32_t v) {
-  return v < m_.entries.size() && (m_.entries[v].kind == EntryKind::Process) == (op_ == Op::ProcStart);
+  return v < m_.entries.size() && (m_.entries[v].kind == EntryKind::Process) == served_;
 }
-// Numbered variables go through Load/Store, memories through the others.
+// Numbered variables go through Load/Store (and asset.bind), memories through the others.
 bool OperandRanges::fits_Space(uint32_t v) {
-  const bool numbered = op_ == Op::Load || op_ == Op::LoadX || op_ == Op::Store || op_ == Op::StoreX ||
-                        op_ == Op::Arg || op_ == Op::AssetBind;
+  const bool numbered =
+      op_ == Op::Load || op_ == Op::LoadX || op_ == Op::Store || op_ == Op::StoreX || op_ == Op::Arg || numbered_space_;
   space_ = v;
   return v < m_.spaces.size() && m_.spaces[v].memory != numbered;
 }
@@ -468,6 +476,7 @@ bool OperandRanges::fits_LoopDepth(uint32_t) { return true; }  // the VM closes 
 bool OperandRanges::fits_Rule(uint32_t v) { return v < m_.semantics.value_rules.size(); }
 bool OperandRanges::fits_Places(uint32_t v) { return v <= kMaxDecimalPlaces; }
 bool OperandRanges::fits_Digits(uint32_t) { return true; }  // any i32
+bool OperandRanges::fits_Service(uint32_t v) { return v < kServiceCount; }
 
 }  // namespace
 
@@ -759,16 +768,26 @@ std::string verify(const Module& m) {
   for (size_t pc = 0; pc < code.size();) {
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
     Op op = static_cast<Op>(code[pc]);
-    const OpInfo& info = op_info(op);
+    const OpInfo* info = &op_info(op);
     size_t size = static_cast<size_t>(instruction_size(op));
-    if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info.name, pc);
     OperandRanges ranges(m, op);
+    // A SERVICE is the instruction of its service: the catalogue gives its operands.
+    if (op == Op::Service) {
+      if (pc + 1 >= code.size()) return fmt::format("{} at {} is cut off by the end of the code", info->name, pc);
+      if (code[pc + 1] >= kServiceCount)
+        return fmt::format("{} at {} has an operand out of range ({})", info->name, pc, code[pc + 1]);
+      const auto service = static_cast<Service>(code[pc + 1]);
+      info = &service_op_info(service);
+      size += static_cast<size_t>(service_operand_size(service));
+      ranges.serve(service);
+    }
+    if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info->name, pc);
     size_t at = pc + 1;
-    for (char f : info.format) {
+    for (char f : info->format) {
       const uint32_t v = read_operand(&code[at], operand_size(f));
       at += static_cast<size_t>(operand_size(f));
       if (!ranges.fits(operand_kind(f), v))
-        return fmt::format("{} at {} has an operand out of range ({})", info.name, pc, v);
+        return fmt::format("{} at {} has an operand out of range ({})", info->name, pc, v);
       if (operand_kind(f) == Operand::Target) {
         if (op == Op::CallRange && ranges.targets == 2)
           range_ends.push_back(v);
@@ -795,7 +814,7 @@ std::string verify(const Module& m) {
   landings.erase(std::unique(landings.begin(), landings.end()), landings.end());
   std::vector<uint32_t> between;  // the landings inside an instruction or past the code, in order
   size_t next_landing = 0, next_line = 0;
-  for (size_t pc = 0; pc < code.size(); pc += static_cast<size_t>(instruction_size(static_cast<Op>(code[pc])))) {
+  for (size_t pc = 0; pc < code.size(); pc += static_cast<size_t>(instruction_size(&code[pc]))) {
     for (; next_landing < landings.size() && landings[next_landing] <= pc; ++next_landing)
       if (landings[next_landing] < pc) between.push_back(landings[next_landing]);
     if (next_line < m.lines.size() && m.lines[next_line].pc < pc) return "the line table points between instructions";
@@ -858,7 +877,7 @@ std::string verify(const Module& m) {
     int d = depth[from];
     for (size_t after = from + 1;;) {  // after: the first landing after pc
       Op op = static_cast<Op>(code[pc]);
-      const OpInfo& info = op_info(op);
+      const OpInfo& info = instruction_info(&code[pc]);
       if (d < info.pop) return fmt::format("{} at {} pops more values than the stack holds", info.name, pc);
       d = d - info.pop + info.push;
       if (d > static_cast<int>(kMaxStack)) return fmt::format("the stack grows beyond {} at {}", kMaxStack, pc);
@@ -877,7 +896,7 @@ std::string verify(const Module& m) {
         default: break;
       }
       if (op == Op::Jump || op == Op::Return || op == Op::End || op == Op::NoBlock) break;
-      const uint32_t next = pc + static_cast<uint32_t>(instruction_size(op));
+      const uint32_t next = pc + static_cast<uint32_t>(instruction_size(&code[pc]));
       if (next >= code.size()) return fmt::format("execution can run past the end of the code after {}", pc);
       while (after < landings.size() && landings[after] < next) ++after;
       if (after < landings.size() && landings[after] == next) {

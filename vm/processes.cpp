@@ -11,7 +11,7 @@ namespace ncc::vm {
 
 struct Processes::Slot {
   std::unique_ptr<BlockMachine> machine;
-  std::unique_ptr<asset::Channels> channels;
+  std::unique_ptr<ServiceHost> devices;
   std::unique_ptr<Vm> vm;
   bool running = false;    // a program is loaded (it may wait: vm->waiting(), at vm->pc())
   bool delivered = false;  // a partner met its WAI or SND: it completes when it runs again
@@ -32,14 +32,11 @@ Processes::Slot& Processes::slot(uint8_t n) {
   if (s) return *s;
   s = std::make_unique<Slot>();
   s->machine = setup_.make_machine(n, several_ ? this : nullptr);
+  if (setup_.make_devices) s->devices = setup_.make_devices(n);
   VmOptions options = setup_.options;
-  if (setup_.files) {
-    s->channels = std::make_unique<asset::Channels>(setup_.store, open_files_, setup_.channels);
-    options.asset = s->channels.get();
-  }
+  options.services.fill(s->devices.get());
+  options.services[static_cast<size_t>(Device::Process)] = this;
   options.shared = &shared_;
-  options.processes = this;
-  options.process = n;
   options.slice = several_;
   options.by_block = setup_.by_block;
   if (!several_) options.look_ahead = 0;
@@ -65,7 +62,7 @@ bool Processes::begin(size_t first) {
     for (uint8_t n = 2; n <= kMaxProcesses; ++n) {
       if (!(entries[i].processes >> (n - 1) & 1)) continue;
       if (n > slots_.size()) {  // selected for a process this machine lacks: number() reports it
-        (void)number(n, entries[i].pc, "--process");
+        (void)number(n, setup_.module.source_of(entries[i].pc), "--process");
         one.running = false;
         return false;
       }
@@ -115,8 +112,7 @@ Processes::Turn Processes::step() {
   // as met, else a deadlock.
   Slot* waiter = nullptr;  // the first that waits for a condition
   for (auto [time, i] : order)
-    if (!waiter && static_cast<Op>(setup_.module.code[slots_[i]->vm->pc()]) == Op::ProcWaitUntil)
-      waiter = slots_[i].get();
+    if (!waiter && waits_in(*slots_[i]) == Service::ProcessWaitUntil) waiter = slots_[i].get();
   if (waiter && !setup_.plc.empty()) {
     const PlcWrite w = setup_.plc.front();
     setup_.plc.pop_front();
@@ -172,7 +168,7 @@ uint64_t Processes::steps() const {
   return n;
 }
 
-uint8_t Processes::number(double process, uint32_t pc, const char* what) {
+uint8_t Processes::number(double process, uint32_t source, const char* what) {
   std::string why;
   const std::optional<uint8_t> n = whole_in<uint8_t>(process, 1, static_cast<uint8_t>(slots_.size()));
   if (!n)
@@ -181,31 +177,91 @@ uint8_t Processes::number(double process, uint32_t pc, const char* what) {
   else if (*n == current_)
     why = fmt::format("{} names the process that runs it", what);
   if (why.empty()) return *n;
-  setup_.issues.issue(
-      {DiagId::ProcessError, diag_message(DiagId::ProcessError, shortest(process), why), setup_.module.source_of(pc)});
+  setup_.issues.issue({DiagId::ProcessError, diag_message(DiagId::ProcessError, shortest(process), why), source});
   return 0;
 }
 
+Service Processes::waits_in(const Slot& s) const {
+  const uint8_t* at = setup_.module.code.data() + s.vm->pc();
+  return static_cast<Op>(at[0]) == Op::Service ? static_cast<Service>(at[1]) : Service::Count;
+}
+
 // (A process a partner met already waits only to run again.)
-bool Processes::waits_at(const Slot& s, Op op, uint8_t partner) const {
-  return s.running && s.vm->waiting() && !s.delivered && static_cast<Op>(setup_.module.code[s.vm->pc()]) == op &&
-         s.vm->blocked_operand() == partner;
+bool Processes::waits_at(const Slot& s, Service service, uint8_t partner) const {
+  return s.running && s.vm->waiting() && !s.delivered && waits_in(s) == service && s.vm->blocked_operand() == partner;
+}
+
+ServiceResult Processes::call(Service service, ServiceCall& call) {
+  const uint32_t source = call.block();
+  if (service == Service::ProcessRelease) {
+    call.machine().sync_event("release", source);
+    call.machine().end_program(source);
+    return ServiceResult::Release;
+  }
+  if (service == Service::ProcessWaitUntil) return wait_until(call);
+  const double n = call.pop();
+  const std::string process = shortest(n);
+  switch (service) {
+    case Service::ProcessStart: {
+      const uint32_t entry = call.operand(0);
+      const std::string& name = call.entry_name(entry);
+      return answer(call, start(n, entry, source), fmt::format("start process {} {}", process, name),
+                    fmt::format("start process {} {}: waits until it is free", process, name));
+    }
+    case Service::ProcessWait:
+      return answer(call, meet(n, source, "(WAI)", Service::ProcessSignal), "restarted by process " + process,
+                    "wait for process " + process);
+    case Service::ProcessSignal:
+      return answer(call, meet(n, source, "(SND)", Service::ProcessWait), "restart process " + process,
+                    fmt::format("restart process {}: waits until it waits for process {}", process, current_));
+    default: return ServiceResult::Error;  // not the scheduler's: the VM hands it only its own
+  }
+}
+
+ServiceResult Processes::answer(ServiceCall& call, ServiceResult result, const std::string& done,
+                                const std::string& waits) {
+  if (result == ServiceResult::Wait) {
+    if (!call.waited()) call.machine().sync_event(waits, call.block());
+    call.waits_for(waits);
+  }
+  if (result == ServiceResult::Done) call.machine().sync_event(done, call.block());
+  return result;
+}
+
+// WAI on a memory: met when the memory there relates to the value as the instruction
+// says; in the dry run, also when no process can go on (assume_). A condition met
+// after waiting goes on once the memory was written.
+ServiceResult Processes::wait_until(ServiceCall& call) {
+  const double value = call.pop(), index = call.pop();
+  double now = 0;
+  if (!call.load_mem(static_cast<uint8_t>(call.operand(0)), static_cast<MemFormat>(call.operand(1)), index, now))
+    return ServiceResult::Error;
+  const uint32_t relation = call.operand(2);
+  const bool holds = (relation == 1   ? now == value
+                      : relation == 2 ? now < value
+                      : relation == 3 ? now > value
+                                      : now != value) ||
+                     (call.waited() && assume_);
+  if (holds && call.waited()) slot(current_).vm->wait_until(shared_.written_at);
+  const std::string& condition = call.string(call.operand(3));
+  return answer(call, holds ? ServiceResult::Done : ServiceResult::Wait, condition + " holds",
+                "wait until " + condition);
 }
 
 // EXE: the program starts when its process is free (decision 63), at the time of
 // the process that starts it.
-ProcessHost::Answer Processes::start(double process, uint32_t entry, uint32_t pc) {
-  const uint8_t n = number(process, pc, "(EXE)");
-  if (!n) return Answer::Error;
+ServiceResult Processes::start(double process, uint32_t entry, uint32_t source) {
+  const uint8_t n = number(process, source, "(EXE)");
+  if (!n) return ServiceResult::Error;
   Slot& target = slot(n);
-  if (target.running) return Answer::Wait;
+  if (target.running) return ServiceResult::Wait;
   Vm& starter = *slot(current_).vm;
   starter.wait_until(target.free_at);
   target.vm->wait_until(starter.eval_time());
   target.entry = entry;
   target.vm->start(entry);
   target.running = true;
-  return Answer::Done;
+  return ServiceResult::Done;
 }
 
 // RMNpq: at the time the reading block is evaluated, of the block process p moves then.
@@ -215,30 +271,24 @@ double Processes::remaining(int process, int axis) {
 }
 
 // WAI n and SND n meet (a rendezvous, decision 63): whichever comes first waits for
-// the other; both go on, at the later of their times.
-ProcessHost::Answer Processes::wait_for(double process, uint32_t pc) {
-  return meet(process, pc, "(WAI)", Op::ProcSignal);
-}
-
-ProcessHost::Answer Processes::signal(double process, uint32_t pc) { return meet(process, pc, "(SND)", Op::ProcWait); }
-
-// This process's WAI or SND `what` meets process `process` if that one waits at
-// `partner` naming this one; else it waits, until that one comes and marks it met.
-ProcessHost::Answer Processes::meet(double process, uint32_t pc, const char* what, Op partner) {
-  const uint8_t n = number(process, pc, what);
-  if (!n) return Answer::Error;
+// the other; both go on, at the later of their times. This process's WAI or SND
+// `what` meets process `process` if that one waits at `partner` naming this one; else
+// it waits, until that one comes and marks it met.
+ServiceResult Processes::meet(double process, uint32_t source, const char* what, Service partner) {
+  const uint8_t n = number(process, source, what);
+  if (!n) return ServiceResult::Error;
   Slot& me = slot(current_);
   if (me.delivered) {
     me.delivered = false;
-    return Answer::Done;
+    return ServiceResult::Done;
   }
   Slot* other = slots_[n - 1].get();
-  if (!other || !waits_at(*other, partner, current_)) return Answer::Wait;
+  if (!other || !waits_at(*other, partner, current_)) return ServiceResult::Wait;
   other->delivered = true;
   const double t = std::max(me.vm->eval_time(), other->vm->eval_time());
   me.vm->wait_until(t);
   other->vm->wait_until(t);
-  return Answer::Done;
+  return ServiceResult::Done;
 }
 
 // Every process that runs waits, and nothing will change that: reported at the
@@ -252,11 +302,11 @@ void Processes::deadlock() {
     const uint32_t source = setup_.module.source_of(s.vm->pc());
     if (first) issue.source = source;
     first = false;
-    const Op op = static_cast<Op>(setup_.module.code[s.vm->pc()]);
-    condition = condition || op == Op::ProcWaitUntil;
+    const Service service = waits_in(s);
+    condition = condition || service == Service::ProcessWaitUntil;
     // The process it waits for may run nothing, and never will.
     const double partner = s.vm->blocked_operand();
-    const bool idle = (op == Op::ProcWait || op == Op::ProcSignal) && partner >= 1 &&
+    const bool idle = (service == Service::ProcessWait || service == Service::ProcessSignal) && partner >= 1 &&
                       partner <= static_cast<double>(slots_.size()) &&
                       !(slots_[static_cast<size_t>(partner) - 1] && slots_[static_cast<size_t>(partner) - 1]->running);
     issue.notes.push_back(

@@ -1,8 +1,9 @@
 // The processes of a run (NC-110 chapter 4): up to five programs side by side, each
-// with its own machine, E parameters, ASSET channels and VM, sharing SYVAR, SA, SK
-// and the user screen. A deterministic scheduler runs them a block at a time, the
-// one whose next block is evaluated first (decision 63); a run with no Process entry
-// is process 1 alone, run to the end in one go.
+// with its own machine, E parameters, devices (its ASSET channels) and VM, sharing
+// SYVAR, SA, SK (and the devices what their maker shares: the user screen). A
+// deterministic scheduler runs them a block at a time, the one whose next block is
+// evaluated first (decision 63), and answers the process services (EXE, REL, WAI,
+// SND); a run with no Process entry is process 1 alone, run to the end in one go.
 #pragma once
 
 #include <deque>
@@ -11,7 +12,6 @@
 #include <optional>
 #include <vector>
 
-#include "devices/asset_channels.h"
 #include "vm.h"
 
 namespace ncc::vm {
@@ -29,25 +29,26 @@ struct PlcWrite {
 // machine): `others` is the scheduler in a run of several processes (RMN reads their
 // paths, and the trace marks each event with its process), none in a run of one.
 using MachineMaker = std::function<std::unique_ptr<BlockMachine>(uint8_t process, RemainingPaths* others)>;
+// A process's devices, made by whoever runs the module as it makes the machines: they
+// answer every service but the processes' (contract/services.h), which the scheduler
+// answers.
+using DevicesMaker = std::function<std::unique_ptr<ServiceHost>(uint8_t process)>;
 
 struct ProcessSetup {
   const Module& module;
   MachineMaker make_machine;
+  DevicesMaker make_devices;  // none: the run has no devices
   RuntimeIssues& issues;
-  // Each process's VM (its asset, shared, processes, process and slice are set here;
-  // look_ahead only in a run of several).
+  // Each process's VM (its services, shared and slice are set here; look_ahead only in
+  // a run of several).
   VmOptions options;
   bool dry = false;  // the dry run of `ncc check`: the machines recover from errors, conditions are assumed met
   uint8_t processes = kMaxProcesses;  // configured (profile)
-  // ASSET files: a process's channels are its own, the files open are the run's.
-  asset::Store* store = nullptr;
-  bool files = false;  // the statements act (a real run)
-  asset::Channels::Settings channels = {};
   std::deque<PlcWrite> plc = {};
   bool by_block = false;  // each step() runs one block (a host steps the run)
 };
 
-class Processes final : public ProcessHost, public RemainingPaths {
+class Processes final : public ServiceHost, public RemainingPaths {
  public:
   explicit Processes(ProcessSetup setup);
   ~Processes() override;
@@ -68,27 +69,29 @@ class Processes final : public ProcessHost, public RemainingPaths {
   bool running() const;                                // a process has a program to go on with
   std::optional<uint32_t> next_source() const;         // the block process 1 runs next (none: it ended)
   uint64_t steps() const;
-  const screen::UserScreen& user_screen() const { return shared_.screen; }
 
-  Answer start(double process, uint32_t entry, uint32_t pc) override;
-  Answer wait_for(double process, uint32_t pc) override;
-  Answer signal(double process, uint32_t pc) override;
-  bool assume_met() override { return assume_; }
+  // EXE, REL, WAI, SND of the process whose turn it is.
+  ServiceResult call(Service service, ServiceCall& call) override;
   double remaining(int process, int axis) override;
 
  private:
   struct Slot;
   Slot& slot(uint8_t n);  // made (its machine powered on) at first use
-  [[nodiscard]] uint8_t number(double process, uint32_t pc, const char* what);  // 0: not a process (reported)
-  bool waits_at(const Slot& s, Op op, uint8_t partner) const;                   // s is blocked at `op` naming `partner`
-  bool next_program(Slot& s);  // process 1: the next program on the medium
+  [[nodiscard]] uint8_t number(double process, uint32_t source, const char* what);  // 0: not a process (reported)
+  Service waits_in(const Slot& s) const;                                 // the service s is blocked at (Count: none)
+  bool waits_at(const Slot& s, Service service, uint8_t partner) const;  // s is blocked at `service` naming `partner`
+  bool next_program(Slot& s);                                            // process 1: the next program on the medium
   void deadlock();
-  Answer meet(double process, uint32_t pc, const char* what, Op partner);
+  // Done (a sync event shows it), Wait (the first time, an event shows what it waits
+  // for) or Error (reported).
+  ServiceResult answer(ServiceCall& call, ServiceResult result, const std::string& done, const std::string& waits);
+  ServiceResult start(double process, uint32_t entry, uint32_t source);
+  ServiceResult meet(double process, uint32_t source, const char* what, Service partner);
+  ServiceResult wait_until(ServiceCall& call);
 
   ProcessSetup setup_;
   bool several_;  // a run of several processes: turns, and traces marked with the process
   SharedState shared_;
-  asset::OpenFiles open_files_;
   std::vector<std::unique_ptr<Slot>> slots_;  // index = process number - 1
   uint8_t current_ = 1;                       // the process whose turn it is
   bool assume_ = false;

@@ -1,6 +1,7 @@
 #include "vm.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -17,11 +18,6 @@ namespace ncc::vm {
 namespace {
 
 constexpr size_t kMaxLoops = 64;
-
-// An operand numbering something 1..hi (an ASSET channel, structure or record, a
-// screen field): the number, or 0, which numbers nothing (so the statement answers
-// with its code or error).
-uint32_t whole_operand(double v, uint32_t hi) { return whole_in<uint32_t>(v, 1, hi).value_or(0); }
 constexpr int64_t kMaxRepeat = 2147483647;
 constexpr size_t kMaxFrames = 64;
 const double kVacant = std::numeric_limits<double>::quiet_NaN();
@@ -590,54 +586,17 @@ RunStatus Vm::resume() {
         if (std::isnan(st.back())) st.back() = 0;
         break;
       case Op::NoBlock: return fail(pc, DiagId::JumpTargetMissing, shortest(pop()));
-      case Op::Input:
-      case Op::InputField:
-      case Op::InputText:
-      case Op::InputFieldText:
-        if (!input(op, operands, pc)) return RunStatus::Error;
-        break;
-      case Op::ScreenOn:
-      case Op::ScreenOff:
-      case Op::ScreenDefineText:
-      case Op::ScreenDefineValue:
-      case Op::ScreenShow:
-      case Op::ScreenShowAll:
-      case Op::ScreenShowValue:
-      case Op::ScreenShowText:
-      case Op::ScreenDefineMem:
-      case Op::ScreenShowMem:
-        if (!user_screen(op, operands, pc)) return RunStatus::Error;
-        break;
-      case Op::AssetBind:
-      case Op::AssetBindMem:
-      case Op::AssetBindText:
-      case Op::AssetDefine:
-      case Op::AssetOpen:
-      case Op::AssetOpenWrite:
-      case Op::AssetRead:
-      case Op::AssetReadAt:
-      case Op::AssetWrite:
-      case Op::AssetWriteAt:
-      case Op::AssetClose:
-      case Op::AssetCloseAll:
-      case Op::AssetCreate:
-      case Op::AssetDelete:
-        if (!asset(op, operands, pc)) return RunStatus::Error;
-        break;
-      case Op::ProcStart:
-      case Op::ProcWait:
-      case Op::ProcWaitUntil:
-      case Op::ProcSignal:
-        switch (process_op(op, operands, pc)) {
-          case ProcessHost::Answer::Done: break;
-          case ProcessHost::Answer::Wait: return RunStatus::Blocked;
-          case ProcessHost::Answer::Error: return RunStatus::Error;
+      case Op::Service: {
+        const auto service = static_cast<Service>(operands[0]);
+        p.pc += static_cast<uint32_t>(service_operand_size(service));
+        switch (call_service(service, operands + 1, pc)) {
+          case ServiceResult::Done: break;
+          case ServiceResult::Wait: return RunStatus::Blocked;
+          case ServiceResult::Error: return RunStatus::Error;
+          case ServiceResult::Release: return RunStatus::Released;
         }
         break;
-      case Op::ProcRelease:
-        machine_.sync_event("release", m_.source_of(pc));
-        machine_.end_program(m_.source_of(pc));
-        return RunStatus::Released;
+      }
       case Op::CallRange:
         for (const Frame& f : p.frames)
           if (f.range) return fail(pc, DiagId::RangeNested);
@@ -759,351 +718,94 @@ RunStatus Vm::resume() {
   }
 }
 
-// ---- ASSET files (NC-110 chapter 5) ----------------------------------------------------
+// ---- Services (contract/services.h) ------------------------------------------------------
 
-bool Vm::asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc) {
-  out.clear();
-  for (const AssetField& f : fields) {
-    asset::Value v;
+// What a service sees of the VM: its operands by the catalogue's format, the values it
+// pops (left on the stack until it is done: one that waits finds them again), the
+// program's variables, its block.
+class Vm::Call final : public ServiceCall {
+ public:
+  Call(Vm& vm, const ServiceInfo& info, const uint8_t* operands, uint32_t pc)
+      : vm_(vm), info_(info), operands_(operands), pc_(pc), next_(vm.process_.stack.size()) {}
+
+  uint32_t operand(size_t i) const override {
+    if (i >= info_.format.size()) return 0;
+    const uint8_t* at = operands_;
+    for (size_t k = 0; k < i; ++k) at += operand_size(info_.format[k]);
+    return read_operand(at, operand_size(info_.format[i]));
+  }
+  const std::string& string(uint32_t index) const override { return vm_.m_.strings[index]; }
+  const std::string& entry_name(uint32_t index) const override { return vm_.m_.entries[index].name; }
+  // Past the catalogue's pops a service reads 0 (a host's mistake must not reach
+  // below its operands).
+  double pop() override { return next_ > first() ? vm_.process_.stack[--next_] : 0; }
+  void push(double value) override {
+    if (pushes_ < pushed_.size()) pushed_[pushes_++] = value;
+  }
+  const VarSpace& space(uint8_t space) const override { return vm_.m_.spaces[space]; }
+  VarType type_of(uint8_t space, uint32_t index) const override {
+    return space < vm_.m_.spaces.size() && index < vm_.m_.spaces[space].size && !vm_.m_.spaces[space].memory
+               ? vm_.type_at(space, index)
+               : VarType::Unavailable;
+  }
+  bool load(uint8_t space, double index, double& out) override {
     bool ok = true;
-    if (!f.memory) {
-      v.number = load(f.space, f.index, pc, ok);
-    } else if (f.chars) {
-      const uint8_t* b = bytes(f.space, f.index, f.chars, pc);
-      if (!b) return false;
-      v.chars.assign(reinterpret_cast<const char*>(b), f.chars);
-    } else {
-      ok = load_mem(f.space, f.format, f.index, pc, v.number);
-    }
-    if (!ok) return false;
-    out.push_back(std::move(v));
+    out = vm_.load(space, index, pc_, ok);
+    return ok;
   }
-  return true;
-}
+  bool store(uint8_t space, double index, double value) override { return vm_.store(space, index, value, pc_); }
+  bool load_mem(uint8_t space, MemFormat format, double index, double& out) override {
+    return vm_.load_mem(space, format, index, pc_, out);
+  }
+  bool store_mem(uint8_t space, MemFormat format, double index, double value) override {
+    return vm_.store_mem(space, format, index, value, pc_);
+  }
+  uint8_t* bytes(uint8_t space, double index, uint32_t count) override { return vm_.bytes(space, index, count, pc_); }
+  void wrote_memory() override { vm_.wrote_memory(); }
+  uint32_t block() const override { return vm_.m_.source_of(pc_); }
+  BlockMachine& machine() override { return vm_.machine_; }
+  bool waited() const override { return vm_.waiting_; }
+  void waits_for(std::string what) override { vm_.waits_ = std::move(what); }
+  void report(DiagId id, std::string message) override {
+    vm_.issues_.issue({id, std::move(message), vm_.m_.source_of(pc_), -1, -1, 0});
+  }
 
-bool Vm::asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values, uint32_t pc) {
-  for (size_t i = 0; i < fields.size() && i < values.size(); ++i) {
-    const AssetField& f = fields[i];
-    if (!f.memory) {
-      if (!store(f.space, f.index, values[i].number, pc)) return false;
-    } else if (f.chars) {
-      uint8_t* b = bytes(f.space, f.index, f.chars, pc);
-      if (!b) return false;
-      std::memcpy(b, values[i].chars.data(), std::min<size_t>(f.chars, values[i].chars.size()));
-      wrote_memory();
-    } else if (!store_mem(f.space, f.format, f.index, values[i].number, pc)) {
-      return false;
-    }
+  // Done: its operands leave the stack, and its results (the catalogue's count) go on.
+  void finish() {
+    std::vector<double>& stack = vm_.process_.stack;
+    stack.resize(first());
+    for (size_t i = 0; i < info_.push; ++i) stack.push_back(i < pushes_ ? pushed_[i] : 0);
   }
-  return true;
-}
 
-bool Vm::asset(Op op, const uint8_t* operands, uint32_t pc) {
-  auto pop = [&] { return pop_value(); };
-  auto stop = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {  // a run-time error: the run stops
-    report_error(pc, id, args...);
-    return false;
-  };
-  auto file = [&] { return asset::parse_file_name(m_.strings[read_operand(operands, 4)], 1); };
-  // Building a structure (DER): its fields, in order.
-  if (op == Op::AssetBind || op == Op::AssetBindMem || op == Op::AssetBindText) {
-    AssetField f{operands[0], op != Op::AssetBind, MemFormat::Byte, 0, 0};
-    if (op == Op::AssetBind) f.index = read_operand(operands + 1, 4);
-    if (op == Op::AssetBindMem) f.format = static_cast<MemFormat>(operands[1]);
-    if (op == Op::AssetBindText) f.chars = operands[1];
-    if (f.memory) {
-      const double index = pop();
-      const uint32_t size = m_.spaces[f.space].size;
-      const std::optional<uint32_t> i = size ? whole_in<uint32_t>(index, 0, size - 1) : std::nullopt;
-      if (!i) return stop(DiagId::MemoryRange, m_.spaces[f.space].name, shortest(index), f.chars ? f.chars : 1, size);
-      f.index = *i;
-    }
-    fields_.push_back(f);
-    return true;
-  }
-  if (op == Op::AssetDefine) {
-    const double number = pop();
-    std::vector<AssetField> fields = std::exchange(fields_, {});
-    asset::Layout layout;
-    for (const AssetField& f : fields) {
-      // A field has the variable's format (table 5.1): IN, RE, LR or kCH, nothing else.
-      const VarType t = f.memory ? VarType::Count : type_at(f.space, f.index);
-      const bool in = f.memory ? f.format == MemFormat::Integer : t == VarType::Integer;
-      const bool re = f.memory ? f.format == MemFormat::Real : t == VarType::Real;
-      const bool lr = f.memory ? f.format == MemFormat::LongReal : t == VarType::LongReal;
-      if (f.chars)
-        layout.push_back({asset::FieldType::Chars, f.chars});
-      else if (in || re || lr)
-        layout.push_back(*asset::parse_field(in ? "IN" : re ? "RE" : "LR"));
-      else
-        return stop(DiagId::AssetStructure, shortest(number), "a variable has no ASSET format (IN, RE, LR, kCH)");
-    }
-    if (!options_.asset) return true;  // a dry run
-    const uint32_t s = whole_operand(number, options_.asset->settings().structures);
-    if (!options_.asset->define(s, layout))
-      return stop(DiagId::AssetStructure, shortest(number),
-                  fmt::format("structures are 1..{} and hold 1..{} fields", options_.asset->settings().structures,
-                              asset::kMaxFields));
-    structures_[s] = std::move(fields);
-    return true;
-  }
-  // The I/O statements: their operands, what they did, and the code (§5.4).
-  double record = 0, second = 0, first = 0;
-  if (op == Op::AssetReadAt || op == Op::AssetWriteAt) record = pop();
-  if (op == Op::AssetRead || op == Op::AssetReadAt || op == Op::AssetWrite || op == Op::AssetWriteAt ||
-      op == Op::AssetCreate)
-    second = pop();
-  if (op != Op::AssetCloseAll && op != Op::AssetDelete) first = pop();
-  if (!options_.asset) return true;  // a dry run: files are the machine's, not the program's
-  asset::Channels& io = *options_.asset;
-  std::string what;
-  asset::Code code = asset::Code::Ok;
-  switch (op) {
-    case Op::AssetOpen:
-    case Op::AssetOpenWrite: {
-      const bool write = op == Op::AssetOpenWrite;
-      auto name = file();
-      what = fmt::format("open {} {} {}", shortest(first), m_.strings[read_operand(operands, 4)], write ? "W" : "R");
-      code = name ? io.open(whole_operand(first, 255), *name, write) : asset::Code::NotFound;
-      break;
-    }
-    case Op::AssetRead:
-    case Op::AssetReadAt:
-    case Op::AssetWrite:
-    case Op::AssetWriteAt: {
-      const bool reading = op == Op::AssetRead || op == Op::AssetReadAt;
-      const bool given = op == Op::AssetReadAt || op == Op::AssetWriteAt;
-      const uint32_t s = whole_operand(second, 255);
-      std::optional<uint32_t> r;
-      if (given) r = whole_operand(record, asset::kMaxRecords);
-      uint32_t at = 0;
-      std::vector<asset::Value> values;
-      auto fields = structures_.find(s);
-      if (reading) {
-        code = io.read(whole_operand(first, 255), s, r, values, &at);
-        if (code == asset::Code::Ok && fields != structures_.end() && !asset_store(fields->second, values, pc))
-          return false;
-      } else {
-        if (fields != structures_.end() && !asset_values(fields->second, values, pc)) return false;
-        code = io.write(whole_operand(first, 255), s, r, values, &at);
-      }
-      what = fmt::format("{} {} structure {} record {}", reading ? "read" : "write", shortest(first), shortest(second),
-                         at      ? std::to_string(at)
-                         : given ? shortest(record)
-                                 : std::string("next"));
-      break;
-    }
-    case Op::AssetClose:
-      what = fmt::format("close {}", shortest(first));
-      code = io.close(whole_operand(first, 255));
-      break;
-    case Op::AssetCloseAll:
-      what = "close all";
-      code = io.close_all();
-      break;
-    case Op::AssetCreate: {
-      auto name = file();
-      what = fmt::format("create {} structure {} records {}", m_.strings[read_operand(operands, 4)], shortest(first),
-                         shortest(second));
-      code = name ? io.create(whole_operand(first, 255), *name, whole_operand(second, asset::kMaxRecords))
-                  : asset::Code::Illegal;
-      break;
-    }
-    case Op::AssetDelete: {
-      auto name = file();
-      what = fmt::format("delete {}", m_.strings[read_operand(operands, 4)]);
-      code = name ? io.remove(*name) : asset::Code::NotFound;
-      break;
-    }
-    default: break;
-  }
-  if (!machine_.asset_done(what, static_cast<int>(code), m_.source_of(pc)))
-    return stop(DiagId::AssetError, what, static_cast<int>(code),
-                code == asset::Code::NotConfigured ? "ASSET area not configured (ncc run --files DIR gives one)"
-                                                   : asset::meaning(code));
-  return true;
-}
+ private:
+  size_t first() const { return vm_.process_.stack.size() - info_.pop; }  // where its operands start
 
-// ---- Processes (NC-110 chapter 4) ------------------------------------------------------
+  Vm& vm_;
+  const ServiceInfo& info_;
+  const uint8_t* operands_;
+  uint32_t pc_;
+  size_t next_;                                   // the stack above the values it has popped
+  std::array<double, kMaxServicePush> pushed_{};  // beyond the catalogue's pushes: ignored
+  size_t pushes_ = 0;
+};
 
-ProcessHost::Answer Vm::process_op(Op op, const uint8_t* operands, uint32_t pc) {
-  std::vector<double>& st = process_.stack;
-  const uint32_t source = m_.source_of(pc);
-  auto answer = [&](ProcessHost::Answer a, const std::string& done, const std::string& waits) {
-    if (a == ProcessHost::Answer::Wait) {
-      process_.pc = pc;  // to run again, its operands as they were
-      if (!waiting_) machine_.sync_event(waits, source);
-      waits_ = waits;
-      waiting_ = true;
-      return a;
-    }
-    if (a == ProcessHost::Answer::Done) machine_.sync_event(done, source);
-    waiting_ = false;
-    return a;
-  };
-  if (op == Op::ProcWaitUntil) {
-    const double value = pop_value(), index = pop_value();
-    double now = 0;
-    if (!load_mem(operands[0], static_cast<MemFormat>(operands[1]), index, pc, now)) return ProcessHost::Answer::Error;
-    const uint8_t relation = operands[2];
-    const bool holds = (relation == 1   ? now == value
-                        : relation == 2 ? now < value
-                        : relation == 3 ? now > value
-                                        : now != value) ||
-                       (waiting_ && options_.processes && options_.processes->assume_met());
-    if (!holds) st.insert(st.end(), {index, value});
-    if (holds && waiting_) wait_until(shared_.written_at);  // it goes on once the memory is written
-    const std::string& condition = m_.strings[u32_at(operands + 3)];
-    return answer(holds ? ProcessHost::Answer::Done : ProcessHost::Answer::Wait, condition + " holds",
-                  "wait until " + condition);
+ServiceResult Vm::call_service(Service service, const uint8_t* operands, uint32_t pc) {
+  const ServiceInfo& info = service_info(service);
+  ServiceHost* host = options_.services[static_cast<size_t>(info.device)];
+  if (!host) {
+    report_error(pc, DiagId::BytecodeInvalid, "program",
+                 fmt::format("{}: this run has no {} device", info.name, device_name(info.device)));
+    return ServiceResult::Error;
   }
-  const double n = pop_value();
-  const std::string process = shortest(n);
-  ProcessHost::Answer a = ProcessHost::Answer::Error;
-  if (!options_.processes) {
-    report_error(pc, DiagId::ProcessError, process, "this run has one process");
-  } else if (op == Op::ProcStart) {
-    const uint16_t entry = u16_at(operands);
-    a = answer(options_.processes->start(n, entry, pc),
-               fmt::format("start process {} {}", process, m_.entries[entry].name),
-               fmt::format("start process {} {}: waits until it is free", process, m_.entries[entry].name));
-  } else if (op == Op::ProcWait) {
-    a = answer(options_.processes->wait_for(n, pc), "restarted by process " + process, "wait for process " + process);
-  } else {
-    a = answer(options_.processes->signal(n, pc), "restart process " + process,
-               fmt::format("restart process {}: waits until it waits for process {}", process, options_.process));
+  Call call(*this, info, operands, pc);
+  const ServiceResult result = host->call(service, call);
+  waiting_ = result == ServiceResult::Wait;
+  if (waiting_) {
+    process_.pc = pc;  // to run again, its operands as they were
+  } else if (result == ServiceResult::Done) {
+    call.finish();
   }
-  if (a == ProcessHost::Answer::Wait) st.push_back(n);
-  return a;
-}
-
-// ---- The user screen (NC-110 §5.6) -------------------------------------------------------
-
-// NC-110 INP (§5.5): the cycle stops until the operator answers; ENTER keeps the value
-// offered. A run reads the answers of --input, in order; a dry run keeps every value.
-bool Vm::input(Op op, const uint8_t* operands, uint32_t pc) {
-  auto refuse = [&]<typename... Args>(DiagIdFor<Args...> id, const Args&... args) {
-    report_error(pc, id, args...);
-    return false;
-  };
-  const bool text = op == Op::InputText || op == Op::InputFieldText;
-  const uint8_t chars = text ? operands[1] : 0;
-  const double index = text ? pop_value() : 0;
-  uint8_t* memory = text ? bytes(operands[0], index, chars, pc) : nullptr;
-  if (text && !memory) return false;
-  const double offered = text ? 0 : pop_value();
-  std::string prompt;
-  if (op == Op::InputField || op == Op::InputFieldText) {
-    const double field = pop_value();
-    auto shown = shared_.screen.text(whole_operand(field, 255));
-    if (!shown)
-      return refuse(DiagId::ScreenError,
-                    fmt::format("(INP) takes its prompt from field {}, which holds no text", shortest(field)));
-    prompt = *shown;
-  } else {
-    prompt = m_.strings[u32_at(operands + (text ? 2 : 0))];
-  }
-  Answer answer;
-  if (options_.input) {
-    if (shared_.answers >= options_.input->size()) return refuse(DiagId::InputExhausted, shared_.answers);
-    answer = (*options_.input)[shared_.answers++];
-  }
-  if (!text) {
-    if (answer.text) return refuse(DiagId::InputAnswer, fmt::format("\"{}\"", *answer.text), "a text", "a number");
-    machine_.operator_input(prompt + shortest(offered), answer.number.value_or(offered), m_.source_of(pc));
-    process_.stack.push_back(answer.number.value_or(offered));
-    return true;
-  }
-  std::string now(reinterpret_cast<const char*>(memory), chars);
-  std::string shown = now;
-  std::replace(shown.begin(), shown.end(), '\0', ' ');  // memory never written holds zeros
-  if (answer.number) return refuse(DiagId::InputAnswer, shortest(*answer.number), "a number", "a text in quotes");
-  std::string typed = answer.text.value_or(now);
-  if (typed.size() > chars)
-    return refuse(DiagId::InputAnswer, fmt::format("\"{}\"", typed), fmt::format("{} bytes long", typed.size()),
-                  fmt::format("a text of at most {} bytes", chars));
-  typed.resize(chars, ' ');  // the rest of the field blank
-  machine_.operator_input(prompt + shown, typed, m_.source_of(pc));
-  std::copy(typed.begin(), typed.end(), memory);
-  wrote_memory();
-  return true;
-}
-
-// What DEF or OUT gives a field: strings[s], a text in memory (operands v n, its byte
-// index popped) or a value popped.
-bool Vm::field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c) {
-  const bool string = op == Op::ScreenDefineText || op == Op::ScreenShowText;
-  const bool memory = op == Op::ScreenDefineMem || op == Op::ScreenShowMem;
-  c.is_text = string || memory;
-  if (string) c.text = m_.strings[read_operand(operands, 4)];
-  if (!memory) {
-    if (!string) c.value = pop_value();
-    return true;
-  }
-  const uint8_t* b = bytes(operands[0], pop_value(), operands[1], pc);
-  if (b) c.text.assign(reinterpret_cast<const char*>(b), operands[1]);
-  return b != nullptr;
-}
-
-bool Vm::user_screen(Op op, const uint8_t* operands, uint32_t pc) {
-  auto pop = [&] { return pop_value(); };
-  const uint32_t source = m_.source_of(pc);
-  std::string why;
-  switch (op) {
-    case Op::ScreenOn:
-      shared_.screen.switch_on();
-      machine_.screen_event("on", source);
-      return true;
-    case Op::ScreenOff:
-      shared_.screen.switch_off();
-      machine_.screen_event("off", source);
-      return true;
-    case Op::ScreenDefineText:
-    case Op::ScreenDefineMem:
-    case Op::ScreenDefineValue: {
-      screen::Content init;
-      if (!field_content(op, operands, pc, init)) return false;
-      const double attribute = pop(), format = pop(), column = pop(), row = pop(), field = pop();
-      std::optional<screen::Format> f;
-      if (auto n = whole_in(format, 1, 7))
-        f = static_cast<screen::Format>(*n);
-      else if (format != 0)
-        why = fmt::format("format {} is not one: 1 to 7 (BL BY IN LI RE LR CH)", shortest(format));
-      screen::Attributes a{attribute == 256, whole_in(attribute, 0, 255).value_or(-1)};
-      // A row or column that is no whole number of six digits is 0, which define() refuses.
-      const auto place = [](double v) { return whole_in<int>(v, -999999, 999999).value_or(0); };
-      if (why.empty()) why = shared_.screen.define(whole_operand(field, 255), place(row), place(column), init, f, a);
-      break;
-    }
-    case Op::ScreenShow: {
-      const double field = pop();
-      why = shared_.screen.show(whole_operand(std::fabs(field), 255), field < 0);
-      break;
-    }
-    case Op::ScreenShowAll: why = shared_.screen.show_all(); break;
-    case Op::ScreenShowValue:
-    case Op::ScreenShowText:
-    case Op::ScreenShowMem: {
-      screen::Content c;
-      if (!field_content(op, operands, pc, c)) return false;
-      why = shared_.screen.show_with(whole_operand(pop(), 255), c);
-      break;
-    }
-    default: break;
-  }
-  if (!why.empty()) {
-    report_error(pc, DiagId::ScreenError, why);
-    return false;
-  }
-  for (uint32_t n : shared_.screen.take_shown()) {
-    const screen::Attributes a = shared_.screen.attributes(n);
-    std::string text = fmt::format("field {} row {} column {} \"{}\"", n, shared_.screen.row(n),
-                                   shared_.screen.column(n), shared_.screen.rendered(n));
-    if (a.inverse) text += " inverse";
-    if (a.colour >= 0) text += fmt::format(" colour {}", a.colour);
-    machine_.screen_event(text, source);
-  }
-  return true;
+  return result;
 }
 
 }  // namespace ncc::vm

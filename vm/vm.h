@@ -1,67 +1,37 @@
 // The deterministic VM: runs a verified Module on the motion runtime. Control flow,
 // expressions and variables live here; geometry lives in the machine it drives
-// (contract/block_machine.h).
+// (contract/block_machine.h), and a controller's services (files, the keyboard, the
+// screen, processes) in the hosts of their devices (contract/services.h).
 #pragma once
 
 #include <cstdint>
-#include <map>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "contract/block_machine.h"
-#include "devices/asset_channels.h"
-#include "devices/user_screen.h"
+#include "contract/services.h"
 #include "module.h"
 #include "opcodes.h"
 
 namespace ncc::vm {
 
-// What the processes of a run share (NC-110 §4.1.3): the memories SYVAR, SA and SK,
-// the user screen (one video frame 8) and the operator's answers taken so far.
+// What the processes of a run share of the VM's (NC-110 §4.1.3): the memories SYVAR,
+// SA and SK (the user screen and the operator's answers are the devices').
 struct SharedState {
   std::vector<std::vector<uint8_t>> memories;  // of the memory spaces (empty for the others)
-  screen::UserScreen screen;
-  size_t answers = 0;  // of VmOptions::input, taken
   double written_at =
       0;  // the latest time a process (or the PLC) wrote a memory: a WAI condition met goes on from there
 };
 
-// The other processes of a run, as a process's EXE, WAI and SND meet them (NC-110
-// chapter 4): the scheduler (processes.h) answers for the process it is running.
-class ProcessHost {
- public:
-  // [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
-  enum class [[nodiscard]] Answer;
-  enum class Answer { Done, Wait, Error };  // Error: reported at the block
-  virtual ~ProcessHost() = default;
-  virtual Answer start(double process, uint32_t entry, uint32_t pc) = 0;  // EXE
-  virtual Answer wait_for(double process, uint32_t pc) = 0;               // WAI n
-  virtual Answer signal(double process, uint32_t pc) = 0;                 // SND
-  // A WAI condition that no process meets is taken as met (the dry run of
-  // `ncc check`, which cannot know the PLC).
-  virtual bool assume_met() { return false; }
-};
-
-// The operator's answer to INP (NC-110 §5.5): a number, a text, or neither: ENTER, the
-// value offered stays.
-struct Answer {
-  std::optional<double> number;
-  std::optional<std::string> text;
-};
-
 struct VmOptions {
-  uint64_t max_steps = 0;            // steps before StepLimit: blocks, and moves beyond a block's first; 0 = no limit
-  uint64_t max_memory = 0;           // bytes the runtime may hold (Machine::held_bytes) before RunMemory; 0 = no limit
-  bool trace_blocks = false;         // a `block` event as each block starts
-  asset::Channels* asset = nullptr;  // ASSET files; none (a dry run): the statements have no effect
-  // The operator's answers to INP, in order; none: a dry run, every answer is the value
-  // offered.
-  std::vector<Answer>* input = nullptr;
-  SharedState* shared = nullptr;     // none: the VM's own
-  ProcessHost* processes = nullptr;  // none: one process, which EXE, WAI and SND cannot leave
-  uint8_t process = 0;               // its number (0: the only one)
-  bool slice = false;                // resume() runs one block, then returns Yield
-  bool by_block = false;             // the same for a host that steps the run (only between blocks)
+  uint64_t max_steps = 0;         // steps before StepLimit: blocks, and moves beyond a block's first; 0 = no limit
+  uint64_t max_memory = 0;        // bytes the runtime may hold (Machine::held_bytes) before RunMemory; 0 = no limit
+  bool trace_blocks = false;      // a `block` event as each block starts
+  ServiceHosts services = {};     // who answers each device's services (contract/services.h)
+  SharedState* shared = nullptr;  // none: the VM's own
+  bool slice = false;             // resume() runs one block, then returns Yield
+  bool by_block = false;          // the same for a host that steps the run (only between blocks)
   // Blocks evaluated ahead of the motion (NC-110 §2.16: the look-ahead of a run of
   // several processes, where it shows); 0: each block once the motion before it ended.
   uint32_t look_ahead = 0;
@@ -106,7 +76,6 @@ class Vm {
   void write_memory(uint8_t space, MemFormat f, uint32_t index, double value) {
     (void)store_mem(space, f, index, value, 0);  // the script's reader (plc_write) checked index and value
   }
-  const screen::UserScreen& user_screen() const { return shared_.screen; }
 
  private:
   struct Arg {
@@ -156,32 +125,9 @@ class Vm {
   [[nodiscard]] bool store_mem(uint8_t space, MemFormat f, double index, double value, uint32_t pc);
   // A memory changed now: a WAI condition it meets goes on from this time.
   void wrote_memory() { shared_.written_at = std::max(shared_.written_at, eval_time()); }
-  // ASSET (NC-110 chapter 5): one instruction of it; the structures' variables.
-  [[nodiscard]] bool asset(Op op, const uint8_t* operands, uint32_t pc);  // false: the run stops (reported)
-  struct AssetField {
-    uint8_t space;
-    bool memory;
-    MemFormat format;  // memory
-    uint8_t chars;     // memory: a text of this many bytes (0: a value of `format`)
-    uint32_t index;    // variable index, or memory index (bytes for a text)
-  };
-  [[nodiscard]] bool asset_values(const std::vector<AssetField>& fields, std::vector<asset::Value>& out, uint32_t pc);
-  [[nodiscard]] bool asset_store(const std::vector<AssetField>& fields, const std::vector<asset::Value>& values,
-                                 uint32_t pc);
-  std::vector<AssetField> fields_;  // of the structure being defined
-  std::map<uint32_t, std::vector<AssetField>> structures_;
-  // NC-110 SCR, DEF, OUT (§5.6): one instruction; the fields it showed go to the trace.
-  [[nodiscard]] bool user_screen(Op op, const uint8_t* operands, uint32_t pc);
-  [[nodiscard]] bool field_content(Op op, const uint8_t* operands, uint32_t pc, screen::Content& c);  // false: reported
-  [[nodiscard]] bool input(Op op, const uint8_t* operands, uint32_t pc);                              // false: reported
-  double pop_value() {  // the verifier has checked the stack holds it
-    const double v = process_.stack.back();
-    process_.stack.pop_back();
-    return v;
-  }
-  // EXE, WAI, SND: Done (a sync event shows it), Wait (the first time, an event
-  // shows what it waits for), or Error.
-  ProcessHost::Answer process_op(Op op, const uint8_t* operands, uint32_t pc);
+  // SERVICE: the host of the service's device runs it, seeing the VM through a Call.
+  class Call;
+  ServiceResult call_service(Service service, const uint8_t* operands, uint32_t pc);
   // The look-ahead: the time the block being run is evaluated, and when each of the
   // last look_ahead blocks ended its motion (a ring, by block count).
   void look_ahead();

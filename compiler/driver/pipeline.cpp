@@ -14,6 +14,7 @@
 
 #include "check/check.h"
 #include "devices/asset_store.h"
+#include "devices/nc110_devices.h"
 #include "frontend/frontend.h"
 #include "lower/lower.h"
 #include "runtime/machine.h"
@@ -180,7 +181,7 @@ std::string plc_write(const vm::Module& m, std::string_view text, vm::PlcWrite& 
 // "text" or ENTER (keep the value offered), and the PLC's signals (SA12=1), each given when no
 // process can go on without it; blank lines and '#' comments are skipped. Problems
 // at their place.
-bool read_answers(Session& s, const vm::Module& m, const std::string& path, std::vector<vm::Answer>& answers,
+bool read_answers(Session& s, const vm::Module& m, const std::string& path, std::vector<devices::Answer>& answers,
                   std::deque<vm::PlcWrite>& plc) {
   // A line an answer: a run that needs more has stopped long before.
   constexpr FileLimit kInputScript{64 << 20, "an input script"};
@@ -219,12 +220,14 @@ bool read_answers(Session& s, const vm::Module& m, const std::string& path, std:
 }  // namespace
 
 // What a run holds besides its processes: the machine configuration, the reporter
-// of what it finds, the ASSET sandbox and the operator's answers.
+// of what it finds, the ASSET sandbox, the operator's answers and the devices'
+// state the processes share.
 struct ModuleRun::Parts {
   MachineConfig config;
   std::unique_ptr<IssueReporter> reporter;
   std::unique_ptr<asset::Store> store;
-  std::vector<vm::Answer> answers;
+  std::vector<devices::Answer> answers;
+  devices::Nc110Run devices;
   std::deque<ProcessSink> process_sinks;  // a run of several processes: each event marked with its process
   std::unique_ptr<vm::Processes> processes;
 };
@@ -262,7 +265,11 @@ ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& setting
     machine->power_on();
     return std::unique_ptr<BlockMachine>(std::move(machine));
   };
-  vm::ProcessSetup setup{m, make_machine, *parts_->reporter, options};
+  // Each process has the NC-110 controller's devices, sharing the run's.
+  auto make_devices = [this](uint8_t) -> std::unique_ptr<ServiceHost> {
+    return std::make_unique<devices::Nc110Devices>(parts_->devices);
+  };
+  vm::ProcessSetup setup{m, make_machine, make_devices, *parts_->reporter, options};
   setup.dry = dry;
   setup.by_block = by_block;
   setup.processes = config.processes;
@@ -279,10 +286,10 @@ ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& setting
       if (!parts_->store->prepared()) s.diags.report(DiagId::FilesUnprepared, {}, settings.files);
     }
     if (!settings.input.empty() && !read_answers(s, m, settings.input, parts_->answers, setup.plc)) return;
-    setup.options.input = &parts_->answers;
-    setup.store = parts_->store.get();
-    setup.files = true;
-    setup.channels = {.channels = config.asset.channels, .structures = config.asset.structures};
+    parts_->devices.answers = &parts_->answers;
+    parts_->devices.store = parts_->store.get();
+    parts_->devices.files = true;
+    parts_->devices.channels = {.channels = config.asset.channels, .structures = config.asset.structures};
   }
 
   // Process 1 runs the programs of the medium from the first, or from a main block.
@@ -335,7 +342,7 @@ std::optional<uint32_t> ModuleRun::next_block() const {
 }
 
 const screen::UserScreen* ModuleRun::user_screen() const {
-  return parts_->processes ? &parts_->processes->user_screen() : nullptr;
+  return parts_->processes ? &parts_->devices.screen : nullptr;
 }
 
 void ModuleRun::report(uint32_t source, DiagId id, std::string message) {

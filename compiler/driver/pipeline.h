@@ -13,6 +13,10 @@
 #include "vm/module.h"
 #include "vm/vm.h"
 
+namespace ncc::screen {
+class UserScreen;
+}
+
 namespace ncc {
 
 struct Session {

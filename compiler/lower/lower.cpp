@@ -109,6 +109,11 @@ class Lowering {
 
   uint32_t pc() const { return static_cast<uint32_t>(m_.code.size()); }
   void op(Op o) { m_.code.push_back(static_cast<uint8_t>(o)); }
+  // A SERVICE instruction; its service's operands follow (contract/services.def).
+  void service(Service s) {
+    op(Op::Service);
+    u8(static_cast<uint32_t>(s));
+  }
   void u8(uint32_t v) { m_.code.push_back(static_cast<uint8_t>(v)); }
   void u16(uint32_t v) {
     u8(v & 0xFF);
@@ -291,13 +296,13 @@ class Lowering {
     op(Op::Exec);
   }
 
-  // docs/asset.md; the operands in order, then the instruction (vm/opcodes.h).
+  // docs/asset.md; the operands in order, then the service (contract/services.def).
   void asset(const ir::Stmt& s) {
     auto operands = [&](size_t from, size_t to) {
       for (size_t i = from; i < to && i < s.items.size(); ++i) expr(s.items[i].value);
     };
-    auto with_file = [&](Op o) {
-      op(o);
+    auto with_file = [&](Service o) {
+      service(o);
       u32(string(s.label));
     };
     switch (s.asset) {
@@ -305,49 +310,56 @@ class Lowering {
         for (size_t i = 1; i < s.items.size(); ++i) {
           const ir::Expr& v = p_->exprs[s.items[i].value];
           if (v.op == ir::ExprOp::Var) {  // an E parameter: the front end writes its index
-            op(Op::AssetBind);
+            service(Service::AssetBind);
             u8(v.space);
             u32(written_index(v).value_or(0));
             continue;
           }
           expr(v.a);
-          op(v.op == ir::ExprOp::Text ? Op::AssetBindText : Op::AssetBindMem);
+          service(v.op == ir::ExprOp::Text ? Service::AssetBindText : Service::AssetBindMem);
           u8(v.space);
           u8(v.op == ir::ExprOp::Text ? v.count : static_cast<uint32_t>(v.format));
         }
         operands(0, 1);
-        op(Op::AssetDefine);
+        service(Service::AssetDefine);
         break;
       case ir::AssetOp::OpenRead:
       case ir::AssetOp::OpenWrite:
         operands(0, 1);
-        with_file(s.asset == ir::AssetOp::OpenWrite ? Op::AssetOpenWrite : Op::AssetOpen);
+        with_file(s.asset == ir::AssetOp::OpenWrite ? Service::AssetOpenWrite : Service::AssetOpen);
         break;
       case ir::AssetOp::Read:
       case ir::AssetOp::Write: {
         const bool at = s.items.size() > 2;
         operands(0, 3);
-        op(s.asset == ir::AssetOp::Read ? (at ? Op::AssetReadAt : Op::AssetRead)
-                                        : (at ? Op::AssetWriteAt : Op::AssetWrite));
+        service(s.asset == ir::AssetOp::Read ? (at ? Service::AssetReadAt : Service::AssetRead)
+                                             : (at ? Service::AssetWriteAt : Service::AssetWrite));
         break;
       }
       case ir::AssetOp::Close:
         operands(0, 1);
-        op(Op::AssetClose);
+        service(Service::AssetClose);
         break;
-      case ir::AssetOp::CloseAll: op(Op::AssetCloseAll); break;
+      case ir::AssetOp::CloseAll: service(Service::AssetCloseAll); break;
       case ir::AssetOp::Create:
         operands(0, 2);
-        with_file(Op::AssetCreate);
+        with_file(Service::AssetCreate);
         break;
-      case ir::AssetOp::Delete: with_file(Op::AssetDelete); break;
+      case ir::AssetOp::Delete: with_file(Service::AssetDelete); break;
     }
   }
 
-  // An instruction `o` with operands v n that takes a text in memory: its byte index first.
+  // An instruction `o` (or a service) with operands v n that takes a text in memory:
+  // its byte index first.
   void memory_text(const ir::Expr& text, Op o) {
     expr(text.a);
     op(o);
+    u8(text.space);
+    u8(text.count);
+  }
+  void memory_text(const ir::Expr& text, Service s) {
+    expr(text.a);
+    service(s);
     u8(text.space);
     u8(text.count);
   }
@@ -363,11 +375,11 @@ class Lowering {
     if (field) expr(s.items[0].value);
     expr(text ? target.a : s.target);
     if (text) {
-      op(field ? Op::InputFieldText : Op::InputText);
+      service(field ? Service::InputFieldText : Service::InputText);
       u8(target.space);
       u8(target.count);
     } else {
-      op(field ? Op::InputField : Op::Input);
+      service(field ? Service::InputField : Service::InputValue);
     }
     if (!field) u32(string(s.label));
     if (target.op == ir::ExprOp::Mem) {
@@ -382,32 +394,34 @@ class Lowering {
     if (s.items.size() == 2) {  // the field that shows the answer
       expr(s.items[1].value);
       if (text) {
-        memory_text(target, Op::ScreenShowMem);
+        memory_text(target, Service::ScreenShowMem);
       } else {
         expr(s.target);
-        op(Op::ScreenShowValue);
+        service(Service::ScreenShowValue);
       }
     }
   }
 
-  // NC-110 SCR, DEF, OUT (§5.6): the operands in order, then the instruction.
+  // NC-110 SCR, DEF, OUT (§5.6): the operands in order, then the service.
   void user_screen(const ir::Stmt& s) {
     // Item i: a text in quotes goes with `with_text`, a text in memory with `with_memory`,
     // a value is computed for `with_value`.
-    auto text_or_value = [&](size_t i, Op with_text, Op with_memory, Op with_value) {
+    auto text_or_value = [&](size_t i, Service with_text, Service with_memory, Service with_value) {
       const ir::Expr& e = p_->exprs[s.items[i].value];
       if (e.op == ir::ExprOp::String) {
-        op(with_text);
+        service(with_text);
         u32(string(p_->texts[e.text]));
       } else if (e.op == ir::ExprOp::Text) {
         memory_text(e, with_memory);
       } else {
         expr(s.items[i].value);
-        op(with_value);
+        service(with_value);
       }
     };
     switch (s.kind) {
-      case ir::StmtKind::ScreenSwitch: op(p_->exprs[s.value].number != 0 ? Op::ScreenOn : Op::ScreenOff); break;
+      case ir::StmtKind::ScreenSwitch:
+        service(p_->exprs[s.value].number != 0 ? Service::ScreenOn : Service::ScreenOff);
+        break;
       case ir::StmtKind::ScreenDefine: {
         for (size_t i = 0; i < 3; ++i) expr(s.items[i].value);  // field, row, column
         if (s.items.size() > 4)
@@ -420,46 +434,46 @@ class Lowering {
                                      ? 256
                                      : parse_number<double>(std::string_view(s.label).substr(1)).value_or(-1);
         constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
-        text_or_value(3, Op::ScreenDefineText, Op::ScreenDefineMem, Op::ScreenDefineValue);
+        text_or_value(3, Service::ScreenDefineText, Service::ScreenDefineMem, Service::ScreenDefineValue);
         break;
       }
       case ir::StmtKind::ScreenShow:
-        if (s.items.empty()) op(Op::ScreenShowAll);
+        if (s.items.empty()) service(Service::ScreenShowAll);
         for (const ir::DisplayItem& field : s.items) {
           expr(field.value);
-          op(Op::ScreenShow);
+          service(Service::ScreenShow);
         }
         break;
       default:  // ScreenShowWith
         expr(s.items[0].value);
-        text_or_value(1, Op::ScreenShowText, Op::ScreenShowMem, Op::ScreenShowValue);
+        text_or_value(1, Service::ScreenShowText, Service::ScreenShowMem, Service::ScreenShowValue);
     }
   }
 
-  // NC-110 EXE, REL, WAI, SND (chapter 4): the process operand, then the instruction.
+  // NC-110 EXE, REL, WAI, SND (chapter 4): the process operand, then the service.
   void process(const ir::Stmt& s) {
     switch (s.kind) {
       case ir::StmtKind::ProcessStart:
         expr(s.value);
-        calls_.push_back({pc() + 1, s.label, true});
-        op(Op::ProcStart);
+        calls_.push_back({pc() + 2, s.label, true});  // the entry after the service's number
+        service(Service::ProcessStart);
         u16(0);
         break;
-      case ir::StmtKind::ProcessRelease: op(Op::ProcRelease); break;
+      case ir::StmtKind::ProcessRelease: service(Service::ProcessRelease); break;
       case ir::StmtKind::ProcessWait:
         expr(s.value);
-        op(Op::ProcWait);
+        service(Service::ProcessWait);
         break;
       case ir::StmtKind::ProcessSignal:
         expr(s.value);
-        op(Op::ProcSignal);
+        service(Service::ProcessSignal);
         break;
       default: {  // ProcessWaitUntil: a memory compared with a value (the front end)
         const ir::Expr& compare = p_->exprs[s.value];
         const ir::Expr& memory = p_->exprs[compare.a];
         expr(memory.a);
         expr(compare.b);
-        op(Op::ProcWaitUntil);
+        service(Service::ProcessWaitUntil);
         u8(memory.space);
         u8(static_cast<uint32_t>(memory.format));
         u8(compare.op == ir::ExprOp::Eq ? 1 : compare.op == ir::ExprOp::Lt ? 2 : compare.op == ir::ExprOp::Gt ? 3 : 4);

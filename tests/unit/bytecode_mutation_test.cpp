@@ -74,12 +74,19 @@ std::string compile_sample(const Sample& x) {
   return m ? vm::write_module(*m) : std::string();
 }
 
-// The first instruction of each opcode the module's code has, by its pc.
-std::map<vm::Op, size_t> first_instructions(const vm::Module& m) {
-  std::map<vm::Op, size_t> first;
-  for (size_t pc = 0; pc < m.code.size();
-       pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc]))))
-    first.emplace(static_cast<vm::Op>(m.code[pc]), pc);
+// An instruction as the samples must cover them: an opcode, and a SERVICE by its service.
+using Instruction = std::pair<vm::Op, Service>;
+std::string name(Instruction i) {
+  return std::string(i.first == vm::Op::Service ? service_info(i.second).name : vm::op_info(i.first).name);
+}
+
+// The first instruction of each kind the module's code has, by its pc.
+std::map<Instruction, size_t> first_instructions(const vm::Module& m) {
+  std::map<Instruction, size_t> first;
+  for (size_t pc = 0; pc < m.code.size(); pc += static_cast<size_t>(vm::instruction_size(&m.code[pc]))) {
+    const auto op = static_cast<vm::Op>(m.code[pc]);
+    first.emplace(Instruction{op, op == vm::Op::Service ? static_cast<Service>(m.code[pc + 1]) : Service::Count}, pc);
+  }
   return first;
 }
 
@@ -141,17 +148,20 @@ bool load_disassemble_and_run(const std::string& bytes, const Sandbox& sandbox, 
 }
 
 TEST(BytecodeMutation, TheSamplesUseEveryInstructionTheCompilerMakes) {
-  std::set<vm::Op> used;
+  std::set<Instruction> used;
   for (const Sample& x : kSamples) {
     Session s;
     auto m = vm::read_module(compile_sample(x), x.file, s.diags);
     ASSERT_TRUE(m) << x.file << ": " << (s.diags.all().empty() ? "" : s.diags.all()[0].message);
-    for (auto [op, pc] : first_instructions(*m)) used.insert(op);
+    for (auto [instruction, pc] : first_instructions(*m)) used.insert(instruction);
   }
-  for (size_t i = 0; i < static_cast<size_t>(vm::Op::Count); ++i) {
-    const auto op = static_cast<vm::Op>(i);
-    if (op == vm::Op::Nop || op == vm::Op::Pow) continue;  // the lowering makes neither
-    EXPECT_TRUE(used.count(op)) << vm::op_info(op).name << " is in no sample";
+  std::vector<Instruction> all;
+  for (size_t i = 0; i < static_cast<size_t>(vm::Op::Count); ++i)
+    if (static_cast<vm::Op>(i) != vm::Op::Service) all.push_back({static_cast<vm::Op>(i), Service::Count});
+  for (size_t i = 0; i < kServiceCount; ++i) all.push_back({vm::Op::Service, static_cast<Service>(i)});
+  for (Instruction i : all) {
+    if (i.first == vm::Op::Nop || i.first == vm::Op::Pow) continue;  // the lowering makes neither
+    EXPECT_TRUE(used.count(i)) << name(i) << " is in no sample";
   }
 }
 
@@ -172,16 +182,18 @@ TEST_P(EveryByte, IsRefusedOrRunsSafely) {
       bad[i] = static_cast<char>(bad[i] ^ mask);
       attempt(bad);
     }
-  // Every value of each operand byte of the instructions no sample before this one has.
-  std::set<vm::Op> earlier;
+  // Every value of each operand byte (a service's number too) of the instructions no
+  // sample before this one has.
+  std::set<Instruction> earlier;
   for (const Sample& x : kSamples) {
     if (std::string_view(x.dialect) == GetParam().dialect && std::string_view(x.file) == GetParam().file) break;
-    for (auto [op, pc] : first_instructions(module_of(compile_sample(x)))) earlier.insert(op);
+    for (auto [instruction, pc] : first_instructions(module_of(compile_sample(x)))) earlier.insert(instruction);
   }
   const size_t code = code_offset(bytes);
-  for (auto [op, pc] : first_instructions(module_of(bytes)))
-    if (!earlier.count(op))
-      for (size_t i = code + pc + 1; i < code + pc + static_cast<size_t>(vm::instruction_size(op)); ++i)
+  const vm::Module m = module_of(bytes);
+  for (auto [instruction, pc] : first_instructions(m))
+    if (!earlier.count(instruction))
+      for (size_t i = code + pc + 1; i < code + pc + static_cast<size_t>(vm::instruction_size(&m.code[pc])); ++i)
         for (int v = 0; v < 256; ++v) {
           std::string bad = bytes;
           bad[i] = static_cast<char>(v);

@@ -45,7 +45,16 @@ vm::Module compile_text(Session& s, const std::string& dialect, const std::strin
 size_t find_op(const vm::Module& m, vm::Op op) {
   size_t pc = 0;
   while (pc < m.code.size() && m.code[pc] != static_cast<uint8_t>(op))
-    pc += static_cast<size_t>(vm::instruction_size(static_cast<vm::Op>(m.code[pc])));
+    pc += static_cast<size_t>(vm::instruction_size(&m.code[pc]));
+  EXPECT_LT(pc, m.code.size());
+  return pc;
+}
+// The same of a SERVICE instruction of `service`.
+size_t find_service(const vm::Module& m, Service service) {
+  size_t pc = 0;
+  while (pc < m.code.size() &&
+         !(m.code[pc] == static_cast<uint8_t>(vm::Op::Service) && m.code[pc + 1] == static_cast<uint8_t>(service)))
+    pc += static_cast<size_t>(vm::instruction_size(&m.code[pc]));
   EXPECT_LT(pc, m.code.size());
   return pc;
 }
@@ -75,11 +84,11 @@ TEST(Bytecode, AnAssetFileNameThatIsNoneIsRefused) {
   // The store checks a name before it opens a file; the trace prints it before that.
   Session s;
   vm::Module m = compile_text(s, "nc110", "(CAN,PUNTXZ/MP3)\nM30\n");
-  const size_t pc = find_op(m, vm::Op::AssetDelete);
+  const size_t pc = find_service(m, Service::AssetDelete);
   for (const std::string& bad : {std::string("PUN\0XZ/MP3", 10), std::string("../X"), std::string("PUNTXZ/MP7")}) {
-    m.strings[vm::read_operand(&m.code[pc + 1], 4)] = bad;
+    m.strings[vm::read_operand(&m.code[pc + 2], 4)] = bad;
     EXPECT_EQ(load_problem(m),
-              fmt::format("'x.ncb' is invalid: AssetDelete at {} has an operand out of range (0) [NC5004]", pc));
+              fmt::format("'x.ncb' is invalid: asset.delete at {} has an operand out of range (0) [NC5004]", pc));
   }
 }
 
@@ -407,9 +416,28 @@ TEST(Verifier, RejectsEachKindOfUnsoundCode) {
   EXPECT_NE(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::Jump), 0, 0, 0, 0}), "");
 }
 
+TEST(Verifier, ChecksAServiceByItsCatalogueLine) {
+  using vm::Op;
+  auto service = [](Service s) { return static_cast<uint8_t>(s); };
+  EXPECT_EQ(verify_code({kStep, op(Op::Service), service(Service::ScreenOn), op(Op::End)}), "");
+  EXPECT_EQ(verify_code({kStep, op(Op::Service), 0xEE, op(Op::End)}), "Service at 1 has an operand out of range (238)");
+  EXPECT_EQ(verify_code({kStep, op(Op::Service)}), "Service at 1 is cut off by the end of the code");
+  // Its own operands: a string, cut off; out of range.
+  EXPECT_EQ(verify_code({kStep, op(Op::Service), service(Service::ScreenShowText), 0, 0}),
+            "screen.show_text at 1 is cut off by the end of the code");
+  EXPECT_EQ(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::Service), service(Service::ScreenShowText), 0, 0, 0,
+                         0, op(Op::End)}),
+            "screen.show_text at 6 has an operand out of range (0)");
+  // Its stack effect: asset.close pops a channel.
+  EXPECT_EQ(verify_code({kStep, op(Op::Service), service(Service::AssetClose), op(Op::End)}),
+            "asset.close at 1 pops more values than the stack holds");
+  EXPECT_EQ(verify_code({kStep, op(Op::Const), 0, 0, 0, 0, op(Op::Service), service(Service::AssetClose), op(Op::End)}),
+            "");
+}
+
 TEST(Verifier, ChecksEachOperandKindsRange) {
-  // A memory SA of 16 bytes: ProcWaitUntil SA, byte, relation q, strings[0] (NC-110
-  // WAI); the relations are 1..4. CopyText SA, SA, n bytes: n is 1..255.
+  // A memory SA of 16 bytes: Service process.wait_until SA, byte, relation q,
+  // strings[0] (NC-110 WAI); the relations are 1..4. CopyText SA, SA, n bytes: n is 1..255.
   using vm::Op;
   auto verify_with_memory = [](uint8_t relation, uint8_t bytes) {
     vm::Module m;
@@ -428,7 +456,8 @@ TEST(Verifier, ChecksEachOperandKindsRange) {
               0,
               0,
               0,
-              op(Op::ProcWaitUntil),
+              op(Op::Service),
+              static_cast<uint8_t>(Service::ProcessWaitUntil),
               0,
               1,
               relation,
@@ -458,9 +487,9 @@ TEST(Verifier, ChecksEachOperandKindsRange) {
   };
   EXPECT_EQ(verify_with_memory(1, 1), "");
   EXPECT_EQ(verify_with_memory(4, 255), "");
-  EXPECT_EQ(verify_with_memory(0, 1), "ProcWaitUntil at 11 has an operand out of range (0)");
-  EXPECT_EQ(verify_with_memory(5, 1), "ProcWaitUntil at 11 has an operand out of range (5)");
-  EXPECT_EQ(verify_with_memory(1, 0), "CopyText at 29 has an operand out of range (0)");
+  EXPECT_EQ(verify_with_memory(0, 1), "process.wait_until at 11 has an operand out of range (0)");
+  EXPECT_EQ(verify_with_memory(5, 1), "process.wait_until at 11 has an operand out of range (5)");
+  EXPECT_EQ(verify_with_memory(1, 0), "CopyText at 30 has an operand out of range (0)");
 }
 
 TEST(Verifier, RejectsNumbersAndNamesThatCannotBeTrusted) {
