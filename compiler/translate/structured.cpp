@@ -508,8 +508,11 @@ void Structured::line(std::string text) {
   text = std::exchange(then_, {}) + text;
   if (!head.empty() && !text.empty()) head += ' ';
   text = (skip_ ? "/" : "") + head + text;
+  size_t inline_length = text.size();
+  for (const std::string& c : comments_) inline_length += w_.inline_comment(c).size() + 1;
+  const bool apart = w_.comments_apart() || (w_.longest_line() && inline_length > w_.longest_line());
   for (const std::string& c : comments_) {
-    if (w_.comments_apart()) {  // lines of their own, before the block's
+    if (apart) {  // lines of their own, before the block's
       w_.comment(c);
       continue;
     }

@@ -93,6 +93,9 @@ class Writer {
   // The target takes no comment after a block's words (NC-110): a comment is a line
   // of its own.
   virtual bool comments_apart() const { return false; }
+  // The longest line the target reads (0: any); a block's comments that would make it
+  // longer go on lines of their own before it, broken to fit.
+  virtual size_t longest_line() const { return 0; }
   // A word's value as the target writes it (its address' format).
   virtual std::string number(const OutWord& w) const;
   // A block number of its own for a structured translation's line (pp: jumps go to

@@ -41,15 +41,19 @@ class IsoWriter final : public Writer {
       line += w.letter;
       line += number(w);
     }
-    // LinuxCNC reads lines of 255 characters at most: a longer comment goes on in
-    // comment lines of its own, broken at blanks.
-    while (linuxcnc_ && line.size() + comment.size() + 4 > kLinuxcncLine) {
-      const size_t room = kLinuxcncLine - 4 - std::min(line.size(), kLinuxcncLine - 64);
+    // LinuxCNC reads lines of kLinuxcncLine characters at most: a longer comment goes
+    // on in comment lines of its own, broken at blanks. (A comment takes its
+    // parentheses and maybe a mark, and a blank after the words before it.)
+    auto words_part = [&](size_t most) { return line.empty() ? 0 : std::min(line.size(), most) + 1; };
+    auto marks = [&] { return inline_comment(comment).size() - comment.size(); };
+    while (linuxcnc_ && words_part(line.size()) + comment.size() + marks() > kLinuxcncLine) {
+      const size_t room = kLinuxcncLine - marks() - words_part(kLinuxcncLine - 64);  // 60 characters at least
       size_t cut = comment.rfind(' ', room);
       if (cut == std::string_view::npos || cut == 0) cut = room;
       out_ += (line.empty() ? "" : line + " ") + inline_comment(comment.substr(0, cut)) + "\n";
       line.clear();
       comment.remove_prefix(std::min(comment.size(), cut + (cut < comment.size() && comment[cut] == ' ')));
+      if (comment.empty()) return;  // it ended at a blank: no "()" after it
     }
     if (!comment.empty() || words.empty()) {  // an empty message is "()", not an empty line
       if (!line.empty()) line += ' ';
@@ -58,6 +62,8 @@ class IsoWriter final : public Writer {
     out_ += line;
     out_ += '\n';
   }
+
+  size_t longest_line() const override { return linuxcnc_ ? kLinuxcncLine : 0; }
 
   std::string inline_comment(std::string_view text) const override {
     std::string out = "(";
@@ -94,7 +100,9 @@ class IsoWriter final : public Writer {
            head.starts_with("LOG") || head.starts_with("PROBE");
   }
 
-  static constexpr size_t kLinuxcncLine = 255;
+  // rs274 2.9 says "Command too long" from 253 characters (its buffer of 255 holds the
+  // newline and the terminator too).
+  static constexpr size_t kLinuxcncLine = 252;
   bool linuxcnc_;
 };
 
