@@ -497,7 +497,8 @@ class Stream final : public BlockSink {
       if (w.code == ir::kDynamicCode) return false;
     for (const ir::Stmt& s : b.stmts)
       if (s.kind != ir::StmtKind::Machine && s.kind != ir::StmtKind::Assign && s.kind != ir::StmtKind::Comment &&
-          s.kind != ir::StmtKind::Display && s.kind != ir::StmtKind::Asset)
+          s.kind != ir::StmtKind::Display &&
+          !(s.kind == ir::StmtKind::Service && service_info(s.service).device == Device::Asset))
         return false;
     return true;
   }

@@ -4,9 +4,9 @@
 // a list of source Blocks. A Block keeps its source range and its original words
 // (address, text, value) and lists its semantic statements in execution order: the
 // machine action (its G/M codes and parameter words), assignments, jumps, repeat
-// loops, calls, returns and system operations. Expressions live in one arena per
-// Program. The dialect's code table (Program::semantics) says what each G/M code
-// means to the runtime. `ncc ir` prints all of it as stable text (ir_print.cpp).
+// loops, calls, returns and calls of the controller's services. Expressions live in
+// one arena per Program. The dialect's code table (Program::semantics) says what each
+// G/M code means to the runtime. `ncc ir` prints all of it as stable text (ir_print.cpp).
 #pragma once
 
 #include <algorithm>
@@ -20,6 +20,7 @@
 
 #include "contract/builtins.h"
 #include "contract/program_semantics.h"
+#include "contract/services.h"
 #include "contract/system_vars.h"
 #include "contract/variables.h"
 #include "support/numbers.h"
@@ -140,26 +141,21 @@ enum class StmtKind : uint8_t {
   Return,
   CallRange,  // run the blocks from label `label` to label `end_label`, then go on
   Display,    // show `items` to the operator, one after the other
-  Asset,      // an ASSET file statement (NC-110 chapter 5, `asset`): `items` its operands, `label` the file
-  Input,      // the operator enters `target`'s value, offered its current one after the prompt `label` (NC-110 INP),
-              // or after the text of screen field items[0]; items[1]: the field that shows the answer
-  // NC-110 user screen (§5.6).
-  ScreenSwitch,    // SCR: `value` 1 on, 0 off
-  ScreenDefine,    // DEF: items field, row, column, initial value[, format]; `label` the attribute (R, A179) or ""
-  ScreenShow,      // OUT: items the fields (a negative constant: inverse); none: every field not shown yet
-  ScreenShowWith,  // OUT n, value: items field, value
-  // NC-110 processes (chapter 4).
-  ProcessStart,      // EXE: start program `label` (a unit of kind Process) in process `value`
-  ProcessRelease,    // REL: the program ends; its process is free
-  ProcessWait,       // WAI n: wait for a restart (ProcessSignal) from process `value`
-  ProcessWaitUntil,  // WAI condition: wait until `value` (a comparison of a memory) is true; `label` as written
-  ProcessSignal,     // SND: restart process `value`, once it waits for this one
+  // Call the controller's service `service` (contract/services.def), named by the
+  // front end as the statement's words select it (NC-110 ASSET, INP, SCR, DEF, OUT,
+  // EXE, REL, WAI, SND). Lowering turns it into that one Service instruction, except
+  // where one statement is several (docs/ir.md, Services): asset.define binds its
+  // variables first, an input.* stores the answer, screen.show shows each field.
+  // Operands: asset.*: `items` in stack order (define: the structure, then the
+  // variables), `label` the file. input.*: `target` entered, items[0] the field whose
+  // text is the prompt (0: the prompt is `label`), items[1] a field to show the answer.
+  // screen.define_*: items field, row, column, initial value[, format], `label` the
+  // attribute (R, A179) or "". screen.show: items the fields (-n: inverse);
+  // screen.show_value/_text/_mem: items field, value. process.*: `value` the process
+  // (wait_until: the comparison of a memory), `label` the program (start) or the
+  // condition as written (wait_until).
+  Service,
 };
-
-// What an ASSET statement does (docs/asset.md, Statements), with its operands in
-// Stmt::items: OPN channel; DER structure, then the variables it binds; RED and WRT
-// channel, structure[, record]; CLO [channel]; CRE structure, record count; CAN none.
-enum class AssetOp : uint8_t { OpenRead, OpenWrite, Define, Read, Write, Close, CloseAll, Create, Delete };
 
 // One item of a Display: a value shown as its type shows it, a String or a Text.
 struct DisplayItem {
@@ -180,9 +176,9 @@ struct Stmt {
   Stmt(StmtKind k, SourceRange r) : kind(k), range(r) {}
 
   StmtKind kind = StmtKind::Machine;
-  bool optional = false;              // Comment after a mid-block '/': dropped when block skip is on
-  bool shares_locals = false;         // Call: the called code keeps the caller's locals (Macro B M98)
-  AssetOp asset = AssetOp::OpenRead;  // Asset
+  bool optional = false;                 // Comment after a mid-block '/': dropped when block skip is on
+  bool shares_locals = false;            // Call: the called code keeps the caller's locals (Macro B M98)
+  Service service = Service::AssetBind;  // Service
   SourceRange range;
   ExprId target = kNoExpr;         // Assign: a Var expression
   ExprId value = kNoExpr;          // Assign value; RepeatBegin count; Call count (none: once)
@@ -191,7 +187,7 @@ struct Stmt {
   double limit = 0;                // RepeatBegin: the largest count allowed (0: no limit of the dialect)
   std::string label;               // Jump target label; Call target; Comment text
   std::string end_label;           // CallRange
-  std::vector<DisplayItem> items;  // Display; Asset
+  std::vector<DisplayItem> items;  // Display; Service
   std::vector<CallArg> args;       // Call
 };
 

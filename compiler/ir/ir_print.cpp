@@ -203,32 +203,11 @@ std::string print(const Program& p, const SourceManager& sources) {
             out += "\n";
             break;
           }
-          case StmtKind::Input:
-          case StmtKind::ScreenSwitch:
-          case StmtKind::ScreenDefine:
-          case StmtKind::ScreenShow:
-          case StmtKind::ScreenShowWith:
-          case StmtKind::ProcessStart:
-          case StmtKind::ProcessRelease:
-          case StmtKind::ProcessWait:
-          case StmtKind::ProcessWaitUntil:
-          case StmtKind::ProcessSignal: {
-            static constexpr const char* kNames[] = {
-                "input",         "screen_switch",   "screen_define", "screen_show",        "screen_show_with",
-                "process_start", "process_release", "process_wait",  "process_wait_until", "process_signal"};
-            out += fmt::format("    {}", kNames[static_cast<int>(s.kind) - static_cast<int>(StmtKind::Input)]);
-            if (!s.label.empty()) out += fmt::format(" \"{}\"", s.label);
+          case StmtKind::Service: {
+            out += fmt::format("    service {}", service_info(s.service).name);
+            if (!s.label.empty()) out += fmt::format(" \"{}\"", json_escape(s.label));
             if (s.target != kNoExpr) out += " " + print_expr(p, s.target);
             if (s.value != kNoExpr) out += " " + print_expr(p, s.value);
-            for (const DisplayItem& item : s.items) out += " " + print_expr(p, item.value);
-            out += "\n";
-            break;
-          }
-          case StmtKind::Asset: {
-            static constexpr const char* kOps[] = {"open_read", "open_write", "define", "read",  "write",
-                                                   "close",     "close_all",  "create", "delete"};
-            out += fmt::format("    asset {}", kOps[static_cast<size_t>(s.asset)]);
-            if (!s.label.empty()) out += " " + s.label;
             for (const DisplayItem& item : s.items) out += " " + print_expr(p, item.value);
             out += "\n";
             break;

@@ -296,56 +296,40 @@ class Lowering {
     op(Op::Exec);
   }
 
-  // docs/asset.md; the operands in order, then the service (contract/services.def).
-  void asset(const ir::Stmt& s) {
-    auto operands = [&](size_t from, size_t to) {
-      for (size_t i = from; i < to && i < s.items.size(); ++i) expr(s.items[i].value);
-    };
-    auto with_file = [&](Service o) {
-      service(o);
-      u32(string(s.label));
-    };
-    switch (s.asset) {
-      case ir::AssetOp::Define:
-        for (size_t i = 1; i < s.items.size(); ++i) {
-          const ir::Expr& v = p_->exprs[s.items[i].value];
-          if (v.op == ir::ExprOp::Var) {  // an E parameter: the front end writes its index
-            service(Service::AssetBind);
-            u8(v.space);
-            u32(written_index(v).value_or(0));
-            continue;
-          }
-          expr(v.a);
-          service(v.op == ir::ExprOp::Text ? Service::AssetBindText : Service::AssetBindMem);
-          u8(v.space);
-          u8(v.op == ir::ExprOp::Text ? v.count : static_cast<uint32_t>(v.format));
-        }
-        operands(0, 1);
-        service(Service::AssetDefine);
-        break;
-      case ir::AssetOp::OpenRead:
-      case ir::AssetOp::OpenWrite:
-        operands(0, 1);
-        with_file(s.asset == ir::AssetOp::OpenWrite ? Service::AssetOpenWrite : Service::AssetOpen);
-        break;
-      case ir::AssetOp::Read:
-      case ir::AssetOp::Write: {
-        const bool at = s.items.size() > 2;
-        operands(0, 3);
-        service(s.asset == ir::AssetOp::Read ? (at ? Service::AssetReadAt : Service::AssetRead)
-                                             : (at ? Service::AssetWriteAt : Service::AssetWrite));
-        break;
+  // A Service statement: the service the front end named, its values onto the stack
+  // first (contract/services.def gives how many and in which order). Lowering expands
+  // what makes one statement several instructions (docs/ir.md, Services): the bindings
+  // before asset.define, the store after an input.*, a screen.show per field.
+  void service_stmt(const ir::Stmt& s) {
+    const ServiceInfo& info = service_info(s.service);
+    switch (info.device) {
+      case Device::Asset:  // docs/asset.md: the operands in order, then the service
+        if (s.service == Service::AssetDefine) bind(s);
+        for (size_t i = 0; i < info.pop && i < s.items.size(); ++i) expr(s.items[i].value);
+        service(s.service);
+        if (info.format == "s") u32(string(s.label));  // the file
+        return;
+      case Device::Input: return input(s);
+      case Device::Screen: return user_screen(s);
+      case Device::Process: return process(s);
+      case Device::Count: return;
+    }
+  }
+
+  // DER: each variable items[1..] added to the structure being defined.
+  void bind(const ir::Stmt& s) {
+    for (size_t i = 1; i < s.items.size(); ++i) {
+      const ir::Expr& v = p_->exprs[s.items[i].value];
+      if (v.op == ir::ExprOp::Var) {  // an E parameter: the front end writes its index
+        service(Service::AssetBind);
+        u8(v.space);
+        u32(written_index(v).value_or(0));
+        continue;
       }
-      case ir::AssetOp::Close:
-        operands(0, 1);
-        service(Service::AssetClose);
-        break;
-      case ir::AssetOp::CloseAll: service(Service::AssetCloseAll); break;
-      case ir::AssetOp::Create:
-        operands(0, 2);
-        with_file(Service::AssetCreate);
-        break;
-      case ir::AssetOp::Delete: with_file(Service::AssetDelete); break;
+      expr(v.a);
+      service(v.op == ir::ExprOp::Text ? Service::AssetBindText : Service::AssetBindMem);
+      u8(v.space);
+      u8(v.op == ir::ExprOp::Text ? v.count : static_cast<uint32_t>(v.format));
     }
   }
 
@@ -364,22 +348,34 @@ class Lowering {
     u8(text.count);
   }
 
+  // Service `s`, whose last operand is `item`: a text in quotes (its string operand), a
+  // text in memory (its byte index, then v n) or a value (the front end named `s` by it).
+  void service_with(Service s, const ir::DisplayItem& item) {
+    const ir::Expr& e = p_->exprs[item.value];
+    if (e.op == ir::ExprOp::String) {
+      service(s);
+      u32(string(p_->texts[e.text]));
+    } else if (e.op == ir::ExprOp::Text) {
+      memory_text(e, s);
+    } else {
+      expr(item.value);
+      service(s);
+    }
+  }
+
   // INP: the variable's value is offered, the answer stored back (a memory's index
   // goes first, under the value, for StoreMem); a text goes straight to memory.
   void input(const ir::Stmt& s) {
     const ir::Expr& target = p_->exprs[s.target];
-    const ir::Expr& prompt = p_->exprs[s.items[0].value];
-    const bool field = !(prompt.op == ir::ExprOp::Number && prompt.number == 0);  // else the text `label`
+    const bool field = s.service == Service::InputField || s.service == Service::InputFieldText;  // else `label`
     const bool text = target.op == ir::ExprOp::Text;
     if (target.op == ir::ExprOp::Mem) expr(target.a);
     if (field) expr(s.items[0].value);
     expr(text ? target.a : s.target);
+    service(s.service);
     if (text) {
-      service(field ? Service::InputFieldText : Service::InputText);
       u8(target.space);
       u8(target.count);
-    } else {
-      service(field ? Service::InputField : Service::InputValue);
     }
     if (!field) u32(string(s.label));
     if (target.op == ir::ExprOp::Mem) {
@@ -404,25 +400,10 @@ class Lowering {
 
   // NC-110 SCR, DEF, OUT (§5.6): the operands in order, then the service.
   void user_screen(const ir::Stmt& s) {
-    // Item i: a text in quotes goes with `with_text`, a text in memory with `with_memory`,
-    // a value is computed for `with_value`.
-    auto text_or_value = [&](size_t i, Service with_text, Service with_memory, Service with_value) {
-      const ir::Expr& e = p_->exprs[s.items[i].value];
-      if (e.op == ir::ExprOp::String) {
-        service(with_text);
-        u32(string(p_->texts[e.text]));
-      } else if (e.op == ir::ExprOp::Text) {
-        memory_text(e, with_memory);
-      } else {
-        expr(s.items[i].value);
-        service(with_value);
-      }
-    };
-    switch (s.kind) {
-      case ir::StmtKind::ScreenSwitch:
-        service(p_->exprs[s.value].number != 0 ? Service::ScreenOn : Service::ScreenOff);
-        break;
-      case ir::StmtKind::ScreenDefine: {
+    switch (s.service) {
+      case Service::ScreenDefineText:
+      case Service::ScreenDefineMem:
+      case Service::ScreenDefineValue: {
         for (size_t i = 0; i < 3; ++i) expr(s.items[i].value);  // field, row, column
         if (s.items.size() > 4)
           expr(s.items[4].value);
@@ -434,41 +415,35 @@ class Lowering {
                                      ? 256
                                      : parse_number<double>(std::string_view(s.label).substr(1)).value_or(-1);
         constant(Op::Const, Op::ConstDec, std::nullopt, attribute);
-        text_or_value(3, Service::ScreenDefineText, Service::ScreenDefineMem, Service::ScreenDefineValue);
+        service_with(s.service, s.items[3]);
         break;
       }
-      case ir::StmtKind::ScreenShow:
-        if (s.items.empty()) service(Service::ScreenShowAll);
+      case Service::ScreenShow:  // OUT n, m...: each field in turn
         for (const ir::DisplayItem& field : s.items) {
           expr(field.value);
           service(Service::ScreenShow);
         }
         break;
-      default:  // ScreenShowWith
+      case Service::ScreenShowText:
+      case Service::ScreenShowMem:
+      case Service::ScreenShowValue:  // OUT n, value
         expr(s.items[0].value);
-        text_or_value(1, Service::ScreenShowText, Service::ScreenShowMem, Service::ScreenShowValue);
+        service_with(s.service, s.items[1]);
+        break;
+      default: service(s.service);  // SCR ON, SCR OFF, OUT alone
     }
   }
 
   // NC-110 EXE, REL, WAI, SND (chapter 4): the process operand, then the service.
   void process(const ir::Stmt& s) {
-    switch (s.kind) {
-      case ir::StmtKind::ProcessStart:
+    switch (s.service) {
+      case Service::ProcessStart:
         expr(s.value);
         calls_.push_back({pc() + 2, s.label, true});  // the entry after the service's number
         service(Service::ProcessStart);
         u16(0);
         break;
-      case ir::StmtKind::ProcessRelease: service(Service::ProcessRelease); break;
-      case ir::StmtKind::ProcessWait:
-        expr(s.value);
-        service(Service::ProcessWait);
-        break;
-      case ir::StmtKind::ProcessSignal:
-        expr(s.value);
-        service(Service::ProcessSignal);
-        break;
-      default: {  // ProcessWaitUntil: a memory compared with a value (the front end)
+      case Service::ProcessWaitUntil: {  // a memory compared with a value (the front end)
         const ir::Expr& compare = p_->exprs[s.value];
         const ir::Expr& memory = p_->exprs[compare.a];
         expr(memory.a);
@@ -478,7 +453,11 @@ class Lowering {
         u8(static_cast<uint32_t>(memory.format));
         u8(compare.op == ir::ExprOp::Eq ? 1 : compare.op == ir::ExprOp::Lt ? 2 : compare.op == ir::ExprOp::Gt ? 3 : 4);
         u32(string(s.label));
+        break;
       }
+      default:  // REL; WAI n and SND n: the process first
+        if (s.value != ir::kNoExpr) expr(s.value);
+        service(s.service);
     }
   }
 
@@ -627,8 +606,9 @@ class Lowering {
     for (const ir::Stmt& s : b.stmts) {
       // A block the compiler rejected does not jump or call: where to is in doubt (a
       // dry run goes on past it, its other errors already reported).
-      if (b.has_errors && (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call ||
-                           s.kind == ir::StmtKind::CallRange || s.kind == ir::StmtKind::ProcessStart))
+      if (b.has_errors &&
+          (s.kind == ir::StmtKind::Jump || s.kind == ir::StmtKind::Call || s.kind == ir::StmtKind::CallRange ||
+           (s.kind == ir::StmtKind::Service && s.service == Service::ProcessStart)))
         continue;
       // A statement with a condition (Macro B `IF [...] THEN`) runs only when it holds.
       uint32_t unless = 0;
@@ -647,17 +627,7 @@ class Lowering {
         case ir::StmtKind::Machine: machine(b); break;
         case ir::StmtKind::Assign: assign(s); break;
         case ir::StmtKind::Display: display(s); break;
-        case ir::StmtKind::Asset: asset(s); break;
-        case ir::StmtKind::Input: input(s); break;
-        case ir::StmtKind::ScreenSwitch:
-        case ir::StmtKind::ScreenDefine:
-        case ir::StmtKind::ScreenShow:
-        case ir::StmtKind::ScreenShowWith: user_screen(s); break;
-        case ir::StmtKind::ProcessStart:
-        case ir::StmtKind::ProcessRelease:
-        case ir::StmtKind::ProcessWait:
-        case ir::StmtKind::ProcessWaitUntil:
-        case ir::StmtKind::ProcessSignal: process(s); break;
+        case ir::StmtKind::Service: service_stmt(s); break;
         case ir::StmtKind::Jump: {
           if (s.label.empty()) {
             computed_jump(unit, s, st.jumps);

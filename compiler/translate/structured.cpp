@@ -484,17 +484,12 @@ void Structured::statement(const ir::Stmt& s) {
     case ir::StmtKind::Return: return verbatim() ? machine() : ret(s);
     case ir::StmtKind::CallRange: return call_range(s);
     case ir::StmtKind::Display: return display(s);
-    case ir::StmtKind::Asset: return fail(s.range, "an ASSET file statement");
-    case ir::StmtKind::Input: return fail(s.range, "operator input (INP)");
-    case ir::StmtKind::ScreenSwitch:
-    case ir::StmtKind::ScreenDefine:
-    case ir::StmtKind::ScreenShow:
-    case ir::StmtKind::ScreenShowWith: return fail(s.range, "the user screen");
-    case ir::StmtKind::ProcessStart:
-    case ir::StmtKind::ProcessRelease:
-    case ir::StmtKind::ProcessWait:
-    case ir::StmtKind::ProcessWaitUntil:
-    case ir::StmtKind::ProcessSignal: return fail(s.range, "processes");
+    case ir::StmtKind::Service: {
+      static constexpr const char* kWhat[] = {"an ASSET file statement", "operator input (INP)", "the user screen",
+                                              "processes"};  // by Device
+      static_assert(std::size(kWhat) == kDeviceCount);
+      return fail(s.range, kWhat[static_cast<size_t>(service_info(s.service).device)]);
+    }
   }
 }
 

@@ -14,6 +14,13 @@ namespace {
 
 constexpr size_t kMaxAxisOperands = 6;  // §2.13.1: "up to 6 axes"
 
+// The service of a statement whose last operand is a text in quotes, a text in memory
+// or a value: each goes to the service its own way (compiler/lower/lower.cpp).
+Service by_form(const ir::Program& program, ir::ExprId value, Service text, Service memory, Service other) {
+  const ir::ExprOp op = program.exprs[value].op;
+  return op == ir::ExprOp::String ? text : op == ir::ExprOp::Text ? memory : other;
+}
+
 std::string kind_name(OperandKind k) {
   switch (k) {
     case OperandKind::Origin: return "an origin number 0..99";
@@ -915,35 +922,43 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       break;
     }
     case Action::Asset: {
-      s = ir::Stmt(ir::StmtKind::Asset, block_.range);
-      s.asset = sig.asset;
+      s = ir::Stmt(ir::StmtKind::Service, block_.range);
+      s.service = sig.service;
       for (const Operand& op : ops) {
         if (op.kind == OperandKind::File)
           s.label = op.name;
         else if (op.kind == OperandKind::Access)
-          s.asset = op.name == "W" ? ir::AssetOp::OpenWrite : ir::AssetOp::OpenRead;
+          s.service = op.name == "W" ? Service::AssetOpenWrite : Service::AssetOpen;
         else
           s.items.push_back({op.value, op.type});
       }
-      if (s.asset == ir::AssetOp::Close && s.items.empty()) s.asset = ir::AssetOp::CloseAll;
-      if (s.asset == ir::AssetOp::Define && s.items.size() - 1 > asset::kMaxFields)
+      // A record named: that one, not the next; CLO without a channel: every channel.
+      if (s.items.size() > 2 && s.service == Service::AssetRead) s.service = Service::AssetReadAt;
+      if (s.items.size() > 2 && s.service == Service::AssetWrite) s.service = Service::AssetWriteAt;
+      if (s.service == Service::AssetClose && s.items.empty()) s.service = Service::AssetCloseAll;
+      if (s.service == Service::AssetDefine && s.items.size() - 1 > asset::kMaxFields)
         return fail(DiagId::OperandKind, ops[asset::kMaxFields + 1].range, ops[asset::kMaxFields + 1].text,
                     kind_name(OperandKind::Binding), sig.code,
                     fmt::format("a structure binds at most {} variables (§5.3.2.2)", asset::kMaxFields));
       break;
     }
-    case Action::Input:
+    case Action::Input: {
       // The prompt in quotes (or none), or the text of a screen field; a field may show the answer.
-      s = ir::Stmt(ir::StmtKind::Input, block_.range);
+      s = ir::Stmt(ir::StmtKind::Service, block_.range);
       s.label = ops[0].name;
       s.items.push_back({ops[0].is_text ? program_.number(0, code_range) : ops[0].value, VarType::Integer});
       s.target = ops[1].value;
       if (ops.size() > 2) s.items.push_back({ops[2].value, VarType::Integer});
+      const bool text = program_.exprs[s.target].op == ir::ExprOp::Text;
+      s.service = ops[0].is_text ? (text ? Service::InputText : Service::InputValue)
+                                 : (text ? Service::InputFieldText : Service::InputField);
       break;
+    }
     case Action::Screen: {
-      s = ir::Stmt(sig.screen, block_.range);
-      if (sig.screen == ir::StmtKind::ScreenSwitch) {
-        s.value = program_.number(ops[0].name == "ON" ? 1 : 0, code_range);
+      s = ir::Stmt(ir::StmtKind::Service, block_.range);
+      s.service = sig.service;
+      if (sig.service == Service::ScreenOn) {
+        if (ops[0].name != "ON") s.service = Service::ScreenOff;
         break;
       }
       for (const Operand& op : ops) {
@@ -952,12 +967,19 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
         else
           s.items.push_back({op.value, op.type});
       }
-      if (sig.screen == ir::StmtKind::ScreenDefine) break;
+      if (sig.service == Service::ScreenDefineValue) {
+        if (s.items.size() > 3)
+          s.service =
+              by_form(program_, s.items[3].value, Service::ScreenDefineText, Service::ScreenDefineMem, s.service);
+        break;
+      }
       // OUT: fields (a constant field may have '-': inverse), at most six; with two
       // operands the second is the first's new value (§5.6.2.3, decision 61).
+      if (ops.empty()) s.service = Service::ScreenShowAll;
       if (ops.size() == 2) {
-        s = ir::Stmt(ir::StmtKind::ScreenShowWith, block_.range);
         s.items = {{ops[0].value, VarType::Integer}, {ops[1].value, ops[1].type}};
+        s.service =
+            by_form(program_, ops[1].value, Service::ScreenShowText, Service::ScreenShowMem, Service::ScreenShowValue);
       }
       if (ops.size() > 6)
         return fail(DiagId::OperandKind, ops[6].range, ops[6].text, "a screen field", sig.code,
@@ -973,8 +995,9 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
       break;
     }
     case Action::Process:
-      s = ir::Stmt(sig.screen, block_.range);
-      if (s.kind == ir::StmtKind::ProcessStart) {
+      s = ir::Stmt(ir::StmtKind::Service, block_.range);
+      s.service = sig.service;
+      if (s.service == Service::ProcessStart) {
         // A program of device MP0..MP3 (§4.1.1), read like a called one (decision 62).
         const Operand& program = ops[1];
         if (!program.device.empty() && !exe_device(program.device))
@@ -986,8 +1009,8 @@ void Reader::code_action(const CodeSignature& sig, const std::vector<Operand>& o
                           ir::UnitKind::Process});
       }
       if (!ops.empty()) s.value = ops[0].value;
-      if (s.kind == ir::StmtKind::ProcessWait && !ops[0].name.empty()) {
-        s.kind = ir::StmtKind::ProcessWaitUntil;
+      if (s.service == Service::ProcessWait && !ops[0].name.empty()) {
+        s.service = Service::ProcessWaitUntil;
         s.label = ops[0].name;
       }
       break;

@@ -1,6 +1,7 @@
 #include "settings.h"
 
 #include <algorithm>
+#include <tuple>
 
 #include "frontend/frontend.h"
 #include "support/text.h"
@@ -96,25 +97,26 @@ void read_codes(Settings& s, Diagnostics& diags) {
       code.comparison = std::string(action.substr(9, action.size() - 10));
       ok = ok && std::string_view("gt lt eq ne ge le").find(code.comparison) != std::string_view::npos &&
            code.comparison.size() == 2;
-    } else if (action.starts_with("@asset(") && action.ends_with(")")) {
-      static const std::map<std::string_view, ir::AssetOp> kOps = {
-          {"open", ir::AssetOp::OpenRead}, {"define", ir::AssetOp::Define}, {"read", ir::AssetOp::Read},
-          {"write", ir::AssetOp::Write},   {"close", ir::AssetOp::Close},   {"create", ir::AssetOp::Create},
-          {"delete", ir::AssetOp::Delete}};
-      auto it = kOps.find(action.substr(7, action.size() - 8));
-      ok = ok && it != kOps.end();
-      code.action = Action::Asset;
-      if (it != kOps.end()) code.asset = it->second;
-    } else if ((action.starts_with("@screen(") || action.starts_with("@process(")) && action.ends_with(")")) {
-      static const std::map<std::string_view, ir::StmtKind> kKinds = {
-          {"screen(switch", ir::StmtKind::ScreenSwitch},     {"screen(define", ir::StmtKind::ScreenDefine},
-          {"screen(show", ir::StmtKind::ScreenShow},         {"process(start", ir::StmtKind::ProcessStart},
-          {"process(release", ir::StmtKind::ProcessRelease}, {"process(wait", ir::StmtKind::ProcessWait},
-          {"process(signal", ir::StmtKind::ProcessSignal}};
-      auto it = kKinds.find(action.substr(1, action.size() - 2));
-      ok = ok && it != kKinds.end();
-      code.action = action.starts_with("@screen(") ? Action::Screen : Action::Process;
-      if (it != kKinds.end()) code.screen = it->second;
+    } else if ((action.starts_with("@asset(") || action.starts_with("@screen(") || action.starts_with("@process(")) &&
+               action.ends_with(")")) {
+      static const std::map<std::string_view, std::pair<Action, Service>> kServices = {
+          {"asset(open", {Action::Asset, Service::AssetOpen}},
+          {"asset(define", {Action::Asset, Service::AssetDefine}},
+          {"asset(read", {Action::Asset, Service::AssetRead}},
+          {"asset(write", {Action::Asset, Service::AssetWrite}},
+          {"asset(close", {Action::Asset, Service::AssetClose}},
+          {"asset(create", {Action::Asset, Service::AssetCreate}},
+          {"asset(delete", {Action::Asset, Service::AssetDelete}},
+          {"screen(switch", {Action::Screen, Service::ScreenOn}},
+          {"screen(define", {Action::Screen, Service::ScreenDefineValue}},
+          {"screen(show", {Action::Screen, Service::ScreenShow}},
+          {"process(start", {Action::Process, Service::ProcessStart}},
+          {"process(release", {Action::Process, Service::ProcessRelease}},
+          {"process(wait", {Action::Process, Service::ProcessWait}},
+          {"process(signal", {Action::Process, Service::ProcessSignal}}};
+      auto it = kServices.find(action.substr(1, action.size() - 2));
+      ok = ok && it != kServices.end();
+      if (it != kServices.end()) std::tie(code.action, code.service) = it->second;
     } else if (action.starts_with("@")) {
       static const std::map<std::string_view, Action> kActions = {
           {"@repeat", Action::Repeat}, {"@end_repeat", Action::EndRepeat},

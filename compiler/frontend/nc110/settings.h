@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "contract/program_semantics.h"
+#include "contract/services.h"
 #include "contract/system_vars.h"
 #include "contract/variables.h"
 #include "ir/ir.h"
@@ -101,12 +102,11 @@ struct CodeSignature {
   std::string code;
   std::vector<OperandItem> operands;
   Action action = Action::Function;
-  Fn fn = Fn::Count;                          // Function
-  std::string comparison;                     // JumpIf: gt lt eq ne ge le
-  ir::AssetOp asset = ir::AssetOp::OpenRead;  // Asset
-  ir::StmtKind screen =
-      ir::StmtKind::ScreenSwitch;  // Screen: ScreenSwitch, ScreenDefine or ScreenShow;
-                                   // Process: ProcessStart, ProcessRelease, ProcessWait or ProcessSignal
+  Fn fn = Fn::Count;       // Function
+  std::string comparison;  // JumpIf: gt lt eq ne ge le
+  // Asset, Screen, Process: the service the code calls, before its operands refine it
+  // (OPN W: asset.open_write; OUT with none: screen.show_all).
+  Service service = Service::AssetBind;
   std::string meaning;
 };
 
