@@ -369,7 +369,9 @@ class Machine final : public BlockMachine {
   void cycle();
   void repeat_cycle();  // ISO: L (or K) holes
   void iso_cycle();     // one ISO hole
-  void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program);
+  // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
+  void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
+                  std::optional<double> pitch = std::nullopt);
   std::optional<double> initial_level_;  // ISO: the drilling axis where the cycle mode began (G98 returns there)
   void cycle_registers();
   void nc110_cycle_registers(bool definition);
@@ -377,7 +379,7 @@ class Machine final : public BlockMachine {
   [[nodiscard]] bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
   [[nodiscard]] bool nc110_levels_ok(const CyclePattern& pattern);
   [[nodiscard]] bool nc110_registers_ok(const CyclePattern& pattern);
-  void tap_feed(const AxisValues& t, bool out);
+  void tap_feed(const AxisValues& t, bool out, int d, std::optional<double> pitch);
   void measure();
 
   const ProgramSemantics& sem_;

@@ -110,7 +110,8 @@ void Machine::iso_cycle() {
 // A hole's steps (cycle_steps.h): `hole` is its position, `d` the drilling axis, `u`
 // the axis of a shift; in the program's coordinates where `program` (NC-110's), else
 // the machine's.
-void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program) {
+void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
+                         std::optional<double> pitch) {
   using Kind = cycle::Step::Kind;
   auto here = [&] { return program ? to_frame(machine_) : machine_; };
   bool over = false;
@@ -123,7 +124,7 @@ void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues
       case Kind::Rapid: rapid(p); break;
       case Kind::Feed: linear(p); break;
       case Kind::Tap:
-      case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut); break;
+      case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut, d, pitch); break;
       case Kind::Over:
         over = true;
         p = hole;
@@ -380,15 +381,15 @@ void Machine::nc110_cycle() {
 
   cycle::Nc110Hole h{to_frame(machine_)[d], *cycle_.r2, pecks, 0, spindle_direction_};
   if (pattern.dwell || (n && *n > 1 && !pecks.unloading())) h.dwell = timer_dwell();  // TMR's, read where it is used
-  hole_steps(cycle::nc110_hole(pattern, h), p, d, d, true);
+  hole_steps(cycle::nc110_hole(pattern, h), p, d, d, true, cycle_.pitch);
 }
 
-void Machine::tap_feed(const AxisValues& t, bool out) {
+void Machine::tap_feed(const AxisValues& t, bool out, int d, std::optional<double> pitch) {
   // G84: with a spindle encoder and K, a move synchronised with the spindle at the
   // pitch K; else at F. The way out runs at RMS percent of the speed (§2.10.3).
   // RMS 0 and K without an encoder were refused before the hole.
   double percent = system_value(SysVar::TapReturn);
-  if (cycle_.pitch) {
+  if (pitch) {
     double rpm = spindle_rpm();
     if (rpm <= 0) report(DiagId::ThreadNoSpindle, 0);
     if (!path_allowed({machine_, t})) return move_to(t);
@@ -398,9 +399,9 @@ void Machine::tap_feed(const AxisValues& t, bool out) {
       e.a = speed_ * scale;
       emit(e);
     }
-    if (rpm > 0) advance_clock(60 * std::fabs(t[cycle_.axis] - machine_[cycle_.axis]) / (*cycle_.pitch * rpm * scale));
+    if (rpm > 0) advance_clock(60 * std::fabs(t[d] - machine_[d]) / (*pitch * rpm * scale));
     Event e = motion_event(EventKind::Thread, t);
-    e.a = to_program(*cycle_.pitch);
+    e.a = to_program(*pitch);
     emit(e);
     move_to(t);
     if (out && scale != 1) {
