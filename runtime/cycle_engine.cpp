@@ -19,10 +19,7 @@ std::unique_ptr<Machine::CycleEngine> Machine::CycleEngine::make(Machine& m, con
 
 void Machine::OneLevelCycles::block(bool drills) {
   if (m_.modal_.plane.w < 0) {  // pp G14-G16 may select two axes with none along their normal
-    if (drills)
-      m_.report(
-          DiagId::PlaneState, 0, "canned cycle " + m_.sem_.cycles[m_.modal_.cycle].name,
-          fmt::format("plane {}, which has no axis along its normal to drill along,", plane_name(m_.modal_.plane)));
+    if (drills) no_drilling_axis();
   } else if (drills) {
     drill();
   } else {
@@ -30,14 +27,20 @@ void Machine::OneLevelCycles::block(bool drills) {
   }
 }
 
+void Machine::OneLevelCycles::no_drilling_axis() {
+  m_.report(DiagId::PlaneState, 0, "canned cycle " + m_.sem_.cycles[m_.modal_.cycle].name,
+            fmt::format("plane {}, which has no axis along its normal to drill along,", plane_name(m_.modal_.plane)));
+}
+
 void Machine::OneLevelCycles::registers() {
+  Machine& m = m_;
   // The cycle registers stay in force while the cycle is active (S-7.5); any block
   // may change them, the cycle runs only in blocks with a dimension word.
-  const char depth_letter = kAxisLetters[m_.modal_.plane.w];
-  if (m_.has(depth_letter)) registers_.depth = m_.word(depth_letter);
-  if (auto v = m_.word_if(m_.conv_.cycle_level_word)) registers_.level = v;
-  if (auto v = m_.word_if(m_.conv_.dwell_word)) registers_.dwell = v;
-  if (auto v = m_.word_if(m_.conv_.peck_word)) registers_.peck = v;
+  const char depth_letter = kAxisLetters[m.modal_.plane.w];
+  if (m.has(depth_letter)) registers_.depth = m.word(depth_letter);
+  if (auto v = m.word_if(m.conv_.cycle_level_word)) registers_.level = v;
+  if (auto v = m.word_if(m.conv_.dwell_word)) registers_.dwell = v;
+  if (auto v = m.word_if(m.conv_.peck_word)) registers_.peck = v;
 }
 
 }  // namespace ncc

@@ -50,6 +50,7 @@ class Machine::OneLevelCycles : public CycleEngine {
  protected:
   virtual void drill() = 0;  // the block's hole (or holes)
   void registers();          // the block's words into the registers
+  void no_drilling_axis();   // the plane has no axis along its normal (pp G14-G16)
 
   struct Registers {
     std::optional<double> depth, level, dwell, peck;  // program units as written

@@ -9,68 +9,69 @@
 namespace ncc {
 
 void Machine::GostCycles::drill() {
-  const CyclePattern& pattern = m_.sem_.cycles[m_.modal_.cycle];
+  Machine& m = m_;
+  const CyclePattern& pattern = m.sem_.cycles[m.modal_.cycle];
   const std::string name = "canned cycle " + pattern.name;
-  const int d = m_.modal_.plane.w;  // the drilling axis: perpendicular to the plane
+  const int d = m.modal_.plane.w;  // the drilling axis: perpendicular to the plane
   const char depth_letter = kAxisLetters[d];
   registers();
-  AxisValues hole = m_.target();
-  hole[d] = m_.machine_[d];
+  AxisValues hole = m.target();
+  hole[d] = m.machine_[d];
   bool ok = true;
   if (!registers_.depth) {
-    m_.report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, depth_letter));
+    m.report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, depth_letter));
     ok = false;
   }
   if (!registers_.level) {
-    m_.report(DiagId::CycleNoRLevel, 0, pattern.name);
+    m.report(DiagId::CycleNoRLevel, 0, pattern.name);
     ok = false;
   }
   if (ok && pattern.in == CyclePattern::In::Peck) {
     if (!registers_.peck) {
-      m_.report(DiagId::CycleNoPeck, 0, pattern.name, m_.conv_.peck_word ? std::string(1, m_.conv_.peck_word) : "Q");
+      m.report(DiagId::CycleNoPeck, 0, pattern.name, m.conv_.peck_word ? std::string(1, m.conv_.peck_word) : "Q");
       ok = false;
     } else if (*registers_.peck <= 0) {
-      m_.report(DiagId::PeckNotPositive, m_.conv_.peck_word, "peck increment", four_decimals(*registers_.peck),
-                "greater than zero", pattern.name);
+      m.report(DiagId::PeckNotPositive, m.conv_.peck_word, "peck increment", four_decimals(*registers_.peck),
+               "greater than zero", pattern.name);
       ok = false;
     }
   }
   if (ok && pattern.dwell && !registers_.dwell) {
-    m_.report(DiagId::CycleNoDwell, 0, pattern.name, m_.dwell_address());
+    m.report(DiagId::CycleNoDwell, 0, pattern.name, m.dwell_address());
     ok = false;
   } else if (ok && pattern.dwell && *registers_.dwell < 0) {
-    m_.report(DiagId::DwellNegative, m_.conv_.dwell_word, four_decimals(*registers_.dwell));
+    m.report(DiagId::DwellNegative, m.conv_.dwell_word, four_decimals(*registers_.dwell));
     ok = false;
   }
-  if (ok && pattern.in == CyclePattern::In::SpindleFeed && m_.spindle_direction_ == 0) {
-    m_.report(DiagId::CycleNoSpindle, 0, pattern.name);
+  if (ok && pattern.in == CyclePattern::In::SpindleFeed && m.spindle_direction_ == 0) {
+    m.report(DiagId::CycleNoSpindle, 0, pattern.name);
     ok = false;
   }
-  if (!ok || !m_.need_feed(name.c_str(), hole)) {
-    m_.move_to(hole);
+  if (!ok || !m.need_feed(name.c_str(), hole)) {
+    m.move_to(hole);
     return;
   }
   // G90: R and the depth are coordinates; G91: R is measured from the initial level
   // and the depth from R.
   cycle::Hole h;
-  h.initial = h.current = m_.machine_[d];
-  AxisValues off = m_.target_frame();
+  h.initial = h.current = m.machine_[d];
+  AxisValues off = m.target_frame();
   h.level =
-      m_.modal_.absolute ? m_.length_units(*registers_.level) + off[d] : h.current + m_.length_units(*registers_.level);
+      m.modal_.absolute ? m.length_units(*registers_.level) + off[d] : h.current + m.length_units(*registers_.level);
   h.bottom =
-      m_.modal_.absolute ? m_.length_units(*registers_.depth) + off[d] : h.level + m_.length_units(*registers_.depth);
+      m.modal_.absolute ? m.length_units(*registers_.depth) + off[d] : h.level + m.length_units(*registers_.depth);
   if (pattern.in == CyclePattern::In::Peck) {
-    h.peck = m_.length_units(*registers_.peck);
+    h.peck = m.length_units(*registers_.peck);
     double pecks = std::ceil(std::fabs(h.bottom - h.level) / *h.peck);
     if (pecks > cycle::kMaxPecks) {
-      m_.report(DiagId::CyclePecks, m_.conv_.peck_word, pattern.name, four_decimals(pecks),
-                four_decimals(*registers_.peck), cycle::kMaxPecks);
+      m.report(DiagId::CyclePecks, m.conv_.peck_word, pattern.name, four_decimals(pecks),
+               four_decimals(*registers_.peck), cycle::kMaxPecks);
       return;
     }
   }
-  if (pattern.dwell) h.dwell = *registers_.dwell * m_.conv_.dwell_seconds_per_unit;
-  h.direction = m_.spindle_direction_;
-  m_.hole_steps(cycle::hole(pattern, h), hole, d, d, false);
+  if (pattern.dwell) h.dwell = *registers_.dwell * m.conv_.dwell_seconds_per_unit;
+  h.direction = m.spindle_direction_;
+  m.hole_steps(cycle::hole(pattern, h), hole, d, d, false);
 }
 
 }  // namespace ncc
