@@ -911,9 +911,9 @@ void Machine::apply_codes(Timing timing) {
     if (code.timing != timing) continue;
     block_.code = request.codes[i];
     // Messages name a three-letter code as it is written: (DTL).
-    block_.code_name = !code.name.empty() && std::isdigit(static_cast<unsigned char>(code.name.back()))
-                           ? code.name
-                           : "(" + code.name + ")";
+    block_.code_name = code.name;
+    if (code.name.empty() || !std::isdigit(static_cast<unsigned char>(code.name.back())))
+      block_.code_name = "(" + code.name + ")";
     for (const FnCall& call : code.calls) {
       // A block-only code's group comes back after the block (G53 works differently:
       // it only changes the frame of this block's words).
