@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "cycle_engine.h"
 #include "support/text.h"
 
 namespace ncc {
@@ -19,6 +20,14 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
       events_wanted_(trace.wants_events()), issues_(issues),
       path_(trace, &Machine::path_report, this, comp_rules(semantics.conventions.cutter)) {
   gtl_init();
+  cycles_.reset(CycleEngine::make(*this, conv_).release());
+}
+
+void Machine::CycleEngineDelete::operator()(CycleEngine* e) const { std::default_delete<CycleEngine>()(e); }
+
+void Machine::cancel_cycle() {
+  modal_.cycle = -1;
+  cycles_->cancelled();
 }
 
 // NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
@@ -99,13 +108,12 @@ void Machine::reset_state() {
   no_feed_reported_ = false;
   if (conv_.initial_feed > 0) feed_ = conv_.initial_feed;
   last_rotation_ = 0;
-  initial_level_.reset();
   helix_pitch_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
   if (!conv_.corrector_in_tool_word) select_offset(0);
   spindle_direction_ = 0;
-  cycle_ = {};
+  cycles_->cancelled();
   parabola_middle_.reset();
   limited_ = {};
   zones_ = {};
@@ -295,7 +303,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
   };
   // NC-110 §2.8.9 note 4: with a canned cycle active, these need it cancelled first.
   auto cycle_active = [&] {
-    if (modal_.cycle < 0 || !conv_.cycle_needs_cancel || !emit_events) return false;
+    if (modal_.cycle < 0 || !emit_events || !cycles_->needs_cancel()) return false;
     report_code(DiagId::CycleActive, block_.code_name, sem_.cycles[modal_.cycle].name);
     return true;
   };
@@ -325,12 +333,8 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
                     fmt::format("{} cannot stand inside a spline: only G06 points and the G00 or G01 lead-out",
                                 block_.code_name));
       modal_.motion = call.fn;
-      // ISO: a code of the motion group ends the canned cycle of an earlier block.
-      if (conv_.fanuc_cycles && emit_events && modal_.cycle >= 0 && !block_.cycle_set) {
-        modal_.cycle = -1;
-        cycle_ = {};
-        initial_level_.reset();
-      }
+      // A code of the motion group may end the canned cycle of an earlier block (ISO).
+      if (modal_.cycle >= 0 && emit_events && !block_.cycle_set && cycles_->motion_ends_cycle()) cancel_cycle();
       break;
     case Fn::Dwell: block_.dwell = true; break;
     case Fn::SetPosition:
@@ -427,21 +431,12 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         }
       }
       break;
-    case Fn::CycleCancel:
-      modal_.cycle = -1;
-      cycle_ = {};
-      initial_level_.reset();
-      break;
+    case Fn::CycleCancel: cancel_cycle(); break;
     case Fn::Cycle:
       if (cycle_active()) break;
       modal_.cycle = call.arg;
       block_.cycle_set = true;
-      // NC-110: the cycle's own block defines it anew (§2.8.9 note 1); GOST keeps the
-      // registers (S-7.5).
-      if (conv_.cycle_defines_only) {
-        cycle_ = {};
-        cycle_.defined_here = true;
-      }
+      cycles_->selected();  // NC-110: defined anew (§2.8.9 note 1); GOST: the registers stay (S-7.5)
       break;
     // Stops come after everything else of the block (Table 8: "after the commands of
     // the block are executed").
@@ -916,9 +911,9 @@ void Machine::apply_codes(Timing timing) {
     if (code.timing != timing) continue;
     block_.code = request.codes[i];
     // Messages name a three-letter code as it is written: (DTL).
-    block_.code_name = !code.name.empty() && std::isdigit(static_cast<unsigned char>(code.name.back()))
-                           ? code.name
-                           : "(" + code.name + ")";
+    block_.code_name = code.name;
+    if (code.name.empty() || !std::isdigit(static_cast<unsigned char>(code.name.back())))
+      block_.code_name = "(" + code.name + ")";
     for (const FnCall& call : code.calls) {
       // A block-only code's group comes back after the block (G53 works differently:
       // it only changes the frame of this block's words).
@@ -1045,17 +1040,7 @@ void Machine::action() {
 
   if (modal_.cycle >= 0) {
     const bool drills = axes || (conv_.cycle_level_word && has(conv_.cycle_level_word));
-    if (conv_.cycle_two_levels) {
-      nc110_cycle();
-    } else if (modal_.plane.w < 0) {  // pp G14-G16 may select two axes with none along their normal
-      if (drills)
-        report(DiagId::PlaneState, 0, "canned cycle " + sem_.cycles[modal_.cycle].name,
-               fmt::format("plane {}, which has no axis along its normal to drill along,", plane_name(modal_.plane)));
-    } else if (drills) {
-      conv_.fanuc_cycles ? repeat_cycle() : cycle();
-    } else {
-      cycle_registers();
-    }
+    cycles_->block(drills);
     if (block_.dwell_end) dwell_seconds(timer_dwell());
     return;
   }

@@ -4,7 +4,8 @@
 // it and emits trace events. Its parts: machine.cpp (the block cycle and modal
 // functions), machine_frame.cpp (origins, transforms, limits and protected zones),
 // machine_motion.cpp (moves, arcs, threads, splines, dwells, time),
-// machine_cycles.cpp (canned and measuring cycles), machine_system.cpp (system
+// machine_cycles.cpp (what the canned cycles share, the measuring cycles) with
+// cycle_engine.h (each dialect family's canned cycles), machine_system.cpp (system
 // variables).
 #pragma once
 
@@ -134,16 +135,6 @@ class Machine final : public BlockMachine {
     int side = 0;
     double radius = 0;
     AxisValues length{};  // per axis
-  };
-
-  struct Cycle {
-    std::optional<double> depth, level, dwell, peck;  // program units as written (GOST)
-    // NC-110: the drilling axis and its levels, program coordinates.
-    int axis = -1;
-    std::optional<double> r1, r2, bottom;
-    std::optional<double> step, factor, minimum;  // G83 I K J
-    std::optional<double> pitch;                  // G84 K (spindle encoder)
-    bool defined_here = false;                    // the cycle's own block
   };
 
   // A protected zone (NC-110 DSA): an open rectangle in two axes, machine coordinates.
@@ -365,19 +356,22 @@ class Machine final : public BlockMachine {
   void gtl_unit_end();
   uint64_t gtl_bytes() const;
 
-  // Cycles (machine_cycles.cpp).
-  void cycle();
-  void repeat_cycle();  // ISO: L (or K) holes
-  void iso_cycle();     // one ISO hole
-  void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program);
-  std::optional<double> initial_level_;  // ISO: the drilling axis where the cycle mode began (G98 returns there)
-  void cycle_registers();
-  void nc110_cycle_registers(bool definition);
-  void nc110_cycle();
-  [[nodiscard]] bool nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written);
-  [[nodiscard]] bool nc110_levels_ok(const CyclePattern& pattern);
-  [[nodiscard]] bool nc110_registers_ok(const CyclePattern& pattern);
-  void tap_feed(const AxisValues& t, bool out);
+  // Canned cycles: the program's engine (cycle_engine.h), chosen once; the steps of a
+  // hole and the tap's moves are shared (machine_cycles.cpp).
+  class CycleEngine;
+  class OneLevelCycles;
+  class GostCycles;
+  class IsoCycles;
+  class Nc110Cycles;
+  struct CycleEngineDelete {
+    void operator()(CycleEngine* e) const;
+  };
+  std::unique_ptr<CycleEngine, CycleEngineDelete> cycles_;
+  void cancel_cycle();  // the active cycle ends
+  // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
+  void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
+                  std::optional<double> pitch = std::nullopt);
+  void tap_feed(const AxisValues& t, bool out, int d, std::optional<double> pitch);
   void measure();
 
   const ProgramSemantics& sem_;
@@ -438,9 +432,8 @@ class Machine final : public BlockMachine {
   int corrector_selected_ = 0;
   int tool_loaded_ = 0;
   int offset_number_ = 0;
-  int spindle_direction_ = 0;  // the last direction set (canned cycles restart the spindle in it)
-  std::string motion_name_;    // the code that set the motion group, for messages
-  Cycle cycle_;
+  int spindle_direction_ = 0;                  // the last direction set (canned cycles restart the spindle in it)
+  std::string motion_name_;                    // the code that set the motion group, for messages
   std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola
   BlockState block_;
 

@@ -1,4 +1,5 @@
-// Canned cycles (GOST 20999 Table 6; NC-110 §2.8.9) and the NC-110 measuring cycles
+// What every dialect's canned cycles share (a hole's steps, the tap's moves; each
+// dialect family's engine is in cycle_engine.h) and the NC-110 measuring cycles
 // G72-G74 (§2.8.12) against a simulated probe.
 #include <cmath>
 #include <limits>
@@ -9,108 +10,11 @@
 
 namespace ncc {
 
-namespace {
-
-constexpr double kUnloadClearance = 1;  // mm: G83 goes back to 1 mm above the last bottom (§2.8.9.2)
-
-}  // namespace
-
-// ---- GOST 20999 ---------------------------------------------------------------------
-
-void Machine::cycle_registers() {
-  // The cycle registers stay in force while the cycle is active (S-7.5); any block
-  // may change them, the cycle runs only in blocks with a dimension word.
-  const char depth_letter = kAxisLetters[modal_.plane.w];
-  if (has(depth_letter)) cycle_.depth = word(depth_letter);
-  if (auto v = word_if(conv_.cycle_level_word)) cycle_.level = v;
-  if (auto v = word_if(conv_.dwell_word)) cycle_.dwell = v;
-  if (auto v = word_if(conv_.peck_word)) cycle_.peck = v;
-}
-
-void Machine::repeat_cycle() {
-  int count = 1;
-  for (char letter : conv_.cycle_repeat_words) {
-    if (!has(letter)) continue;
-    const double v = word(letter);
-    const std::optional<int> n = whole_in(v, 0, 9999);
-    if (!n) {
-      report(DiagId::RepeatCount, letter, shortest(v), 9999);
-      return;
-    }
-    count = *n;
-    break;
-  }
-  if (count == 0) cycle_registers();  // L0: the cycle's words are stored, no hole is made
-  for (int i = 0; i < count && !block_.error; ++i) iso_cycle();
-}
-
-void Machine::iso_cycle() {
-  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
-  using In = CyclePattern::In;
-  const std::string name = "canned cycle " + pattern.name;
-  const int d = modal_.plane.w;  // the drilling axis
-  const int u = modal_.plane.u;  // G76/G87 shift along the plane's first axis
-  cycle_registers();
-  AxisValues hole = target();
-  hole[d] = machine_[d];
-  bool ok = true;
-  if (!cycle_.depth) ok = (report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, kAxisLetters[d])), false);
-  if (!cycle_.level) ok = (report(DiagId::CycleNoRLevel, 0, pattern.name), false);
-  const bool pecks = pattern.in == In::Peck || pattern.in == In::ChipBreak;
-  const bool shifts = pattern.bottom == CyclePattern::Bottom::OrientShift;
-  if (ok && pecks && !cycle_.peck) ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q"), false);
-  if (ok && (pecks || (cycle_.peck && pattern.in != In::Feed && !shifts)) && cycle_.peck && *cycle_.peck <= 0)
-    ok = (report(DiagId::PeckNotPositive, 'Q', "peck depth", four_decimals(*cycle_.peck), "greater than zero",
-                 pattern.name),
-          false);
-  if (ok && shifts && !cycle_.peck)
-    ok = (report(DiagId::CycleNoPeck, 0, pattern.name, "Q (the shift off the wall)"), false);
-  const double dwell = pattern.dwell && cycle_.dwell ? *cycle_.dwell : 0;
-  if (ok && dwell < 0) ok = (report(DiagId::DwellNegative, 'P', four_decimals(dwell)), false);
-  if (!ok || !need_feed(name.c_str(), hole)) {
-    move_to(hole);
-    return;
-  }
-  // G90: R and the bottom are coordinates; G91: R from the initial level, the bottom
-  // from R (§8.23). The initial level is where the tool stood when the cycle mode
-  // began (§8.21: "the position before the cycle").
-  if (!initial_level_) initial_level_ = machine_[d];
-  cycle::Hole h;
-  h.initial = *initial_level_;
-  h.current = machine_[d];
-  const AxisValues off = target_frame();
-  h.level = modal_.absolute ? length_units(*cycle_.level) + off[d] : h.initial + length_units(*cycle_.level);
-  h.bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : h.level + length_units(*cycle_.depth);
-  if (pattern.in == In::Back && h.bottom < h.level) {
-    // §8.27: G87 bores from R up to Z, so Z lies above R.
-    report(DiagId::CycleDefinition, 0,
-           fmt::format("canned cycle G87 bores upwards from R: the bottom {} must lie above R {}",
-                       four_decimals(to_program(h.bottom - off[d])), four_decimals(to_program(h.level - off[d]))));
-    move_to(hole);
-    return;
-  }
-  if (pecks || (pattern.in == In::TapCw || pattern.in == In::TapCcw)) {
-    if (cycle_.peck) {
-      h.peck = length_units(*cycle_.peck);
-      const double count = std::ceil(std::fabs(h.bottom - h.level) / *h.peck - 1e-9);
-      if (count > cycle::kMaxPecks) {
-        report(DiagId::CyclePecks, 'Q', pattern.name, four_decimals(count), four_decimals(*cycle_.peck),
-               cycle::kMaxPecks);
-        return;
-      }
-    }
-  }
-  h.dwell = dwell;
-  h.shift = shifts ? length_units(*cycle_.peck) * conv_.boring_shift : 0;
-  h.return_level = modal_.cycle_return_level;
-  h.direction = spindle_direction_ ? spindle_direction_ : 1;
-  hole_steps(cycle::iso_hole(pattern, h, conv_), hole, d, u, false);
-}
-
 // A hole's steps (cycle_steps.h): `hole` is its position, `d` the drilling axis, `u`
 // the axis of a shift; in the program's coordinates where `program` (NC-110's), else
 // the machine's.
-void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program) {
+void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
+                         std::optional<double> pitch) {
   using Kind = cycle::Step::Kind;
   auto here = [&] { return program ? to_frame(machine_) : machine_; };
   bool over = false;
@@ -123,7 +27,7 @@ void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues
       case Kind::Rapid: rapid(p); break;
       case Kind::Feed: linear(p); break;
       case Kind::Tap:
-      case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut); break;
+      case Kind::TapOut: tap_feed(p, s.kind == Kind::TapOut, d, pitch); break;
       case Kind::Over:
         over = true;
         p = hole;
@@ -150,245 +54,12 @@ void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues
   }
 }
 
-void Machine::cycle() {
-  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
-  const std::string name = "canned cycle " + pattern.name;
-  const int d = modal_.plane.w;  // the drilling axis: perpendicular to the plane
-  const char depth_letter = kAxisLetters[d];
-  cycle_registers();
-  AxisValues hole = target();
-  hole[d] = machine_[d];
-  bool ok = true;
-  if (!cycle_.depth) {
-    report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, depth_letter));
-    ok = false;
-  }
-  if (!cycle_.level) {
-    report(DiagId::CycleNoRLevel, 0, pattern.name);
-    ok = false;
-  }
-  if (ok && pattern.in == CyclePattern::In::Peck) {
-    if (!cycle_.peck) {
-      report(DiagId::CycleNoPeck, 0, pattern.name, conv_.peck_word ? std::string(1, conv_.peck_word) : "Q");
-      ok = false;
-    } else if (*cycle_.peck <= 0) {
-      report(DiagId::PeckNotPositive, conv_.peck_word, "peck increment", four_decimals(*cycle_.peck),
-             "greater than zero", pattern.name);
-      ok = false;
-    }
-  }
-  if (ok && pattern.dwell && !cycle_.dwell) {
-    report(DiagId::CycleNoDwell, 0, pattern.name, dwell_address());
-    ok = false;
-  } else if (ok && pattern.dwell && *cycle_.dwell < 0) {
-    report(DiagId::DwellNegative, conv_.dwell_word, four_decimals(*cycle_.dwell));
-    ok = false;
-  }
-  if (ok && pattern.in == CyclePattern::In::SpindleFeed && spindle_direction_ == 0) {
-    report(DiagId::CycleNoSpindle, 0, pattern.name);
-    ok = false;
-  }
-  if (!ok || !need_feed(name.c_str(), hole)) {
-    move_to(hole);
-    return;
-  }
-  // G90: R and the depth are coordinates; G91: R is measured from the initial level
-  // and the depth from R.
-  cycle::Hole h;
-  h.initial = h.current = machine_[d];
-  AxisValues off = target_frame();
-  h.level = modal_.absolute ? length_units(*cycle_.level) + off[d] : h.current + length_units(*cycle_.level);
-  h.bottom = modal_.absolute ? length_units(*cycle_.depth) + off[d] : h.level + length_units(*cycle_.depth);
-  if (pattern.in == CyclePattern::In::Peck) {
-    h.peck = length_units(*cycle_.peck);
-    double pecks = std::ceil(std::fabs(h.bottom - h.level) / *h.peck);
-    if (pecks > cycle::kMaxPecks) {
-      report(DiagId::CyclePecks, conv_.peck_word, pattern.name, four_decimals(pecks), four_decimals(*cycle_.peck),
-             cycle::kMaxPecks);
-      return;
-    }
-  }
-  if (pattern.dwell) h.dwell = *cycle_.dwell * conv_.dwell_seconds_per_unit;
-  h.direction = spindle_direction_;
-  hole_steps(cycle::hole(pattern, h), hole, d, d, false);
-}
-
-// ---- NC-110 -------------------------------------------------------------------------
-
-void Machine::nc110_cycle_registers(bool definition) {
-  // R words: R1 then R2; one R is both (§2.8.9.4). Levels become program coordinates
-  // where they are written: G91 measures R from the axis' position, the depth from R1.
-  const int d = cycle_.axis;
-  const double here = to_frame(machine_)[d];
-  const bool absolute = modal_.absolute;
-  auto level = [&](double v) { return absolute ? axis_units(d, v) : here + axis_units(d, v); };
-  if (auto r1 = word_if('R')) {
-    cycle_.r1 = level(*r1);
-    cycle_.r2 = has_slot(second_slot('R')) ? level(slot_value(second_slot('R'))) : *cycle_.r1;
-  } else if (definition) {
-    cycle_.r1 = cycle_.r2 = here;  // no R: the level the tool is at (decision 13)
-  }
-  if (has(kAxisLetters[d])) {
-    double v = axis_units(d, word(kAxisLetters[d]));
-    cycle_.bottom = absolute ? v : *cycle_.r1 + v;
-  }
-  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
-  if (pattern.in == CyclePattern::In::Peck) {
-    if (auto v = word_if(conv_.peck_word)) cycle_.step = length_units(*v);
-    if (auto v = word_if(conv_.peck_factor_word)) cycle_.factor = *v;
-    if (auto v = word_if(conv_.peck_minimum_word)) cycle_.minimum = length_units(*v);
-  }
-  if (pattern.bottom == CyclePattern::Bottom::Reverse)
-    if (auto v = word_if(conv_.tap_pitch_word)) cycle_.pitch = length_units(*v);
-}
-
-bool Machine::nc110_cycle_definition(const CyclePattern& pattern, const std::vector<int>& written) {
-  const std::string& name = pattern.name;
-  if (written.size() != 1) {
-    report(
-        DiagId::CycleDefinition, 0,
-        written.empty()
-            ? fmt::format("{} needs the hole's depth: an axis word whose letter names the drilling axis", name)
-            : fmt::format(
-                  "the block of {} holds the depth and no other axis: the holes' positions come in the blocks after it",
-                  name));
-    return false;
-  }
-  cycle_.axis = written[0];
-  nc110_cycle_registers(true);
-  if (pattern.in == CyclePattern::In::Peck && !cycle_.step) {
-    report(DiagId::CycleNoPeck, 0, name, std::string(1, conv_.peck_word));
-    return false;
-  }
-  return nc110_levels_ok(pattern) && nc110_registers_ok(pattern);
-}
-
-bool Machine::nc110_registers_ok(const CyclePattern& pattern) {
-  // Checked where they are written: in the cycle's block and in any hole's.
-  auto wrong = [&](char letter, const char* what, double v, const char* must) {
-    report(DiagId::PeckNotPositive, letter, fmt::format("the {} {}", what, letter), shortest(v), must, pattern.name);
-    return false;
-  };
-  if (pattern.in == CyclePattern::In::Peck) {
-    if (cycle_.step && *cycle_.step <= 0)
-      return wrong(conv_.peck_word, "peck increment", to_program(*cycle_.step), "greater than zero");
-    if (cycle_.factor && *cycle_.factor <= 0)
-      return wrong(conv_.peck_factor_word, "peck factor", *cycle_.factor, "greater than zero");
-    if (cycle_.minimum && *cycle_.minimum < 0)
-      return wrong(conv_.peck_minimum_word, "minimum peck", to_program(*cycle_.minimum), "zero or more");
-  }
-  if (cycle_.pitch && *cycle_.pitch <= 0)
-    return wrong(conv_.tap_pitch_word, "tapping pitch", to_program(*cycle_.pitch), "greater than zero");
-  if (cycle_.pitch && !config_.spindle_encoder) {
-    report(DiagId::ThreadEncoder, conv_.tap_pitch_word, pattern.name + " with K");
-    return false;
-  }
-  return true;
-}
-
-bool Machine::nc110_levels_ok(const CyclePattern& pattern) {
-  const int d = cycle_.axis;
-  const char letter = kAxisLetters[d];
-  if (*cycle_.bottom >= *cycle_.r1) {
-    report(DiagId::CycleDefinition, letter,
-           fmt::format("the hole's bottom {}{} is not below R1 {}: {} drills from R1 towards minus {}", letter,
-                       four_decimals(program_axis(d, *cycle_.bottom)), four_decimals(program_axis(d, *cycle_.r1)),
-                       pattern.name, letter));
-    return false;
-  }
-  if (*cycle_.r2 < *cycle_.r1) {
-    report_slot(DiagId::CycleDefinition, second_slot('R'),
-                fmt::format("R2 {} lies below R1 {}: R2, the level the tool returns to, must not lie below R1",
-                            four_decimals(program_axis(d, *cycle_.r2)), four_decimals(program_axis(d, *cycle_.r1))));
-    return false;
-  }
-  return true;
-}
-
-void Machine::nc110_cycle() {
-  const CyclePattern& pattern = sem_.cycles[modal_.cycle];
-  const std::string& name = pattern.name;
-  std::vector<int> written;
-  for (char c : conv_.axes)
-    if (has(c)) written.push_back(axis_index(c));
-
-  // The cycle's block stores it; the depth word's letter names the drilling axis
-  // (§2.8.9 note 1). A definition with an error leaves no cycle active.
-  if (cycle_.defined_here) {
-    cycle_.defined_here = false;
-    if (!nc110_cycle_definition(pattern, written)) modal_.cycle = -1;
-    return;
-  }
-
-  const int d = cycle_.axis;
-  nc110_cycle_registers(false);
-  bool hole = false;
-  for (int a : written) hole = hole || a != d;
-  if (!hole) return;  // new levels only
-
-  // Per hole (§2.8.9.4): the position at the height the tool is at, R1, the hole, back.
-  AxisValues p = program_target();
-  p[d] = to_frame(machine_)[d];
-  const AxisValues position = to_machine(p);
-  const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
-  // The 1 mm G83 comes back is the machine's, whatever the scale (decision 53).
-  cycle::Pecks pecks{*cycle_.r1,
-                     *cycle_.bottom,
-                     cycle_.step.value_or(0),
-                     kUnloadClearance / (frame_.transformed() ? frame_.scale[d] : 1.0),
-                     cycle_.factor,
-                     cycle_.minimum};
-  // Everything the hole needs is checked before the tool moves: a refused hole is
-  // not drilled, and the tool is taken to be over it.
-  auto refuse = [&] { move_to(position); };
-  if (!nc110_levels_ok(pattern) || !nc110_registers_ok(pattern)) return refuse();
-  if (!(tapping && cycle_.pitch) && !need_feed(("canned cycle " + name).c_str(), machine_)) return refuse();
-  if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(modal_.spindle) != 1 && spindle_direction_ == 0) {
-    report(DiagId::CycleNoSpindle, 0, name);
-    return refuse();
-  }
-  if (tapping) {
-    if (std::fabs(*cycle_.bottom - *cycle_.r1) < config_.tap_min_travel) {
-      report(DiagId::TapTravel, 0, name, four_decimals(to_program(std::fabs(*cycle_.bottom - *cycle_.r1))),
-             four_decimals(to_program(config_.tap_min_travel)));
-      return refuse();
-    }
-    if (pattern.out == CyclePattern::Out::Feed && system_value(SysVar::TapReturn) == 0) {
-      report(
-          DiagId::CycleDefinition, 0,
-          fmt::format(
-              "{} would bring the tap out at {} = 0 % of the speed, so it would not come out: set it to 1..255 first",
-              name, system_name({SysVar::TapReturn, 0})));
-      return refuse();
-    }
-  }
-  std::optional<double> n;  // G83's pecks
-  if (pattern.in == CyclePattern::In::Peck) {
-    double stuck = 0;
-    n = pecks.count(stuck);
-    if (!n) {
-      report(DiagId::CycleNoProgress, conv_.peck_word, name, four_decimals(to_program(stuck)));
-      return refuse();
-    }
-    if (*n > cycle::kMaxPecks) {
-      report(DiagId::CyclePecks, conv_.peck_word, name,
-             std::isinf(*n) ? fmt::format("more than {}", cycle::kMaxPecks) : shortest(*n),
-             four_decimals(to_program(pecks.step)), cycle::kMaxPecks);
-      return refuse();
-    }
-  }
-
-  cycle::Nc110Hole h{to_frame(machine_)[d], *cycle_.r2, pecks, 0, spindle_direction_};
-  if (pattern.dwell || (n && *n > 1 && !pecks.unloading())) h.dwell = timer_dwell();  // TMR's, read where it is used
-  hole_steps(cycle::nc110_hole(pattern, h), p, d, d, true);
-}
-
-void Machine::tap_feed(const AxisValues& t, bool out) {
+void Machine::tap_feed(const AxisValues& t, bool out, int d, std::optional<double> pitch) {
   // G84: with a spindle encoder and K, a move synchronised with the spindle at the
   // pitch K; else at F. The way out runs at RMS percent of the speed (§2.10.3).
   // RMS 0 and K without an encoder were refused before the hole.
   double percent = system_value(SysVar::TapReturn);
-  if (cycle_.pitch) {
+  if (pitch) {
     double rpm = spindle_rpm();
     if (rpm <= 0) report(DiagId::ThreadNoSpindle, 0);
     if (!path_allowed({machine_, t})) return move_to(t);
@@ -398,9 +69,9 @@ void Machine::tap_feed(const AxisValues& t, bool out) {
       e.a = speed_ * scale;
       emit(e);
     }
-    if (rpm > 0) advance_clock(60 * std::fabs(t[cycle_.axis] - machine_[cycle_.axis]) / (*cycle_.pitch * rpm * scale));
+    if (rpm > 0) advance_clock(60 * std::fabs(t[d] - machine_[d]) / (*pitch * rpm * scale));
     Event e = motion_event(EventKind::Thread, t);
-    e.a = to_program(*cycle_.pitch);
+    e.a = to_program(*pitch);
     emit(e);
     move_to(t);
     if (out && scale != 1) {
