@@ -6,6 +6,7 @@
 
 #include "cycle_engine.h"
 #include "support/text.h"
+#include "tool_change.h"
 
 namespace ncc {
 
@@ -21,9 +22,11 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
       path_(trace, &Machine::path_report, this, comp_rules(semantics.conventions.cutter)) {
   gtl_init();
   cycles_.reset(CycleEngine::make(*this, conv_).release());
+  tool_change_.reset(ToolChange::make(*this, conv_).release());
 }
 
 void Machine::CycleEngineDelete::operator()(CycleEngine* e) const { std::default_delete<CycleEngine>()(e); }
+void Machine::ToolChangeDelete::operator()(ToolChange* t) const { std::default_delete<ToolChange>()(t); }
 
 void Machine::cancel_cycle() {
   modal_.cycle = -1;
@@ -96,7 +99,7 @@ void Machine::power_on() {
 void Machine::reset_state() {
   virtual_off();  // the end of the program cancels virtual axes
   // NC-110: the corrector of the tool in the spindle stays in force (§2.7.8, M30).
-  const int length = conv_.corrector_in_tool_word ? modal_.length : 0;
+  const int length = tool_change_->corrector_in_tool() ? modal_.length : 0;
   modal_ = Modal{};
   modal_.length = length;
   frame_ = Frame{};
@@ -111,7 +114,7 @@ void Machine::reset_state() {
   helix_pitch_.reset();
   speed_ = 0;
   tool_selected_ = corrector_selected_ = 0;
-  if (!conv_.corrector_in_tool_word) select_offset(0);
+  if (!tool_change_->corrector_in_tool()) select_offset(0);
   spindle_direction_ = 0;
   cycles_->cancelled();
   parabola_middle_.reset();
@@ -458,26 +461,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       event(EventKind::SpindleOrient, 0, 0);
       break;
     case Fn::ToolChange:
-      // ISO §8.31: no tool selected, or the one in the spindle: nothing happens.
-      if (conv_.tool_change_iso && tool_selected_ == tool_loaded_) break;
+      if (tool_change_->same_tool_ignored() && tool_selected_ == tool_loaded_) break;
       if (emit_events && transform_locked(block_.code_name)) break;
-      if (conv_.m06_stops_spindle || conv_.tool_change_iso) {
-        if (modal_.spindle != 0) apply({Fn::SpindleStop}, scope, emit_events);
-        if (modal_.mist || modal_.flood) apply({Fn::CoolantOff}, scope, emit_events);
-      }
-      if (conv_.tool_change_iso && emit_events) {
-        // ISO §8.31: both compensations end for good, and the spindle goes up to the
-        // tool-change position along Z (the reference point).
-        modal_.comp = 0;
-        modal_.length = 0;
-        flush_compensation();
-        AxisValues up = machine_;
-        if (modal_.plane.w >= 0) up[modal_.plane.w] = config_.reference_position[modal_.plane.w];
-        if (conv_.tool_change_retract && up != machine_) rapid(up);
-      }
+      tool_change_->before(scope, emit_events);
       tool_loaded_ = tool_selected_;
-      // NC-110 §2.7.7: M06 brings the corrector T selected into force.
-      if (conv_.corrector_in_tool_word) select_offset(corrector_selected_);
+      tool_change_->after();
       event(EventKind::ChangeTool, tool_loaded_);
       break;
     case Fn::CoolantMist:
@@ -676,19 +664,7 @@ void Machine::registers() {
     Event e{EventKind::SelectTool};
     e.n = tool_selected_;
     emit(e);
-    // NC-110 T tool.corrector: the corrector takes effect at M06 (§2.7.7).
-    if (conv_.corrector_in_tool_word) {
-      const double corrector = slot_if(second_slot('T')).value_or(0);
-      const std::optional<int> n = whole_in(corrector, 0, 999999999);
-      if (!n || (*n != 0 && !tool_offsets_.count(*n)))
-        report_slot(DiagId::OffsetUnknown, second_slot('T'), "corrector", shortest(corrector));
-      else
-        corrector_selected_ = *n;
-      // A sister in the programmed tool's place brings its own corrector, if it has one.
-      if (auto sister = config_.tools.find(tool_selected_);
-          tool_selected_ != *tool && sister != config_.tools.end() && sister->second.corrector)
-        corrector_selected_ = sister->second.corrector;
-    }
+    tool_change_->tool_word(*tool);
   }
   // pp H, P: auxiliary functions the machine's logic carries out (H, then P).
   for (char letter : conv_.aux_words)
@@ -698,7 +674,7 @@ void Machine::registers() {
       emit(e);
     }
   if (has_slot(kLinkSlot)) link();
-  if (conv_.corrector_in_tool_word || block_.comp_load) return;  // NC-110 D is an axis; pp G93 D names an entry
+  if (tool_change_->corrector_in_tool() || block_.comp_load) return;  // NC-110 D is an axis; pp G93 D names an entry
   for (char letter : {'D', 'H'}) {
     if (conv_.aux_words.find(letter) != std::string::npos) continue;
     auto number = whole_number(letter, "offset numbers");

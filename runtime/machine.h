@@ -367,6 +367,15 @@ class Machine final : public BlockMachine {
     void operator()(CycleEngine* e) const;
   };
   std::unique_ptr<CycleEngine, CycleEngineDelete> cycles_;
+  // The tool change: the program's (tool_change.h), chosen once.
+  class ToolChange;
+  class PlainToolChange;
+  class IsoToolChange;
+  class Nc110ToolChange;
+  struct ToolChangeDelete {
+    void operator()(ToolChange* t) const;
+  };
+  std::unique_ptr<ToolChange, ToolChangeDelete> tool_change_;
   void cancel_cycle();  // the active cycle ends
   // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
   void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
