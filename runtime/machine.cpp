@@ -21,12 +21,11 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
       events_wanted_(trace.wants_events()), issues_(issues),
       path_(trace, &Machine::path_report, this, comp_rules(semantics.conventions.cutter)) {
   gtl_init();
-  cycles_.reset(CycleEngine::make(*this, conv_).release());
-  tool_change_.reset(ToolChange::make(*this, conv_).release());
+  cycles_ = CycleEngine::make(*this, conv_);
+  tool_change_ = ToolChange::make(*this, conv_);
 }
 
-void Machine::CycleEngineDelete::operator()(CycleEngine* e) const { std::default_delete<CycleEngine>()(e); }
-void Machine::ToolChangeDelete::operator()(ToolChange* t) const { std::default_delete<ToolChange>()(t); }
+Machine::~Machine() = default;
 
 void Machine::cancel_cycle() {
   modal_.cycle = -1;

@@ -40,6 +40,7 @@ struct Step;
 class Machine final : public BlockMachine {
  public:
   Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
+  ~Machine() override;  // in machine.cpp, where the cycle engine and tool change are whole
 
   // Power-on: position, modal state and registers as the dialect defines them.
   void power_on();
@@ -363,19 +364,13 @@ class Machine final : public BlockMachine {
   class GostCycles;
   class IsoCycles;
   class Nc110Cycles;
-  struct CycleEngineDelete {
-    void operator()(CycleEngine* e) const;
-  };
-  std::unique_ptr<CycleEngine, CycleEngineDelete> cycles_;
+  std::unique_ptr<CycleEngine> cycles_;
   // The tool change: the program's (tool_change.h), chosen once.
   class ToolChange;
   class PlainToolChange;
   class IsoToolChange;
   class Nc110ToolChange;
-  struct ToolChangeDelete {
-    void operator()(ToolChange* t) const;
-  };
-  std::unique_ptr<ToolChange, ToolChangeDelete> tool_change_;
+  std::unique_ptr<ToolChange> tool_change_;
   void cancel_cycle();  // the active cycle ends
   // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
   void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,

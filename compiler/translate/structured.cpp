@@ -503,18 +503,18 @@ void Structured::line(std::string text) {
   text = std::exchange(then_, {}) + text;
   if (!head.empty() && !text.empty()) head += ' ';
   text = (skip_ ? "/" : "") + head + text;
+  std::vector<std::string> written;
   size_t inline_length = text.size();
-  for (const std::string& c : comments_) inline_length += w_.inline_comment(c).size() + 1;
+  for (const std::string& c : comments_) inline_length += written.emplace_back(w_.inline_comment(c)).size() + 1;
   const bool apart = w_.comments_apart() || (w_.longest_line() && inline_length > w_.longest_line());
-  for (const std::string& c : comments_) {
+  for (size_t i = 0; i < comments_.size(); ++i) {
     if (apart) {  // lines of their own, before the block's
-      w_.comment(c);
+      w_.comment(comments_[i]);
       continue;
     }
-    const std::string written = w_.inline_comment(c);
-    if (written.empty()) continue;  // no text: nothing to keep
+    if (written[i].empty()) continue;  // no text: nothing to keep
     if (!text.empty()) text += ' ';
-    text += written;
+    text += written[i];
   }
   comments_.clear();
   if (text.empty()) return;

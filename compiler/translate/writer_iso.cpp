@@ -45,9 +45,10 @@ class IsoWriter final : public Writer {
     // on in comment lines of its own, broken at blanks. (A comment takes its
     // parentheses and maybe a mark, and a blank after the words before it.)
     auto words_part = [&](size_t most) { return line.empty() ? 0 : std::min(line.size(), most) + 1; };
-    auto marks = [&] { return inline_comment(comment).size() - comment.size(); };
-    while (linuxcnc_ && words_part(line.size()) + comment.size() + marks() > kLinuxcncLine) {
-      const size_t room = kLinuxcncLine - marks() - words_part(kLinuxcncLine - 64);  // 60 characters at least
+    while (linuxcnc_) {
+      const size_t marks = inline_comment(comment).size() - comment.size();
+      if (words_part(line.size()) + comment.size() + marks <= kLinuxcncLine) break;
+      const size_t room = kLinuxcncLine - marks - words_part(kLinuxcncLine - 64);  // 60 characters at least
       size_t cut = comment.rfind(' ', room);
       if (cut == std::string_view::npos || cut == 0) cut = room;
       out_ += (line.empty() ? "" : line + " ") + inline_comment(comment.substr(0, cut)) + "\n";
