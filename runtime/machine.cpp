@@ -117,8 +117,7 @@ void Machine::reset_state() {
   spindle_direction_ = 0;
   cycles_->cancelled();
   parabola_middle_.reset();
-  limited_ = {};
-  zones_ = {};
+  envelope_ = {};
   tolerance_ = {};
   turning_ = false;
   locked_ = 0;
@@ -559,9 +558,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && comp_locked(modal_.scaling)) break;
       if (modal_.scaling) {
         modal_.scaling = false;
-        frame_.scale.fill(1);
-        frame_.mirror.fill(false);
-        frame_.scale_centre = {};
+        frame_.clear_scaling();
         if (emit_events) transform_event();
       }
       break;
@@ -569,8 +566,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && comp_locked(modal_.rotation)) break;
       if (modal_.rotation) {
         modal_.rotation = false;
-        frame_.rotation = 0;
-        frame_.rotation_centre = {};
+        frame_.clear_rotation();
         if (emit_events) transform_event();
       }
       break;
@@ -1107,7 +1103,7 @@ void Machine::finish() {
     if (conv_.comp_path()) path_.finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
-    const ResetState before{modal_, frame_, position_offset_, limited_, zones_, tolerance_, turning_};
+    const ResetState before{modal_, frame_, position_offset_, envelope_, tolerance_, turning_};
     reset_state();
     emit_reset(before);
     Event e{EventKind::End};
@@ -1156,15 +1152,14 @@ void Machine::emit_reset(const ResetState& before) {
   if (before.frame.transformed()) transform_event();
   // NC-110 §2.13.5: RESET cancels the working limits and the zones and gives the axes
   // the machine's tolerance again; no axis stays clamped.
-  for (size_t z = 0; z < before.zones.size(); ++z)
-    if (before.zones[z].active) {
+  for (size_t z = 0; z < before.envelope.zones.size(); ++z)
+    if (before.envelope.zones[z].active) {
       Event e{EventKind::Zone};
       e.rotation = static_cast<int>(z + 1);
       e.n = 0;
       emit(e);
     }
-  if (std::any_of(before.limited.begin(), before.limited.end(), [](bool b) { return b; }))
-    emit(Event{EventKind::Limits});
+  if (before.envelope.any_limit()) emit(Event{EventKind::Limits});
   Event tolerance{EventKind::Tolerance};
   for (int a = 0; a < kAxisCount; ++a)
     if (before.tolerance[a] != 0) {

@@ -2,11 +2,11 @@
 // (GOST 20999 S-12; the same shape serves every dialect). The VM hands it one block
 // at a time as canonical functions plus word values; it computes the motion, checks
 // it and emits trace events. Its parts: machine.cpp (the block cycle and modal
-// functions), machine_frame.cpp (origins, transforms, limits and protected zones),
-// machine_motion.cpp (moves, arcs, threads, splines, dwells, time),
-// machine_cycles.cpp (what the canned cycles share, the measuring cycles) with
-// cycle_engine.h (each dialect family's canned cycles), machine_system.cpp (system
-// variables).
+// functions), machine_frame.cpp (origins, transforms, limits and protected zones,
+// with frame.h and envelope.h), machine_motion.cpp (moves, arcs, threads, splines,
+// dwells, time), machine_cycles.cpp (what the canned cycles share, the measuring
+// cycles) with cycle_engine.h (each dialect family's canned cycles),
+// machine_system.cpp (system variables).
 #pragma once
 
 #include <algorithm>
@@ -25,6 +25,8 @@
 #include "contract/program_semantics.h"
 #include "contract/system_vars.h"
 #include "cutter_path.h"
+#include "envelope.h"
+#include "frame.h"
 #include "support/diagnostics.h"
 #include "support/numbers.h"
 #include "trace.h"
@@ -114,35 +116,11 @@ class Machine final : public BlockMachine {
     bool polar = false, scaling = false, rotation = false;
   };
 
-  // Program coordinates to machine coordinates: per axis an origin (a work offset
-  // and a shift: G92, NC-110 UOT/UIO), then scale, mirror and a rotation in the
-  // plane about the origin (NC-110 §2.13.1).
-  struct Frame {
-    std::array<int, kAxisCount> base{};  // the work offset (origin) of each axis
-    AxisValues shift{};                  // mm, degrees
-    AxisValues local{};                  // ISO G52: the local zero of the active work offset
-    AxisValues scale;
-    std::array<bool, kAxisCount> mirror{};
-    double rotation = 0;  // degrees, counter-clockwise in the plane
-    // ISO G51 and G68: the centres of scaling and rotation, program coordinates (the
-    // NC-110 transforms are about the origin).
-    AxisValues scale_centre{}, rotation_centre{};
-    Frame() { scale.fill(1); }
-    bool transformed() const;
-  };
-
   // The compensation in effect: side, radius, signed length.
   struct Compensation {
     int side = 0;
     double radius = 0;
     AxisValues length{};  // per axis
-  };
-
-  // A protected zone (NC-110 DSA): an open rectangle in two axes, machine coordinates.
-  struct Zone {
-    bool defined = false, active = false;
-    int axis[2] = {0, 1};
-    double lo[2] = {0, 0}, hi[2] = {0, 0};
   };
 
   // The spline between BSP and ESP (NC-110 G06): its plane, end conditions and points.
@@ -264,8 +242,7 @@ class Machine final : public BlockMachine {
     Modal modal;
     Frame frame;
     AxisValues position_offset;
-    std::array<bool, kAxisCount> limited;
-    std::array<Zone, 3> zones;
+    Envelope envelope;
     AxisValues tolerance;
     bool turning;
   };
@@ -278,6 +255,7 @@ class Machine final : public BlockMachine {
   AxisValues shown_origins() const;                        // what the trace's positions are from
   AxisValues frame_offset(int work_offset) const;          // GOST: work offset + position offset
   AxisValues target_frame() const;                         // the frame this block's words are in
+  bool block_transformed() const;                          // the frame's transforms apply to this block
   AxisValues to_machine(const AxisValues& program) const;  // apply the frame
   AxisValues to_frame(const AxisValues& machine) const;    // undo it: program coordinates
   AxisValues target();                                     // of this block's axis words, machine units
@@ -442,9 +420,7 @@ class Machine final : public BlockMachine {
   BlockState block_;
 
   // NC-110 state.
-  std::array<AxisValues, 2> limits_{};  // DLO: lower and upper, machine coordinates
-  std::array<bool, kAxisCount> limited_{};
-  std::array<Zone, 3> zones_;
+  Envelope envelope_;             // DLO, DSA
   AxisValues tolerance_{};        // DTL; 0 = the machine's
   bool turning_ = false;          // CTL
   uint32_t locked_ = 0;           // M10/M12: axes that must not move

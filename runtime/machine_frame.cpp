@@ -25,13 +25,6 @@ constexpr double kMaxPosition = 1e10;
 
 }  // namespace
 
-bool Machine::Frame::transformed() const {
-  if (rotation != 0) return true;
-  for (int i = 0; i < kAxisCount; ++i)
-    if (mirror[i] || scale[i] != 1) return true;
-  return false;
-}
-
 double Machine::offset_value(int offset, int axis) const {
   auto it = offsets_.find(offset);
   if (it == offsets_.end()) return 0;
@@ -65,45 +58,23 @@ AxisValues Machine::target_frame() const {
   return origins();
 }
 
+// G79 and G53 blocks are not transformed (NC-110 §2.13.1.5: "not rotated").
+bool Machine::block_transformed() const {
+  return !block_.machine_frame && block_.block_offset < 0 && frame_.transformed();
+}
+
 AxisValues Machine::to_machine(const AxisValues& p) const {
-  AxisValues q = p;
-  // G79 and G53 blocks are not transformed (NC-110 §2.13.1.5: "not rotated").
-  if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
-    const AxisValues& cs = frame_.scale_centre;
-    const AxisValues& cr = frame_.rotation_centre;
-    for (int i = 0; i < kAxisCount; ++i)
-      q[i] = cs[i] + (q[i] - cs[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
-    const int u = modal_.plane.u, v = modal_.plane.v;
-    if (frame_.rotation != 0) {
-      const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
-      const double x = q[u] - cr[u], y = q[v] - cr[v];
-      q[u] = cr[u] + x * c - y * s;
-      q[v] = cr[v] + x * s + y * c;
-    }
-  }
-  AxisValues off = target_frame();
+  AxisValues q = block_transformed() ? frame_.transform(p, modal_.plane) : p;
+  const AxisValues off = target_frame();
   for (int i = 0; i < kAxisCount; ++i) q[i] += off[i];
   return q;
 }
 
 AxisValues Machine::to_frame(const AxisValues& m) const {
-  AxisValues off = target_frame();
+  const AxisValues off = target_frame();
   AxisValues q{};
   for (int i = 0; i < kAxisCount; ++i) q[i] = m[i] - off[i];
-  if (!block_.machine_frame && block_.block_offset < 0 && frame_.transformed()) {
-    const AxisValues& cs = frame_.scale_centre;
-    const AxisValues& cr = frame_.rotation_centre;
-    const int u = modal_.plane.u, v = modal_.plane.v;
-    if (frame_.rotation != 0) {
-      const double c = std::cos(frame_.rotation * kDegree), s = std::sin(frame_.rotation * kDegree);
-      const double x = q[u] - cr[u], y = q[v] - cr[v];
-      q[u] = cr[u] + x * c + y * s;
-      q[v] = cr[v] - x * s + y * c;
-    }
-    for (int i = 0; i < kAxisCount; ++i)
-      q[i] = cs[i] + (q[i] - cs[i]) / (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
-  }
-  return q;
+  return block_transformed() ? frame_.untransform(q, modal_.plane) : q;
 }
 
 bool Machine::has_axis_word() const {
@@ -328,8 +299,7 @@ void Machine::load_offset() {
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
-    const double scale = frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i];
-    double v = machine_[i] - frame_.shift[i] - scale * axis_units(i, word(letter));
+    double v = machine_[i] - frame_.shift[i] - frame_.factor(i) * axis_units(i, word(letter));
     entry.values[i] = entry.inch && is_linear(i) ? v / 25.4 : v;
     entry.axes |= 1u << i;
   }
@@ -555,12 +525,12 @@ bool Machine::frame_function(FnCall call) {
         double x = value(a) + origin(a);
         double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + origin(a);
         const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
-        limits_[0][a] = std::max(std::min(x, y), cfg.lower);
-        limits_[1][a] = std::min(std::max(x, y), cfg.upper);
-        limited_[a] = true;
+        envelope_.limits[0][a] = std::max(std::min(x, y), cfg.lower);
+        envelope_.limits[1][a] = std::min(std::max(x, y), cfg.upper);
+        envelope_.limited[a] = true;
         e.n |= 1 << a;
-        e.pos[a] = program_axis(a, limits_[0][a] - origin(a));
-        e.control[a] = program_axis(a, limits_[1][a] - origin(a));
+        e.pos[a] = program_axis(a, envelope_.limits[0][a] - origin(a));
+        e.control[a] = program_axis(a, envelope_.limits[1][a] - origin(a));
       }
       emit(e);
       break;
@@ -568,7 +538,7 @@ bool Machine::frame_function(FnCall call) {
     case Fn::ZoneDefine: {
       auto n = whole(0, 1, 3, "the zone");
       if (!n || listed.size() != 2) break;
-      Zone& z = zones_[static_cast<size_t>(*n - 1)];
+      Envelope::Zone& z = envelope_.zones[static_cast<size_t>(*n - 1)];
       z.defined = true;
       Event e{EventKind::Zone};
       e.rotation = *n;
@@ -591,7 +561,7 @@ bool Machine::frame_function(FnCall call) {
     case Fn::ZoneOff: {
       auto n = whole(0, 1, 3, "the zone");
       if (!n) break;
-      Zone& z = zones_[static_cast<size_t>(*n - 1)];
+      Envelope::Zone& z = envelope_.zones[static_cast<size_t>(*n - 1)];
       if (call.fn == Fn::ZoneOn && !z.defined) {
         report_slot(DiagId::ZoneUndefined, operand_slot(0), *n);
         break;
@@ -706,58 +676,26 @@ bool Machine::path_allowed(const std::vector<AxisValues>& path) {
   for (const AxisValues& p : path)
     for (int a = 0; a < kAxisCount; ++a)
       if (!position_in_range(a, p[a])) return false;
-  bool limits = std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; });
-  bool zones = std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; });
-  if (!limits && !zones) return true;
-  // A move leaves the field where it goes farther outside than it starts: a tool
-  // outside the field may come back into it (decision 34). The message gives the
-  // farthest point the move would reach.
-  for (int a = 0; a < kAxisCount && limits; ++a) {
-    if (!limited_[a]) continue;
-    auto outside = [&](double v) { return std::max({limits_[0][a] - v, v - limits_[1][a], 0.0}); };
-    const double allowed = outside(path.front()[a]) + 1e-9;
-    const AxisValues* farthest = nullptr;
-    for (const AxisValues& p : path)
-      if (outside(p[a]) > allowed && (!farthest || outside(p[a]) > outside((*farthest)[a]))) farthest = &p;
-    if (farthest) {
-      report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]),
-             four_decimals(program_axis(a, limits_[0][a] - origin(a))),
-             four_decimals(program_axis(a, limits_[1][a] - origin(a))),
-             four_decimals(program_axis(a, (*farthest)[a] - origin(a))));
-      return false;
-    }
+  if (!envelope_.any_limit() && !envelope_.any_zone()) return true;
+  if (const std::optional<Envelope::Breach> breach = envelope_.limit_left(path)) {
+    const int a = breach->axis;
+    report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]),
+           four_decimals(program_axis(a, envelope_.limits[0][a] - origin(a))),
+           four_decimals(program_axis(a, envelope_.limits[1][a] - origin(a))),
+           four_decimals(program_axis(a, breach->farthest - origin(a))));
+    return false;
   }
-  for (size_t z = 0; z < zones_.size() && zones; ++z) {
-    const Zone& zone = zones_[z];
-    if (!zone.active) continue;
-    // A segment enters the open rectangle if some part of it lies strictly inside
-    // (clipping the segment to each axis' open interval); touching an edge does not.
-    for (size_t i = 0; i + 1 < path.size(); ++i) {
-      double t0 = 0, t1 = 1;
-      bool outside = false;
-      for (int k = 0; k < 2 && !outside; ++k) {
-        double a = path[i][zone.axis[k]], b = path[i + 1][zone.axis[k]];
-        double d = b - a;
-        if (std::fabs(d) < 1e-12) {
-          outside = !(a > zone.lo[k] && a < zone.hi[k]);
-          continue;
-        }
-        double ta = (zone.lo[k] - a) / d, tb = (zone.hi[k] - a) / d;
-        t0 = std::max(t0, std::min(ta, tb));
-        t1 = std::min(t1, std::max(ta, tb));
-      }
-      if (!outside && t1 - t0 > 1e-12) {
-        std::string box;
-        for (int k = 0; k < 2; ++k) {
-          int a = zone.axis[k];
-          box += fmt::format("{}{}{}..{}", k ? " " : "", kAxisLetters[a],
-                             four_decimals(program_axis(a, zone.lo[k] - origin(a))),
-                             four_decimals(program_axis(a, zone.hi[k] - origin(a))));
-        }
-        report(DiagId::ZoneEntered, 0, z + 1, box);
-        return false;
-      }
+  if (const std::optional<size_t> z = envelope_.zone_entered(path)) {
+    const Envelope::Zone& zone = envelope_.zones[*z];
+    std::string box;
+    for (int k = 0; k < 2; ++k) {
+      int a = zone.axis[k];
+      box += fmt::format("{}{}{}..{}", k ? " " : "", kAxisLetters[a],
+                         four_decimals(program_axis(a, zone.lo[k] - origin(a))),
+                         four_decimals(program_axis(a, zone.hi[k] - origin(a))));
     }
+    report(DiagId::ZoneEntered, 0, *z + 1, box);
+    return false;
   }
   return true;
 }
@@ -857,8 +795,7 @@ void Machine::rotation_on() {
   const double angle = modal_.absolute ? word('R') : last_rotation_ + word('R');
   // The centre is a programmed point: under scaling it is scaled as the path is.
   for (int i = 0; i < kAxisCount; ++i)
-    centre[i] = frame_.scale_centre[i] +
-                (centre[i] - frame_.scale_centre[i]) * (frame_.mirror[i] ? -frame_.scale[i] : frame_.scale[i]);
+    centre[i] = frame_.scale_centre[i] + (centre[i] - frame_.scale_centre[i]) * frame_.factor(i);
   frame_.rotation = angle;
   frame_.rotation_centre = centre;
   last_rotation_ = angle;

@@ -373,8 +373,7 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
     return;
   }
   // The path for the limit checks: chords no farther than kChord from the arc.
-  if (virtual_axes_.mode == 1 || std::any_of(limited_.begin(), limited_.end(), [](bool b) { return b; }) ||
-      std::any_of(zones_.begin(), zones_.end(), [](const Zone& z) { return z.active; })) {
+  if (virtual_axes_.mode == 1 || envelope_.any_limit() || envelope_.any_zone()) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
     const int chords =
         whole_in(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0), 1, 100000).value_or(1);
