@@ -18,8 +18,7 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
     : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
-      events_wanted_(trace.wants_events()), issues_(issues),
-      path_(trace, &Machine::path_report, this, comp_rules(semantics.conventions.cutter)) {
+      events_wanted_(trace.wants_events()), issues_(issues), path_(cutter_path(trace)) {
   gtl_init();
   cycles_ = CycleEngine::make(*this, conv_);
   tool_change_ = ToolChange::make(*this, conv_);
@@ -32,25 +31,27 @@ void Machine::cancel_cycle() {
   cycles_->cancelled();
 }
 
-// NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
-// move, G41/G42 in a block of their own started by the next move.
-CompRules Machine::comp_rules(CutterStyle style) {
-  if (style == CutterStyle::Nc110) return {false, true, true, false, false};
-  return {};
+std::unique_ptr<CutterPath> Machine::cutter_path(TraceSink& trace) {
+  // ISO §8.10: Fanuc's type A.
+  if (conv_.cutter == CutterStyle::FanucA)
+    return std::make_unique<CutterPath>(trace, &Machine::path_report<DiagId::ArcForm>, this);
+  // NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
+  // move, G41/G42 in a block of their own started by the next move.
+  if (conv_.cutter == CutterStyle::Nc110)
+    return std::make_unique<CutterPath>(trace, &Machine::path_report<DiagId::CompPath>, this,
+                                        CompRules{false, true, true, false, false});
+  return nullptr;
 }
 
+template <DiagId id>
 void Machine::path_report(void* self, uint32_t source, const std::string& what) {
   // An error of the path stops the run at the block being run, as any error does.
-  Machine& m = *static_cast<Machine*>(self);
-  if (m.conv_.cutter == CutterStyle::Nc110)
-    m.issue({DiagId::CompPath, diag_message(DiagId::CompPath, what), source, -1, -1});
-  else
-    m.issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, what), source, -1, -1});
+  static_cast<Machine*>(self)->issue({id, diag_message(id, what), source, -1, -1});
 }
 
 void Machine::end_run(bool stopped_by_error) {
   if (holding_) release();
-  if (conv_.comp_path()) path_.finish(!stopped_by_error);
+  if (path_) path_->finish(!stopped_by_error);
 }
 
 void Machine::power_on() {
@@ -193,7 +194,7 @@ void Machine::emit(Event e) {
   e.source = source();
   // A move starts where the machine stands (it moves after its event); only the
   // cutter path needs to know.
-  if (!is_move(e.kind) || !conv_.comp_path() || path_.passes_moves()) return out(e);
+  if (!is_move(e.kind) || !path_ || path_->passes_moves()) return out(e);
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
   out(e, &start);
 }
@@ -206,18 +207,20 @@ bool Machine::block_has(Fn fn) const {
 }
 
 uint64_t Machine::held_bytes() const {
-  return path_.held_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
+  return path_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
 }
+
+uint64_t Machine::path_bytes() const { return path_ ? path_->held_bytes() : 0; }
 
 uint64_t Machine::spline_bytes() const {
   return spline_.points.capacity() * sizeof(AxisValues) + spline_.sources.capacity() * sizeof(uint32_t);
 }
 
 std::string Machine::held_what() const {
-  if (spline_bytes() > path_.held_bytes())
+  if (spline_bytes() > path_bytes())
     return fmt::format("the spline holds {} points (G06 blocks since its BSP)", spline_.points.size());
   return fmt::format("cutter radius compensation holds {} events while its move waits for the next move in the plane",
-                     path_.held_events());
+                     path_ ? path_->held_events() : 0);
 }
 
 void Machine::out(const Event& e, const AxisValues* start) {
@@ -226,9 +229,9 @@ void Machine::out(const Event& e, const AxisValues* start) {
 }
 
 void Machine::to_path(const Event& e, const AxisValues* start) {
-  if (!conv_.comp_path()) return trace_.event(e);
-  if (is_move(e.kind) && !path_.passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
-  path_.event(e, start);
+  if (!path_) return trace_.event(e);
+  if (is_move(e.kind) && !path_->passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
+  path_->event(e, start);
 }
 
 FnCall Machine::current(FnGroup group) const {
@@ -290,7 +293,7 @@ void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
-  if (conv_.comp_path() && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
+  if (path_ && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
   e.a = to_program(offset_.radius);
   emit(e);
 }
@@ -825,12 +828,11 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   const size_t block_from = held_.size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
   const bool zeroed =
-      conv_.comp_path() &&
-      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
+      path_ && (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
       (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
-  if (zeroed) path_.suspend();
+  if (zeroed) path_->suspend();
   action();
-  if (zeroed) path_.resume();
+  if (zeroed) path_->resume();
   if (block_.set_position_after && !block_.error) set_position();
   if (corner_) corner_finish(corner_here, block_from);
   if (corner_here) corner_begin(start);
@@ -956,7 +958,7 @@ void Machine::action() {
           return report(DiagId::CompPath, l,
                         fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
         if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
-        return path_.corner(l == 'r', word(l), block_.request->source);
+        return path_->corner(l == 'r', word(l), block_.request->source);
       }
       return report(DiagId::GtlProfile, l,
                     fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
@@ -1104,7 +1106,7 @@ void Machine::finish() {
              corner_->source, corner_->slot, -1});
       release();
     }
-    if (conv_.comp_path()) path_.finish();
+    if (path_) path_->finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
     const ResetState before{modal_, frame_, position_offset_, limited_, zones_, tolerance_, turning_};

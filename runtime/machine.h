@@ -250,7 +250,7 @@ class Machine final : public BlockMachine {
   // cutter path (which follows every plane and compensation change, and moves while
   // it offsets them).
   bool wanted(EventKind kind) const {
-    return events_wanted_ || holding_ || (conv_.comp_path() && (!is_move(kind) || !path_.passes_moves()));
+    return events_wanted_ || holding_ || (path_ && (!is_move(kind) || !path_->passes_moves()));
   }
   void plane_event();
   void path_event(int mode);
@@ -418,10 +418,15 @@ class Machine final : public BlockMachine {
   std::optional<AxisValues> chained_start_;                     // a corner's T2, when the next move has a corner too
   void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
   void text_event(EventKind kind, const std::string& text, uint32_t source, int n = 0, double a = 0);
-  void to_path(const Event& e, const AxisValues* start);  // through the cutter path (ISO)
+  void to_path(const Event& e, const AxisValues* start);  // through the cutter path, if there is one
   void pass_on(size_t count);                             // the first `count` held events, on
-  CutterPath path_;
-  static CompRules comp_rules(CutterStyle style);
+  // The traced cutter path: the runtime offsets the path itself (ISO, NC-110), or there
+  // is none and G41/G42 reach the trace as events, for the machine to compensate.
+  // Chosen once from the conventions (cutter_path); the sites ask only whether it is there.
+  std::unique_ptr<CutterPath> path_;
+  std::unique_ptr<CutterPath> cutter_path(TraceSink& trace);
+  uint64_t path_bytes() const;  // what it holds (held_bytes)
+  template <DiagId id>
   static void path_report(void* self, uint32_t source, const std::string& what);
   bool corner_requested() const;
   void corner_begin(const AxisValues& start);
