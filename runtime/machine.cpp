@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "block_rules.h"
 #include "cycle_engine.h"
 #include "support/text.h"
 #include "tool_change.h"
@@ -22,6 +23,7 @@ Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config,
   gtl_init();
   cycles_ = CycleEngine::make(*this, conv_);
   tool_change_ = ToolChange::make(*this, conv_);
+  rules_ = BlockRules::make(*this, conv_);
 }
 
 Machine::~Machine() = default;
@@ -343,7 +345,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::Dwell: block_.dwell = true; break;
     case Fn::SetPosition:
-      if (emit_events && (transform_locked(block_.code_name) || comp_locked(true))) break;
+      if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
       block_.set_position = true;
       break;
     case Fn::PathAccelerate: event(EventKind::PathMode, 0); break;
@@ -354,25 +356,18 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PathTapping: event(EventKind::PathMode, 2); break;
     case Fn::PlaneXY:
     case Fn::PlaneZX:
-    case Fn::PlaneYZ:
-      // ISO §8.10 (E-10): the plane stays while cutter compensation is on, unless G40
-      // in the same block (in any word order) ends it.
-      if (emit_events && conv_.fanuc_rules && modal_.comp != 0 && block_.request &&
-          modal_.plane != kPlanes[call.fn == Fn::PlaneXY   ? 0
-                                  : call.fn == Fn::PlaneZX ? 1
-                                                           : 2] &&
-          !block_has(Fn::CompOff)) {
-        report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
-        break;
-      }
-      modal_.plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
+    case Fn::PlaneYZ: {
+      const Plane& plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
+      if (emit_events && !rules_->may_change_plane(plane)) break;
+      modal_.plane = plane;
       if (emit_events) plane_event();
       break;
+    }
     case Fn::DistanceAbsolute: modal_.absolute = true; break;
     case Fn::DistanceIncremental: modal_.absolute = false; break;
     case Fn::UnitsMm:
     case Fn::UnitsInch:
-      if (emit_events && comp_locked(modal_.inch != (call.fn == Fn::UnitsInch))) break;
+      if (emit_events && modal_.inch != (call.fn == Fn::UnitsInch) && !rules_->may_change_coordinates()) break;
       modal_.inch = call.fn == Fn::UnitsInch;
       event(EventKind::Units, modal_.inch);
       break;
@@ -410,14 +405,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
         break;
       }
-      if (emit_events && transform_locked(block_.code_name)) break;
-      if (emit_events && scope == Scope::Modal && comp_locked(call.arg != modal_.work_offset)) break;
-      // ISO §8.14 (E-20): machine coordinates are absolute (a G90 of the block counts).
-      if (emit_events && conv_.fanuc_rules && scope == Scope::Block && call.arg == 0 && !modal_.absolute &&
-          !block_has(Fn::DistanceAbsolute)) {
-        report_code(DiagId::PlaneState, block_.code_name, "incremental positioning (G91)");
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
+      if (emit_events && scope == Scope::Modal && call.arg != modal_.work_offset && !rules_->may_change_coordinates())
         break;
-      }
+      // G53: the block's words are machine coordinates.
+      if (emit_events && scope == Scope::Block && call.arg == 0 && !rules_->may_use_machine_coordinates()) break;
       if (scope == Scope::Block) {
         block_.block_offset = call.arg;
       } else {
@@ -464,7 +456,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::ToolChange:
       if (tool_change_->same_tool_ignored() && tool_selected_ == tool_loaded_) break;
-      if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
       tool_change_->before(scope, emit_events);
       tool_loaded_ = tool_selected_;
       tool_change_->after();
@@ -545,11 +537,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::MotionReference: block_.reference = true; break;
     case Fn::ReferenceReturn:
     case Fn::ReferenceLeave:
-      if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
       block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2;
       break;
     case Fn::OffsetLocal:
-      if (emit_events && (transform_locked(block_.code_name) || comp_locked(true))) break;
+      if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
       block_.local_offset = true;
       break;
     case Fn::CycleReturnInitial:
@@ -559,7 +551,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::ScalingOn: block_.scaling_on = true; break;
     case Fn::RotationOn: block_.rotation_on = true; break;
     case Fn::ScalingOff:
-      if (emit_events && comp_locked(modal_.scaling)) break;
+      if (emit_events && modal_.scaling && !rules_->may_change_coordinates()) break;
       if (modal_.scaling) {
         modal_.scaling = false;
         frame_.scale.fill(1);
@@ -569,7 +561,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       }
       break;
     case Fn::RotationOff:
-      if (emit_events && comp_locked(modal_.rotation)) break;
+      if (emit_events && modal_.rotation && !rules_->may_change_coordinates()) break;
       if (modal_.rotation) {
         modal_.rotation = false;
         frame_.rotation = 0;
@@ -968,13 +960,13 @@ void Machine::action() {
 
   if (virtual_axes_.mode != 0 && virtual_axes_programmed()) return;
   const bool axes = has_axis_word();
-  if (conv_.fanuc_rules) arc_block_rules();
+  if (axes && (modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw)) rules_->check_arc();
   if (block_.measure != Fn::Count) {
     measure();
     return;
   }
-  // ISO §8.4: G04 shares its block with a move and dwells after it.
-  const bool dwell_after = conv_.fanuc_rules && block_.dwell && axes;
+  // A dwell that shares its block with a move: after it (ISO §8.4), or instead of it.
+  const bool dwell_after = block_.dwell && axes && rules_->dwells_after_move();
   if (!dwell_after &&
       (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word)))) {
     if (axes) report(DiagId::DwellWithMotion, 0);

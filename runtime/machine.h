@@ -4,9 +4,12 @@
 // it and emits trace events. Its parts: machine.cpp (the block cycle and modal
 // functions), machine_frame.cpp (origins, transforms, limits and protected zones),
 // machine_motion.cpp (moves, arcs, threads, splines, dwells, time),
-// machine_cycles.cpp (what the canned cycles share, the measuring cycles) with
-// cycle_engine.h (each dialect family's canned cycles), machine_system.cpp (system
-// variables).
+// machine_cycles.cpp (what the canned cycles share, the measuring cycles),
+// machine_system.cpp (system variables). What a dialect does its own way is a
+// strategy chosen once from the program's conventions, not a flag asked where it
+// matters: its canned cycles (cycle_engine.h), its tool change (tool_change.h), what
+// it forbids a block (block_rules.h: ISO's E-08..E-27) and the traced cutter path
+// (cutter_path.h: ISO's, NC-110's, or none).
 #pragma once
 
 #include <algorithm>
@@ -40,7 +43,7 @@ struct Step;
 class Machine final : public BlockMachine {
  public:
   Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
-  ~Machine() override;  // in machine.cpp, where the cycle engine and tool change are whole
+  ~Machine() override;  // in machine.cpp, where its strategies are whole
 
   // Power-on: position, modal state and registers as the dialect defines them.
   void power_on();
@@ -304,19 +307,16 @@ class Machine final : public BlockMachine {
   [[nodiscard]] bool path_allowed(const std::vector<AxisValues>& path);
   [[nodiscard]] bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
   void set_position();
-  void load_offset();                                            // pp G92
-  void load_compensation();                                      // pp G93
-  void reference_approach();                                     // pp G30
-  void reference_return();                                       // ISO G28
-  void reference_leave();                                        // ISO G29
-  void set_local_offset();                                       // ISO G52
-  void length_zeroed(bool zero);                                 // ISO G28/G29: the length offset's event, zero or back
-  void scaling_on();                                             // ISO G51
-  void rotation_on();                                            // ISO G68
-  [[nodiscard]] bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
-  [[nodiscard]] bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
-  bool block_has(Fn fn) const;                                   // a code of the block calls fn
-  void arc_block_rules();  // ISO E-11, E-13, E-14, E-15: what an arc block may change
+  void load_offset();             // pp G92
+  void load_compensation();       // pp G93
+  void reference_approach();      // pp G30
+  void reference_return();        // ISO G28
+  void reference_leave();         // ISO G29
+  void set_local_offset();        // ISO G52
+  void length_zeroed(bool zero);  // ISO G28/G29: the length offset's event, zero or back
+  void scaling_on();              // ISO G51
+  void rotation_on();             // ISO G68
+  bool block_has(Fn fn) const;    // a code of the block calls fn
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
@@ -371,6 +371,10 @@ class Machine final : public BlockMachine {
   class IsoToolChange;
   class Nc110ToolChange;
   std::unique_ptr<ToolChange> tool_change_;
+  // What the dialect forbids a block (block_rules.h): plain, or ISO's; chosen once.
+  class BlockRules;
+  class IsoBlockRules;
+  std::unique_ptr<BlockRules> rules_;
   void cancel_cycle();  // the active cycle ends
   // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
   void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
