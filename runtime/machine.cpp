@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "block_rules.h"
 #include "cycle_engine.h"
 #include "support/text.h"
 #include "tool_change.h"
@@ -18,11 +19,11 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
     : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
-      events_wanted_(trace.wants_events()), issues_(issues),
-      path_(trace, &Machine::path_report, this, comp_rules(semantics.conventions.cutter)) {
+      events_wanted_(trace.wants_events()), issues_(issues), path_(cutter_path(trace)) {
   gtl_init();
   cycles_ = CycleEngine::make(*this, conv_);
   tool_change_ = ToolChange::make(*this, conv_);
+  rules_ = BlockRules::make(*this, conv_);
 }
 
 Machine::~Machine() = default;
@@ -32,25 +33,27 @@ void Machine::cancel_cycle() {
   cycles_->cancelled();
 }
 
-// NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
-// move, G41/G42 in a block of their own started by the next move.
-CompRules Machine::comp_rules(CutterStyle style) {
-  if (style == CutterStyle::Nc110) return {false, true, true, false, false};
-  return {};
+std::unique_ptr<CutterPath> Machine::cutter_path(TraceSink& trace) {
+  // ISO §8.10: Fanuc's type A.
+  if (conv_.cutter == CutterStyle::FanucA)
+    return std::make_unique<CutterPath>(trace, &Machine::path_report<DiagId::ArcForm>, this);
+  // NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
+  // move, G41/G42 in a block of their own started by the next move.
+  if (conv_.cutter == CutterStyle::Nc110)
+    return std::make_unique<CutterPath>(trace, &Machine::path_report<DiagId::CompPath>, this,
+                                        CompRules{false, true, true, false, false});
+  return nullptr;
 }
 
+template <DiagId id>
 void Machine::path_report(void* self, uint32_t source, const std::string& what) {
   // An error of the path stops the run at the block being run, as any error does.
-  Machine& m = *static_cast<Machine*>(self);
-  if (m.conv_.cutter == CutterStyle::Nc110)
-    m.issue({DiagId::CompPath, diag_message(DiagId::CompPath, what), source, -1, -1});
-  else
-    m.issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, what), source, -1, -1});
+  static_cast<Machine*>(self)->issue({id, diag_message(id, what), source, -1, -1});
 }
 
 void Machine::end_run(bool stopped_by_error) {
   if (holding_) release();
-  if (conv_.comp_path()) path_.finish(!stopped_by_error);
+  if (path_) path_->finish(!stopped_by_error);
 }
 
 void Machine::power_on() {
@@ -192,7 +195,7 @@ void Machine::emit(Event e) {
   e.source = source();
   // A move starts where the machine stands (it moves after its event); only the
   // cutter path needs to know.
-  if (!is_move(e.kind) || !conv_.comp_path() || path_.passes_moves()) return out(e);
+  if (!is_move(e.kind) || !path_ || path_->passes_moves()) return out(e);
   const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
   out(e, &start);
 }
@@ -205,18 +208,20 @@ bool Machine::block_has(Fn fn) const {
 }
 
 uint64_t Machine::held_bytes() const {
-  return path_.held_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
+  return path_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
 }
+
+uint64_t Machine::path_bytes() const { return path_ ? path_->held_bytes() : 0; }
 
 uint64_t Machine::spline_bytes() const {
   return spline_.points.capacity() * sizeof(AxisValues) + spline_.sources.capacity() * sizeof(uint32_t);
 }
 
 std::string Machine::held_what() const {
-  if (spline_bytes() > path_.held_bytes())
+  if (spline_bytes() > path_bytes())
     return fmt::format("the spline holds {} points (G06 blocks since its BSP)", spline_.points.size());
   return fmt::format("cutter radius compensation holds {} events while its move waits for the next move in the plane",
-                     path_.held_events());
+                     path_ ? path_->held_events() : 0);
 }
 
 void Machine::out(const Event& e, const AxisValues* start) {
@@ -225,9 +230,9 @@ void Machine::out(const Event& e, const AxisValues* start) {
 }
 
 void Machine::to_path(const Event& e, const AxisValues* start) {
-  if (!conv_.comp_path()) return trace_.event(e);
-  if (is_move(e.kind) && !path_.passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
-  path_.event(e, start);
+  if (!path_) return trace_.event(e);
+  if (is_move(e.kind) && !path_->passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
+  path_->event(e, start);
 }
 
 FnCall Machine::current(FnGroup group) const {
@@ -289,7 +294,7 @@ void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
-  if (conv_.comp_path() && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
+  if (path_ && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
   e.a = to_program(offset_.radius);
   emit(e);
 }
@@ -339,7 +344,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::Dwell: block_.dwell = true; break;
     case Fn::SetPosition:
-      if (emit_events && (transform_locked(block_.code_name) || comp_locked(true))) break;
+      if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
       block_.set_position = true;
       break;
     case Fn::PathAccelerate: event(EventKind::PathMode, 0); break;
@@ -350,25 +355,18 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::PathTapping: event(EventKind::PathMode, 2); break;
     case Fn::PlaneXY:
     case Fn::PlaneZX:
-    case Fn::PlaneYZ:
-      // ISO §8.10 (E-10): the plane stays while cutter compensation is on, unless G40
-      // in the same block (in any word order) ends it.
-      if (emit_events && conv_.fanuc_rules && modal_.comp != 0 && block_.request &&
-          modal_.plane != kPlanes[call.fn == Fn::PlaneXY   ? 0
-                                  : call.fn == Fn::PlaneZX ? 1
-                                                           : 2] &&
-          !block_has(Fn::CompOff)) {
-        report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
-        break;
-      }
-      modal_.plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
+    case Fn::PlaneYZ: {
+      const Plane& plane = kPlanes[call.fn == Fn::PlaneXY ? 0 : call.fn == Fn::PlaneZX ? 1 : 2];
+      if (emit_events && !rules_->may_change_plane(plane)) break;
+      modal_.plane = plane;
       if (emit_events) plane_event();
       break;
+    }
     case Fn::DistanceAbsolute: modal_.absolute = true; break;
     case Fn::DistanceIncremental: modal_.absolute = false; break;
     case Fn::UnitsMm:
     case Fn::UnitsInch:
-      if (emit_events && comp_locked(modal_.inch != (call.fn == Fn::UnitsInch))) break;
+      if (emit_events && modal_.inch != (call.fn == Fn::UnitsInch) && !rules_->may_change_coordinates()) break;
       modal_.inch = call.fn == Fn::UnitsInch;
       event(EventKind::Units, modal_.inch);
       break;
@@ -406,14 +404,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
         break;
       }
-      if (emit_events && transform_locked(block_.code_name)) break;
-      if (emit_events && scope == Scope::Modal && comp_locked(call.arg != modal_.work_offset)) break;
-      // ISO §8.14 (E-20): machine coordinates are absolute (a G90 of the block counts).
-      if (emit_events && conv_.fanuc_rules && scope == Scope::Block && call.arg == 0 && !modal_.absolute &&
-          !block_has(Fn::DistanceAbsolute)) {
-        report_code(DiagId::PlaneState, block_.code_name, "incremental positioning (G91)");
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
+      if (emit_events && scope == Scope::Modal && call.arg != modal_.work_offset && !rules_->may_change_coordinates())
         break;
-      }
+      // G53: the block's words are machine coordinates.
+      if (emit_events && scope == Scope::Block && call.arg == 0 && !rules_->may_use_machine_coordinates()) break;
       if (scope == Scope::Block) {
         block_.block_offset = call.arg;
       } else {
@@ -460,7 +455,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       break;
     case Fn::ToolChange:
       if (tool_change_->same_tool_ignored() && tool_selected_ == tool_loaded_) break;
-      if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
       tool_change_->before(scope, emit_events);
       tool_loaded_ = tool_selected_;
       tool_change_->after();
@@ -541,11 +536,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::MotionReference: block_.reference = true; break;
     case Fn::ReferenceReturn:
     case Fn::ReferenceLeave:
-      if (emit_events && transform_locked(block_.code_name)) break;
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
       block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2;
       break;
     case Fn::OffsetLocal:
-      if (emit_events && (transform_locked(block_.code_name) || comp_locked(true))) break;
+      if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
       block_.local_offset = true;
       break;
     case Fn::CycleReturnInitial:
@@ -555,7 +550,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::ScalingOn: block_.scaling_on = true; break;
     case Fn::RotationOn: block_.rotation_on = true; break;
     case Fn::ScalingOff:
-      if (emit_events && comp_locked(modal_.scaling)) break;
+      if (emit_events && modal_.scaling && !rules_->may_change_coordinates()) break;
       if (modal_.scaling) {
         modal_.scaling = false;
         frame_.clear_scaling();
@@ -563,7 +558,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       }
       break;
     case Fn::RotationOff:
-      if (emit_events && comp_locked(modal_.rotation)) break;
+      if (emit_events && modal_.rotation && !rules_->may_change_coordinates()) break;
       if (modal_.rotation) {
         modal_.rotation = false;
         frame_.clear_rotation();
@@ -821,12 +816,11 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   const size_t block_from = held_.size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
   const bool zeroed =
-      conv_.comp_path() &&
-      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
+      path_ && (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
       (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
-  if (zeroed) path_.suspend();
+  if (zeroed) path_->suspend();
   action();
-  if (zeroed) path_.resume();
+  if (zeroed) path_->resume();
   if (block_.set_position_after && !block_.error) set_position();
   if (corner_) corner_finish(corner_here, block_from);
   if (corner_here) corner_begin(start);
@@ -952,7 +946,7 @@ void Machine::action() {
           return report(DiagId::CompPath, l,
                         fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
         if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
-        return path_.corner(l == 'r', word(l), block_.request->source);
+        return path_->corner(l == 'r', word(l), block_.request->source);
       }
       return report(DiagId::GtlProfile, l,
                     fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
@@ -962,13 +956,13 @@ void Machine::action() {
 
   if (virtual_axes_.mode != 0 && virtual_axes_programmed()) return;
   const bool axes = has_axis_word();
-  if (conv_.fanuc_rules) arc_block_rules();
+  if (axes && (modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw)) rules_->check_arc();
   if (block_.measure != Fn::Count) {
     measure();
     return;
   }
-  // ISO §8.4: G04 shares its block with a move and dwells after it.
-  const bool dwell_after = conv_.fanuc_rules && block_.dwell && axes;
+  // A dwell that shares its block with a move: after it (ISO §8.4), or instead of it.
+  const bool dwell_after = block_.dwell && axes && rules_->dwells_after_move();
   if (!dwell_after &&
       (block_.dwell || block_.dwell_code || (modal_.motion == Fn::MotionDwell && has(conv_.dwell_word)))) {
     if (axes) report(DiagId::DwellWithMotion, 0);
@@ -1100,7 +1094,7 @@ void Machine::finish() {
              corner_->source, corner_->slot, -1});
       release();
     }
-    if (conv_.comp_path()) path_.finish();
+    if (path_) path_->finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
     const ResetState before{modal_, frame_, position_offset_, envelope_, tolerance_, turning_};

@@ -5,8 +5,11 @@
 // functions), machine_frame.cpp (origins, transforms, limits and protected zones,
 // with frame.h and envelope.h), machine_motion.cpp (moves, arcs, threads, splines,
 // dwells, time), machine_cycles.cpp (what the canned cycles share, the measuring
-// cycles) with cycle_engine.h (each dialect family's canned cycles),
-// machine_system.cpp (system variables).
+// cycles), machine_system.cpp (system variables). What a dialect does its own way is a
+// strategy chosen once from the program's conventions, not a flag asked where it
+// matters: its canned cycles (cycle_engine.h), its tool change (tool_change.h), what
+// it forbids a block (block_rules.h: ISO's E-08..E-27) and the traced cutter path
+// (cutter_path.h: ISO's, NC-110's, or none).
 #pragma once
 
 #include <algorithm>
@@ -42,7 +45,7 @@ struct Step;
 class Machine final : public BlockMachine {
  public:
   Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace, RuntimeIssues& issues);
-  ~Machine() override;  // in machine.cpp, where the cycle engine and tool change are whole
+  ~Machine() override;  // in machine.cpp, where its strategies are whole
 
   // Power-on: position, modal state and registers as the dialect defines them.
   void power_on();
@@ -228,7 +231,7 @@ class Machine final : public BlockMachine {
   // cutter path (which follows every plane and compensation change, and moves while
   // it offsets them).
   bool wanted(EventKind kind) const {
-    return events_wanted_ || holding_ || (conv_.comp_path() && (!is_move(kind) || !path_.passes_moves()));
+    return events_wanted_ || holding_ || (path_ && (!is_move(kind) || !path_->passes_moves()));
   }
   void plane_event();
   void path_event(int mode);
@@ -282,19 +285,16 @@ class Machine final : public BlockMachine {
   [[nodiscard]] bool path_allowed(const std::vector<AxisValues>& path);
   [[nodiscard]] bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
   void set_position();
-  void load_offset();                                            // pp G92
-  void load_compensation();                                      // pp G93
-  void reference_approach();                                     // pp G30
-  void reference_return();                                       // ISO G28
-  void reference_leave();                                        // ISO G29
-  void set_local_offset();                                       // ISO G52
-  void length_zeroed(bool zero);                                 // ISO G28/G29: the length offset's event, zero or back
-  void scaling_on();                                             // ISO G51
-  void rotation_on();                                            // ISO G68
-  [[nodiscard]] bool transform_locked(const std::string& what);  // ISO: not while G51 or G68 is on
-  [[nodiscard]] bool comp_locked(bool changes);                  // ISO: no frame or unit change while G41/G42 is on
-  bool block_has(Fn fn) const;                                   // a code of the block calls fn
-  void arc_block_rules();  // ISO E-11, E-13, E-14, E-15: what an arc block may change
+  void load_offset();             // pp G92
+  void load_compensation();       // pp G93
+  void reference_approach();      // pp G30
+  void reference_return();        // ISO G28
+  void reference_leave();         // ISO G29
+  void set_local_offset();        // ISO G52
+  void length_zeroed(bool zero);  // ISO G28/G29: the length offset's event, zero or back
+  void scaling_on();              // ISO G51
+  void rotation_on();             // ISO G68
+  bool block_has(Fn fn) const;    // a code of the block calls fn
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
@@ -349,6 +349,10 @@ class Machine final : public BlockMachine {
   class IsoToolChange;
   class Nc110ToolChange;
   std::unique_ptr<ToolChange> tool_change_;
+  // What the dialect forbids a block (block_rules.h): plain, or ISO's; chosen once.
+  class BlockRules;
+  class IsoBlockRules;
+  std::unique_ptr<BlockRules> rules_;
   void cancel_cycle();  // the active cycle ends
   // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
   void hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
@@ -396,10 +400,15 @@ class Machine final : public BlockMachine {
   std::optional<AxisValues> chained_start_;                     // a corner's T2, when the next move has a corner too
   void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
   void text_event(EventKind kind, const std::string& text, uint32_t source, int n = 0, double a = 0);
-  void to_path(const Event& e, const AxisValues* start);  // through the cutter path (ISO)
+  void to_path(const Event& e, const AxisValues* start);  // through the cutter path, if there is one
   void pass_on(size_t count);                             // the first `count` held events, on
-  CutterPath path_;
-  static CompRules comp_rules(CutterStyle style);
+  // The traced cutter path: the runtime offsets the path itself (ISO, NC-110), or there
+  // is none and G41/G42 reach the trace as events, for the machine to compensate.
+  // Chosen once from the conventions (cutter_path); the sites ask only whether it is there.
+  std::unique_ptr<CutterPath> path_;
+  std::unique_ptr<CutterPath> cutter_path(TraceSink& trace);
+  uint64_t path_bytes() const;  // what it holds (held_bytes)
+  template <DiagId id>
   static void path_report(void* self, uint32_t source, const std::string& what);
   bool corner_requested() const;
   void corner_begin(const AxisValues& start);

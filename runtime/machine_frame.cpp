@@ -706,21 +706,6 @@ namespace ncc {
 
 // ---- ISO scaling and rotation (§8.12, §8.17) -------------------------------------------
 
-bool Machine::comp_locked(bool changes) {
-  // The offset path is made in the work coordinates of its moves: a change of units or
-  // of the frame would put two moves of it in different ones (ISO E-xx).
-  if (conv_.cutter != CutterStyle::FanucA || modal_.comp == 0 || !changes) return false;
-  report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation");
-  return true;
-}
-
-bool Machine::transform_locked(const std::string& what) {
-  // §8.8-§8.31 (E-08, E-09, E-19, E-21, E-22, E-26, E-27).
-  if (!conv_.fanuc_rules || (!modal_.scaling && !modal_.rotation)) return false;
-  report_code(DiagId::PlaneState, what, modal_.scaling ? "scaling (G51)" : "coordinate rotation (G68)");
-  return true;
-}
-
 void Machine::scaling_on() {
   // E-17, E-18: not under cutter compensation, nor under rotation.
   if (modal_.comp != 0 || modal_.rotation) {
@@ -801,27 +786,6 @@ void Machine::rotation_on() {
   last_rotation_ = angle;
   modal_.rotation = true;
   transform_event();
-}
-
-void Machine::arc_block_rules() {
-  const bool arc = modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
-  if (!arc || !has_axis_word()) return;
-  // §8.11 (E-15): the length offset does not change on a helix.
-  if (modal_.plane.w >= 0 && has(kAxisLetters[modal_.plane.w]) && compensation().length != block_.length_before)
-    report(DiagId::ArcForm, 0,
-           "the tool length offset cannot change in a helical move (E-15): change it on a straight move");
-  // §8.10: compensation starts and ends on a straight move (E-11, E-13; the path checks
-  // the first move after a G41/G42/G40 of a block of its own), and changes side or
-  // radius only there (E-14).
-  const char* what = nullptr;
-  if (block_.comp_before == 0 && modal_.comp != 0)
-    what = "cutter radius compensation cannot start on an arc (E-11)";
-  else if (block_.comp_before != 0 && modal_.comp == 0)
-    what = "cutter radius compensation cannot end on an arc (E-13)";
-  else if (block_.comp_before != 0 &&
-           (modal_.comp != block_.comp_before || compensation().radius != block_.radius_before))
-    what = "cutter radius compensation changes side or radius only on a straight move (E-14)";
-  if (what) report(DiagId::ArcForm, 0, std::string(what) + ": use a G00 or G01 move");
 }
 
 }  // namespace ncc

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "block_rules.h"
 #include "corner.h"
 #include "machine.h"
 #include "spline.h"
@@ -220,7 +221,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   // larger one (decision 26); by I J K its end point leaves the circle (E-01).
   const bool unequal = frame_.transformed() && !block_.machine_frame && frame_.scale[u] != frame_.scale[v];
   if (frame_.transformed() && !block_.machine_frame) {
-    if (unequal && !conv_.fanuc_rules) {
+    if (unequal && !rules_->scales_arcs_unequally()) {
       report(DiagId::TransformArc, 0, four_decimals(frame_.scale[u]), std::string(1, kAxisLetters[u]),
              four_decimals(frame_.scale[v]), std::string(1, kAxisLetters[v]));
       move_to(t);

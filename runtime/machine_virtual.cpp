@@ -98,7 +98,7 @@ bool Machine::virtual_function(FnCall call) {
     if (kind(a) != AxisKind::Linear || config_.axes[static_cast<size_t>(a)].diameter)
       return fail(fmt::format("the virtual axis {} is a linear axis, not a rotary or diametral one", kAxisLetters[a]));
 
-  if (conv_.comp_path()) path_.leave();
+  if (path_) path_->leave();
   VirtualAxes next;
   next.mode = *mode;
   next.real = real;
@@ -212,7 +212,7 @@ void Machine::virtual_event(const std::string& what) {
 void Machine::virtual_off() {
   VirtualAxes& va = virtual_axes_;
   if (va.mode == 0) return;
-  if (conv_.comp_path()) path_.leave();  // NC-110's G40 leaves with the next move: this is it
+  if (path_) path_->leave();  // NC-110's G40 leaves with the next move: this is it
   const AxisValues now = machine_;
   auto virtual_at = [&](size_t k) { return now[va.virt[k]] - va.zero[va.virt[k]]; };
   switch (va.mode) {
