@@ -576,12 +576,6 @@ class CanonSink final : public BufferedSink {
 
 }  // namespace
 
-std::string event_json(const Event& e, std::string_view axes) {
-  std::string s = R"({"event":")" + event_name(e.kind) + '"';
-  json_fields(e, axes, s);
-  return s + '}';
-}
-
 std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
                                              std::string axes) {
   switch (format) {

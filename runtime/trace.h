@@ -177,10 +177,6 @@ class TeeSink final : public TraceSink {
 
 std::string event_name(EventKind kind);  // as the traces write it: "rapid", "tool_change"
 
-// An event's name and fields as the JSON Lines trace gives them, without its place:
-// {"event":"clamp","clamp":"on"}.
-std::string event_json(const Event& e, std::string_view axes);
-
 enum class TraceFormat { Text, Jsonl, Canon };
 
 // A sink writing `format` to `out` through a buffer; `axes` are the letters the
