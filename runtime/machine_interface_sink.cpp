@@ -100,7 +100,12 @@ api::Block block_of(const SourceMap& map, uint32_t source, uint8_t process) {
 const api::Block& MachineInterfaceSink::block(const Event& e) {
   if (block_of_ && block_of_->first == e.source && block_of_->second == e.process) return block_;
   block_of_ = {e.source, e.process};
-  block_ = block_of(map_, e.source, e.process);
+  if (places_) {
+    block_ = block_of(map_, e.source, e.process);
+  } else {
+    block_.index = e.source;
+    block_.process = e.process;
+  }
   return block_;
 }
 

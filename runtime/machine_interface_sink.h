@@ -22,7 +22,10 @@ api::Block block_of(const SourceMap& map, uint32_t source, uint8_t process = 0);
 
 class MachineInterfaceSink final : public TraceSink {
  public:
-  MachineInterfaceSink(api::MachineInterface& machine, const SourceMap& map) : machine_(machine), map_(map) {}
+  // `places` false: the calls name their block by index and process alone, for a
+  // machine that prints no places (the canon trace), which then pays no decoding.
+  MachineInterfaceSink(api::MachineInterface& machine, const SourceMap& map, bool places = true)
+      : machine_(machine), map_(map), places_(places) {}
 
   void event(const Event& e) override;
   bool wants_events() const override { return !refusal_; }
@@ -43,6 +46,7 @@ class MachineInterfaceSink final : public TraceSink {
 
   api::MachineInterface& machine_;
   const SourceMap& map_;
+  bool places_;
   std::optional<Refusal> refusal_;
   api::Block block_;
   std::optional<std::pair<uint32_t, uint8_t>> block_of_;  // the source and process block_ is for

@@ -9,7 +9,7 @@
 // degrees: what `ncc run` traces (docs/trace.md), and what LinuxCNC's canonical calls
 // carry. The offsets come as calls of their own (work_offset, position_offset,
 // tool_length_offset); a move ends where the call says and starts where the last
-// one ended.
+// one ended. The trace writers of `ncc run` are implementations of this interface too.
 #pragma once
 
 #include <array>
