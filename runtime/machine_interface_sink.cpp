@@ -5,7 +5,9 @@
 namespace ncc {
 
 namespace api {
-MachineInterface::~MachineInterface() = default;  // its vtable lives with its callers
+// The key function: the interface's vtable and typeinfo are made here, in the
+// runtime that libncc.so is built from and exports them.
+MachineInterface::~MachineInterface() = default;
 }  // namespace api
 
 namespace {
