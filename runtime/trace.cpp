@@ -80,7 +80,7 @@ class TraceWriter : public api::MachineInterface {
   }
   bool has_axis(char letter) const { return axes_.find(letter) != std::string::npos; }
   // X Y Z and the machine's other axes.
-  bool has_axis(int i) const { return i < 3 || has_axis(kAxisLetters[i]); }
+  bool lists_axis(int i) const { return i < 3 || has_axis(kAxisLetters[i]); }
 
   static constexpr size_t kFlushAt = 1 << 16;
   std::FILE* out_;
@@ -531,13 +531,13 @@ class JsonlWriter final : public TraceWriter {
   // "X":1,"Y":2,"Z":3 and the machine's other axes.
   void position(std::string& s, const Axes& p) const {
     for (int i = 0; i < kAxisCount; ++i)
-      if (has_axis(i)) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(p[i]));
+      if (lists_axis(i)) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(p[i]));
   }
   // The same as an object: "scale":{"X":1,"Y":1,"Z":1}.
   void point(std::string& s, const char* key, const Axes& p) const {
     std::string inner;
     for (int i = 0; i < kAxisCount; ++i)
-      if (has_axis(i))
+      if (lists_axis(i))
         inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(p[i]));
     s += fmt::format(R"(,"{}":{{{}}})", key, inner);
   }
