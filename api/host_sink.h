@@ -1,38 +1,24 @@
-// The runtime's events as the calls of the host's MachineInterface: the one place
-// the public API meets the trace.
+// A host's MachineInterface behind the runtime's adapter, with the API's own policy
+// for a restart.
 #pragma once
 
 #include <map>
-#include <optional>
 #include <string>
 #include <vector>
 
-#include "ncc/machine_interface.h"
-#include "runtime/trace.h"
+#include "runtime/machine_interface_sink.h"
 
 namespace ncc::api {
 
-// The runtime's numbers for a feed mode (0 inverse time, 1 per minute, 2 per
-// revolution) and a cutter side (0 off, 1 left, 2 right), as the API names them.
-FeedMode feed_mode_of(int n);
-CutterSide cutter_side_of(int n);
-
 class HostSink final : public TraceSink {
  public:
-  HostSink(MachineInterface& host, const SourceMap& map, std::string axes)
-      : host_(host), map_(map), axes_(std::move(axes)) {}
+  HostSink(MachineInterface& host, const SourceMap& map) : calls_(host, map) {}
 
   void event(const Event& e) override;
-  bool wants_events() const override { return !refusal_; }
+  bool wants_events() const override { return calls_.wants_events(); }
 
-  // The first call the host refused: the block, the call, and why. Nothing after it
-  // reaches the host.
-  struct Refusal {
-    uint32_t source;
-    std::string call;
-    std::string reason;
-  };
-  const std::optional<Refusal>& refusal() const { return refusal_; }
+  // The first call the host refused. Nothing after it reaches the host.
+  const std::optional<MachineInterfaceSink::Refusal>& refusal() const { return calls_.refusal(); }
 
   // While muted (a restart runs up to its block) the host is called for nothing; the
   // modes the events set are kept, and unmute() tells the host those in force.
@@ -41,15 +27,7 @@ class HostSink final : public TraceSink {
   void reset();
 
  private:
-  Reply call(const Event& e, const Block& b);
-  const Block& block(const Event& e);
-
-  MachineInterface& host_;
-  const SourceMap& map_;
-  std::string axes_;
-  std::optional<Refusal> refusal_;
-  Block block_;
-  std::optional<std::pair<uint32_t, uint8_t>> block_of_;  // the source and process block_ is for
+  MachineInterfaceSink calls_;
   bool muted_ = false;
   // Muted: the last event of each mode, by when it came (coolants: those since the last off).
   uint64_t seq_ = 0;

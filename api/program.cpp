@@ -1,4 +1,5 @@
 #include "internal.h"
+#include "runtime/machine_interface_sink.h"
 
 namespace ncc::api {
 
@@ -102,19 +103,7 @@ std::string Program::dialect() const { return impl_->module.dialect; }
 
 uint32_t Program::block_count() const { return impl_->module.source_map.size(); }
 
-Block Program::block(uint32_t index) const {
-  const SourceMap& map = impl_->module.source_map;
-  Block b;
-  b.index = index;
-  if (index >= map.size()) return b;
-  const SourceBlock s = map.block(index);
-  if (s.file < map.files.size()) b.file = map.files[s.file];
-  b.line = s.line;
-  b.column = s.col;
-  if (s.has_number) b.number = s.number;
-  b.main_block = s.main_block;
-  return b;
-}
+Block Program::block(uint32_t index) const { return block_of(impl_->module.source_map, index); }
 
 std::optional<uint32_t> Program::block_at_line(uint32_t line) const {
   const SourceMap& map = impl_->module.source_map;

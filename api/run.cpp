@@ -8,12 +8,9 @@
 
 namespace ncc::api {
 
-MachineInterface::~MachineInterface() = default;
-
 struct Run::Impl {
   Impl(std::shared_ptr<const Program::Impl> p, MachineInterface& host, const RunOptions& o)
-      : program(std::move(p)), options(o),
-        sink(host, program->module.source_map, program->module.semantics.conventions.axes) {
+      : program(std::move(p)), options(o), sink(host, program->module.source_map) {
     for (const auto& [path, text] : program->sources) session.sources.add(path, text);
   }
 

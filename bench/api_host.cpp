@@ -14,8 +14,12 @@ namespace {
 class Counter final : public api::MachineInterface {
  public:
   unsigned long moves = 0, others = 0;
-  api::Reply straight_traverse(const api::Block&, const api::Axes&) override { return ++moves, api::Reply{}; }
-  api::Reply straight_feed(const api::Block&, const api::Axes&) override { return ++moves, api::Reply{}; }
+  api::Reply straight_traverse(const api::Block&, const api::Axes&, api::AxisMask) override {
+    return ++moves, api::Reply{};
+  }
+  api::Reply straight_feed(const api::Block&, const api::Axes&, api::AxisMask) override {
+    return ++moves, api::Reply{};
+  }
   api::Reply arc_feed(const api::Block&, const api::Arc&) override { return ++moves, api::Reply{}; }
   api::Reply feed_rate(const api::Block&, double) override { return ++others, api::Reply{}; }
 };

@@ -3,9 +3,9 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <iterator>
 
 #include "contract/asset_files.h"
+#include "runtime/machine_interface_sink.h"
 #include "support/diagnostics.h"
 #include "support/text.h"
 
@@ -27,66 +27,43 @@ std::string axis_list(int mask) {
   return s;
 }
 
-}  // namespace
+using api::Axes;
+using api::AxisMask;
+using api::Reply;
 
-std::string event_name(EventKind kind) {
-  constexpr const char* names[] = {"units",         "plane",          "feed_mode",
-                                   "feed_rate",     "spindle_mode",   "spindle_speed",
-                                   "spindle_on",    "spindle_stop",   "spindle_orient",
-                                   "rapid",         "linear",         "arc",
-                                   "parabola",      "thread",         "dwell",
-                                   "tool_select",   "tool_change",    "tool_length_offset",
-                                   "cutter_comp",   "work_offset",    "position_offset",
-                                   "coolant",       "clamp",          "override",
-                                   "spindle_hold",  "path",           "comment",
-                                   "message",       "stop",           "operator_move",
-                                   "end",           "origin",         "transform",
-                                   "tolerance",     "limits",         "zone",
-                                   "configuration", "probe",          "spline",
-                                   "spindle_range", "part_change",    "offset_load",
-                                   "diameter",      "feed_reduction", "aux",
-                                   "block",         "comp_load",      "asset",
-                                   "input",         "screen",         "sync",
-                                   "graphic",       "tooling",        "virtual"};
-  static_assert(std::size(names) == static_cast<size_t>(EventKind::Virtual) + 1, "one name per event kind");
-  return names[static_cast<int>(kind)];
-}
+constexpr const char* kFeedModes[] = {"inverse_time", "per_minute", "per_revolution"};
+constexpr const char* kZoneStates[] = {"off", "on", "defined"};
 
-namespace {
+int ordinal(auto e) { return static_cast<int>(e); }
+Plane plane_of(const api::Plane& p) { return {p.first, p.second, p.normal}; }
 
 // "read 1 record 3", and what went wrong: "error 11 (record not found)".
-std::string asset_text(const Event& e) {
-  if (e.n == 0) return e.text;
-  return fmt::format("{} error {} ({})", e.text, e.n, asset::meaning(static_cast<asset::Code>(e.n)));
+std::string asset_text(std::string_view statement, int code) {
+  if (code == 0) return std::string(statement);
+  return fmt::format("{} error {} ({})", statement, code, asset::meaning(static_cast<asset::Code>(code)));
 }
 
 std::string spindle_range(int n) { return n == 0 ? "none" : n < 0 ? "auto" : std::to_string(n); }
-
-// An input event's prompt with the value offered, and the text answered (n = 1).
-std::pair<std::string, std::string> input_parts(const Event& e) {
-  if (!e.n) return {e.text, ""};
-  const size_t cut = e.text.rfind('\n');
-  return {e.text.substr(0, cut), e.text.substr(cut + 1)};
-}
 
 std::string canon_number(double v) { return fmt::format("{:.4f}", v); }
 
 std::string json_number(double v) { return std::isfinite(v) ? shortest(v) : std::string("null"); }
 
 // A JSON (and C) string literal: control characters escaped, broken UTF-8 as U+FFFD.
-std::string quoted(const std::string& s) { return "\"" + json_escape(s) + "\""; }
+std::string quoted(std::string_view s) { return "\"" + json_escape(s) + "\""; }
 // A text from the program or a file that ends the line (a statement, a field shown, a
 // function): escaped as in a string literal, its quotes as they are.
-std::string free_text(const std::string& s) { return json_escape(s, false); }
+std::string free_text(std::string_view s) { return json_escape(s, false); }
 
-// Writes through a large buffer; formatting never waits on the stream.
-class BufferedSink : public TraceSink {
+// A trace writer: the calls of a run as lines, through a large buffer (formatting
+// never waits on the stream). `axes` are the letters the machine has.
+class TraceWriter : public api::MachineInterface {
  public:
-  BufferedSink(std::FILE* out, const SourceMap& map, std::string axes) : out_(out), map_(map), axes_(std::move(axes)) {
+  TraceWriter(std::FILE* out, std::string axes) : out_(out), axes_(std::move(axes)) {
     buffer_.reserve(kFlushAt + 4096);
   }
-  ~BufferedSink() override { flush(); }
-  void flush() override {
+  ~TraceWriter() override { flush(); }
+  void flush() {
     if (!buffer_.empty()) std::fwrite(buffer_.data(), 1, buffer_.size(), out_);
     buffer_.clear();
     std::fflush(out_);
@@ -101,34 +78,195 @@ class BufferedSink : public TraceSink {
       buffer_.clear();
     }
   }
-  SourceBlock block(const Event& e) const { return e.source < map_.size() ? map_.block(e.source) : SourceBlock{}; }
   bool has_axis(char letter) const { return axes_.find(letter) != std::string::npos; }
+  // X Y Z and the machine's other axes.
+  bool lists_axis(int i) const { return i < 3 || has_axis(kAxisLetters[i]); }
 
   static constexpr size_t kFlushAt = 1 << 16;
   std::FILE* out_;
-  const SourceMap& map_;
   std::string axes_;
   std::string buffer_;
 };
 
-class TextSink final : public BufferedSink {
+class TextWriter final : public TraceWriter {
  public:
-  using BufferedSink::BufferedSink;
+  using TraceWriter::TraceWriter;
 
-  void event(const Event& e) override {
-    const SourceBlock b = block(e);
-    std::string s = e.process ? fmt::format("P{} ", e.process) : std::string();
-    s += b.file == 0 ? fmt::format("{}", b.line)
-                     : fmt::format("{}:{}", printable(b.file < map_.files.size() ? map_.files[b.file] : "?"), b.line);
-    s += b.has_number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', b.number) : std::string(" - ");
-    s += body(e);
-    line(s);
+  Reply units(const api::Block& b, api::Units u) override {
+    return write(b, u == api::Units::Inches ? "units inch" : "units mm");
   }
+  Reply plane(const api::Block& b, const api::Plane& p) override {
+    return write(b, "plane " + plane_name(plane_of(p)));
+  }
+  Reply feed_mode(const api::Block& b, api::FeedMode m) override {
+    return write(b, fmt::format("feed_mode {}", kFeedModes[ordinal(m)]));
+  }
+  Reply feed_rate(const api::Block& b, double rate) override { return write(b, "feed_rate " + four_decimals(rate)); }
+  Reply spindle_mode(const api::Block& b, api::SpindleMode m) override {
+    return write(b, m == api::SpindleMode::ConstantSurfaceSpeed ? "spindle_mode constant_surface" : "spindle_mode rpm");
+  }
+  Reply spindle_speed(const api::Block& b, double speed) override {
+    return write(b, "spindle_speed " + four_decimals(speed));
+  }
+  Reply spindle_start(const api::Block& b, api::Direction d) override {
+    return write(b, d == api::Direction::Clockwise ? "spindle cw" : "spindle ccw");
+  }
+  Reply spindle_stop(const api::Block& b) override { return write(b, "spindle stop"); }
+  Reply spindle_orient(const api::Block& b, double angle) override {
+    return write(b, "spindle orient " + four_decimals(angle));
+  }
+  Reply straight_traverse(const api::Block& b, const Axes& end, AxisMask moved) override {
+    return write(b, "rapid " + position(end, moved));
+  }
+  Reply straight_feed(const api::Block& b, const Axes& end, AxisMask moved) override {
+    return write(b, "linear " + position(end, moved));
+  }
+  Reply arc_feed(const api::Block& b, const api::Arc& a) override {
+    return write(b, fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", a.rotation > 0 ? "ccw" : "cw",
+                                plane_name(plane_of(a.plane)), position(a.end, a.moved), kAxisLetters[a.plane.first],
+                                four_decimals(a.centre_first), kAxisLetters[a.plane.second],
+                                four_decimals(a.centre_second), four_decimals(a.radius), four_decimals(a.sweep)));
+  }
+  Reply parabola(const api::Block& b, const Axes& end, const Axes& control) override {
+    return write(b, fmt::format("parabola {} control X{} Y{} Z{}", position(end), four_decimals(control[0]),
+                                four_decimals(control[1]), four_decimals(control[2])));
+  }
+  Reply thread(const api::Block& b, const Axes& end, double pitch, double pitch_change, double start_angle) override {
+    std::string s = fmt::format("thread {} pitch {}", position(end), four_decimals(pitch));
+    if (pitch_change != 0) s += " change " + four_decimals(pitch_change);
+    if (start_angle != 0) s += " phase " + four_decimals(start_angle);
+    return write(b, s);
+  }
+  Reply spline(const api::Block& b, const Axes& end, const Axes& control1, const Axes& control2) override {
+    return write(b,
+                 fmt::format("spline {} control {} control {}", position(end), position(control1), position(control2)));
+  }
+  Reply probe(const api::Block& b, const Axes& end, bool contact) override {
+    return write(b, fmt::format("probe {} {}", position(end), contact ? "contact" : "no_contact"));
+  }
+  Reply dwell(const api::Block& b, double seconds) override { return write(b, "dwell " + four_decimals(seconds)); }
+  Reply path_mode(const api::Block& b, api::PathMode m) override {
+    return write(b, fmt::format("path {}", kPathModes[ordinal(m)]));
+  }
+  Reply tool_select(const api::Block& b, int tool) override { return write(b, fmt::format("tool_select {}", tool)); }
+  Reply tool_change(const api::Block& b, int tool) override { return write(b, fmt::format("tool_change {}", tool)); }
+  Reply tool_length_offset(const api::Block& b, const Axes& offset) override {
+    return write(b, "tool_length_offset " + position(offset));
+  }
+  Reply cutter_compensation(const api::Block& b, api::CutterSide side, double radius) override {
+    return write(b, side == api::CutterSide::Off
+                        ? std::string("cutter_comp off")
+                        : fmt::format("cutter_comp {} radius {}", side == api::CutterSide::Left ? "left" : "right",
+                                      four_decimals(radius)));
+  }
+  Reply work_offset(const api::Block& b, int number, const Axes& offset) override {
+    return write(
+        b, number == 0 ? std::string("work_offset none") : fmt::format("work_offset {} {}", number, position(offset)));
+  }
+  Reply position_offset(const api::Block& b, const Axes& offset) override {
+    return write(b, "position_offset " + position(offset));
+  }
+  Reply coolant(const api::Block& b, api::Coolant c) override {
+    return write(b, fmt::format("coolant {}", kCoolants[ordinal(c)]));
+  }
+  Reply comment(const api::Block& b, std::string_view text) override { return write(b, "comment " + quoted(text)); }
+  Reply message(const api::Block& b, std::string_view text) override { return write(b, "message " + quoted(text)); }
+  Reply stop(const api::Block& b, api::StopKind k) override {
+    return write(b, fmt::format("stop {}", kStopKinds[ordinal(k)]));
+  }
+  Reply program_end(const api::Block& b, bool end_of_information) override {
+    return write(b, end_of_information ? "end information" : "end program");
+  }
+  Reply operator_move(const api::Block& b, const Axes& to) override {
+    return write(b, "operator_move " + position(to));
+  }
+  Reply input(const api::Block& b, std::string_view prompt, double answer) override {
+    return write(b, fmt::format("input {} {}", quoted(prompt), four_decimals(answer)));
+  }
+  Reply input_text(const api::Block& b, std::string_view prompt, std::string_view answer) override {
+    return write(b, fmt::format("input {} {}", quoted(prompt), quoted(answer)));
+  }
+  Reply clamp(const api::Block& b, api::Clamp c) override {
+    return write(b, fmt::format("clamp {}", kClamps[ordinal(c)]));
+  }
+  Reply override_enable(const api::Block& b, bool enabled) override {
+    return write(b, enabled ? "override enabled" : "override disabled");
+  }
+  Reply spindle_hold(const api::Block& b, bool on) override {
+    return write(b, on ? "spindle_hold on" : "spindle_hold off");
+  }
+  Reply spindle_range(const api::Block& b, int range) override {
+    return write(b, "spindle_range " + ncc::spindle_range(range));
+  }
+  Reply aux(const api::Block& b, std::string_view function) override { return write(b, "aux " + free_text(function)); }
+  Reply block_start(const api::Block& b) override { return write(b, "block"); }
+  Reply origin(const api::Block& b, const Axes& zero) override { return write(b, "origin " + position(zero)); }
+  Reply transform(const api::Block& b, double rotation, AxisMask mirrored, const Axes& scale) override {
+    std::string s;
+    if (rotation != 0) s += " rotation " + four_decimals(rotation);
+    if (mirrored) s += " mirror " + axis_list(mirrored);
+    std::string scales;
+    for (int i = 0; i < kAxisCount; ++i)
+      if (scale[i] != 1) scales += fmt::format(" {}{}", kAxisLetters[i], four_decimals(scale[i]));
+    if (!scales.empty()) s += " scale" + scales;
+    return write(b, "transform" + (s.empty() ? std::string(" none") : s));
+  }
+  Reply tolerance(const api::Block& b, AxisMask axes, const Axes& tolerance) override {
+    return write(b, bounds("tolerance", axes, tolerance, nullptr));
+  }
+  Reply limits(const api::Block& b, AxisMask axes, const Axes& lower, const Axes& upper) override {
+    return write(b, bounds("limits", axes, lower, &upper));  // limits none: cancelled (RESET)
+  }
+  Reply zone(const api::Block& b, int zone, api::ZoneState state, const api::Plane& p, const Axes& lower,
+             const Axes& upper) override {
+    std::string s = fmt::format("zone {} {}", zone, kZoneStates[ordinal(state)]);
+    if (state == api::ZoneState::Defined)
+      for (int a : {p.first, p.second})
+        s += fmt::format(" {}{}..{}", kAxisLetters[a], four_decimals(lower[a]), four_decimals(upper[a]));
+    return write(b, s);
+  }
+  Reply configuration(const api::Block& b, api::Configuration c) override {
+    return write(b, c == api::Configuration::Turning ? "configuration turning" : "configuration milling");
+  }
+  Reply part_change(const api::Block& b) override { return write(b, "part_change"); }
+  Reply virtual_axes(const api::Block& b, std::string_view what) override {
+    return write(b, "virtual " + free_text(what));
+  }
+  Reply offset_load(const api::Block& b, int number, const Axes& offset) override {
+    return write(b, fmt::format("offset_load {} {}", number, position(offset)));
+  }
+  Reply comp_load(const api::Block& b, int entry, double length, double radius) override {
+    return write(b,
+                 fmt::format("comp_load {} length {} radius {}", entry, four_decimals(length), four_decimals(radius)));
+  }
+  Reply tooling(const api::Block& b, api::ToolingChange, std::string_view what) override {
+    return write(b, "tooling " + free_text(what));
+  }
+  Reply diameter(const api::Block& b, bool on) override { return write(b, on ? "diameter on" : "diameter off"); }
+  Reply feed_reduction(const api::Block& b, bool on) override {
+    return write(b, on ? "feed_reduction on" : "feed_reduction off");
+  }
+  Reply asset(const api::Block& b, std::string_view statement, int code) override {
+    return write(b, "asset " + free_text(asset_text(statement, code)));
+  }
+  Reply screen(const api::Block& b, std::string_view what) override { return write(b, "screen " + free_text(what)); }
+  Reply sync(const api::Block& b, std::string_view what) override { return write(b, "sync " + free_text(what)); }
+  Reply graphic(const api::Block& b, std::string_view what) override { return write(b, "graphic " + free_text(what)); }
 
  private:
+  // The block's line (and file, when not the main one) and number, then the call.
+  Reply write(const api::Block& b, const std::string& call) {
+    std::string s = b.process ? fmt::format("P{} ", b.process) : std::string();
+    s += b.main_file ? fmt::format("{}", b.line) : fmt::format("{}:{}", printable(b.file), b.line);
+    s += b.number ? fmt::format(" {}{} ", b.main_block ? ':' : 'N', *b.number) : std::string(" - ");
+    s += call;
+    line(s);
+    return {};
+  }
+
   // X Y Z always; another axis of the machine once it has been away from zero or has
   // moved (an endless rotary axis turning to B0 shows as B0).
-  std::string position(const AxisValues& p, uint16_t moved = 0) {
+  std::string position(const Axes& p, AxisMask moved = 0) {
     std::string s;
     for (int i = 0; i < kAxisCount; ++i) {
       if (i >= 3) {
@@ -142,425 +280,513 @@ class TextSink final : public BufferedSink {
     return s;
   }
 
-  std::string body(const Event& e) {
-    switch (e.kind) {
-      case EventKind::Units: return e.n ? "units inch" : "units mm";
-      case EventKind::Plane: return "plane " + plane_name(e.plane);
-      case EventKind::FeedMode:
-        return fmt::format("feed_mode {}", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
-      case EventKind::FeedRate: return "feed_rate " + four_decimals(e.a);
-      case EventKind::SpindleMode: return e.n ? "spindle_mode constant_surface" : "spindle_mode rpm";
-      case EventKind::SpindleSpeed: return "spindle_speed " + four_decimals(e.a);
-      case EventKind::SpindleOn: return e.n > 0 ? "spindle cw" : "spindle ccw";
-      case EventKind::SpindleStop: return "spindle stop";
-      case EventKind::SpindleOrient: return "spindle orient " + four_decimals(e.a);
-      case EventKind::Rapid: return "rapid " + position(e.pos, e.moved);
-      case EventKind::Linear: return "linear " + position(e.pos, e.moved);
-      case EventKind::Arc:
-        return fmt::format("arc {} {} {} centre {}{} {}{} radius {} sweep {}", e.rotation > 0 ? "ccw" : "cw",
-                           plane_name(e.plane), position(e.pos, e.moved), kAxisLetters[e.plane.u],
-                           four_decimals(e.centre[0]), kAxisLetters[e.plane.v], four_decimals(e.centre[1]),
-                           four_decimals(e.a), four_decimals(e.b));
-      case EventKind::Parabola:
-        return fmt::format("parabola {} control X{} Y{} Z{}", position(e.pos), four_decimals(e.control[0]),
-                           four_decimals(e.control[1]), four_decimals(e.control[2]));
-      case EventKind::Thread: {
-        std::string s = fmt::format("thread {} pitch {}", position(e.pos), four_decimals(e.a));
-        if (e.b != 0) s += " change " + four_decimals(e.b);
-        if (e.c != 0) s += " phase " + four_decimals(e.c);
-        return s;
-      }
-      case EventKind::Spline:
-        return fmt::format("spline {} control {} control {}", position(e.pos), position(e.control),
-                           position(e.control2));
-      case EventKind::Dwell: return "dwell " + four_decimals(e.a);
-      case EventKind::SelectTool: return fmt::format("tool_select {}", e.n);
-      case EventKind::ChangeTool: return fmt::format("tool_change {}", e.n);
-      case EventKind::ToolLengthOffset: return "tool_length_offset " + position(e.pos);
-      case EventKind::CutterComp:
-        return e.n == 0 ? std::string("cutter_comp off")
-                        : fmt::format("cutter_comp {} radius {}", e.n == 1 ? "left" : "right", four_decimals(e.a));
-      case EventKind::WorkOffset:
-        return e.n == 0 ? std::string("work_offset none") : fmt::format("work_offset {} {}", e.n, position(e.pos));
-      case EventKind::PositionOffset: return "position_offset " + position(e.pos);
-      case EventKind::Coolant: return fmt::format("coolant {}", kCoolants[e.n]);
-      case EventKind::Clamp: return fmt::format("clamp {}", kClamps[e.n]);
-      case EventKind::Override: return e.n ? "override enabled" : "override disabled";
-      case EventKind::SpindleHold: return e.n ? "spindle_hold on" : "spindle_hold off";
-      case EventKind::PathMode: return fmt::format("path {}", kPathModes[e.n]);
-      case EventKind::Comment: return "comment " + quoted(e.text);
-      case EventKind::Message: return "message " + quoted(e.text);
-      case EventKind::Stop: return fmt::format("stop {}", kStopKinds[e.n]);
-      case EventKind::OperatorMove: return "operator_move " + position(e.pos);
-      case EventKind::End: return e.n ? "end information" : "end program";
-      case EventKind::Origin: return "origin " + position(e.pos);
-      case EventKind::Transform: {
-        std::string s;
-        if (e.a != 0) s += " rotation " + four_decimals(e.a);
-        if (e.n) s += " mirror " + axis_list(e.n);
-        std::string scale;
-        for (int i = 0; i < kAxisCount; ++i)
-          if (e.pos[i] != 1) scale += fmt::format(" {}{}", kAxisLetters[i], four_decimals(e.pos[i]));
-        if (!scale.empty()) s += " scale" + scale;
-        return "transform" + (s.empty() ? std::string(" none") : s);
-      }
-      case EventKind::Tolerance:
-      case EventKind::Limits: {
-        std::string s = e.kind == EventKind::Tolerance ? "tolerance" : "limits";
-        for (int i = 0; i < kAxisCount; ++i) {
-          if (!(e.n & (1 << i))) continue;
-          s += fmt::format(" {}{}", kAxisLetters[i], four_decimals(e.pos[i]));
-          if (e.kind == EventKind::Limits) s += ".." + four_decimals(e.control[i]);
-        }
-        return e.n ? s : s + " none";  // limits none: cancelled (RESET)
-      }
-      case EventKind::Zone: {
-        std::string s = fmt::format("zone {} {}", e.rotation, e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
-        if (e.n == 2)
-          for (int a : {e.plane.u, e.plane.v})
-            s += fmt::format(" {}{}..{}", kAxisLetters[a], four_decimals(e.pos[a]), four_decimals(e.control[a]));
-        return s;
-      }
-      case EventKind::Configuration: return e.n ? "configuration turning" : "configuration milling";
-      case EventKind::Probe: return fmt::format("probe {} {}", position(e.pos), e.n ? "contact" : "no_contact");
-      case EventKind::SpindleRange: return "spindle_range " + spindle_range(e.n);
-      case EventKind::PartChange: return "part_change";
-      case EventKind::OffsetLoad: return fmt::format("offset_load {} {}", e.n, position(e.pos));
-      case EventKind::Diameter: return e.n ? "diameter on" : "diameter off";
-      case EventKind::FeedReduction: return e.n ? "feed_reduction on" : "feed_reduction off";
-      case EventKind::Aux: return "aux " + free_text(e.text);
-      case EventKind::Block: return "block";
-      case EventKind::CompLoad:
-        return fmt::format("comp_load {} length {} radius {}", e.n, four_decimals(e.a), four_decimals(e.b));
-      case EventKind::Asset: return "asset " + free_text(asset_text(e));
-      case EventKind::Input: {
-        const auto [shown, answer] = input_parts(e);
-        return fmt::format("input {} {}", quoted(shown), e.n ? quoted(answer) : four_decimals(e.a));
-      }
-      case EventKind::Screen: return "screen " + free_text(e.text);
-      case EventKind::Sync: return "sync " + free_text(e.text);
-      case EventKind::Graphic: return "graphic " + free_text(e.text);
-      case EventKind::Tooling: return "tooling " + free_text(e.text);
-      case EventKind::Virtual: return "virtual " + free_text(e.text);
+  // "limits X0..100 Y0..50" of the axes of a mask, "limits none" without any.
+  static std::string bounds(std::string s, AxisMask axes, const Axes& lower, const Axes* upper) {
+    for (int i = 0; i < kAxisCount; ++i) {
+      if (!(axes & (1 << i))) continue;
+      s += fmt::format(" {}{}", kAxisLetters[i], four_decimals(lower[i]));
+      if (upper) s += ".." + four_decimals((*upper)[i]);
     }
-    return "?";
+    return axes ? s : s + " none";
   }
 
   bool shown_[kAxisCount] = {};
 };
 
-void json_position(const Event& e, std::string_view axes, std::string& s) {
-  for (int i = 0; i < kAxisCount; ++i)
-    if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos)
-      s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
-}
-
-void json_fields(const Event& e, std::string_view axes, std::string& s) {
-  auto num = [&](const char* key, double v) { s += fmt::format(R"(,"{}":{})", key, json_number(v)); };
-  auto str = [&](const char* key, std::string_view v) { s += fmt::format(R"(,"{}":"{}")", key, v); };
-  switch (e.kind) {
-    case EventKind::Units: str("units", e.n ? "inch" : "mm"); break;
-    case EventKind::Plane: str("plane", plane_name(e.plane)); break;
-    case EventKind::FeedMode:
-      str("mode", e.n == 0 ? "inverse_time" : e.n == 1 ? "per_minute" : "per_revolution");
-      break;
-    case EventKind::FeedRate:
-    case EventKind::SpindleSpeed: num("value", e.a); break;
-    case EventKind::SpindleMode: str("mode", e.n ? "constant_surface" : "rpm"); break;
-    case EventKind::SpindleOn: str("direction", e.n > 0 ? "cw" : "ccw"); break;
-    case EventKind::SpindleOrient: num("angle", e.a); break;
-    case EventKind::Rapid:
-    case EventKind::Linear:
-    case EventKind::ToolLengthOffset:
-    case EventKind::PositionOffset:
-    case EventKind::OperatorMove: json_position(e, axes, s); break;
-    case EventKind::Arc: {
-      json_position(e, axes, s);
-      str("plane", plane_name(e.plane));
-      str("direction", e.rotation > 0 ? "ccw" : "cw");
-      s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[e.plane.u], json_number(e.centre[0]),
-                       kAxisLetters[e.plane.v], json_number(e.centre[1]));
-      num("radius", e.a);
-      num("sweep", e.b);
-      s += fmt::format(R"(,"rotation":{})", e.rotation);
-      break;
-    }
-    case EventKind::Parabola:
-      json_position(e, axes, s);
-      s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(e.control[0]), json_number(e.control[1]),
-                       json_number(e.control[2]));
-      break;
-    case EventKind::Thread:
-      json_position(e, axes, s);
-      num("pitch", e.a);
-      num("pitch_change", e.b);
-      if (e.c != 0) num("phase", e.c);
-      break;
-    case EventKind::Spline: {
-      json_position(e, axes, s);
-      auto point = [&](const char* key, const AxisValues& p) {
-        std::string inner;
-        for (int i = 0; i < kAxisCount; ++i)
-          if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos)
-            inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(p[i]));
-        s += fmt::format(R"(,"{}":{{{}}})", key, inner);
-      };
-      point("control1", e.control);
-      point("control2", e.control2);
-      break;
-    }
-    case EventKind::Origin: json_position(e, axes, s); break;
-    case EventKind::Transform: {
-      num("rotation", e.a);
-      str("mirror", axis_list(e.n));
-      std::string inner;
-      for (int i = 0; i < kAxisCount; ++i)
-        if (i < 3 || axes.find(kAxisLetters[i]) != std::string_view::npos)
-          inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(e.pos[i]));
-      s += fmt::format(R"(,"scale":{{{}}})", inner);
-      break;
-    }
-    case EventKind::Tolerance:
-    case EventKind::Limits:
-      for (int i = 0; i < kAxisCount; ++i) {
-        if (!(e.n & (1 << i))) continue;
-        if (e.kind == EventKind::Tolerance)
-          s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(e.pos[i]));
-        else
-          s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[i], json_number(e.pos[i]), json_number(e.control[i]));
-      }
-      break;
-    case EventKind::Zone:
-      s += fmt::format(R"(,"zone":{})", e.rotation);
-      str("state", e.n == 0 ? "off" : e.n == 1 ? "on" : "defined");
-      if (e.n == 2)
-        for (int a : {e.plane.u, e.plane.v})
-          s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[a], json_number(e.pos[a]), json_number(e.control[a]));
-      break;
-    case EventKind::Configuration: str("configuration", e.n ? "turning" : "milling"); break;
-    case EventKind::Probe:
-      json_position(e, axes, s);
-      s += fmt::format(R"(,"contact":{})", e.n ? "true" : "false");
-      break;
-    case EventKind::SpindleRange: str("range", spindle_range(e.n)); break;
-    case EventKind::PartChange: break;
-    case EventKind::Dwell: num("seconds", e.a); break;
-    case EventKind::SelectTool:
-    case EventKind::ChangeTool: s += fmt::format(R"(,"tool":{})", e.n); break;
-    case EventKind::CutterComp:
-      str("side", e.n == 0 ? "off" : e.n == 1 ? "left" : "right");
-      num("radius", e.a);
-      break;
-    case EventKind::WorkOffset:
-      s += fmt::format(R"(,"index":{})", e.n);
-      json_position(e, axes, s);
-      break;
-    case EventKind::Coolant: str("coolant", kCoolants[e.n]); break;
-    case EventKind::OffsetLoad:
-      s += fmt::format(R"(,"n":{})", e.n);
-      json_position(e, axes, s);
-      break;
-    case EventKind::Diameter:
-    case EventKind::FeedReduction: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
-    case EventKind::Aux: s += R"(,"function":)" + quoted(e.text); break;
-    case EventKind::Block: break;
-    case EventKind::Asset: s += R"(,"statement":)" + quoted(e.text) + fmt::format(R"(,"code":{})", e.n); break;
-    case EventKind::Input: {
-      const auto [shown, answer] = input_parts(e);
-      s += R"(,"prompt":)" + quoted(shown);
-      if (e.n)
-        s += R"(,"answer":)" + quoted(answer);
-      else
-        num("answer", e.a);
-      break;
-    }
-    case EventKind::Screen:
-    case EventKind::Sync:
-    case EventKind::Graphic:
-    case EventKind::Tooling:
-    case EventKind::Virtual: s += R"(,"what":)" + quoted(e.text); break;
-    case EventKind::CompLoad:
-      s += fmt::format(R"(,"n":{})", e.n);
-      num("length", e.a);
-      num("radius", e.b);
-      break;
-    case EventKind::Clamp: str("clamp", kClamps[e.n]); break;
-    case EventKind::Override:
-    case EventKind::SpindleHold: s += fmt::format(R"(,"on":{})", e.n ? "true" : "false"); break;
-    case EventKind::PathMode: str("mode", kPathModes[e.n]); break;
-    case EventKind::Comment:
-    case EventKind::Message: s += R"(,"text":)" + quoted(e.text); break;
-    case EventKind::Stop: str("kind", kStopKinds[e.n]); break;
-    case EventKind::End: str("kind", e.n ? "information" : "program"); break;
-    case EventKind::SpindleStop: break;
-  }
-}
-
-class JsonlSink final : public BufferedSink {
+class JsonlWriter final : public TraceWriter {
  public:
-  using BufferedSink::BufferedSink;
+  using TraceWriter::TraceWriter;
 
-  void event(const Event& e) override {
-    const SourceBlock b = block(e);
-    std::string s = fmt::format(R"({{"seq":{},"file":{},"line":{},"col":{})", ++seq_,
-                                quoted(b.file < map_.files.size() ? map_.files[b.file] : ""), b.line, b.col);
-    if (e.process) s += fmt::format(R"(,"process":{})", e.process);
-    if (b.has_number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', b.number);
-    s += R"(,"event":")" + event_name(e.kind) + '"';
-    json_fields(e, axes_, s);
-    line(s + "}");
+  Reply units(const api::Block& b, api::Units u) override {
+    std::string s = open(b, "units");
+    str(s, "units", u == api::Units::Inches ? "inch" : "mm");
+    return close(s);
   }
+  Reply plane(const api::Block& b, const api::Plane& p) override {
+    std::string s = open(b, "plane");
+    str(s, "plane", plane_name(plane_of(p)));
+    return close(s);
+  }
+  Reply feed_mode(const api::Block& b, api::FeedMode m) override {
+    std::string s = open(b, "feed_mode");
+    str(s, "mode", kFeedModes[ordinal(m)]);
+    return close(s);
+  }
+  Reply feed_rate(const api::Block& b, double rate) override { return value(b, "feed_rate", rate); }
+  Reply spindle_mode(const api::Block& b, api::SpindleMode m) override {
+    std::string s = open(b, "spindle_mode");
+    str(s, "mode", m == api::SpindleMode::ConstantSurfaceSpeed ? "constant_surface" : "rpm");
+    return close(s);
+  }
+  Reply spindle_speed(const api::Block& b, double speed) override { return value(b, "spindle_speed", speed); }
+  Reply spindle_start(const api::Block& b, api::Direction d) override {
+    std::string s = open(b, "spindle_on");
+    str(s, "direction", d == api::Direction::Clockwise ? "cw" : "ccw");
+    return close(s);
+  }
+  Reply spindle_stop(const api::Block& b) override { return bare(b, "spindle_stop"); }
+  Reply spindle_orient(const api::Block& b, double angle) override {
+    std::string s = open(b, "spindle_orient");
+    num(s, "angle", angle);
+    return close(s);
+  }
+  Reply straight_traverse(const api::Block& b, const Axes& end, AxisMask) override { return at(b, "rapid", end); }
+  Reply straight_feed(const api::Block& b, const Axes& end, AxisMask) override { return at(b, "linear", end); }
+  Reply arc_feed(const api::Block& b, const api::Arc& a) override {
+    std::string s = open(b, "arc");
+    position(s, a.end);
+    str(s, "plane", plane_name(plane_of(a.plane)));
+    str(s, "direction", a.rotation > 0 ? "ccw" : "cw");
+    s += fmt::format(R"(,"centre":{{"{}":{},"{}":{}}})", kAxisLetters[a.plane.first], json_number(a.centre_first),
+                     kAxisLetters[a.plane.second], json_number(a.centre_second));
+    num(s, "radius", a.radius);
+    num(s, "sweep", a.sweep);
+    s += fmt::format(R"(,"rotation":{})", a.rotation);
+    return close(s);
+  }
+  Reply parabola(const api::Block& b, const Axes& end, const Axes& control) override {
+    std::string s = open(b, "parabola");
+    position(s, end);
+    s += fmt::format(R"(,"control":{{"X":{},"Y":{},"Z":{}}})", json_number(control[0]), json_number(control[1]),
+                     json_number(control[2]));
+    return close(s);
+  }
+  Reply thread(const api::Block& b, const Axes& end, double pitch, double pitch_change, double start_angle) override {
+    std::string s = open(b, "thread");
+    position(s, end);
+    num(s, "pitch", pitch);
+    num(s, "pitch_change", pitch_change);
+    if (start_angle != 0) num(s, "phase", start_angle);
+    return close(s);
+  }
+  Reply spline(const api::Block& b, const Axes& end, const Axes& control1, const Axes& control2) override {
+    std::string s = open(b, "spline");
+    position(s, end);
+    point(s, "control1", control1);
+    point(s, "control2", control2);
+    return close(s);
+  }
+  Reply probe(const api::Block& b, const Axes& end, bool contact) override {
+    std::string s = open(b, "probe");
+    position(s, end);
+    s += fmt::format(R"(,"contact":{})", contact);
+    return close(s);
+  }
+  Reply dwell(const api::Block& b, double seconds) override {
+    std::string s = open(b, "dwell");
+    num(s, "seconds", seconds);
+    return close(s);
+  }
+  Reply path_mode(const api::Block& b, api::PathMode m) override {
+    std::string s = open(b, "path");
+    str(s, "mode", kPathModes[ordinal(m)]);
+    return close(s);
+  }
+  Reply tool_select(const api::Block& b, int tool) override { return count(b, "tool_select", "tool", tool); }
+  Reply tool_change(const api::Block& b, int tool) override { return count(b, "tool_change", "tool", tool); }
+  Reply tool_length_offset(const api::Block& b, const Axes& offset) override {
+    return at(b, "tool_length_offset", offset);
+  }
+  Reply cutter_compensation(const api::Block& b, api::CutterSide side, double radius) override {
+    std::string s = open(b, "cutter_comp");
+    str(s, "side", side == api::CutterSide::Off ? "off" : side == api::CutterSide::Left ? "left" : "right");
+    num(s, "radius", radius);
+    return close(s);
+  }
+  Reply work_offset(const api::Block& b, int number, const Axes& offset) override {
+    std::string s = open(b, "work_offset");
+    s += fmt::format(R"(,"index":{})", number);
+    position(s, offset);
+    return close(s);
+  }
+  Reply position_offset(const api::Block& b, const Axes& offset) override { return at(b, "position_offset", offset); }
+  Reply coolant(const api::Block& b, api::Coolant c) override {
+    std::string s = open(b, "coolant");
+    str(s, "coolant", kCoolants[ordinal(c)]);
+    return close(s);
+  }
+  Reply comment(const api::Block& b, std::string_view text) override { return text_of(b, "comment", "text", text); }
+  Reply message(const api::Block& b, std::string_view text) override { return text_of(b, "message", "text", text); }
+  Reply stop(const api::Block& b, api::StopKind k) override {
+    std::string s = open(b, "stop");
+    str(s, "kind", kStopKinds[ordinal(k)]);
+    return close(s);
+  }
+  Reply program_end(const api::Block& b, bool end_of_information) override {
+    std::string s = open(b, "end");
+    str(s, "kind", end_of_information ? "information" : "program");
+    return close(s);
+  }
+  Reply operator_move(const api::Block& b, const Axes& to) override { return at(b, "operator_move", to); }
+  Reply input(const api::Block& b, std::string_view prompt, double answer) override {
+    std::string s = open(b, "input");
+    s += R"(,"prompt":)" + quoted(prompt);
+    num(s, "answer", answer);
+    return close(s);
+  }
+  Reply input_text(const api::Block& b, std::string_view prompt, std::string_view answer) override {
+    std::string s = open(b, "input");
+    s += R"(,"prompt":)" + quoted(prompt);
+    s += R"(,"answer":)" + quoted(answer);
+    return close(s);
+  }
+  Reply clamp(const api::Block& b, api::Clamp c) override {
+    std::string s = open(b, "clamp");
+    str(s, "clamp", kClamps[ordinal(c)]);
+    return close(s);
+  }
+  Reply override_enable(const api::Block& b, bool enabled) override { return on_off(b, "override", enabled); }
+  Reply spindle_hold(const api::Block& b, bool on) override { return on_off(b, "spindle_hold", on); }
+  Reply spindle_range(const api::Block& b, int range) override {
+    std::string s = open(b, "spindle_range");
+    str(s, "range", ncc::spindle_range(range));
+    return close(s);
+  }
+  Reply aux(const api::Block& b, std::string_view function) override { return text_of(b, "aux", "function", function); }
+  Reply block_start(const api::Block& b) override { return bare(b, "block"); }
+  Reply origin(const api::Block& b, const Axes& zero) override { return at(b, "origin", zero); }
+  Reply transform(const api::Block& b, double rotation, AxisMask mirrored, const Axes& scale) override {
+    std::string s = open(b, "transform");
+    num(s, "rotation", rotation);
+    str(s, "mirror", axis_list(mirrored));
+    point(s, "scale", scale);
+    return close(s);
+  }
+  Reply tolerance(const api::Block& b, AxisMask axes, const Axes& tolerance) override {
+    std::string s = open(b, "tolerance");
+    for (int i = 0; i < kAxisCount; ++i)
+      if (axes & (1 << i)) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(tolerance[i]));
+    return close(s);
+  }
+  Reply limits(const api::Block& b, AxisMask axes, const Axes& lower, const Axes& upper) override {
+    std::string s = open(b, "limits");
+    for (int i = 0; i < kAxisCount; ++i)
+      if (axes & (1 << i)) range(s, i, lower, upper);
+    return close(s);
+  }
+  Reply zone(const api::Block& b, int zone, api::ZoneState state, const api::Plane& p, const Axes& lower,
+             const Axes& upper) override {
+    std::string s = open(b, "zone");
+    s += fmt::format(R"(,"zone":{})", zone);
+    str(s, "state", kZoneStates[ordinal(state)]);
+    if (state == api::ZoneState::Defined)
+      for (int a : {p.first, p.second}) range(s, a, lower, upper);
+    return close(s);
+  }
+  Reply configuration(const api::Block& b, api::Configuration c) override {
+    std::string s = open(b, "configuration");
+    str(s, "configuration", c == api::Configuration::Turning ? "turning" : "milling");
+    return close(s);
+  }
+  Reply part_change(const api::Block& b) override { return bare(b, "part_change"); }
+  Reply virtual_axes(const api::Block& b, std::string_view what) override {
+    return text_of(b, "virtual", "what", what);
+  }
+  Reply offset_load(const api::Block& b, int number, const Axes& offset) override {
+    std::string s = open(b, "offset_load");
+    s += fmt::format(R"(,"n":{})", number);
+    position(s, offset);
+    return close(s);
+  }
+  Reply comp_load(const api::Block& b, int entry, double length, double radius) override {
+    std::string s = open(b, "comp_load");
+    s += fmt::format(R"(,"n":{})", entry);
+    num(s, "length", length);
+    num(s, "radius", radius);
+    return close(s);
+  }
+  Reply tooling(const api::Block& b, api::ToolingChange, std::string_view what) override {
+    return text_of(b, "tooling", "what", what);
+  }
+  Reply diameter(const api::Block& b, bool on) override { return on_off(b, "diameter", on); }
+  Reply feed_reduction(const api::Block& b, bool on) override { return on_off(b, "feed_reduction", on); }
+  Reply asset(const api::Block& b, std::string_view statement, int code) override {
+    std::string s = open(b, "asset");
+    s += R"(,"statement":)" + quoted(statement) + fmt::format(R"(,"code":{})", code);
+    return close(s);
+  }
+  Reply screen(const api::Block& b, std::string_view what) override { return text_of(b, "screen", "what", what); }
+  Reply sync(const api::Block& b, std::string_view what) override { return text_of(b, "sync", "what", what); }
+  Reply graphic(const api::Block& b, std::string_view what) override { return text_of(b, "graphic", "what", what); }
 
  private:
+  // The line's place and event: {"seq":1,"file":"part.nc","line":3,"col":1,"block":"N30","event":"rapid"
+  std::string open(const api::Block& b, std::string_view event) {
+    std::string s = fmt::format(R"({{"seq":{},"file":{},"line":{},"col":{})", ++seq_, quoted(b.file), b.line, b.column);
+    if (b.process) s += fmt::format(R"(,"process":{})", b.process);
+    if (b.number) s += fmt::format(R"(,"block":"{}{}")", b.main_block ? ':' : 'N', *b.number);
+    s += R"(,"event":")";
+    s += event;
+    s += '"';
+    return s;
+  }
+  Reply close(std::string& s) {
+    s += '}';
+    line(s);
+    return {};
+  }
+
+  static void num(std::string& s, const char* key, double v) { s += fmt::format(R"(,"{}":{})", key, json_number(v)); }
+  static void str(std::string& s, const char* key, std::string_view v) { s += fmt::format(R"(,"{}":"{}")", key, v); }
+  // "X":1,"Y":2,"Z":3 and the machine's other axes.
+  void position(std::string& s, const Axes& p) const {
+    for (int i = 0; i < kAxisCount; ++i)
+      if (lists_axis(i)) s += fmt::format(R"(,"{}":{})", kAxisLetters[i], json_number(p[i]));
+  }
+  // The same as an object: "scale":{"X":1,"Y":1,"Z":1}.
+  void point(std::string& s, const char* key, const Axes& p) const {
+    std::string inner;
+    for (int i = 0; i < kAxisCount; ++i)
+      if (lists_axis(i))
+        inner += fmt::format(R"({}"{}":{})", inner.empty() ? "" : ",", kAxisLetters[i], json_number(p[i]));
+    s += fmt::format(R"(,"{}":{{{}}})", key, inner);
+  }
+  static void range(std::string& s, int axis, const Axes& lower, const Axes& upper) {
+    s += fmt::format(R"(,"{}":[{},{}])", kAxisLetters[axis], json_number(lower[axis]), json_number(upper[axis]));
+  }
+
+  Reply bare(const api::Block& b, std::string_view event) {
+    std::string s = open(b, event);
+    return close(s);
+  }
+  Reply at(const api::Block& b, std::string_view event, const Axes& p) {
+    std::string s = open(b, event);
+    position(s, p);
+    return close(s);
+  }
+  Reply value(const api::Block& b, std::string_view event, double v) {
+    std::string s = open(b, event);
+    num(s, "value", v);
+    return close(s);
+  }
+  Reply count(const api::Block& b, std::string_view event, const char* key, int n) {
+    std::string s = open(b, event);
+    s += fmt::format(R"(,"{}":{})", key, n);
+    return close(s);
+  }
+  Reply on_off(const api::Block& b, std::string_view event, bool on) {
+    std::string s = open(b, event);
+    s += fmt::format(R"(,"on":{})", on);
+    return close(s);
+  }
+  Reply text_of(const api::Block& b, std::string_view event, const char* key, std::string_view text) {
+    std::string s = open(b, event);
+    s += fmt::format(R"(,"{}":)", key) + quoted(text);
+    return close(s);
+  }
+
   uint64_t seq_ = 0;
 };
 
 // LinuxCNC's canonical calls as `rs274 -g` prints them, without its two leading
-// columns. Events LinuxCNC has no call for print as COMMENT("ncc: ...") so that
-// the output stays a list of canonical calls (docs/trace.md).
-class CanonSink final : public BufferedSink {
+// columns. Calls LinuxCNC has no call for print as COMMENT("ncc: ...") so that the
+// output stays a list of canonical calls (docs/trace.md).
+class CanonWriter final : public TraceWriter {
  public:
-  CanonSink(std::FILE* out, const SourceMap& map, std::string axes) : BufferedSink(out, map, std::move(axes)) {
+  CanonWriter(std::FILE* out, std::string axes) : TraceWriter(out, std::move(axes)) {
     nine_ = has_axis('U') || has_axis('V') || has_axis('W');
   }
 
-  void event(const Event& e) override {
-    // The processes of a run take turns: each turn says whose calls follow.
-    if (e.process != process_) line(fmt::format("COMMENT(\"ncc: process {}\")", process_ = e.process));
-    switch (e.kind) {
-      case EventKind::Units:
-        line(e.n ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)");
-        break;
-      case EventKind::Plane:
-        // LinuxCNC names the ZX plane XZ and has no others.
-        if (e.plane == kPlanes[0] || e.plane == kPlanes[1] || e.plane == kPlanes[2])
-          line(fmt::format("SELECT_PLANE(CANON_PLANE_{})", e.plane == kPlanes[0]   ? "XY"
-                                                           : e.plane == kPlanes[1] ? "XZ"
-                                                                                   : "YZ"));
-        else
-          line(fmt::format("COMMENT(\"ncc: plane {}\")", plane_name(e.plane)));
-        break;
-      case EventKind::FeedMode: line(fmt::format("SET_FEED_MODE(0, {})", e.n == 2 ? 1 : 0)); break;
-      case EventKind::FeedRate: line(fmt::format("SET_FEED_RATE({})", canon_number(e.a))); break;
-      // LinuxCNC passes the maximum spindle speed for constant surface speed, 1e30
-      // when the program gives none (GOST has no such word), and 0 for rpm.
-      case EventKind::SpindleMode: line(fmt::format("SET_SPINDLE_MODE(0 {})", canon_number(e.n ? 1e30 : 0))); break;
-      case EventKind::SpindleSpeed: line(fmt::format("SET_SPINDLE_SPEED(0, {})", canon_number(e.a))); break;
-      case EventKind::SpindleOn:
-        line(e.n > 0 ? "START_SPINDLE_CLOCKWISE(0)" : "START_SPINDLE_COUNTERCLOCKWISE(0)");
-        break;
-      case EventKind::SpindleStop: line("STOP_SPINDLE_TURNING(0)"); break;
-      case EventKind::SpindleOrient: line(fmt::format("ORIENT_SPINDLE(0, {}, 0)", canon_number(e.a))); break;
-      case EventKind::Rapid: line(fmt::format("STRAIGHT_TRAVERSE({})", axes_list(e.pos, 0))); break;
-      case EventKind::Linear: line(fmt::format("STRAIGHT_FEED({})", axes_list(e.pos, 0))); break;
-      case EventKind::Arc:
-        line(fmt::format("ARC_FEED({}, {}, {}, {}, {}, {}, {})", canon_number(e.pos[e.plane.u]),
-                         canon_number(e.pos[e.plane.v]), canon_number(e.centre[0]), canon_number(e.centre[1]),
-                         e.rotation, canon_number(e.plane.w >= 0 ? e.pos[e.plane.w] : 0), axes_list(e.pos, 3)));
-        break;
-      case EventKind::Parabola:
-        line(fmt::format("PARABOLA_FEED({}, {}, {}, {})", canon_number(e.control[0]), canon_number(e.control[1]),
-                         canon_number(e.control[2]), axes_list(e.pos, 0)));
-        break;
-      case EventKind::Thread:
-        line(fmt::format("START_SPEED_FEED_SYNC({:f},0)", e.a));
-        if (e.b != 0) line(fmt::format("COMMENT(\"ncc: pitch change {} per revolution\")", canon_number(e.b)));
-        line(fmt::format("STRAIGHT_FEED({})", axes_list(e.pos, 0)));
-        line("STOP_SPEED_FEED_SYNCH()");
-        break;
-      case EventKind::Dwell: line(fmt::format("DWELL({})", canon_number(e.a))); break;
-      case EventKind::SelectTool: line(fmt::format("SELECT_TOOL({})", e.n)); break;
-      case EventKind::ChangeTool:
-        line("START_CHANGE()");
-        line(fmt::format("CHANGE_TOOL({})", e.n));
-        break;
-      case EventKind::ToolLengthOffset:
-        line(fmt::format("USE_TOOL_LENGTH_OFFSET({} {} {}, {} {} {}, {} {} {})", canon_number(e.pos[0]),
-                         canon_number(e.pos[1]), canon_number(e.pos[2]), canon_number(e.pos[3]), canon_number(e.pos[4]),
-                         canon_number(e.pos[5]), canon_number(e.pos[6]), canon_number(e.pos[7]),
-                         canon_number(e.pos[8])));
-        break;
-      case EventKind::CutterComp:
-        line(e.n == 0 ? "COMMENT(\"interpreter: cutter radius compensation off\")"
-                      : fmt::format("COMMENT(\"interpreter: cutter radius compensation on {}\")",
-                                    e.n == 1 ? "left" : "right"));
-        break;
-      case EventKind::WorkOffset: line(fmt::format("SET_G5X_OFFSET({}, {})", e.n, axes_list(e.pos, 0))); break;
-      case EventKind::PositionOffset: line(fmt::format("SET_G92_OFFSET({})", axes_list(e.pos, 0))); break;
-      case EventKind::Coolant:
-        if (e.n == 0) {
-          line("MIST_OFF()");
-          line("FLOOD_OFF()");
-        } else {
-          if (e.n <= 2)
-            line(e.n == 1 ? "MIST_ON()" : "FLOOD_ON()");
-          else
-            line(fmt::format("COMMENT(\"ncc: coolant {}\")", kCoolants[e.n]));
-        }
-        break;
-      case EventKind::OffsetLoad:  // a table entry: what is in force shows when it is selected
-        line(fmt::format("COMMENT(\"ncc: offset_load {} {}\")", e.n, axes_list(e.pos, 0)));
-        break;
-      case EventKind::Diameter:
-      case EventKind::FeedReduction:
-        line(fmt::format("COMMENT(\"ncc: {} {}\")", event_name(e.kind), e.n ? "on" : "off"));
-        break;
-      case EventKind::Aux: line(fmt::format("COMMENT(\"ncc: aux {}\")", json_escape(e.text))); break;
-      case EventKind::Block: break;  // LinuxCNC's calls have no block boundaries
-      case EventKind::Asset: line(fmt::format("COMMENT(\"ncc: asset {}\")", json_escape(asset_text(e)))); break;
-      case EventKind::Input: {
-        const auto [shown, answer] = input_parts(e);
-        line(fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(shown),
-                         e.n ? json_escape(answer) : canon_number(e.a)));
-        break;
-      }
-      case EventKind::Screen: line(fmt::format("COMMENT(\"ncc: screen {}\")", json_escape(e.text))); break;
-      case EventKind::Sync: line(fmt::format("COMMENT(\"ncc: sync {}\")", json_escape(e.text))); break;
-      case EventKind::Graphic: line(fmt::format("COMMENT(\"ncc: graphic {}\")", json_escape(e.text))); break;
-      case EventKind::Tooling: line(fmt::format("COMMENT(\"ncc: tooling {}\")", json_escape(e.text))); break;
-      case EventKind::Virtual: line(fmt::format("COMMENT(\"ncc: virtual {}\")", json_escape(e.text))); break;
-      case EventKind::CompLoad:
-        line(fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", e.n, canon_number(e.a),
-                         canon_number(e.b)));
-        break;
-      case EventKind::Override:
-        line(e.n ? "ENABLE_FEED_OVERRIDE()" : "DISABLE_FEED_OVERRIDE()");
-        line(e.n ? "ENABLE_SPEED_OVERRIDE(0)" : "DISABLE_SPEED_OVERRIDE(0)");
-        break;
-      case EventKind::Comment: line(fmt::format("COMMENT({})", quoted(e.text))); break;
-      case EventKind::Message: line(fmt::format("MESSAGE({})", quoted(e.text))); break;
-      case EventKind::Stop:
-        if (e.n == 3) line("COMMENT(\"ncc: manual retract\")");
-        line(e.n == 1 || e.n == 2 ? "OPTIONAL_PROGRAM_STOP()" : "PROGRAM_STOP()");
-        break;
-      case EventKind::End: line("PROGRAM_END()"); break;
-      case EventKind::Clamp: line(fmt::format("COMMENT(\"ncc: clamp {}\")", kClamps[e.n])); break;
-      case EventKind::SpindleHold:
-        line(e.n ? "COMMENT(\"ncc: spindle hold on\")" : "COMMENT(\"ncc: spindle hold off\")");
-        break;
-      case EventKind::PathMode: line(fmt::format("COMMENT(\"ncc: path {}\")", kPathModes[e.n])); break;
-      case EventKind::OperatorMove:
-        line(fmt::format("COMMENT(\"ncc: operator move to {}\")", axes_list(e.pos, 0)));
-        break;
-      case EventKind::Spline:
-        line(fmt::format("CUBIC_FEED({}, {}, {})", axes_list(e.control, 0), axes_list(e.control2, 0),
-                         axes_list(e.pos, 0)));
-        break;
-      case EventKind::Probe: line(fmt::format("STRAIGHT_PROBE({})", axes_list(e.pos, 0))); break;
-      case EventKind::Origin: line(fmt::format("SET_G5X_OFFSET(0, {})", axes_list(e.pos, 0))); break;
-      case EventKind::Transform:
-      case EventKind::Tolerance:
-      case EventKind::Limits:
-      case EventKind::Zone:
-      case EventKind::Configuration:
-      case EventKind::SpindleRange:
-      case EventKind::PartChange: line(fmt::format("COMMENT(\"ncc: {}\")", event_name(e.kind))); break;
+  Reply units(const api::Block& b, api::Units u) override {
+    return write(b,
+                 u == api::Units::Inches ? "USE_LENGTH_UNITS(CANON_UNITS_INCHES)" : "USE_LENGTH_UNITS(CANON_UNITS_MM)");
+  }
+  Reply plane(const api::Block& b, const api::Plane& p) override {
+    // LinuxCNC names the ZX plane XZ and has no others.
+    const Plane plane = plane_of(p);
+    if (plane == kPlanes[0] || plane == kPlanes[1] || plane == kPlanes[2])
+      return write(b, fmt::format("SELECT_PLANE(CANON_PLANE_{})", plane == kPlanes[0]   ? "XY"
+                                                                  : plane == kPlanes[1] ? "XZ"
+                                                                                        : "YZ"));
+    return write(b, fmt::format("COMMENT(\"ncc: plane {}\")", plane_name(plane)));
+  }
+  Reply feed_mode(const api::Block& b, api::FeedMode m) override {
+    return write(b, fmt::format("SET_FEED_MODE(0, {})", m == api::FeedMode::PerRevolution ? 1 : 0));
+  }
+  Reply feed_rate(const api::Block& b, double rate) override {
+    return write(b, fmt::format("SET_FEED_RATE({})", canon_number(rate)));
+  }
+  // LinuxCNC passes the maximum spindle speed for constant surface speed, 1e30 when
+  // the program gives none (GOST has no such word), and 0 for rpm.
+  Reply spindle_mode(const api::Block& b, api::SpindleMode m) override {
+    return write(
+        b, fmt::format("SET_SPINDLE_MODE(0 {})", canon_number(m == api::SpindleMode::ConstantSurfaceSpeed ? 1e30 : 0)));
+  }
+  Reply spindle_speed(const api::Block& b, double speed) override {
+    return write(b, fmt::format("SET_SPINDLE_SPEED(0, {})", canon_number(speed)));
+  }
+  Reply spindle_start(const api::Block& b, api::Direction d) override {
+    return write(b,
+                 d == api::Direction::Clockwise ? "START_SPINDLE_CLOCKWISE(0)" : "START_SPINDLE_COUNTERCLOCKWISE(0)");
+  }
+  Reply spindle_stop(const api::Block& b) override { return write(b, "STOP_SPINDLE_TURNING(0)"); }
+  Reply spindle_orient(const api::Block& b, double angle) override {
+    return write(b, fmt::format("ORIENT_SPINDLE(0, {}, 0)", canon_number(angle)));
+  }
+  Reply straight_traverse(const api::Block& b, const Axes& end, AxisMask) override {
+    return write(b, fmt::format("STRAIGHT_TRAVERSE({})", axes_list(end, 0)));
+  }
+  Reply straight_feed(const api::Block& b, const Axes& end, AxisMask) override {
+    return write(b, fmt::format("STRAIGHT_FEED({})", axes_list(end, 0)));
+  }
+  Reply arc_feed(const api::Block& b, const api::Arc& a) override {
+    const api::Plane& p = a.plane;
+    return write(b,
+                 fmt::format("ARC_FEED({}, {}, {}, {}, {}, {}, {})", canon_number(a.end[p.first]),
+                             canon_number(a.end[p.second]), canon_number(a.centre_first), canon_number(a.centre_second),
+                             a.rotation, canon_number(p.normal >= 0 ? a.end[p.normal] : 0), axes_list(a.end, 3)));
+  }
+  Reply parabola(const api::Block& b, const Axes& end, const Axes& control) override {
+    return write(b, fmt::format("PARABOLA_FEED({}, {}, {}, {})", canon_number(control[0]), canon_number(control[1]),
+                                canon_number(control[2]), axes_list(end, 0)));
+  }
+  Reply thread(const api::Block& b, const Axes& end, double pitch, double pitch_change, double) override {
+    turn(b);
+    line(fmt::format("START_SPEED_FEED_SYNC({:f},0)", pitch));
+    if (pitch_change != 0)
+      line(fmt::format("COMMENT(\"ncc: pitch change {} per revolution\")", canon_number(pitch_change)));
+    line(fmt::format("STRAIGHT_FEED({})", axes_list(end, 0)));
+    line("STOP_SPEED_FEED_SYNCH()");
+    return {};
+  }
+  Reply spline(const api::Block& b, const Axes& end, const Axes& control1, const Axes& control2) override {
+    return write(
+        b, fmt::format("CUBIC_FEED({}, {}, {})", axes_list(control1, 0), axes_list(control2, 0), axes_list(end, 0)));
+  }
+  Reply probe(const api::Block& b, const Axes& end, bool) override {
+    return write(b, fmt::format("STRAIGHT_PROBE({})", axes_list(end, 0)));
+  }
+  Reply dwell(const api::Block& b, double seconds) override {
+    return write(b, fmt::format("DWELL({})", canon_number(seconds)));
+  }
+  Reply path_mode(const api::Block& b, api::PathMode m) override {
+    return write(b, fmt::format("COMMENT(\"ncc: path {}\")", kPathModes[ordinal(m)]));
+  }
+  Reply tool_select(const api::Block& b, int tool) override { return write(b, fmt::format("SELECT_TOOL({})", tool)); }
+  Reply tool_change(const api::Block& b, int tool) override {
+    turn(b);
+    line("START_CHANGE()");
+    return write(b, fmt::format("CHANGE_TOOL({})", tool));
+  }
+  Reply tool_length_offset(const api::Block& b, const Axes& o) override {
+    return write(b, fmt::format("USE_TOOL_LENGTH_OFFSET({} {} {}, {} {} {}, {} {} {})", canon_number(o[0]),
+                                canon_number(o[1]), canon_number(o[2]), canon_number(o[3]), canon_number(o[4]),
+                                canon_number(o[5]), canon_number(o[6]), canon_number(o[7]), canon_number(o[8])));
+  }
+  Reply cutter_compensation(const api::Block& b, api::CutterSide side, double) override {
+    return write(b, side == api::CutterSide::Off
+                        ? std::string("COMMENT(\"interpreter: cutter radius compensation off\")")
+                        : fmt::format("COMMENT(\"interpreter: cutter radius compensation on {}\")",
+                                      side == api::CutterSide::Left ? "left" : "right"));
+  }
+  Reply work_offset(const api::Block& b, int number, const Axes& offset) override {
+    return write(b, fmt::format("SET_G5X_OFFSET({}, {})", number, axes_list(offset, 0)));
+  }
+  Reply position_offset(const api::Block& b, const Axes& offset) override {
+    return write(b, fmt::format("SET_G92_OFFSET({})", axes_list(offset, 0)));
+  }
+  Reply coolant(const api::Block& b, api::Coolant c) override {
+    switch (c) {
+      case api::Coolant::Off:
+        turn(b);
+        line("MIST_OFF()");
+        return write(b, "FLOOD_OFF()");
+      case api::Coolant::Mist: return write(b, "MIST_ON()");
+      case api::Coolant::Flood: return write(b, "FLOOD_ON()");
+      default: return write(b, fmt::format("COMMENT(\"ncc: coolant {}\")", kCoolants[ordinal(c)]));
     }
   }
+  Reply comment(const api::Block& b, std::string_view text) override {
+    return write(b, fmt::format("COMMENT({})", quoted(text)));
+  }
+  Reply message(const api::Block& b, std::string_view text) override {
+    return write(b, fmt::format("MESSAGE({})", quoted(text)));
+  }
+  Reply stop(const api::Block& b, api::StopKind k) override {
+    if (k == api::StopKind::ManualRetract) write(b, "COMMENT(\"ncc: manual retract\")");
+    return write(b, k == api::StopKind::OptionalTaken || k == api::StopKind::OptionalSkipped ? "OPTIONAL_PROGRAM_STOP()"
+                                                                                             : "PROGRAM_STOP()");
+  }
+  Reply program_end(const api::Block& b, bool) override { return write(b, "PROGRAM_END()"); }
+  Reply operator_move(const api::Block& b, const Axes& to) override {
+    return write(b, fmt::format("COMMENT(\"ncc: operator move to {}\")", axes_list(to, 0)));
+  }
+  Reply input(const api::Block& b, std::string_view prompt, double answer) override {
+    return write(b, fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(prompt), canon_number(answer)));
+  }
+  Reply input_text(const api::Block& b, std::string_view prompt, std::string_view answer) override {
+    return write(b, fmt::format("COMMENT(\"ncc: input {} {}\")", json_escape(prompt), json_escape(answer)));
+  }
+  Reply clamp(const api::Block& b, api::Clamp c) override {
+    return write(b, fmt::format("COMMENT(\"ncc: clamp {}\")", kClamps[ordinal(c)]));
+  }
+  Reply override_enable(const api::Block& b, bool enabled) override {
+    write(b, enabled ? "ENABLE_FEED_OVERRIDE()" : "DISABLE_FEED_OVERRIDE()");
+    return write(b, enabled ? "ENABLE_SPEED_OVERRIDE(0)" : "DISABLE_SPEED_OVERRIDE(0)");
+  }
+  Reply spindle_hold(const api::Block& b, bool on) override {
+    return write(b, on ? "COMMENT(\"ncc: spindle hold on\")" : "COMMENT(\"ncc: spindle hold off\")");
+  }
+  Reply aux(const api::Block& b, std::string_view function) override { return ncc_text(b, "aux", function); }
+  Reply block_start(const api::Block& b) override {  // LinuxCNC's calls have no block boundaries
+    turn(b);
+    return {};
+  }
+  Reply origin(const api::Block& b, const Axes& zero) override {
+    return write(b, fmt::format("SET_G5X_OFFSET(0, {})", axes_list(zero, 0)));
+  }
+  Reply transform(const api::Block& b, double, AxisMask, const Axes&) override { return ncc_only(b, "transform"); }
+  Reply tolerance(const api::Block& b, AxisMask, const Axes&) override { return ncc_only(b, "tolerance"); }
+  Reply limits(const api::Block& b, AxisMask, const Axes&, const Axes&) override { return ncc_only(b, "limits"); }
+  Reply zone(const api::Block& b, int, api::ZoneState, const api::Plane&, const Axes&, const Axes&) override {
+    return ncc_only(b, "zone");
+  }
+  Reply configuration(const api::Block& b, api::Configuration) override { return ncc_only(b, "configuration"); }
+  Reply spindle_range(const api::Block& b, int) override { return ncc_only(b, "spindle_range"); }
+  Reply part_change(const api::Block& b) override { return ncc_only(b, "part_change"); }
+  Reply virtual_axes(const api::Block& b, std::string_view what) override { return ncc_text(b, "virtual", what); }
+  // A table entry: what is in force shows when it is selected.
+  Reply offset_load(const api::Block& b, int number, const Axes& offset) override {
+    return write(b, fmt::format("COMMENT(\"ncc: offset_load {} {}\")", number, axes_list(offset, 0)));
+  }
+  Reply comp_load(const api::Block& b, int entry, double length, double radius) override {
+    return write(b, fmt::format("COMMENT(\"ncc: comp_load {} length {} radius {}\")", entry, canon_number(length),
+                                canon_number(radius)));
+  }
+  Reply tooling(const api::Block& b, api::ToolingChange, std::string_view what) override {
+    return ncc_text(b, "tooling", what);
+  }
+  Reply diameter(const api::Block& b, bool on) override {
+    return write(b, fmt::format("COMMENT(\"ncc: diameter {}\")", on ? "on" : "off"));
+  }
+  Reply feed_reduction(const api::Block& b, bool on) override {
+    return write(b, fmt::format("COMMENT(\"ncc: feed_reduction {}\")", on ? "on" : "off"));
+  }
+  Reply asset(const api::Block& b, std::string_view statement, int code) override {
+    return ncc_text(b, "asset", asset_text(statement, code));
+  }
+  Reply screen(const api::Block& b, std::string_view what) override { return ncc_text(b, "screen", what); }
+  Reply sync(const api::Block& b, std::string_view what) override { return ncc_text(b, "sync", what); }
+  Reply graphic(const api::Block& b, std::string_view what) override { return ncc_text(b, "graphic", what); }
 
  private:
+  // The processes of a run take turns: each turn says whose calls follow.
+  void turn(const api::Block& b) {
+    if (b.process != process_) line(fmt::format("COMMENT(\"ncc: process {}\")", process_ = b.process));
+  }
+  Reply write(const api::Block& b, const std::string& call) {
+    turn(b);
+    line(call);
+    return {};
+  }
+  // A call LinuxCNC has not: its name alone, or with its text.
+  Reply ncc_only(const api::Block& b, const char* name) { return write(b, fmt::format("COMMENT(\"ncc: {}\")", name)); }
+  Reply ncc_text(const api::Block& b, const char* name, std::string_view text) {
+    return write(b, fmt::format("COMMENT(\"ncc: {} {}\")", name, json_escape(text)));
+  }
+
   // LinuxCNC prints X Y Z A B C (and U V W on machines that have them).
-  std::string axes_list(const AxisValues& p, int from) const {
+  std::string axes_list(const Axes& p, int from) const {
     std::string s;
     int last = nine_ ? 9 : 6;
     for (int i = from; i < last; ++i) {
@@ -574,20 +800,30 @@ class CanonSink final : public BufferedSink {
   uint8_t process_ = 0;  // whose calls the last ones were
 };
 
-}  // namespace
+// The writer behind the adapter that calls it.
+class WriterSink final : public TraceSink {
+ public:
+  WriterSink(std::unique_ptr<TraceWriter> writer, const SourceMap& map, bool places)
+      : writer_(std::move(writer)), calls_(*writer_, map, places) {}
+  void event(const Event& e) override { calls_.event(e); }
+  void flush() override { writer_->flush(); }
 
-std::string event_json(const Event& e, std::string_view axes) {
-  std::string s = R"({"event":")" + event_name(e.kind) + '"';
-  json_fields(e, axes, s);
-  return s + '}';
-}
+ private:
+  std::unique_ptr<TraceWriter> writer_;
+  MachineInterfaceSink calls_;
+};
+
+}  // namespace
 
 std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
                                              std::string axes) {
   switch (format) {
-    case TraceFormat::Text: return std::make_unique<TextSink>(out, map, std::move(axes));
-    case TraceFormat::Jsonl: return std::make_unique<JsonlSink>(out, map, std::move(axes));
-    case TraceFormat::Canon: return std::make_unique<CanonSink>(out, map, std::move(axes));
+    case TraceFormat::Text:
+      return std::make_unique<WriterSink>(std::make_unique<TextWriter>(out, std::move(axes)), map, true);
+    case TraceFormat::Jsonl:
+      return std::make_unique<WriterSink>(std::make_unique<JsonlWriter>(out, std::move(axes)), map, true);
+    case TraceFormat::Canon:
+      return std::make_unique<WriterSink>(std::make_unique<CanonWriter>(out, std::move(axes)), map, false);
   }
   return nullptr;
 }

@@ -1,6 +1,6 @@
-// The trace: one event per runtime call (docs/trace.md), written by a TraceSink as
-// text, JSON Lines, or LinuxCNC canonical calls. The trace is the observable truth
-// of a run: golden tests compare it.
+// The trace: one event per runtime call (docs/trace.md), written as text, JSON Lines,
+// or LinuxCNC canonical calls by writers of the typed calls the events become. The
+// trace is the observable truth of a run: golden tests compare it.
 #pragma once
 
 #include <cstdint>
@@ -175,16 +175,11 @@ class TeeSink final : public TraceSink {
   TraceSink& second_;
 };
 
-std::string event_name(EventKind kind);  // as the traces write it: "rapid", "tool_change"
-
-// An event's name and fields as the JSON Lines trace gives them, without its place:
-// {"event":"clamp","clamp":"on"}.
-std::string event_json(const Event& e, std::string_view axes);
-
 enum class TraceFormat { Text, Jsonl, Canon };
 
-// A sink writing `format` to `out` through a buffer; `axes` are the letters the
-// machine has (conventions.axes), `main_file` the file whose lines need no name.
+// A sink writing `format` to `out` through a buffer: a writer of the typed calls of
+// include/ncc/machine_interface.h behind the adapter that makes the events those
+// calls. `axes` are the letters the machine has (conventions.axes).
 [[nodiscard]] std::unique_ptr<TraceSink> make_trace_writer(TraceFormat format, std::FILE* out, const SourceMap& map,
                                                            std::string axes);
 

@@ -15,8 +15,12 @@ class Planner final : public api::MachineInterface {
  public:
   explicit Planner(double floor) : floor_(floor) {}
 
-  api::Reply straight_traverse(const api::Block& b, const api::Axes& end) override { return move(b, "rapid", end); }
-  api::Reply straight_feed(const api::Block& b, const api::Axes& end) override { return move(b, "feed ", end); }
+  api::Reply straight_traverse(const api::Block& b, const api::Axes& end, api::AxisMask moved) override {
+    return move(b, "rapid", end, moved);
+  }
+  api::Reply straight_feed(const api::Block& b, const api::Axes& end, api::AxisMask moved) override {
+    return move(b, "feed ", end, moved);
+  }
   api::Reply arc_feed(const api::Block& b, const api::Arc& arc) override {
     std::printf("  line %u: arc   to X%.3f Y%.3f Z%.3f about X%.3f Y%.3f, %s, at F%g\n", b.line, arc.end[0], arc.end[1],
                 arc.end[2], arc.centre_first, arc.centre_second, arc.rotation < 0 ? "clockwise" : "counter-clockwise",
@@ -38,13 +42,16 @@ class Planner final : public api::MachineInterface {
   }
 
  private:
-  api::Reply move(const api::Block& b, const char* what, const api::Axes& end) {
+  api::Reply move(const api::Block& b, const char* what, const api::Axes& end, api::AxisMask moved) {
     if (end[2] < floor_) {
       char why[64];
       std::snprintf(why, sizeof why, "Z%.3f is below the floor Z%.3f", end[2], floor_);
       return api::Reply::refuse(why);
     }
     std::printf("  line %u: %s to X%.3f Y%.3f Z%.3f", b.line, what, end[0], end[1], end[2]);
+    // A rotary axis that moved, even one a full turn brought back where it began.
+    for (size_t i = 3; i < 6; ++i)
+      if (moved >> i & 1) std::printf(" %c%.3f", api::kAxisLetters[i], end[i]);
     std::printf(what[0] == 'f' ? " at F%g\n" : "\n", feed_);
     return {};
   }

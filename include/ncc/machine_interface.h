@@ -9,7 +9,7 @@
 // degrees: what `ncc run` traces (docs/trace.md), and what LinuxCNC's canonical calls
 // carry. The offsets come as calls of their own (work_offset, position_offset,
 // tool_length_offset); a move ends where the call says and starts where the last
-// one ended.
+// one ended. The trace writers of `ncc run` are implementations of this interface too.
 #pragma once
 
 #include <array>
@@ -27,11 +27,14 @@ namespace ncc::api {
 inline constexpr std::string_view kAxisLetters = "XYZABCUVWPQD";
 inline constexpr size_t kAxisCount = 12;
 using Axes = std::array<double, kAxisCount>;
+// A set of axes: bit i is the axis kAxisLetters[i].
+using AxisMask = uint16_t;
 
 // A block of the program: where it stands and its number.
 struct Block {
   uint32_t index = 0;     // Program::block(index)
   std::string_view file;  // valid while the Program lives
+  bool main_file = true;  // the file compiled, not one it includes (the text trace names no file for it)
   uint32_t line = 0, column = 0;
   std::optional<uint32_t> number;  // N12; a main block's :100 (main_block)
   bool main_block = false;
@@ -49,6 +52,7 @@ struct Plane {
 // (LinuxCNC's ARC_FEED); the normal axis moves linearly to its end.
 struct Arc {
   Axes end{};
+  AxisMask moved = 0;  // the axes that move (an endless rotary axis may end where it began)
   Plane plane;
   double centre_first = 0, centre_second = 0;
   int rotation = 0;
@@ -64,6 +68,10 @@ enum class CutterSide { Off, Left, Right };
 enum class Coolant { Off, Mist, Flood, Coolant3, Coolant4, Coolants3And4Off };
 enum class PathMode { Accelerate, Decelerate, Tapping, SpindleSync, CornerSlowdown, Continuous, PointToPoint, Smooth };
 enum class StopKind { Program, OptionalTaken, OptionalSkipped, ManualRetract };
+enum class Clamp { Off, On, RotaryOff, RotaryOn };  // all axes, or the rotary ones
+enum class ZoneState { Off, On, Defined };
+enum class Configuration { Milling, Turning };
+enum class ToolingChange { Corrector = 1, Unusable, Probe };
 
 // A host's answer to a call: accepted, or refused with a reason. A refusal stops the
 // run with an error at the block that made the call (NC6015), and the host is called
@@ -85,9 +93,10 @@ class NCC_API MachineInterface {
  public:
   virtual ~MachineInterface();
 
-  // Motion.
-  virtual Reply straight_traverse(const Block&, const Axes& /*end*/) { return {}; }
-  virtual Reply straight_feed(const Block&, const Axes& /*end*/) { return {}; }
+  // Motion. `moved`: the axes that move, which an endless rotary axis turning whole
+  // turns needs (it ends where it began).
+  virtual Reply straight_traverse(const Block&, const Axes& /*end*/, AxisMask /*moved*/) { return {}; }
+  virtual Reply straight_feed(const Block&, const Axes& /*end*/, AxisMask /*moved*/) { return {}; }
   virtual Reply arc_feed(const Block&, const Arc&) { return {}; }
   // A thread cut along a line at the spindle's speed: pitch per revolution, its change
   // per revolution, the start angle in degrees.
@@ -135,10 +144,57 @@ class NCC_API MachineInterface {
   virtual Reply stop(const Block&, StopKind) { return {}; }
   virtual Reply program_end(const Block&, bool /*end_of_information*/) { return {}; }  // M02; M30
 
-  // Every other call, one a dialect has of its own (clamps, NC-110 origins, zones, ASSET
-  // files, the user screen, ...): its name and fields as JSON, as the JSON Lines trace
-  // writes them (docs/trace.md): {"event":"clamp","clamp":"on"}.
-  virtual Reply other(const Block&, std::string_view /*name*/, std::string_view /*json*/) { return {}; }
+  // The operator.
+  virtual Reply operator_move(const Block&, const Axes& /*to*/) { return {}; }  // left after a manual retract
+  // NC-110 INP: the prompt with the value offered, and the operator's answer.
+  virtual Reply input(const Block&, std::string_view /*prompt*/, double /*answer*/) { return {}; }
+  virtual Reply input_text(const Block&, std::string_view /*prompt*/, std::string_view /*answer*/) { return {}; }
+
+  // The machine's own functions.
+  virtual Reply clamp(const Block&, Clamp) { return {}; }
+  virtual Reply override_enable(const Block&, bool /*enabled*/) { return {}; }  // feed and speed overrides
+  virtual Reply spindle_hold(const Block&, bool /*on*/) { return {}; }
+  virtual Reply spindle_range(const Block&, int /*range*/) { return {}; }        // 0 none forced, -1 automatic, 1..
+  virtual Reply aux(const Block&, std::string_view /*function*/) { return {}; }  // "M23", "H5": the machine's logic
+  // A block starts (`ncc run --trace-blocks`: which blocks ran; a Run makes none).
+  virtual Reply block_start(const Block&) { return {}; }
+
+  // Frames and the working space (NC-110).
+  virtual Reply origin(const Block&, const Axes& /*zero*/) { return {}; }  // the program zero in machine coordinates
+  // A rotation in degrees, the mirrored axes, a scale per axis.
+  virtual Reply transform(const Block&, double /*rotation*/, AxisMask /*mirrored*/, const Axes& /*scale*/) {
+    return {};
+  }
+  // The in-position tolerance of the axes set (those of `axes`, the others unchanged).
+  virtual Reply tolerance(const Block&, AxisMask /*axes*/, const Axes& /*tolerance*/) { return {}; }
+  // The limits of the axes of `axes`: none cancels all.
+  virtual Reply limits(const Block&, AxisMask /*axes*/, const Axes& /*lower*/, const Axes& /*upper*/) { return {}; }
+  // A zone switched off or on, or defined by its bounds on the axes of `plane`.
+  virtual Reply zone(const Block&, int /*zone*/, ZoneState, const Plane&, const Axes& /*lower*/,
+                     const Axes& /*upper*/) {
+    return {};
+  }
+  virtual Reply configuration(const Block&, Configuration) { return {}; }
+  virtual Reply part_change(const Block&) { return {}; }
+  // Virtual axes (NC-110 UAV): "polar X C as U V min radius 7.8782 at U80 V0 X80 C0", "off at ...".
+  virtual Reply virtual_axes(const Block&, std::string_view /*what*/) { return {}; }
+
+  // Tables: a work offset loaded (0: G53's), a compensation entry, the tool table or
+  // probe changed (NC-110 RQU, RQP, TOF, DPT: "corrector 1 tool 10 length 75.2 radius 5").
+  virtual Reply offset_load(const Block&, int /*number*/, const Axes& /*offset*/) { return {}; }
+  virtual Reply comp_load(const Block&, int /*entry*/, double /*length*/, double /*radius*/) { return {}; }
+  virtual Reply tooling(const Block&, ToolingChange, std::string_view /*what*/) { return {}; }
+  // Programming modes: diameters instead of radii; the feed as F / 100.
+  virtual Reply diameter(const Block&, bool /*on*/) { return {}; }
+  virtual Reply feed_reduction(const Block&, bool /*on*/) { return {}; }
+
+  // NC-110 services: an ASSET file statement ("read 1 record 3") and its code of table
+  // 5.2 (0: it worked); the user screen ("field 2 row 3 column 19 "0""); a process's
+  // dealings with the others ("wait for process 1"); the graphic display ("clear").
+  virtual Reply asset(const Block&, std::string_view /*statement*/, int /*code*/) { return {}; }
+  virtual Reply screen(const Block&, std::string_view /*what*/) { return {}; }
+  virtual Reply sync(const Block&, std::string_view /*what*/) { return {}; }
+  virtual Reply graphic(const Block&, std::string_view /*what*/) { return {}; }
 };
 
 }  // namespace ncc::api

@@ -26,16 +26,24 @@ std::string xyz(const api::Axes& a) {
   return s;
 }
 
+// " B0": the rotary axes a move turned, where they end.
+std::string turned(const api::Axes& end, api::AxisMask moved) {
+  std::string s;
+  for (size_t i = 3; i < 6; ++i)
+    if (moved >> i & 1) s += " " + std::string(1, api::kAxisLetters[i]) + std::to_string(static_cast<int>(end[i]));
+  return s;
+}
+
 // Writes down every call it receives, a line each: "5 straight_feed X10 Y0 Z-1".
 class Recorder : public api::MachineInterface {
  public:
   std::vector<std::string> calls;
 
-  api::Reply straight_traverse(const api::Block& b, const api::Axes& end) override {
-    return add(b, "straight_traverse " + xyz(end));
+  api::Reply straight_traverse(const api::Block& b, const api::Axes& end, api::AxisMask moved) override {
+    return add(b, "straight_traverse " + xyz(end) + turned(end, moved));
   }
-  api::Reply straight_feed(const api::Block& b, const api::Axes& end) override {
-    return add(b, "straight_feed " + xyz(end));
+  api::Reply straight_feed(const api::Block& b, const api::Axes& end, api::AxisMask moved) override {
+    return add(b, "straight_feed " + xyz(end) + turned(end, moved));
   }
   api::Reply arc_feed(const api::Block& b, const api::Arc& a) override {
     return add(b, "arc_feed " + xyz(a.end) + " centre " + std::to_string(a.centre_first) + " " +
@@ -73,9 +81,7 @@ class Recorder : public api::MachineInterface {
   api::Reply program_end(const api::Block& b, bool information) override {
     return add(b, information ? "end information" : "end program");
   }
-  api::Reply other(const api::Block& b, std::string_view name, std::string_view json) override {
-    return add(b, "other " + std::string(name) + " " + std::string(json));
-  }
+  api::Reply origin(const api::Block& b, const api::Axes& zero) override { return add(b, "origin " + xyz(zero)); }
 
  protected:
   virtual api::Reply add(const api::Block& b, std::string call) {
@@ -259,9 +265,9 @@ TEST(Api, RestartBeyondTheProgramIsAnError) {
 // Refuses a feed below Z0: the run stops with an error at the block.
 class Guard : public Recorder {
  public:
-  api::Reply straight_feed(const api::Block& b, const api::Axes& end) override {
+  api::Reply straight_feed(const api::Block& b, const api::Axes& end, api::AxisMask moved) override {
     if (end[2] < 0) return api::Reply::refuse("Z" + std::to_string(static_cast<int>(end[2])) + " is below the table");
-    return Recorder::straight_feed(b, end);
+    return Recorder::straight_feed(b, end, moved);
   }
 };
 
@@ -338,21 +344,32 @@ TEST(Api, BytecodeRoundTripsAndIsVerified) {
   EXPECT_EQ(bad.diagnostics()[0].code, "NC5003");
 }
 
-TEST(Api, ADialectsOwnCallsComeAsOther) {
-  // NC-110's origin shift (UOT) has no typed call: it comes as `other`, with its
-  // fields as the JSON Lines trace gives them (every axis of the NC-110 machine); the
-  // moves after it are in the new frame.
+TEST(Api, ADialectsOwnCallsAreTyped) {
+  // NC-110's origin shift (UOT) comes as origin(); the moves after it are in the new
+  // frame.
   const api::Program program = compiled("%\nN1 G90 G01 X10 F100\nN2 (UOT,0,X5)\nN3 X20\nN4 M30\n", "nc110");
   Recorder host;
   api::Run run = started(program, host);
   EXPECT_EQ(run.run(), api::Status::Ended);
-  EXPECT_EQ(host.calls,
-            (std::vector<std::string>{
-                "2 feed_rate 100", "2 straight_feed X10 Y0 Z0",
-                R"(3 other origin {"event":"origin","X":5,"Y":0,"Z":0,"A":0,"B":0,"C":0,"U":0,"V":0,"W":0})",
-                "4 straight_feed X20 Y0 Z0", "5 spindle_stop", "5 coolant off",
-                R"(5 other origin {"event":"origin","X":0,"Y":0,"Z":0,"A":0,"B":0,"C":0,"U":0,"V":0,"W":0})",
-                "5 end information"}));
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"2 feed_rate 100", "2 straight_feed X10 Y0 Z0", "3 origin X5 Y0 Z0",
+                                                  "4 straight_feed X20 Y0 Z0", "5 spindle_stop", "5 coolant off",
+                                                  "5 origin X0 Y0 Z0", "5 end information"}));
+}
+
+TEST(Api, AMoveSaysWhichAxesMoved) {
+  // An endless rotary axis turning a full turn ends where it began: the call says it
+  // moved, for a planner must turn it.
+  const api::Program program = compiled("%\nN1 G X10 Y0\nN2 G91 G1 B360 F3600\nN3 G90 X20\n", "nc110");
+  api::RunOptions options;
+  options.profile = NCC_GOLDEN_DIR "/nc110/profiles/motion-endless.toml";
+  Recorder host;
+  api::Result<api::Run> run = api::Run::start(program, host, options);
+  ASSERT_TRUE(run.ok());
+  EXPECT_EQ(run->run(), api::Status::Ended);
+  ASSERT_GE(host.calls.size(), 4u);
+  EXPECT_EQ(host.calls[0], "2 straight_traverse X10 Y0 Z0");
+  EXPECT_EQ(host.calls[2], "3 straight_feed X10 Y0 Z0 B0");
+  EXPECT_EQ(host.calls[3], "4 straight_feed X20 Y0 Z0");
 }
 
 }  // namespace
