@@ -11,12 +11,9 @@
 
 namespace ncc {
 
-class Machine::BlockRules {
+class Machine::BlockRules : public Strategy {
  public:
-  explicit BlockRules(Machine& m) : m_(m) {}
-  virtual ~BlockRules() = default;
-  BlockRules(const BlockRules&) = delete;
-  BlockRules& operator=(const BlockRules&) = delete;
+  using Strategy::Strategy;
   // The rules of the program's conventions: the only place that reads fanuc_rules.
   static std::unique_ptr<BlockRules> make(Machine& m, const Conventions& conv);
 
@@ -40,9 +37,6 @@ class Machine::BlockRules {
   virtual bool dwells_after_move() const { return false; }
   // An arc under unequal scale factors in its plane is drawn; else it is refused.
   virtual bool scales_arcs_unequally() const { return false; }
-
- protected:
-  Machine& m_;
 };
 
 }  // namespace ncc

@@ -357,6 +357,18 @@ class Machine final : public BlockMachine {
   void gtl_unit_end();
   uint64_t gtl_bytes() const;
 
+  // What a dialect does its own way, chosen once from the program's conventions: a
+  // strategy serves its one machine and is not copied.
+  class Strategy {
+   public:
+    explicit Strategy(Machine& m) : m_(m) {}
+    virtual ~Strategy() = default;
+    Strategy(const Strategy&) = delete;
+    Strategy& operator=(const Strategy&) = delete;
+
+   protected:
+    Machine& m_;
+  };
   // Canned cycles: the program's engine (cycle_engine.h), chosen once; the steps of a
   // hole and the tap's moves are shared (machine_cycles.cpp).
   class CycleEngine;
