@@ -2,7 +2,8 @@
 // a block with a move: a strategy of the Machine, chosen once from the program's
 // conventions (BlockRules::make), as the cycle engines (cycle_engine.h) and the tool
 // change (tool_change.h) are. The base is the plain rules of GOST 20999, pp and
-// NC-110, which forbid none of this; ISO/Fanuc's (E-08..E-27) are block_rules.cpp's.
+// NC-110, which forbid none of ISO's but an arc under unequal scale factors (no longer
+// a circle); ISO/Fanuc's (E-08..E-27) are block_rules.cpp's.
 #pragma once
 
 #include <memory>
