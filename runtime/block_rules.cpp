@@ -1,6 +1,6 @@
 // ISO/Fanuc's block rules (§8.4, §8.8-§8.31; E-08..E-27): what scaling, rotation,
 // incremental positioning and cutter compensation forbid a block, and the dwell after
-// a move. The plain rules (GOST 20999, pp, NC-110) are the base's: none of these.
+// a move. The plain rules (GOST 20999, pp, NC-110) are the base's.
 #include "block_rules.h"
 
 namespace ncc {

@@ -2,7 +2,8 @@
 // a block with a move: a strategy of the Machine, chosen once from the program's
 // conventions (BlockRules::make), as the cycle engines (cycle_engine.h) and the tool
 // change (tool_change.h) are. The base is the plain rules of GOST 20999, pp and
-// NC-110, which forbid none of this; ISO/Fanuc's (E-08..E-27) are block_rules.cpp's.
+// NC-110, which forbid none of ISO's but an arc under unequal scale factors (no longer
+// a circle); ISO/Fanuc's (E-08..E-27) are block_rules.cpp's.
 #pragma once
 
 #include <memory>
@@ -11,12 +12,9 @@
 
 namespace ncc {
 
-class Machine::BlockRules {
+class Machine::BlockRules : public Strategy {
  public:
-  explicit BlockRules(Machine& m) : m_(m) {}
-  virtual ~BlockRules() = default;
-  BlockRules(const BlockRules&) = delete;
-  BlockRules& operator=(const BlockRules&) = delete;
+  using Strategy::Strategy;
   // The rules of the program's conventions: the only place that reads fanuc_rules.
   static std::unique_ptr<BlockRules> make(Machine& m, const Conventions& conv);
 
@@ -40,9 +38,6 @@ class Machine::BlockRules {
   virtual bool dwells_after_move() const { return false; }
   // An arc under unequal scale factors in its plane is drawn; else it is refused.
   virtual bool scales_arcs_unequally() const { return false; }
-
- protected:
-  Machine& m_;
 };
 
 }  // namespace ncc

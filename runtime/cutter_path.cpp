@@ -48,7 +48,7 @@ struct CutterPath::State {
   // still cuts its corners r and b.
   bool off(int side, double radius) const { return side == 0 || (radius <= 0 && rules_.zero_radius_off); }
   // " (E-12)": the ISO alarm a rule is, where the dialect numbers them.
-  std::string alarm(const char* code) const { return rules_.iso_alarms ? fmt::format(" ({})", code) : std::string(); }
+  std::string alarm(const char* code) const { return rules_.alarm_codes ? fmt::format(" ({})", code) : std::string(); }
   int side_ = 0;               // 1 left (G41), 2 right (G42), 0 off
   double radius_ = 0;          // program units
   uint32_t switched_at_ = 0;   // the block whose CutterComp event set side_
@@ -201,8 +201,8 @@ void CutterPath::State::begin(const Event& move, const corner::Element& el, cons
   if (move.source == switched_at_) right_angle_ = false;
   if (move.kind == EventKind::Arc && move.source != switched_at_)  // in G41/G42's own block: the runtime's check
     report_(context_, move.source,
-            rules_.iso_alarms ? "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move"
-                              : "cutter radius compensation starts with a G00 or G01 move, not an arc (§2.8.7)");
+            rules_.alarm_codes ? "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move"
+                               : "cutter radius compensation starts with a G00 or G01 move, not an arc (§2.8.7)");
   if (right_angle_) {
     const Vec entry = el.a + radius_ * normal(el, el.a, side_);
     const Plane p = move.kind == EventKind::Arc ? move.plane : plane_;

@@ -21,7 +21,7 @@ struct CompRules {
   bool cancel_after = false;  // G40: ends with its own block's move (Fanuc), or with the next block's (NC-110)
   bool start_along =
       false;  // G41/G42 in a block of their own: the next move starts up (NC-110), not a right angle (Fanuc)
-  bool iso_alarms = true;       // messages name the ISO alarm a rule is (E-12)
+  bool alarm_codes = true;      // messages name the alarm a rule is (ISO's E-12)
   bool zero_radius_off = true;  // a radius of 0 is no compensation (ISO D0), or a path of radius 0 (NC-110)
 };
 

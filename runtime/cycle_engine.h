@@ -13,12 +13,9 @@
 
 namespace ncc {
 
-class Machine::CycleEngine {
+class Machine::CycleEngine : public Strategy {
  public:
-  explicit CycleEngine(Machine& m) : m_(m) {}
-  virtual ~CycleEngine() = default;
-  CycleEngine(const CycleEngine&) = delete;
-  CycleEngine& operator=(const CycleEngine&) = delete;
+  using Strategy::Strategy;
   // The engine of the program's conventions: the only place that reads their cycle flags.
   static std::unique_ptr<CycleEngine> make(Machine& m, const Conventions& conv);
 
@@ -34,9 +31,6 @@ class Machine::CycleEngine {
   virtual void cancelled() = 0;
   // A block while a cycle is active; `drills`: it has an axis word or the level word.
   virtual void block(bool drills) = 0;
-
- protected:
-  Machine& m_;
 };
 
 // Cycles of one level R, whose registers stay in force while the cycle is active and

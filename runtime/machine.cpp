@@ -537,7 +537,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::ReferenceReturn:
     case Fn::ReferenceLeave:
       if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
-      block_.reference_iso = call.fn == Fn::ReferenceReturn ? 1 : 2;
+      block_.reference_trip = call.fn == Fn::ReferenceReturn ? 1 : 2;
       break;
     case Fn::OffsetLocal:
       if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
@@ -817,7 +817,7 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
   const bool zeroed =
       path_ && (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
-      (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
+      (block_.reference_trip || block_.block_offset == 0 || modal_.cycle >= 0);
   if (zeroed) path_->suspend();
   action();
   if (zeroed) path_->resume();
@@ -990,8 +990,8 @@ void Machine::action() {
     reference_approach();
     return;
   }
-  if (block_.reference_iso) {
-    block_.reference_iso == 1 ? reference_return() : reference_leave();
+  if (block_.reference_trip) {
+    block_.reference_trip == 1 ? reference_return() : reference_leave();
     return;
   }
   if (block_.local_offset) {

@@ -158,7 +158,7 @@ class Machine final : public BlockMachine {
     bool offset_load = false;         // pp G92: the axis words load a work offset
     bool comp_load = false;           // pp G93: D names the compensation entry to load
     int load_entry = -1;              // ... the one the block names (-1: the active one)
-    int reference_iso = 0;            // ISO G28 (1) and G29 (2)
+    int reference_trip = 0;           // 1 to the reference point by the intermediate one (ISO G28), 2 back (G29)
     bool local_offset = false;        // ISO G52: the axis words shift the work zero
     bool set_position_after = false;  // ISO G92 after a motion: its values are the second words
     bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
@@ -335,6 +335,18 @@ class Machine final : public BlockMachine {
   void gtl_unit_end();
   uint64_t gtl_bytes() const;
 
+  // What a dialect does its own way, chosen once from the program's conventions: a
+  // strategy serves its one machine and is not copied.
+  class Strategy {
+   public:
+    explicit Strategy(Machine& m) : m_(m) {}
+    virtual ~Strategy() = default;
+    Strategy(const Strategy&) = delete;
+    Strategy& operator=(const Strategy&) = delete;
+
+   protected:
+    Machine& m_;
+  };
   // Canned cycles: the program's engine (cycle_engine.h), chosen once; the steps of a
   // hole and the tap's moves are shared (machine_cycles.cpp).
   class CycleEngine;

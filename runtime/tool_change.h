@@ -9,12 +9,9 @@
 
 namespace ncc {
 
-class Machine::ToolChange {
+class Machine::ToolChange : public Strategy {
  public:
-  explicit ToolChange(Machine& m) : m_(m) {}
-  virtual ~ToolChange() = default;
-  ToolChange(const ToolChange&) = delete;
-  ToolChange& operator=(const ToolChange&) = delete;
+  using Strategy::Strategy;
   // The tool change of the program's conventions: the only place that reads their
   // tool change flags.
   static std::unique_ptr<ToolChange> make(Machine& m, const Conventions& conv);
@@ -32,7 +29,6 @@ class Machine::ToolChange {
 
  protected:
   void stop_spindle_and_coolant(Scope scope, bool emit_events);
-  Machine& m_;
 };
 
 }  // namespace ncc
