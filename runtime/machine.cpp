@@ -34,21 +34,25 @@ void Machine::cancel_cycle() {
 }
 
 std::unique_ptr<CutterPath> Machine::cutter_path(TraceSink& trace) {
+  // An error of the path stops the run at the block being run, as any error does.
   // ISO §8.10: Fanuc's type A.
   if (conv_.cutter == CutterStyle::FanucA)
-    return std::make_unique<CutterPath>(trace, &Machine::path_report<DiagId::ArcForm>, this);
+    return std::make_unique<CutterPath>(
+        trace,
+        [](void* self, uint32_t source, const std::string& what) {
+          static_cast<Machine*>(self)->issue({DiagId::ArcForm, diag_message(DiagId::ArcForm, what), source, -1, -1});
+        },
+        this);
   // NC-110 §2.8.7: outside corners where the offsets meet, G40 with the next block's
   // move, G41/G42 in a block of their own started by the next move.
   if (conv_.cutter == CutterStyle::Nc110)
-    return std::make_unique<CutterPath>(trace, &Machine::path_report<DiagId::CompPath>, this,
-                                        CompRules{false, true, true, false, false});
+    return std::make_unique<CutterPath>(
+        trace,
+        [](void* self, uint32_t source, const std::string& what) {
+          static_cast<Machine*>(self)->issue({DiagId::CompPath, diag_message(DiagId::CompPath, what), source, -1, -1});
+        },
+        this, CompRules{false, true, true, false, false});
   return nullptr;
-}
-
-template <DiagId id>
-void Machine::path_report(void* self, uint32_t source, const std::string& what) {
-  // An error of the path stops the run at the block being run, as any error does.
-  static_cast<Machine*>(self)->issue({id, diag_message(id, what), source, -1, -1});
 }
 
 void Machine::end_run(bool stopped_by_error) {

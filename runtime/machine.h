@@ -420,8 +420,6 @@ class Machine final : public BlockMachine {
   std::unique_ptr<CutterPath> path_;
   std::unique_ptr<CutterPath> cutter_path(TraceSink& trace);
   uint64_t path_bytes() const;  // what it holds (held_bytes)
-  template <DiagId id>
-  static void path_report(void* self, uint32_t source, const std::string& what);
   bool corner_requested() const;
   void corner_begin(const AxisValues& start);
   void corner_finish(bool another, size_t block_from);
