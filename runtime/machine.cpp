@@ -19,7 +19,7 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
     : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
-      events_wanted_(trace.wants_events()), issues_(issues), path_(cutter_path(trace)) {
+      events_wanted_(trace.wants_events()), issues_(issues), kernel_(config), path_(cutter_path(trace)) {
   gtl_init();
   cycles_ = CycleEngine::make(*this, conv_);
   tool_change_ = ToolChange::make(*this, conv_);
@@ -57,12 +57,12 @@ void Machine::end_run(bool stopped_by_error) {
 }
 
 void Machine::power_on() {
-  machine_ = config_.initial_position;
-  offsets_ = config_.work_offsets;
+  kernel_.move_to(config_.initial_position);
+  kernel_.offsets() = config_.work_offsets;
   tool_offsets_ = config_.offsets;
   // Origin 0 is 0 on every axis the profile does not give it: (UAO,0) and RESET
   // select it on all axes (NC-110 §2.13.1.1).
-  offsets_[0].axes = (1u << kAxisCount) - 1;
+  kernel_.offsets()[0].axes = (1u << kAxisCount) - 1;
   tool_loaded_ = 0;
   select_offset(0);
   probe_ = config_.probe;
@@ -92,7 +92,7 @@ void Machine::power_on() {
     if (modal_.work_offset != 0) {
       Event e{EventKind::WorkOffset};
       e.n = modal_.work_offset;
-      for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(modal_.work_offset, i));
+      for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(modal_.work_offset, i));
       trace_.event(e);
     }
   }
@@ -104,10 +104,10 @@ void Machine::reset_state() {
   const int length = tool_change_->corrector_in_tool() ? modal_.length : 0;
   modal_ = Modal{};
   modal_.length = length;
-  frame_ = Frame{};
-  refresh_base_origin();
-  position_offset_ = {};
-  local_offsets_.clear();
+  kernel_.frame() = Frame{};
+  kernel_.refresh_origins();
+  kernel_.position_offset() = {};
+  kernel_.local_offsets().clear();
   intermediate_.reset();
   feed_.reset();
   no_feed_reported_ = false;
@@ -120,7 +120,7 @@ void Machine::reset_state() {
   spindle_direction_ = 0;
   cycles_->cancelled();
   parabola_middle_.reset();
-  envelope_ = {};
+  kernel_.envelope() = {};
   tolerance_ = {};
   turning_ = false;
   locked_ = 0;
@@ -196,7 +196,7 @@ void Machine::emit(Event e) {
   // A move starts where the machine stands (it moves after its event); only the
   // cutter path needs to know.
   if (!is_move(e.kind) || !path_ || path_->passes_moves()) return out(e);
-  const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
+  const AxisValues start = motion_event(EventKind::Linear, kernel_.position()).pos;
   out(e, &start);
 }
 
@@ -294,7 +294,8 @@ void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
-  if (path_ && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
+  if (path_ && e.n != 0 && kernel_.frame().mirror[modal_.plane.u] != kernel_.frame().mirror[modal_.plane.v])
+    e.n = 3 - e.n;
   e.a = to_program(offset_.radius);
   emit(e);
 }
@@ -400,7 +401,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         block_.load_entry = call.arg;
         break;
       }
-      if (call.arg != 0 && !offsets_.count(call.arg)) {
+      if (call.arg != 0 && !kernel_.offsets().count(call.arg)) {
         report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
         break;
       }
@@ -413,17 +414,18 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         block_.block_offset = call.arg;
       } else {
         modal_.work_offset = call.arg;
-        frame_.base.fill(call.arg);
-        const AxisValues local_before = frame_.local;
-        frame_.local = local_offsets_.count(call.arg) ? local_offsets_[call.arg] : AxisValues{};
-        refresh_base_origin();
+        kernel_.frame().base.fill(call.arg);
+        const AxisValues local_before = kernel_.frame().local;
+        kernel_.frame().local =
+            kernel_.local_offsets().count(call.arg) ? kernel_.local_offsets()[call.arg] : AxisValues{};
+        kernel_.refresh_origins();
         if (emit_events) {
           Event e{EventKind::WorkOffset};
           e.n = call.arg;
-          if (auto it = offsets_.find(call.arg); it != offsets_.end())
-            for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(call.arg, i));
+          if (auto it = kernel_.offsets().find(call.arg); it != kernel_.offsets().end())
+            for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(call.arg, i));
           emit(e);
-          if (frame_.local != local_before) position_offset_event();  // ISO G52: its own local shift
+          if (kernel_.frame().local != local_before) position_offset_event();  // ISO G52: its own local shift
         }
       }
       break;
@@ -553,7 +555,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && modal_.scaling && !rules_->may_change_coordinates()) break;
       if (modal_.scaling) {
         modal_.scaling = false;
-        frame_.clear_scaling();
+        kernel_.frame().clear_scaling();
         if (emit_events) transform_event();
       }
       break;
@@ -561,7 +563,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && modal_.rotation && !rules_->may_change_coordinates()) break;
       if (modal_.rotation) {
         modal_.rotation = false;
-        frame_.clear_rotation();
+        kernel_.frame().clear_rotation();
         if (emit_events) transform_event();
       }
       break;
@@ -585,11 +587,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         helix_pitch_ = word('K');
       break;
     case Fn::TransformCancel: {
-      const bool shifted = frame_.shift != AxisValues{};
-      const bool transformed = frame_.transformed();
-      frame_.mirror.fill(false);
-      frame_.scale.fill(1);
-      frame_.shift.fill(0);
+      const bool shifted = kernel_.frame().shift != AxisValues{};
+      const bool transformed = kernel_.frame().transformed();
+      kernel_.frame().mirror.fill(false);
+      kernel_.frame().scale.fill(1);
+      kernel_.frame().shift.fill(0);
       if (emit_events && transformed) transform_event();
       if (emit_events && shifted) origin_event();
       break;
@@ -757,26 +759,11 @@ void Machine::check_profile_rules() {
 
 BlockResult Machine::execute(const BlockRequest& request) {
   if (!remaining_paths_) return run_block(request);
-  const double from_t = clock_;
-  const AxisValues from = machine_;
+  const double from_t = kernel_.clock();
+  const AxisValues from = kernel_.position();
   const BlockResult result = run_block(request);
-  if (clock_ > from_t) {
-    constexpr size_t kMoves = 256;  // more than the look-ahead runs ahead
-    if (moves_.size() == kMoves) moves_.pop_front();
-    moves_.push_back({from_t, clock_, from, machine_});
-  }
+  kernel_.record_move(from_t, from);
   return result;
-}
-
-double Machine::remaining_at(int axis, double seconds) const {
-  for (auto it = moves_.rbegin(); it != moves_.rend(); ++it) {
-    if (seconds >= it->to_t) return 0;
-    if (seconds >= it->from_t) {
-      const double done = (seconds - it->from_t) / (it->to_t - it->from_t);
-      return std::fabs(it->to[axis] - it->from[axis]) * (1 - done);
-    }
-  }
-  return 0;
 }
 
 BlockResult Machine::run_block(const BlockRequest& request) {
@@ -809,7 +796,7 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   if (corner_) corner_codes();
   AxisValues start{};  // of this block's move, when a corner follows it
   if (corner_here) {
-    start = motion_event(EventKind::Linear, machine_).pos;
+    start = motion_event(EventKind::Linear, kernel_.position()).pos;
     if (!holding_) hold_start_ = start;
     holding_ = true;
   }
@@ -1035,14 +1022,14 @@ void Machine::action() {
   // NC-110 §2.8.15: under G27/G28 a clamped axis cannot move in a feed move.
   if ((modal_.dynamics == 0 || modal_.dynamics == 1) && modal_.motion != Fn::MotionRapid && locked_)
     for (int i = 0; i < kAxisCount; ++i)
-      if ((locked_ & (1u << i)) && std::fabs(t[i] - machine_[i]) > 1e-9)
+      if ((locked_ & (1u << i)) && std::fabs(t[i] - kernel_.position()[i]) > 1e-9)
         report(DiagId::AxisClamped, kAxisLetters[i], std::string(1, kAxisLetters[i]));
   // NC-110 §2.8.1.3: after (BSP) the first G00/G01 block leads in to the spline's
   // start; one after G06 points leads out, and the spline is cut then.
   const bool straight = modal_.motion == Fn::MotionRapid || modal_.motion == Fn::MotionLinear;
   if (spline_.active && straight && !spline_.lead_in) {
     spline_.lead_in = true;
-    spline_.lead_in_from = machine_;
+    spline_.lead_in_from = kernel_.position();
     spline_.sources = {block_.request->source};
     spline_.points = {t};
   } else if (spline_.active && straight && spline_.points.size() == 1) {
@@ -1097,7 +1084,8 @@ void Machine::finish() {
     if (path_) path_->finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
-    const ResetState before{modal_, frame_, position_offset_, envelope_, tolerance_, turning_};
+    const ResetState before{modal_,     kernel_.frame(), kernel_.position_offset(), kernel_.envelope(),
+                            tolerance_, turning_};
     reset_state();
     emit_reset(before);
     Event e{EventKind::End};
@@ -1133,7 +1121,7 @@ void Machine::emit_reset(const ResetState& before) {
   flush_compensation();
   if (was.work_offset != modal_.work_offset)
     apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
-  if (before.position_offset != position_offset_) {
+  if (before.position_offset != kernel_.position_offset()) {
     Event e{EventKind::PositionOffset};
     emit(e);
   }

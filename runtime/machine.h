@@ -1,9 +1,10 @@
-// The motion runtime: modal state, coordinate systems and the block cycle
-// (GOST 20999 S-12; the same shape serves every dialect). The VM hands it one block
-// at a time as canonical functions plus word values; it computes the motion, checks
-// it and emits trace events. Its parts: machine.cpp (the block cycle and modal
-// functions), machine_frame.cpp (origins, transforms, limits and protected zones,
-// with frame.h and envelope.h), machine_motion.cpp (moves, arcs, threads, splines,
+// The motion runtime: modal state and the block cycle (GOST 20999 S-12; the same
+// shape serves every dialect) on a motion kernel (motion_kernel.h: the position and
+// clock, the frame and work offsets, the envelope), which knows no words or modes.
+// The VM hands it one block at a time as canonical functions plus word values; it
+// computes the motion, checks it and emits trace events. Its parts: machine.cpp (the
+// block cycle and modal functions), machine_frame.cpp (the functions that set origins
+// and transforms, the limits' and zones' messages), machine_motion.cpp (moves, arcs, threads, splines,
 // dwells, time), machine_cycles.cpp (what the canned cycles share, the measuring
 // cycles), machine_system.cpp (system variables). What a dialect does its own way is a
 // strategy chosen once from the program's conventions, not a flag asked where it
@@ -15,7 +16,6 @@
 #include <algorithm>
 #include <array>
 #include <bitset>
-#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -28,8 +28,7 @@
 #include "contract/program_semantics.h"
 #include "contract/system_vars.h"
 #include "cutter_path.h"
-#include "envelope.h"
-#include "frame.h"
+#include "motion_kernel.h"
 #include "support/diagnostics.h"
 #include "support/numbers.h"
 #include "trace.h"
@@ -71,13 +70,13 @@ class Machine final : public BlockMachine {
   void screen_event(const std::string& what, uint32_t source) override;
   void sync_event(const std::string& what, uint32_t source) override;
 
-  double clock() const override { return clock_; }
-  void wait_until(double seconds) override { clock_ = std::max(clock_, seconds); }
+  double clock() const override { return kernel_.clock(); }
+  void wait_until(double seconds) override { kernel_.wait_until(seconds); }
   bool block_skip() const override { return block_skip_; }
   double system(SysRef ref) const override;
   [[nodiscard]] bool set_system(SysRef ref, double value, uint32_t source) override;
   [[nodiscard]] bool gtl_field(int kind, double index, double field, double& out) const override;
-  double remaining_at(int axis, double seconds) const override;
+  double remaining_at(int axis, double seconds) const override { return kernel_.remaining_at(axis, seconds); }
 
   // Held: the events cutter radius compensation and a corner hold back for a later
   // move, the points of a spline (limits.run_memory_mib).
@@ -251,19 +250,20 @@ class Machine final : public BlockMachine {
   };
   void emit_reset(const ResetState& before);
 
-  // Coordinates (machine_frame.cpp).
-  double offset_value(int offset, int axis) const;  // machine units
-  double origin(int axis) const;                    // of the active frame
-  AxisValues origins() const;
-  AxisValues shown_origins() const;                        // what the trace's positions are from
-  AxisValues frame_offset(int work_offset) const;          // GOST: work offset + position offset
-  AxisValues target_frame() const;                         // the frame this block's words are in
-  bool block_transformed() const;                          // the frame's transforms apply to this block
-  AxisValues to_machine(const AxisValues& program) const;  // apply the frame
-  AxisValues to_frame(const AxisValues& machine) const;    // undo it: program coordinates
-  AxisValues target();                                     // of this block's axis words, machine units
-  AxisValues program_target();                             // the same, program coordinates
-  double tool_radius() const;                              // of the offset in force, mm
+  // Coordinates (machine_frame.cpp, with the kernel's).
+  // The origin this block's positions are from: G79 and G53 blocks are not
+  // transformed (NC-110 §2.13.1.5: "not rotated").
+  int block_origin() const { return block_.machine_frame ? MotionKernel::kMachineZero : block_.block_offset; }
+  AxisValues target_frame() const { return kernel_.block_origins(block_origin()); }
+  AxisValues to_machine(const AxisValues& program) const {  // apply the frame
+    return kernel_.to_machine(program, modal_.plane, block_origin());
+  }
+  AxisValues to_frame(const AxisValues& machine) const {  // undo it: program coordinates
+    return kernel_.to_frame(machine, modal_.plane, block_origin());
+  }
+  AxisValues target();          // of this block's axis words, machine units
+  AxisValues program_target();  // the same, program coordinates
+  double tool_radius() const;   // of the offset in force, mm
   bool has_axis_word() const;
   bool frame_function(FnCall call);    // the NC-110 three-letter functions
   bool tooling_function(FnCall call);  // ... of the tool table and the probe (machine_tooling.cpp)
@@ -316,7 +316,6 @@ class Machine final : public BlockMachine {
   double timer_dwell();  // the dwell time variable in seconds, reported if out of range
   std::string dwell_address() const;
   double spindle_rpm() const;
-  void advance_clock(double seconds) { clock_ += seconds; }
   double feed_time(double length_mm);  // at the block's feed
 
   // GTL (machine_gtl.cpp, NC-110 §2.11).
@@ -368,16 +367,10 @@ class Machine final : public BlockMachine {
   RuntimeIssues& issues_;
   bool stop_on_error_ = true;
 
+  MotionKernel kernel_;  // where the machine is, its coordinates and envelope
   Modal modal_;
-  Frame frame_;
-  std::map<int, WorkOffset> offsets_;        // the work offsets (NC-110 RQO changes them)
   std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it, NC-110 RQU changes it)
   OffsetEntry offset_;                       // the entry in force: a change to the table takes effect when selected
-  AxisValues base_origin_{};                 // each axis' offsets_ value at frame_.base: origin() is hot
-  void refresh_base_origin();                // after frame_.base or offsets_ change
-  AxisValues machine_{};                     // the controlled point, machine coordinates, mm / degrees
-  AxisValues position_offset_{};             // G92
-  std::map<int, AxisValues> local_offsets_;  // ISO G52: the local shift of each work offset
   std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
   double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
 
@@ -429,7 +422,6 @@ class Machine final : public BlockMachine {
   BlockState block_;
 
   // NC-110 state.
-  Envelope envelope_;             // DLO, DSA
   AxisValues tolerance_{};        // DTL; 0 = the machine's
   bool turning_ = false;          // CTL
   uint32_t locked_ = 0;           // M10/M12: axes that must not move
@@ -461,13 +453,7 @@ class Machine final : public BlockMachine {
   // Switches and system variables.
   bool block_skip_ = false;
   bool optional_stop_ = false;
-  double clock_ = 0;  // seconds of the run so far
   RemainingPaths* remaining_paths_ = nullptr;
-  struct Move {
-    double from_t, to_t;
-    AxisValues from, to;
-  };
-  std::deque<Move> moves_;  // the last blocks that moved (with remaining_paths_)
   BlockResult run_block(const BlockRequest& block);
   double clock_base_ = 0;              // ISO #3001/#3002: where the program set them to 0
   std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()

@@ -210,7 +210,7 @@ void Machine::gtl_moves() {
   const std::optional<double> feed = feed_;
   for (const gtl::Piece& p : g.profile.take()) {
     const GtlState::Block& b = g.blocks[p.tag - g.first_tag];
-    AxisValues at = to_frame(machine_);
+    AxisValues at = to_frame(kernel_.position());
     for (int i = 0; i < kAxisCount; ++i)
       if (b.axes & (1u << i)) at[i] = b.others[i];
     if (p.in_plane) {
@@ -226,7 +226,8 @@ void Machine::gtl_moves() {
       centre[v] = axis_units(v, p.centre.y());
       const AxisValues c = to_machine(centre);
       // A mirror on one axis of the plane turns the arc the other way (decision 2).
-      const bool clockwise = !p.ccw != (frame_.transformed() && frame_.mirror[u] != frame_.mirror[v]);
+      const bool clockwise =
+          !p.ccw != (kernel_.frame().transformed() && kernel_.frame().mirror[u] != kernel_.frame().mirror[v]);
       arc_move(t, c[u], c[v], clockwise, 'I', 0);
     } else if (!p.arc) {
       linear(t);
