@@ -18,8 +18,8 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
-    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
-      events_wanted_(trace.wants_events()), issues_(issues), kernel_(config), path_(cutter_path(trace)) {
+    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues),
+      kernel_(config, trace, cutter_path(trace)) {
   gtl_init();
   cycles_ = CycleEngine::make(*this, conv_);
   tool_change_ = ToolChange::make(*this, conv_);
@@ -52,8 +52,8 @@ void Machine::path_report(void* self, uint32_t source, const std::string& what) 
 }
 
 void Machine::end_run(bool stopped_by_error) {
-  if (holding_) release();
-  if (path_) path_->finish(!stopped_by_error);
+  if (kernel_.holding()) release();
+  if (kernel_.path()) kernel_.path()->finish(!stopped_by_error);
 }
 
 void Machine::power_on() {
@@ -72,7 +72,7 @@ void Machine::power_on() {
   reset_state();
   // A trace to compare with another dialect's starts with the modes the power-on
   // state gives: one dialect's power-on G94 is another's written G94.
-  if (config_.trace_machine_frame && events_wanted_) {
+  if (config_.trace_machine_frame && trace_.wants_events()) {
     auto state = [&](EventKind kind, int n) {
       Event e{kind};
       e.n = n;
@@ -162,20 +162,6 @@ double Machine::axis_units(int axis, double v) const {
   return v;
 }
 
-double Machine::program_axis(int axis, double v) const {
-  const AxisConfig& a = config_.axes[static_cast<size_t>(axis)];
-  switch (a.kind) {
-    case AxisKind::Linear: return to_program(v);
-    case AxisKind::Indexing: return v / a.index_step;
-    default: return v;
-  }
-}
-
-AxisValues Machine::in_program_units(AxisValues v) const {
-  for (int i = 0; i < kAxisCount; ++i) v[i] = program_axis(i, v[i]);
-  return v;
-}
-
 void Machine::plane_event() {
   Event e{EventKind::Plane};
   e.plane = modal_.plane;
@@ -191,13 +177,9 @@ void Machine::path_event(int mode) {
 void Machine::emit(Event e) {
   // A block stops doing things at its first error: what it did before shows, the
   // rest does not (the machine's state still follows it in a dry run).
-  if (block_.error || !wanted(e.kind)) return;
+  if (block_.error || !kernel_.wanted(e.kind)) return;
   e.source = source();
-  // A move starts where the machine stands (it moves after its event); only the
-  // cutter path needs to know.
-  if (!is_move(e.kind) || !path_ || path_->passes_moves()) return out(e);
-  const AxisValues start = motion_event(EventKind::Linear, kernel_.position()).pos;
-  out(e, &start);
+  kernel_.emit(e, modal_.inch);
 }
 
 bool Machine::block_has(Fn fn) const {
@@ -208,10 +190,10 @@ bool Machine::block_has(Fn fn) const {
 }
 
 uint64_t Machine::held_bytes() const {
-  return path_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
+  return path_bytes() + kernel_.held().capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
 }
 
-uint64_t Machine::path_bytes() const { return path_ ? path_->held_bytes() : 0; }
+uint64_t Machine::path_bytes() const { return kernel_.path() ? kernel_.path()->held_bytes() : 0; }
 
 uint64_t Machine::spline_bytes() const {
   return spline_.points.capacity() * sizeof(AxisValues) + spline_.sources.capacity() * sizeof(uint32_t);
@@ -221,18 +203,7 @@ std::string Machine::held_what() const {
   if (spline_bytes() > path_bytes())
     return fmt::format("the spline holds {} points (G06 blocks since its BSP)", spline_.points.size());
   return fmt::format("cutter radius compensation holds {} events while its move waits for the next move in the plane",
-                     path_ ? path_->held_events() : 0);
-}
-
-void Machine::out(const Event& e, const AxisValues* start) {
-  if (!holding_) return to_path(e, start);
-  held_.push_back(e);
-}
-
-void Machine::to_path(const Event& e, const AxisValues* start) {
-  if (!path_) return trace_.event(e);
-  if (is_move(e.kind) && !path_->passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
-  path_->event(e, start);
+                     kernel_.path() ? kernel_.path()->held_events() : 0);
 }
 
 FnCall Machine::current(FnGroup group) const {
@@ -294,7 +265,7 @@ void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
-  if (path_ && e.n != 0 && kernel_.frame().mirror[modal_.plane.u] != kernel_.frame().mirror[modal_.plane.v])
+  if (kernel_.path() && e.n != 0 && kernel_.frame().mirror[modal_.plane.u] != kernel_.frame().mirror[modal_.plane.v])
     e.n = 3 - e.n;
   e.a = to_program(offset_.radius);
   emit(e);
@@ -797,17 +768,17 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   AxisValues start{};  // of this block's move, when a corner follows it
   if (corner_here) {
     start = motion_event(EventKind::Linear, kernel_.position()).pos;
-    if (!holding_) hold_start_ = start;
-    holding_ = true;
+    kernel_.hold(start);
   }
-  const size_t block_from = held_.size();
+  const size_t block_from = kernel_.held().size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
   const bool zeroed =
-      path_ && (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
+      kernel_.path() &&
+      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
       (block_.reference_iso || block_.block_offset == 0 || modal_.cycle >= 0);
-  if (zeroed) path_->suspend();
+  if (zeroed) kernel_.path()->suspend();
   action();
-  if (zeroed) path_->resume();
+  if (zeroed) kernel_.path()->resume();
   if (block_.set_position_after && !block_.error) set_position();
   if (corner_) corner_finish(corner_here, block_from);
   if (corner_here) corner_begin(start);
@@ -933,7 +904,7 @@ void Machine::action() {
           return report(DiagId::CompPath, l,
                         fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
         if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
-        return path_->corner(l == 'r', word(l), block_.request->source);
+        return kernel_.path()->corner(l == 'r', word(l), block_.request->source);
       }
       return report(DiagId::GtlProfile, l,
                     fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
@@ -1081,7 +1052,7 @@ void Machine::finish() {
              corner_->source, corner_->slot, -1});
       release();
     }
-    if (path_) path_->finish();
+    if (kernel_.path()) kernel_.path()->finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
     const ResetState before{modal_,     kernel_.frame(), kernel_.position_offset(), kernel_.envelope(),
@@ -1180,7 +1151,7 @@ void Machine::text_event(EventKind kind, const std::string& text, uint32_t sourc
   e.n = n;
   e.a = a;
   e.source = source;
-  out(e);
+  kernel_.out(e);
 }
 
 void Machine::comment(const std::string& text, uint32_t source) { text_event(EventKind::Comment, text, source); }
@@ -1188,7 +1159,7 @@ void Machine::comment(const std::string& text, uint32_t source) { text_event(Eve
 void Machine::block_start(uint32_t source) {
   Event e{EventKind::Block};
   e.source = source;
-  out(e);
+  kernel_.out(e);
 }
 
 bool Machine::asset_done(const std::string& what, int code, uint32_t source) {

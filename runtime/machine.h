@@ -1,16 +1,18 @@
-// The motion runtime: modal state and the block cycle (GOST 20999 S-12; the same
-// shape serves every dialect) on a motion kernel (motion_kernel.h: the position and
-// clock, the frame and work offsets, the envelope), which knows no words or modes.
-// The VM hands it one block at a time as canonical functions plus word values; it
-// computes the motion, checks it and emits trace events. Its parts: machine.cpp (the
-// block cycle and modal functions), machine_frame.cpp (the functions that set origins
-// and transforms, the limits' and zones' messages), machine_motion.cpp (moves, arcs, threads, splines,
-// dwells, time), machine_cycles.cpp (what the canned cycles share, the measuring
-// cycles), machine_system.cpp (system variables). What a dialect does its own way is a
-// strategy chosen once from the program's conventions, not a flag asked where it
-// matters: its canned cycles (cycle_engine.h), its tool change (tool_change.h), what
-// it forbids a block (block_rules.h: ISO's E-08..E-27) and the traced cutter path
-// (cutter_path.h: ISO's, NC-110's, or none).
+// The motion runtime's block interpreter: modal state and the block cycle (GOST 20999
+// S-12; the same shape serves every dialect), on a motion kernel that knows no words,
+// modes or dialect (motion_kernel.h: the position and clock, the frame and work
+// offsets, the envelope, and the output every event leaves through). The VM hands it
+// one block at a time as canonical functions plus word values; it computes the
+// motion, checks it and emits trace events through the kernel. Its parts: machine.cpp
+// (the block cycle and modal functions), machine_frame.cpp (the functions that set
+// origins and transforms, the limits' and zones' messages), machine_motion.cpp (moves,
+// arcs, threads, splines, dwells, time, ISO's corner rules), machine_cycles.cpp (what
+// the canned cycles share, the measuring cycles), machine_system.cpp (system
+// variables). What a dialect does its own way is a strategy chosen once from the
+// program's conventions, not a flag asked where it matters: its canned cycles
+// (cycle_engine.h), its tool change (tool_change.h), what it forbids a block
+// (block_rules.h: ISO's E-08..E-27) and the traced cutter path (cutter_path.h: ISO's,
+// NC-110's, or none; the kernel's output goes through it).
 #pragma once
 
 #include <algorithm>
@@ -191,8 +193,8 @@ class Machine final : public BlockMachine {
   bool is_linear(int axis) const { return config_.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear; }
   // A written axis value in machine units (mm, degrees), and back.
   double axis_units(int axis, double v) const;
-  double program_axis(int axis, double v) const;
-  AxisValues in_program_units(AxisValues v) const;
+  double program_axis(int axis, double v) const { return kernel_.in_units(axis, v, modal_.inch); }
+  AxisValues in_program_units(AxisValues v) const { return kernel_.in_units(v, modal_.inch); }
 
   // Issues, and events, belong to the block being run, or to the one a deferred move
   // belongs to (a GTL element's).
@@ -225,13 +227,7 @@ class Machine final : public BlockMachine {
   void check_profile_rules();
   void action();
   void finish();
-  void emit(Event e);
-  // Whether an event of this kind goes anywhere: to the trace, the held events, or the
-  // cutter path (which follows every plane and compensation change, and moves while
-  // it offsets them).
-  bool wanted(EventKind kind) const {
-    return events_wanted_ || holding_ || (path_ && (!is_move(kind) || !path_->passes_moves()));
-  }
+  void emit(Event e);  // an event of the block, unless it has failed
   void plane_event();
   void path_event(int mode);
   void tool_length_event();
@@ -299,7 +295,9 @@ class Machine final : public BlockMachine {
 
   // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
-  Event motion_event(EventKind kind, const AxisValues& machine_target) const;
+  Event motion_event(EventKind kind, const AxisValues& machine_target) const {
+    return kernel_.motion_event(kind, machine_target, modal_.inch);
+  }
   void rapid(const AxisValues& t);
   [[nodiscard]] bool need_feed(const char* what, const AxisValues& t);
   double block_seconds();
@@ -363,19 +361,18 @@ class Machine final : public BlockMachine {
   const Conventions& conv_;
   const MachineConfig& config_;
   TraceSink& trace_;
-  const bool events_wanted_;
   RuntimeIssues& issues_;
   bool stop_on_error_ = true;
 
-  MotionKernel kernel_;  // where the machine is, its coordinates and envelope
+  MotionKernel kernel_;  // where the machine is, its coordinates, envelope and event output
   Modal modal_;
   std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it, NC-110 RQU changes it)
   OffsetEntry offset_;                       // the entry in force: a change to the table takes effect when selected
   std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
   double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
 
-  // ISO ,C and ,R (§8.3): the move before a corner is held back (with every event
-  // after it) until the next block's move shows where the corner is cut.
+  // ISO ,C and ,R (§8.3): the move before a corner is held back in the kernel (with
+  // every event after it) until the next block's move shows where the corner is cut.
   struct Corner {
     bool fillet = false;
     double size = 0;      // program units
@@ -386,19 +383,13 @@ class Machine final : public BlockMachine {
     bool inch = false;    // the units of its block
   };
   std::optional<Corner> corner_;
-  std::vector<Event> held_;
-  bool holding_ = false;
   uint64_t moves_beyond_first_ = 0;
-  AxisValues hold_start_{};                                     // where the first held move starts
-  std::optional<AxisValues> chained_start_;                     // a corner's T2, when the next move has a corner too
-  void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
+  std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
   void text_event(EventKind kind, const std::string& text, uint32_t source, int n = 0, double a = 0);
-  void to_path(const Event& e, const AxisValues* start);  // through the cutter path, if there is one
-  void pass_on(size_t count);                             // the first `count` held events, on
   // The traced cutter path: the runtime offsets the path itself (ISO, NC-110), or there
   // is none and G41/G42 reach the trace as events, for the machine to compensate.
-  // Chosen once from the conventions (cutter_path); the sites ask only whether it is there.
-  std::unique_ptr<CutterPath> path_;
+  // Chosen once from the conventions, for the kernel's output (kernel_.path()); the
+  // sites ask only whether it is there.
   std::unique_ptr<CutterPath> cutter_path(TraceSink& trace);
   uint64_t path_bytes() const;  // what it holds (held_bytes)
   template <DiagId id>

@@ -137,7 +137,7 @@ void Machine::gtl_block() {
       g.profile = gtl::Profile{};
       g.refused = false;
       flush_compensation();
-      if (path_) path_->resume();
+      if (kernel_.path()) kernel_.path()->resume();
     }
     return;
   }
@@ -171,7 +171,7 @@ void Machine::gtl_block() {
     const double radius = c.side ? to_program(c.radius) + system_value(SysVar::Allowance) : 0;
     const int side = c.side == 1 ? 1 : c.side == 2 ? -1 : 0;
     g.opened_at = block.source;
-    if (path_) path_->suspend();  // the profile offsets its elements itself
+    if (kernel_.path()) kernel_.path()->suspend();  // the profile offsets its elements itself
     if (named->kind == gtl::Kind::Point)
       g.profile.open_at(named->at, tag, side, radius, gtl::Tolerance{gtl_tolerance()});
     else
@@ -187,7 +187,7 @@ void Machine::gtl_block() {
       g.profile.close_with(id, tag);
     gtl_moves();
     flush_compensation();
-    if (path_) path_->resume();
+    if (kernel_.path()) kernel_.path()->resume();
     return;
   } else if (named) {
     if (named->kind == gtl::Kind::Point)

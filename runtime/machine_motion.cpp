@@ -42,24 +42,6 @@ void Machine::move_to(const AxisValues& t) {
   if (block_.moves == kMaxMovesPerBlock + 1) report(DiagId::BlockMoves, 0, kMaxMovesPerBlock);
 }
 
-Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
-  // The trace shows positions from the active origin (docs/trace.md).
-  Event e{kind};
-  AxisValues off = kernel_.shown_origins();
-  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
-  for (int i = 0; i < kAxisCount; ++i)
-    if (t[i] != kernel_.position()[i]) e.moved |= static_cast<uint16_t>(1u << i);
-  e.pos = in_program_units(e.pos);
-  // An endless rotary axis shows 0..359.9999 however far it has turned (NC-110 §2.8.4).
-  for (int i = 0; i < kAxisCount; ++i)
-    if (config_.axes[static_cast<size_t>(i)].endless && config_.axes[static_cast<size_t>(i)].kind == AxisKind::Rotary) {
-      e.pos[i] = std::fmod(e.pos[i], 360.0);
-      if (e.pos[i] < 0) e.pos[i] += 360;
-      if (e.pos[i] >= 359.99995) e.pos[i] = 0;  // shows as 0, not 360.0000
-    }
-  return e;
-}
-
 MachineState Machine::state() const {
   MachineState s;
   s.position = motion_event(EventKind::Rapid, kernel_.position()).pos;
@@ -165,7 +147,7 @@ void Machine::rapid(const AxisValues& t) {
     seconds =
         std::max(seconds, 60 * std::fabs(t[i] - kernel_.position()[i]) / config_.axes[static_cast<size_t>(i)].rapid);
   if (system_value(SysVar::AxesDisconnected) != 1) kernel_.advance_clock(seconds);
-  if (wanted(EventKind::Rapid)) emit(motion_event(EventKind::Rapid, t));
+  if (kernel_.wanted(EventKind::Rapid)) emit(motion_event(EventKind::Rapid, t));
   move_to(t);
 }
 
@@ -186,7 +168,7 @@ void Machine::linear(const AxisValues& t) {
   } else {
     kernel_.advance_clock(feed_time(length));
   }
-  if (wanted(EventKind::Linear)) emit(motion_event(EventKind::Linear, t));
+  if (kernel_.wanted(EventKind::Linear)) emit(motion_event(EventKind::Linear, t));
   move_to(t);
 }
 
@@ -409,7 +391,7 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
   double length = std::hypot((r0 + r1) / 2 * sweep, dw);
   const double own = block_seconds();
   kernel_.advance_clock(own ? own : system_value(SysVar::RapidRun) == 1 ? 0 : feed_time(length));
-  if (wanted(EventKind::Arc)) {
+  if (kernel_.wanted(EventKind::Arc)) {
     Event e = motion_event(EventKind::Arc, t);
     e.plane = modal_.plane;
     AxisValues off = kernel_.shown_origins();
@@ -754,24 +736,10 @@ bool Machine::corner_requested() const {
   return conv_.corners && (has_slot(second_slot('C')) || has_slot(second_slot('R')));
 }
 
-void Machine::pass_on(size_t count) {
-  // Each held move starts where the one before it ends.
-  AxisValues at = hold_start_;
-  for (size_t i = 0; i < count; ++i) {
-    const Event& e = held_[i];
-    const bool move = e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc;
-    to_path(e, move ? &at : nullptr);
-    if (move) at = e.pos;
-  }
-  hold_start_ = at;
-  held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(count));
-}
-
 void Machine::release() {
-  holding_ = false;
   corner_.reset();
   chained_start_.reset();
-  pass_on(held_.size());
+  kernel_.release();
 }
 
 void Machine::corner_codes() {
@@ -800,16 +768,17 @@ void Machine::corner_begin(const AxisValues& start) {
   const bool feed =
       modal_.motion == Fn::MotionLinear || modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (block_.error) return release();  // its block failed: reported already
-  size_t incoming = held_.size(), moves = 0;
-  for (size_t i = 0; i < held_.size(); ++i)
-    if (is_move(held_[i]) || held_[i].kind == EventKind::Rapid) {
+  const std::vector<Event>& held = kernel_.held();
+  size_t incoming = held.size(), moves = 0;
+  for (size_t i = 0; i < held.size(); ++i)
+    if (is_move(held[i]) || held[i].kind == EventKind::Rapid) {
       incoming = i;
       ++moves;
     }
   std::string why = !feed || modal_.cycle >= 0     ? "it follows a feed move G01, G02 or G03 only (E-03)"
                     : moves > 1 && !chained_start_ ? "its block makes more than the one feed move it follows (E-03)"
                     : modal_.polar                 ? "it is not made in polar coordinates, G16 (E-07)"
-                    : incoming == held_.size()     ? "its block makes no feed move (E-03)"
+                    : incoming == held.size()      ? "its block makes no feed move (E-03)"
                                                    : "";
   if (!why.empty()) {
     report_slot(DiagId::CornerForm, slot, why);
@@ -822,21 +791,22 @@ void Machine::corner_begin(const AxisValues& start) {
 
 void Machine::corner_finish(bool another, size_t block_from) {
   Corner c = *corner_;
+  std::vector<Event>& held = kernel_.held();
   size_t outgoing = c.incoming + 1;
-  while (outgoing < held_.size() && !is_move(held_[outgoing]) && held_[outgoing].kind != EventKind::Rapid) ++outgoing;
+  while (outgoing < held.size() && !is_move(held[outgoing]) && held[outgoing].kind != EventKind::Rapid) ++outgoing;
   auto fail = [&](const std::string& why) {
     issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, why), c.source, c.slot, -1});
     if (!another) return release();
     // This block's own corner still waits: only what came before it goes out.
-    pass_on(block_from);
+    kernel_.pass_on(block_from);
     corner_.reset();
   };
   if (block_.error) return release();  // reported already (E-06)
   const int pu = modal_.plane.u, pv = modal_.plane.v;
-  if (outgoing == held_.size() || !is_move(held_[outgoing]) ||
-      (held_[outgoing].kind == EventKind::Linear &&
-       std::hypot(held_[outgoing].pos[pu] - held_[c.incoming].pos[pu],
-                  held_[outgoing].pos[pv] - held_[c.incoming].pos[pv]) < 1e-9))
+  if (outgoing == held.size() || !is_move(held[outgoing]) ||
+      (held[outgoing].kind == EventKind::Linear &&
+       std::hypot(held[outgoing].pos[pu] - held[c.incoming].pos[pu],
+                  held[outgoing].pos[pv] - held[c.incoming].pos[pv]) < 1e-9))
     return fail("the next block must make a feed move in the plane (E-04)");
   const int u = modal_.plane.u, v = modal_.plane.v;
   auto in_plane = [&](const AxisValues& p) { return corner::Vec(p[u], p[v]); };
@@ -850,8 +820,8 @@ void Machine::corner_finish(bool another, size_t block_from) {
     }
     return el;
   };
-  Event& in = held_[c.incoming];
-  Event& next = held_[outgoing];
+  Event& in = held[c.incoming];
+  Event& next = held[outgoing];
   const AxisValues corner_point = in.pos;
   std::string why;
   auto cut = corner::cut(element(c.start, in), element(corner_point, next), c.fillet, c.size, why);
@@ -883,7 +853,7 @@ void Machine::corner_finish(bool another, size_t block_from) {
     joint.a = c.size;
     joint.b = cut->fillet_sweep * 180 / kPi;
   }
-  held_.insert(held_.begin() + static_cast<std::ptrdiff_t>(c.incoming) + 1, joint);
+  held.insert(held.begin() + static_cast<std::ptrdiff_t>(c.incoming) + 1, joint);
   if (!another) {
     release();
     return;

@@ -102,7 +102,7 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
         e.n = n;
         for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(n, i));
         e.source = source;
-        out(e);
+        kernel_.out(e);
       }
       return true;
     }
@@ -111,7 +111,7 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
       Event e{EventKind::Override};
       e.n = modal_.override_enabled;
       e.source = source;
-      out(e);
+      kernel_.out(e);
       return true;
     }
     default: break;

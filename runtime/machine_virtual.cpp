@@ -98,7 +98,7 @@ bool Machine::virtual_function(FnCall call) {
     if (kind(a) != AxisKind::Linear || config_.axes[static_cast<size_t>(a)].diameter)
       return fail(fmt::format("the virtual axis {} is a linear axis, not a rotary or diametral one", kAxisLetters[a]));
 
-  if (path_) path_->leave();
+  if (kernel_.path()) kernel_.path()->leave();
   VirtualAxes next;
   next.mode = *mode;
   next.real = real;
@@ -213,7 +213,7 @@ void Machine::virtual_event(const std::string& what) {
 void Machine::virtual_off() {
   VirtualAxes& va = virtual_axes_;
   if (va.mode == 0) return;
-  if (path_) path_->leave();  // NC-110's G40 leaves with the next move: this is it
+  if (kernel_.path()) kernel_.path()->leave();  // NC-110's G40 leaves with the next move: this is it
   const AxisValues now = kernel_.position();
   AxisValues to = now;
   auto virtual_at = [&](size_t k) { return now[va.virt[k]] - va.zero[va.virt[k]]; };

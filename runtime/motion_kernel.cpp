@@ -4,6 +4,11 @@
 
 namespace ncc {
 
+MotionKernel::MotionKernel(const MachineConfig& config, TraceSink& trace, std::unique_ptr<CutterPath> path)
+    : config_(config), trace_(trace), events_wanted_(trace.wants_events()), path_(std::move(path)) {}
+
+MotionKernel::~MotionKernel() = default;
+
 void MotionKernel::record_move(double from_t, const AxisValues& from) {
   if (clock_ <= from_t) return;
   constexpr size_t kMoves = 256;  // more than the look-ahead runs ahead
@@ -66,6 +71,62 @@ AxisValues MotionKernel::to_frame(const AxisValues& m, const Plane& plane, int o
   AxisValues q{};
   for (int i = 0; i < kAxisCount; ++i) q[i] = m[i] - off[i];
   return transforms(origin) ? frame_.untransform(q, plane) : q;
+}
+
+double MotionKernel::in_units(int axis, double v, bool inch) const {
+  const AxisConfig& a = config_.axes[static_cast<size_t>(axis)];
+  switch (a.kind) {
+    case AxisKind::Linear: return inch ? v / 25.4 : v;
+    case AxisKind::Indexing: return v / a.index_step;
+    default: return v;
+  }
+}
+
+AxisValues MotionKernel::in_units(AxisValues v, bool inch) const {
+  for (int i = 0; i < kAxisCount; ++i) v[i] = in_units(i, v[i], inch);
+  return v;
+}
+
+Event MotionKernel::motion_event(EventKind kind, const AxisValues& t, bool inch) const {
+  // The trace shows positions from the active origin (docs/trace.md).
+  Event e{kind};
+  AxisValues off = shown_origins();
+  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
+  for (int i = 0; i < kAxisCount; ++i)
+    if (t[i] != position_[i]) e.moved |= static_cast<uint16_t>(1u << i);
+  e.pos = in_units(e.pos, inch);
+  // An endless rotary axis shows 0..359.9999 however far it has turned (NC-110 §2.8.4).
+  for (int i = 0; i < kAxisCount; ++i)
+    if (config_.axes[static_cast<size_t>(i)].endless && config_.axes[static_cast<size_t>(i)].kind == AxisKind::Rotary) {
+      e.pos[i] = std::fmod(e.pos[i], 360.0);
+      if (e.pos[i] < 0) e.pos[i] += 360;
+      if (e.pos[i] >= 359.99995) e.pos[i] = 0;  // shows as 0, not 360.0000
+    }
+  return e;
+}
+
+void MotionKernel::to_path(const Event& e, const AxisValues* start) {
+  if (!path_) return trace_.event(e);
+  if (is_move(e.kind) && !path_->passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
+  path_->event(e, start);
+}
+
+void MotionKernel::pass_on(size_t count) {
+  // Each held move starts where the one before it ends.
+  AxisValues at = hold_start_;
+  for (size_t i = 0; i < count; ++i) {
+    const Event& e = held_[i];
+    const bool move = is_move(e.kind);
+    to_path(e, move ? &at : nullptr);
+    if (move) at = e.pos;
+  }
+  hold_start_ = at;
+  held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(count));
+}
+
+void MotionKernel::release() {
+  holding_ = false;
+  pass_on(held_.size());
 }
 
 }  // namespace ncc

@@ -1,14 +1,19 @@
 // The motion kernel: where the machine is and how long it has run, the coordinates a
-// program's positions are in (the frame, the work offsets) and the working envelope.
-// It knows no words, modes or dialect: what a block decides (its plane, which origin
-// its targets are from) comes as arguments. Machine interprets blocks on top of it.
+// program's positions are in (the frame, the work offsets), the working envelope, and
+// the output every event leaves through (held for a corner, through the cutter path,
+// to the trace). It knows no words, modes or dialect: what a block decides (its
+// plane, inch or mm, which origin its targets are from) comes as arguments. Machine
+// interprets blocks on top of it.
 #pragma once
 
 #include <algorithm>
 #include <deque>
 #include <map>
+#include <memory>
+#include <vector>
 
 #include "contract/machine_config.h"
+#include "cutter_path.h"
 #include "envelope.h"
 #include "frame.h"
 
@@ -16,7 +21,9 @@ namespace ncc {
 
 class MotionKernel {
  public:
-  explicit MotionKernel(const MachineConfig& config) : config_(config) {}
+  // `path`: the traced cutter path, or none (the machine compensates G41/G42 itself).
+  MotionKernel(const MachineConfig& config, TraceSink& trace, std::unique_ptr<CutterPath> path);
+  ~MotionKernel();
 
   // Where the controlled point is: machine coordinates, mm / degrees.
   const AxisValues& position() const { return position_; }
@@ -62,6 +69,43 @@ class MotionKernel {
   Envelope& envelope() { return envelope_; }
   const Envelope& envelope() const { return envelope_; }
 
+  // A machine position in program units (`inch`), and a move's event: positions from
+  // the shown origin, endless rotary axes wrapped.
+  double in_units(int axis, double machine, bool inch) const;
+  AxisValues in_units(AxisValues machine, bool inch) const;
+  Event motion_event(EventKind kind, const AxisValues& machine_target, bool inch) const;
+
+  // The output. Whether an event of this kind goes anywhere: to the trace, the held
+  // events, or the cutter path (which follows every plane and compensation change,
+  // and moves while it offsets them). Hot: every move asks.
+  bool wanted(EventKind kind) const {
+    return events_wanted_ || holding_ || (path_ && (!is_move(kind) || !path_->passes_moves()));
+  }
+  // An event out; a move starts where the machine stands (it moves after its event),
+  // which only the cutter path needs to know.
+  void emit(const Event& e, bool inch) {
+    if (!is_move(e.kind) || !path_ || path_->passes_moves()) return out(e);
+    const AxisValues start = motion_event(EventKind::Linear, position_, inch).pos;
+    out(e, &start);
+  }
+  void out(const Event& e, const AxisValues* start = nullptr) {  // to the trace, or held back
+    if (!holding_) return to_path(e, start);
+    held_.push_back(e);
+  }
+  CutterPath* path() const { return path_.get(); }
+  // The hold (ISO's chamfers and fillets): from hold() every event waits in held()
+  // until it is passed on; `start` is where the first held move starts (trace
+  // coordinates), unless the kernel holds already.
+  void hold(const AxisValues& start) {
+    if (!holding_) hold_start_ = start;
+    holding_ = true;
+  }
+  bool holding() const { return holding_; }
+  std::vector<Event>& held() { return held_; }
+  const std::vector<Event>& held() const { return held_; }
+  void pass_on(size_t count);  // the first `count` held events, on
+  void release();              // all of them, and no more holding
+
  private:
   const MachineConfig& config_;
   AxisValues position_{};
@@ -78,6 +122,14 @@ class MotionKernel {
   std::map<int, AxisValues> local_offsets_;
   AxisValues position_offset_{};
   Envelope envelope_;  // NC-110 DLO, DSA
+
+  TraceSink& trace_;
+  const bool events_wanted_;
+  std::unique_ptr<CutterPath> path_;
+  std::vector<Event> held_;
+  bool holding_ = false;
+  AxisValues hold_start_{};                               // where the first held move starts
+  void to_path(const Event& e, const AxisValues* start);  // through the cutter path, if there is one
 };
 
 }  // namespace ncc
