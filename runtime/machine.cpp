@@ -104,10 +104,7 @@ void Machine::reset_state() {
   const int length = tool_change_->corrector_in_tool() ? modal_.length : 0;
   modal_ = Modal{};
   modal_.length = length;
-  kernel_.frame() = Frame{};
-  kernel_.refresh_origins();
-  kernel_.position_offset() = {};
-  kernel_.local_offsets().clear();
+  kernel_.reset_coordinates();
   intermediate_.reset();
   feed_.reset();
   no_feed_reported_ = false;
@@ -385,11 +382,8 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         block_.block_offset = call.arg;
       } else {
         modal_.work_offset = call.arg;
-        kernel_.frame().base.fill(call.arg);
         const AxisValues local_before = kernel_.frame().local;
-        kernel_.frame().local =
-            kernel_.local_offsets().count(call.arg) ? kernel_.local_offsets()[call.arg] : AxisValues{};
-        kernel_.refresh_origins();
+        kernel_.select_work_offset(call.arg);
         if (emit_events) {
           Event e{EventKind::WorkOffset};
           e.n = call.arg;

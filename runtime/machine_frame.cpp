@@ -86,7 +86,7 @@ AxisValues Machine::target() {
   const AxisValues& from = parabola_middle_ ? *parabola_middle_ : kernel_.position();
   const AxisValues off = target_frame();
   AxisValues t = from;
-  if (kernel_.frame().transformed() && !block_.machine_frame && block_.block_offset < 0) {
+  if (kernel_.transforms(block_origin())) {
     t = to_machine(program_target());
     for (double& v : t) v = snap(v);
   } else {
@@ -299,6 +299,7 @@ void Machine::reference_approach() {
 // ---- The three-letter functions (NC-110 §2.13) ---------------------------------------
 
 bool Machine::frame_function(FnCall call) {
+  Frame& frame = kernel_.frame();
   // The operands: #1, #2... at the operand slots; axes at their letters' slots.
   auto operand = [&](int i) { return slot_if(operand_slot(i)); };
   auto whole = [&](int i, int lo, int hi, const char* what) { return whole_operand(i, lo, hi, what); };
@@ -346,11 +347,11 @@ bool Machine::frame_function(FnCall call) {
           double v = value(a);
           kernel_.offsets()[*n].values[a] += kernel_.offsets()[*n].inch && is_linear(a) ? v / 25.4 : v;
           kernel_.offsets()[*n].axes |= 1u << a;
-          moved = moved || kernel_.frame().base[a] == *n;
+          moved = moved || frame.base[a] == *n;
           continue;
         }
-        kernel_.frame().base[a] = *n;
-        kernel_.frame().shift[a] = call.fn == Fn::OriginTemporary ? value(a) : 0;
+        frame.base[a] = *n;
+        frame.shift[a] = call.fn == Fn::OriginTemporary ? value(a) : 0;
         moved = true;
       }
       kernel_.refresh_origins();
@@ -359,14 +360,14 @@ bool Machine::frame_function(FnCall call) {
     }
     case Fn::OriginIncremental:
       // Cumulative: the current origin moves by the values (decision 1).
-      for (int a : listed) kernel_.frame().shift[a] += value(a);
+      for (int a : listed) frame.shift[a] += value(a);
       origin_event();
       break;
     case Fn::Mirror:
-      if (listed.empty()) kernel_.frame().mirror.fill(false);
+      if (listed.empty()) frame.mirror.fill(false);
       for (int a : listed) {
         word(kAxisLetters[a]);
-        kernel_.frame().mirror[a] = conv_.mirror_toggles ? !kernel_.frame().mirror[a] : true;
+        frame.mirror[a] = conv_.mirror_toggles ? !frame.mirror[a] : true;
       }
       transform_event();
       break;
@@ -385,7 +386,7 @@ bool Machine::frame_function(FnCall call) {
         }
         values[a] = scale ? v : axis_units(a, v);
       }
-      (scale ? kernel_.frame().scale : kernel_.frame().shift) = values;
+      (scale ? frame.scale : frame.shift) = values;
       if (scale)
         transform_event();
       else
@@ -393,7 +394,7 @@ bool Machine::frame_function(FnCall call) {
       break;
     }
     case Fn::Rotation:
-      if (auto v = operand(0)) kernel_.frame().rotation = *v;
+      if (auto v = operand(0)) frame.rotation = *v;
       transform_event();
       break;
     case Fn::Scale: {
@@ -405,13 +406,13 @@ bool Machine::frame_function(FnCall call) {
       }
       // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on every linear axis of
       // the machine (an angle is not scaled); (SCF): 1.
-      kernel_.frame().scale.fill(1);
+      frame.scale.fill(1);
       if (factor && listed.empty())
         for (char c : conv_.axes)
-          if (is_linear(axis_index(c))) kernel_.frame().scale[axis_index(c)] = *factor;
+          if (is_linear(axis_index(c))) frame.scale[axis_index(c)] = *factor;
       for (int a : listed) {
         word(kAxisLetters[a]);
-        kernel_.frame().scale[a] = factor.value_or(1);
+        frame.scale[a] = factor.value_or(1);
       }
       transform_event();
       break;
@@ -729,11 +730,11 @@ void Machine::rotation_on() {
   // (decision 24).
   const double angle = modal_.absolute ? word('R') : last_rotation_ + word('R');
   // The centre is a programmed point: under scaling it is scaled as the path is.
+  Frame& frame = kernel_.frame();
   for (int i = 0; i < kAxisCount; ++i)
-    centre[i] =
-        kernel_.frame().scale_centre[i] + (centre[i] - kernel_.frame().scale_centre[i]) * kernel_.frame().factor(i);
-  kernel_.frame().rotation = angle;
-  kernel_.frame().rotation_centre = centre;
+    centre[i] = frame.scale_centre[i] + (centre[i] - frame.scale_centre[i]) * frame.factor(i);
+  frame.rotation = angle;
+  frame.rotation_centre = centre;
   last_rotation_ = angle;
   modal_.rotation = true;
   transform_event();

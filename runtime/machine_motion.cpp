@@ -199,23 +199,23 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     move_to(t);
     return;
   }
+  const Frame& frame = kernel_.frame();
   // NC-110 §2.13.1: the arc is computed where it is programmed, then the frame maps it;
   // a mirror on one axis of the plane turns it the other way (decision 2).
   // ISO §8.12: an arc by R under different factors keeps its shape, R scaled by the
   // larger one (decision 26); by I J K its end point leaves the circle (E-01).
-  const bool unequal =
-      kernel_.frame().transformed() && !block_.machine_frame && kernel_.frame().scale[u] != kernel_.frame().scale[v];
-  if (kernel_.frame().transformed() && !block_.machine_frame) {
+  const bool unequal = frame.transformed() && !block_.machine_frame && frame.scale[u] != frame.scale[v];
+  if (frame.transformed() && !block_.machine_frame) {
     if (unequal && !rules_->scales_arcs_unequally()) {
-      report(DiagId::TransformArc, 0, four_decimals(kernel_.frame().scale[u]), std::string(1, kAxisLetters[u]),
-             four_decimals(kernel_.frame().scale[v]), std::string(1, kAxisLetters[v]));
+      report(DiagId::TransformArc, 0, four_decimals(frame.scale[u]), std::string(1, kAxisLetters[u]),
+             four_decimals(frame.scale[v]), std::string(1, kAxisLetters[v]));
       move_to(t);
       return;
     }
-    if (kernel_.frame().mirror[u] != kernel_.frame().mirror[v]) clockwise = !clockwise;
+    if (frame.mirror[u] != frame.mirror[v]) clockwise = !clockwise;
   }
-  const bool programmed_clockwise = clockwise != (kernel_.frame().transformed() && !block_.machine_frame &&
-                                                  kernel_.frame().mirror[u] != kernel_.frame().mirror[v]);
+  const bool programmed_clockwise =
+      clockwise != (frame.transformed() && !block_.machine_frame && frame.mirror[u] != frame.mirror[v]);
   const AxisValues start_p = to_frame(kernel_.position());
   const AxisValues end_p = to_frame(t);
   const Eigen::Vector2d q0(start_p[u], start_p[v]), q1(end_p[u], end_p[v]);
@@ -248,8 +248,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   const Eigen::Vector2d p1(t[u], t[v]);
   Eigen::Vector2d centre(centre_m[u], centre_m[v]);
   if (radius_form && unequal) {
-    const double r =
-        length_units(word(conv_.radius_word)) * std::max(kernel_.frame().scale[u], kernel_.frame().scale[v]);
+    const double r = length_units(word(conv_.radius_word)) * std::max(frame.scale[u], frame.scale[v]);
     const double chord = (p1 - p0).norm();
     if (chord > 2 * std::fabs(r) + conv_.arc_tolerance)
       return fail(fmt::format("the scaled end point is {} away, more than the diameter {} of the scaled R",

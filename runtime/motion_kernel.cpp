@@ -39,6 +39,20 @@ void MotionKernel::refresh_origins() {
   for (int i = 0; i < kAxisCount; ++i) base_origin_[i] = offset_value(frame_.base[i], i);
 }
 
+void MotionKernel::reset_coordinates() {
+  frame_ = Frame{};
+  refresh_origins();
+  position_offset_ = {};
+  local_offsets_.clear();
+}
+
+void MotionKernel::select_work_offset(int n) {
+  frame_.base.fill(n);
+  const auto local = local_offsets_.find(n);
+  frame_.local = local != local_offsets_.end() ? local->second : AxisValues{};
+  refresh_origins();
+}
+
 AxisValues MotionKernel::origins() const {
   AxisValues o{};
   for (int i = 0; i < kAxisCount; ++i) o[i] = origin(i);

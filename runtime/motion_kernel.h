@@ -46,6 +46,8 @@ class MotionKernel {
   std::map<int, WorkOffset>& offsets() { return offsets_; }
   const std::map<int, WorkOffset>& offsets() const { return offsets_; }
   void refresh_origins();
+  void reset_coordinates();        // M02/M30: origin 0, no transform, shift or local zero
+  void select_work_offset(int n);  // on every axis, with the local zero it keeps (ISO G52)
   std::map<int, AxisValues>& local_offsets() { return local_offsets_; }  // ISO G52: per work offset
   AxisValues& position_offset() { return position_offset_; }             // G92, as last shown
   const AxisValues& position_offset() const { return position_offset_; }
