@@ -16,7 +16,7 @@ void Machine::GostCycles::drill() {
   const char depth_letter = kAxisLetters[d];
   registers();
   AxisValues hole = m.target();
-  hole[d] = m.machine_[d];
+  hole[d] = m.kernel_.position()[d];
   bool ok = true;
   if (!registers_.depth) {
     m.report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, depth_letter));
@@ -54,7 +54,7 @@ void Machine::GostCycles::drill() {
   // G90: R and the depth are coordinates; G91: R is measured from the initial level
   // and the depth from R.
   cycle::Hole h;
-  h.initial = h.current = m.machine_[d];
+  h.initial = h.current = m.kernel_.position()[d];
   AxisValues off = m.target_frame();
   h.level =
       m.modal_.absolute ? m.length_units(*registers_.level) + off[d] : h.current + m.length_units(*registers_.level);

@@ -35,7 +35,7 @@ void Machine::IsoCycles::drill_one() {
   const int u = m.modal_.plane.u;  // G76/G87 shift along the plane's first axis
   registers();
   AxisValues hole = m.target();
-  hole[d] = m.machine_[d];
+  hole[d] = m.kernel_.position()[d];
   bool ok = true;
   if (!registers_.depth) ok = (m.report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, kAxisLetters[d])), false);
   if (!registers_.level) ok = (m.report(DiagId::CycleNoRLevel, 0, pattern.name), false);
@@ -58,10 +58,10 @@ void Machine::IsoCycles::drill_one() {
   // G90: R and the bottom are coordinates; G91: R from the initial level, the bottom
   // from R (§8.23). The initial level is where the tool stood when the cycle mode
   // began (§8.21: "the position before the cycle").
-  if (!initial_level_) initial_level_ = m.machine_[d];
+  if (!initial_level_) initial_level_ = m.kernel_.position()[d];
   cycle::Hole h;
   h.initial = *initial_level_;
-  h.current = m.machine_[d];
+  h.current = m.kernel_.position()[d];
   const AxisValues off = m.target_frame();
   h.level =
       m.modal_.absolute ? m.length_units(*registers_.level) + off[d] : h.initial + m.length_units(*registers_.level);

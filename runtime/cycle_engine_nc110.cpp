@@ -19,7 +19,7 @@ void Machine::Nc110Cycles::registers(bool definition) {
   // R words: R1 then R2; one R is both (§2.8.9.4). Levels become program coordinates
   // where they are written: G91 measures R from the axis' position, the depth from R1.
   const int d = registers_.axis;
-  const double here = m.to_frame(m.machine_)[d];
+  const double here = m.to_frame(m.kernel_.position())[d];
   const bool absolute = m.modal_.absolute;
   auto level = [&](double v) { return absolute ? m.axis_units(d, v) : here + m.axis_units(d, v); };
   if (auto r1 = m.word_if('R')) {
@@ -133,21 +133,22 @@ void Machine::Nc110Cycles::block(bool) {
 
   // Per hole (§2.8.9.4): the position at the height the tool is at, R1, the hole, back.
   AxisValues p = m.program_target();
-  p[d] = m.to_frame(m.machine_)[d];
+  p[d] = m.to_frame(m.kernel_.position())[d];
   const AxisValues position = m.to_machine(p);
   const bool tapping = pattern.bottom == CyclePattern::Bottom::Reverse;
   // The 1 mm G83 comes back is the machine's, whatever the scale (decision 53).
   cycle::Pecks pecks{*registers_.r1,
                      *registers_.bottom,
                      registers_.step.value_or(0),
-                     kUnloadClearance / (m.frame_.transformed() ? m.frame_.scale[d] : 1.0),
+                     kUnloadClearance / (m.kernel_.frame().transformed() ? m.kernel_.frame().scale[d] : 1.0),
                      registers_.factor,
                      registers_.minimum};
   // Everything the hole needs is checked before the tool moves: a refused hole is
   // not drilled, and the tool is taken to be over it.
   auto refuse = [&] { m.move_to(position); };
   if (!levels_ok(pattern) || !registers_ok(pattern)) return refuse();
-  if (!(tapping && registers_.pitch) && !m.need_feed(("canned cycle " + name).c_str(), m.machine_)) return refuse();
+  if (!(tapping && registers_.pitch) && !m.need_feed(("canned cycle " + name).c_str(), m.kernel_.position()))
+    return refuse();
   if (pattern.in == CyclePattern::In::SpindleFeed && std::abs(m.modal_.spindle) != 1 && m.spindle_direction_ == 0) {
     m.report(DiagId::CycleNoSpindle, 0, name);
     return refuse();
@@ -183,7 +184,7 @@ void Machine::Nc110Cycles::block(bool) {
     }
   }
 
-  cycle::Nc110Hole h{m.to_frame(m.machine_)[d], *registers_.r2, pecks, 0, m.spindle_direction_};
+  cycle::Nc110Hole h{m.to_frame(m.kernel_.position())[d], *registers_.r2, pecks, 0, m.spindle_direction_};
   if (pattern.dwell || (n && *n > 1 && !pecks.unloading())) h.dwell = m.timer_dwell();  // TMR's, read where it is used
   m.hole_steps(cycle::nc110_hole(pattern, h), p, d, d, true, registers_.pitch);
 }

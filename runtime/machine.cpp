@@ -18,8 +18,8 @@ constexpr const char* kFeedModes[] = {"inverse-time feeds", "feeds per minute (m
 
 Machine::Machine(const ProgramSemantics& semantics, const MachineConfig& config, TraceSink& trace,
                  RuntimeIssues& issues)
-    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace),
-      events_wanted_(trace.wants_events()), issues_(issues), path_(cutter_path(trace)) {
+    : sem_(semantics), conv_(semantics.conventions), config_(config), trace_(trace), issues_(issues),
+      kernel_(config, trace, cutter_path(trace)) {
   gtl_init();
   cycles_ = CycleEngine::make(*this, conv_);
   tool_change_ = ToolChange::make(*this, conv_);
@@ -56,17 +56,17 @@ std::unique_ptr<CutterPath> Machine::cutter_path(TraceSink& trace) {
 }
 
 void Machine::end_run(bool stopped_by_error) {
-  if (holding_) release();
-  if (path_) path_->finish(!stopped_by_error);
+  if (kernel_.holding()) release();
+  if (kernel_.path()) kernel_.path()->finish(!stopped_by_error);
 }
 
 void Machine::power_on() {
-  machine_ = config_.initial_position;
-  offsets_ = config_.work_offsets;
+  kernel_.move_to(config_.initial_position);
+  kernel_.offsets() = config_.work_offsets;
   tool_offsets_ = config_.offsets;
   // Origin 0 is 0 on every axis the profile does not give it: (UAO,0) and RESET
   // select it on all axes (NC-110 §2.13.1.1).
-  offsets_[0].axes = (1u << kAxisCount) - 1;
+  kernel_.offsets()[0].axes = (1u << kAxisCount) - 1;
   tool_loaded_ = 0;
   select_offset(0);
   probe_ = config_.probe;
@@ -76,7 +76,7 @@ void Machine::power_on() {
   reset_state();
   // A trace to compare with another dialect's starts with the modes the power-on
   // state gives: one dialect's power-on G94 is another's written G94.
-  if (config_.trace_machine_frame && events_wanted_) {
+  if (config_.trace_machine_frame && trace_.wants_events()) {
     auto state = [&](EventKind kind, int n) {
       Event e{kind};
       e.n = n;
@@ -96,7 +96,7 @@ void Machine::power_on() {
     if (modal_.work_offset != 0) {
       Event e{EventKind::WorkOffset};
       e.n = modal_.work_offset;
-      for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(modal_.work_offset, i));
+      for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(modal_.work_offset, i));
       trace_.event(e);
     }
   }
@@ -108,10 +108,7 @@ void Machine::reset_state() {
   const int length = tool_change_->corrector_in_tool() ? modal_.length : 0;
   modal_ = Modal{};
   modal_.length = length;
-  frame_ = Frame{};
-  refresh_base_origin();
-  position_offset_ = {};
-  local_offsets_.clear();
+  kernel_.reset_coordinates();
   intermediate_.reset();
   feed_.reset();
   no_feed_reported_ = false;
@@ -124,7 +121,7 @@ void Machine::reset_state() {
   spindle_direction_ = 0;
   cycles_->cancelled();
   parabola_middle_.reset();
-  envelope_ = {};
+  kernel_.envelope() = {};
   tolerance_ = {};
   turning_ = false;
   locked_ = 0;
@@ -166,20 +163,6 @@ double Machine::axis_units(int axis, double v) const {
   return v;
 }
 
-double Machine::program_axis(int axis, double v) const {
-  const AxisConfig& a = config_.axes[static_cast<size_t>(axis)];
-  switch (a.kind) {
-    case AxisKind::Linear: return to_program(v);
-    case AxisKind::Indexing: return v / a.index_step;
-    default: return v;
-  }
-}
-
-AxisValues Machine::in_program_units(AxisValues v) const {
-  for (int i = 0; i < kAxisCount; ++i) v[i] = program_axis(i, v[i]);
-  return v;
-}
-
 void Machine::plane_event() {
   Event e{EventKind::Plane};
   e.plane = modal_.plane;
@@ -195,13 +178,9 @@ void Machine::path_event(int mode) {
 void Machine::emit(Event e) {
   // A block stops doing things at its first error: what it did before shows, the
   // rest does not (the machine's state still follows it in a dry run).
-  if (block_.error || !wanted(e.kind)) return;
+  if (block_.error || !kernel_.wanted(e.kind)) return;
   e.source = source();
-  // A move starts where the machine stands (it moves after its event); only the
-  // cutter path needs to know.
-  if (!is_move(e.kind) || !path_ || path_->passes_moves()) return out(e);
-  const AxisValues start = motion_event(EventKind::Linear, machine_).pos;
-  out(e, &start);
+  kernel_.emit(e, modal_.inch);
 }
 
 bool Machine::block_has(Fn fn) const {
@@ -212,10 +191,10 @@ bool Machine::block_has(Fn fn) const {
 }
 
 uint64_t Machine::held_bytes() const {
-  return path_bytes() + held_.capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
+  return path_bytes() + kernel_.held().capacity() * sizeof(Event) + spline_bytes() + gtl_bytes();
 }
 
-uint64_t Machine::path_bytes() const { return path_ ? path_->held_bytes() : 0; }
+uint64_t Machine::path_bytes() const { return kernel_.path() ? kernel_.path()->held_bytes() : 0; }
 
 uint64_t Machine::spline_bytes() const {
   return spline_.points.capacity() * sizeof(AxisValues) + spline_.sources.capacity() * sizeof(uint32_t);
@@ -225,18 +204,7 @@ std::string Machine::held_what() const {
   if (spline_bytes() > path_bytes())
     return fmt::format("the spline holds {} points (G06 blocks since its BSP)", spline_.points.size());
   return fmt::format("cutter radius compensation holds {} events while its move waits for the next move in the plane",
-                     path_ ? path_->held_events() : 0);
-}
-
-void Machine::out(const Event& e, const AxisValues* start) {
-  if (!holding_) return to_path(e, start);
-  held_.push_back(e);
-}
-
-void Machine::to_path(const Event& e, const AxisValues* start) {
-  if (!path_) return trace_.event(e);
-  if (is_move(e.kind) && !path_->passes_moves() && trace_.wants_programmed()) trace_.programmed(e);
-  path_->event(e, start);
+                     kernel_.path() ? kernel_.path()->held_events() : 0);
 }
 
 FnCall Machine::current(FnGroup group) const {
@@ -298,7 +266,8 @@ void Machine::cutter_comp_event() {
   Event e{EventKind::CutterComp};
   e.n = modal_.comp;
   // ISO §8.12: a mirror in one axis of the plane puts the tool on the other side.
-  if (path_ && e.n != 0 && frame_.mirror[modal_.plane.u] != frame_.mirror[modal_.plane.v]) e.n = 3 - e.n;
+  if (kernel_.path() && e.n != 0 && kernel_.frame().mirror[modal_.plane.u] != kernel_.frame().mirror[modal_.plane.v])
+    e.n = 3 - e.n;
   e.a = to_program(offset_.radius);
   emit(e);
 }
@@ -404,7 +373,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         block_.load_entry = call.arg;
         break;
       }
-      if (call.arg != 0 && !offsets_.count(call.arg)) {
+      if (call.arg != 0 && !kernel_.offsets().count(call.arg)) {
         report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
         break;
       }
@@ -417,17 +386,15 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         block_.block_offset = call.arg;
       } else {
         modal_.work_offset = call.arg;
-        frame_.base.fill(call.arg);
-        const AxisValues local_before = frame_.local;
-        frame_.local = local_offsets_.count(call.arg) ? local_offsets_[call.arg] : AxisValues{};
-        refresh_base_origin();
+        const AxisValues local_before = kernel_.frame().local;
+        kernel_.select_work_offset(call.arg);
         if (emit_events) {
           Event e{EventKind::WorkOffset};
           e.n = call.arg;
-          if (auto it = offsets_.find(call.arg); it != offsets_.end())
-            for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(call.arg, i));
+          if (auto it = kernel_.offsets().find(call.arg); it != kernel_.offsets().end())
+            for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(call.arg, i));
           emit(e);
-          if (frame_.local != local_before) position_offset_event();  // ISO G52: its own local shift
+          if (kernel_.frame().local != local_before) position_offset_event();  // ISO G52: its own local shift
         }
       }
       break;
@@ -557,7 +524,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && modal_.scaling && !rules_->may_change_coordinates()) break;
       if (modal_.scaling) {
         modal_.scaling = false;
-        frame_.clear_scaling();
+        kernel_.frame().clear_scaling();
         if (emit_events) transform_event();
       }
       break;
@@ -565,7 +532,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && modal_.rotation && !rules_->may_change_coordinates()) break;
       if (modal_.rotation) {
         modal_.rotation = false;
-        frame_.clear_rotation();
+        kernel_.frame().clear_rotation();
         if (emit_events) transform_event();
       }
       break;
@@ -589,11 +556,11 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         helix_pitch_ = word('K');
       break;
     case Fn::TransformCancel: {
-      const bool shifted = frame_.shift != AxisValues{};
-      const bool transformed = frame_.transformed();
-      frame_.mirror.fill(false);
-      frame_.scale.fill(1);
-      frame_.shift.fill(0);
+      const bool shifted = kernel_.frame().shift != AxisValues{};
+      const bool transformed = kernel_.frame().transformed();
+      kernel_.frame().mirror.fill(false);
+      kernel_.frame().scale.fill(1);
+      kernel_.frame().shift.fill(0);
       if (emit_events && transformed) transform_event();
       if (emit_events && shifted) origin_event();
       break;
@@ -761,26 +728,11 @@ void Machine::check_profile_rules() {
 
 BlockResult Machine::execute(const BlockRequest& request) {
   if (!remaining_paths_) return run_block(request);
-  const double from_t = clock_;
-  const AxisValues from = machine_;
+  const double from_t = kernel_.clock();
+  const AxisValues from = kernel_.position();
   const BlockResult result = run_block(request);
-  if (clock_ > from_t) {
-    constexpr size_t kMoves = 256;  // more than the look-ahead runs ahead
-    if (moves_.size() == kMoves) moves_.pop_front();
-    moves_.push_back({from_t, clock_, from, machine_});
-  }
+  kernel_.record_move(from_t, from);
   return result;
-}
-
-double Machine::remaining_at(int axis, double seconds) const {
-  for (auto it = moves_.rbegin(); it != moves_.rend(); ++it) {
-    if (seconds >= it->to_t) return 0;
-    if (seconds >= it->from_t) {
-      const double done = (seconds - it->from_t) / (it->to_t - it->from_t);
-      return std::fabs(it->to[axis] - it->from[axis]) * (1 - done);
-    }
-  }
-  return 0;
 }
 
 BlockResult Machine::run_block(const BlockRequest& request) {
@@ -813,18 +765,18 @@ BlockResult Machine::run_block(const BlockRequest& request) {
   if (corner_) corner_codes();
   AxisValues start{};  // of this block's move, when a corner follows it
   if (corner_here) {
-    start = motion_event(EventKind::Linear, machine_).pos;
-    if (!holding_) hold_start_ = start;
-    holding_ = true;
+    start = motion_event(EventKind::Linear, kernel_.position()).pos;
+    kernel_.hold(start);
   }
-  const size_t block_from = held_.size();
+  const size_t block_from = kernel_.held().size();
   // §8.10: G28, G29, G53 and the cycles move with the compensation vector zeroed.
   const bool zeroed =
-      path_ && (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
+      kernel_.path() &&
+      (has_axis_word() || (modal_.cycle >= 0 && conv_.cycle_level_word && has(conv_.cycle_level_word))) &&
       (block_.reference_trip || block_.block_offset == 0 || modal_.cycle >= 0);
-  if (zeroed) path_->suspend();
+  if (zeroed) kernel_.path()->suspend();
   action();
-  if (zeroed) path_->resume();
+  if (zeroed) kernel_.path()->resume();
   if (block_.set_position_after && !block_.error) set_position();
   if (corner_) corner_finish(corner_here, block_from);
   if (corner_here) corner_begin(start);
@@ -950,7 +902,7 @@ void Machine::action() {
           return report(DiagId::CompPath, l,
                         fmt::format("{} stands in a block of its own, between the two moves it joins (§2.8.7)", shown));
         if (l == 'b' && word('b') <= 0) return report(DiagId::CompPath, 'b', "a chamfer b is greater than 0 (§2.8.7)");
-        return path_->corner(l == 'r', word(l), block_.request->source);
+        return kernel_.path()->corner(l == 'r', word(l), block_.request->source);
       }
       return report(DiagId::GtlProfile, l,
                     fmt::format("{} belongs to a block of a GTL profile; none is open: G21 opens one (§2.11.8)",
@@ -1039,14 +991,14 @@ void Machine::action() {
   // NC-110 §2.8.15: under G27/G28 a clamped axis cannot move in a feed move.
   if ((modal_.dynamics == 0 || modal_.dynamics == 1) && modal_.motion != Fn::MotionRapid && locked_)
     for (int i = 0; i < kAxisCount; ++i)
-      if ((locked_ & (1u << i)) && std::fabs(t[i] - machine_[i]) > 1e-9)
+      if ((locked_ & (1u << i)) && std::fabs(t[i] - kernel_.position()[i]) > 1e-9)
         report(DiagId::AxisClamped, kAxisLetters[i], std::string(1, kAxisLetters[i]));
   // NC-110 §2.8.1.3: after (BSP) the first G00/G01 block leads in to the spline's
   // start; one after G06 points leads out, and the spline is cut then.
   const bool straight = modal_.motion == Fn::MotionRapid || modal_.motion == Fn::MotionLinear;
   if (spline_.active && straight && !spline_.lead_in) {
     spline_.lead_in = true;
-    spline_.lead_in_from = machine_;
+    spline_.lead_in_from = kernel_.position();
     spline_.sources = {block_.request->source};
     spline_.points = {t};
   } else if (spline_.active && straight && spline_.points.size() == 1) {
@@ -1098,10 +1050,11 @@ void Machine::finish() {
              corner_->source, corner_->slot, -1});
       release();
     }
-    if (path_) path_->finish();
+    if (kernel_.path()) kernel_.path()->finish();
     apply({Fn::SpindleStop}, Scope::Modal, true);
     apply({Fn::CoolantOff}, Scope::Modal, true);
-    const ResetState before{modal_, frame_, position_offset_, envelope_, tolerance_, turning_};
+    const ResetState before{modal_,     kernel_.frame(), kernel_.position_offset(), kernel_.envelope(),
+                            tolerance_, turning_};
     reset_state();
     emit_reset(before);
     Event e{EventKind::End};
@@ -1137,7 +1090,7 @@ void Machine::emit_reset(const ResetState& before) {
   flush_compensation();
   if (was.work_offset != modal_.work_offset)
     apply({Fn::WorkOffset, static_cast<uint16_t>(modal_.work_offset)}, Scope::Modal, true);
-  if (before.position_offset != position_offset_) {
+  if (before.position_offset != kernel_.position_offset()) {
     Event e{EventKind::PositionOffset};
     emit(e);
   }
@@ -1196,7 +1149,7 @@ void Machine::text_event(EventKind kind, const std::string& text, uint32_t sourc
   e.n = n;
   e.a = a;
   e.source = source;
-  out(e);
+  kernel_.out(e);
 }
 
 void Machine::comment(const std::string& text, uint32_t source) { text_event(EventKind::Comment, text, source); }
@@ -1204,7 +1157,7 @@ void Machine::comment(const std::string& text, uint32_t source) { text_event(Eve
 void Machine::block_start(uint32_t source) {
   Event e{EventKind::Block};
   e.source = source;
-  out(e);
+  kernel_.out(e);
 }
 
 bool Machine::asset_done(const std::string& what, int code, uint32_t source) {

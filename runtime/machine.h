@@ -1,21 +1,23 @@
-// The motion runtime: modal state, coordinate systems and the block cycle
-// (GOST 20999 S-12; the same shape serves every dialect). The VM hands it one block
-// at a time as canonical functions plus word values; it computes the motion, checks
-// it and emits trace events. Its parts: machine.cpp (the block cycle and modal
-// functions), machine_frame.cpp (origins, transforms, limits and protected zones,
-// with frame.h and envelope.h), machine_motion.cpp (moves, arcs, threads, splines,
-// dwells, time), machine_cycles.cpp (what the canned cycles share, the measuring
-// cycles), machine_system.cpp (system variables). What a dialect does its own way is a
-// strategy chosen once from the program's conventions, not a flag asked where it
-// matters: its canned cycles (cycle_engine.h), its tool change (tool_change.h), what
-// it forbids a block (block_rules.h: ISO's E-08..E-27) and the traced cutter path
-// (cutter_path.h: ISO's, NC-110's, or none).
+// The motion runtime's block interpreter: modal state and the block cycle (GOST 20999
+// S-12; the same shape serves every dialect), on a motion kernel that knows no words,
+// modes or dialect (motion_kernel.h: the position and clock, the frame and work
+// offsets, the envelope, and the output every event leaves through). The VM hands it
+// one block at a time as canonical functions plus word values; it computes the
+// motion, checks it and emits trace events through the kernel. Its parts: machine.cpp
+// (the block cycle and modal functions), machine_frame.cpp (the functions that set
+// origins and transforms, the limits' and zones' messages), machine_motion.cpp (moves,
+// arcs, threads, splines, dwells, time, ISO's corner rules), machine_cycles.cpp (what
+// the canned cycles share, the measuring cycles), machine_system.cpp (system
+// variables). What a dialect does its own way is a strategy chosen once from the
+// program's conventions, not a flag asked where it matters: its canned cycles
+// (cycle_engine.h), its tool change (tool_change.h), what it forbids a block
+// (block_rules.h: ISO's E-08..E-27) and the traced cutter path (cutter_path.h: ISO's,
+// NC-110's, or none; the kernel's output goes through it).
 #pragma once
 
 #include <algorithm>
 #include <array>
 #include <bitset>
-#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -28,8 +30,7 @@
 #include "contract/program_semantics.h"
 #include "contract/system_vars.h"
 #include "cutter_path.h"
-#include "envelope.h"
-#include "frame.h"
+#include "motion_kernel.h"
 #include "support/diagnostics.h"
 #include "support/numbers.h"
 #include "trace.h"
@@ -71,13 +72,13 @@ class Machine final : public BlockMachine {
   void screen_event(const std::string& what, uint32_t source) override;
   void sync_event(const std::string& what, uint32_t source) override;
 
-  double clock() const override { return clock_; }
-  void wait_until(double seconds) override { clock_ = std::max(clock_, seconds); }
+  double clock() const override { return kernel_.clock(); }
+  void wait_until(double seconds) override { kernel_.wait_until(seconds); }
   bool block_skip() const override { return block_skip_; }
   double system(SysRef ref) const override;
   [[nodiscard]] bool set_system(SysRef ref, double value, uint32_t source) override;
   [[nodiscard]] bool gtl_field(int kind, double index, double field, double& out) const override;
-  double remaining_at(int axis, double seconds) const override;
+  double remaining_at(int axis, double seconds) const override { return kernel_.remaining_at(axis, seconds); }
 
   // Held: the events cutter radius compensation and a corner hold back for a later
   // move, the points of a spline (limits.run_memory_mib).
@@ -192,8 +193,8 @@ class Machine final : public BlockMachine {
   bool is_linear(int axis) const { return config_.axes[static_cast<size_t>(axis)].kind == AxisKind::Linear; }
   // A written axis value in machine units (mm, degrees), and back.
   double axis_units(int axis, double v) const;
-  double program_axis(int axis, double v) const;
-  AxisValues in_program_units(AxisValues v) const;
+  double program_axis(int axis, double v) const { return kernel_.in_units(axis, v, modal_.inch); }
+  AxisValues in_program_units(AxisValues v) const { return kernel_.in_units(v, modal_.inch); }
 
   // Issues, and events, belong to the block being run, or to the one a deferred move
   // belongs to (a GTL element's).
@@ -226,13 +227,7 @@ class Machine final : public BlockMachine {
   void check_profile_rules();
   void action();
   void finish();
-  void emit(Event e);
-  // Whether an event of this kind goes anywhere: to the trace, the held events, or the
-  // cutter path (which follows every plane and compensation change, and moves while
-  // it offsets them).
-  bool wanted(EventKind kind) const {
-    return events_wanted_ || holding_ || (path_ && (!is_move(kind) || !path_->passes_moves()));
-  }
+  void emit(Event e);  // an event of the block, unless it has failed
   void plane_event();
   void path_event(int mode);
   void tool_length_event();
@@ -251,19 +246,20 @@ class Machine final : public BlockMachine {
   };
   void emit_reset(const ResetState& before);
 
-  // Coordinates (machine_frame.cpp).
-  double offset_value(int offset, int axis) const;  // machine units
-  double origin(int axis) const;                    // of the active frame
-  AxisValues origins() const;
-  AxisValues shown_origins() const;                        // what the trace's positions are from
-  AxisValues frame_offset(int work_offset) const;          // GOST: work offset + position offset
-  AxisValues target_frame() const;                         // the frame this block's words are in
-  bool block_transformed() const;                          // the frame's transforms apply to this block
-  AxisValues to_machine(const AxisValues& program) const;  // apply the frame
-  AxisValues to_frame(const AxisValues& machine) const;    // undo it: program coordinates
-  AxisValues target();                                     // of this block's axis words, machine units
-  AxisValues program_target();                             // the same, program coordinates
-  double tool_radius() const;                              // of the offset in force, mm
+  // Coordinates (machine_frame.cpp, with the kernel's).
+  // The origin this block's positions are from: G79 and G53 blocks are not
+  // transformed (NC-110 §2.13.1.5: "not rotated").
+  int block_origin() const { return block_.machine_frame ? MotionKernel::kMachineZero : block_.block_offset; }
+  AxisValues target_frame() const { return kernel_.block_origins(block_origin()); }
+  AxisValues to_machine(const AxisValues& program) const {  // apply the frame
+    return kernel_.to_machine(program, modal_.plane, block_origin());
+  }
+  AxisValues to_frame(const AxisValues& machine) const {  // undo it: program coordinates
+    return kernel_.to_frame(machine, modal_.plane, block_origin());
+  }
+  AxisValues target();          // of this block's axis words, machine units
+  AxisValues program_target();  // the same, program coordinates
+  double tool_radius() const;   // of the offset in force, mm
   bool has_axis_word() const;
   bool frame_function(FnCall call);    // the NC-110 three-letter functions
   bool tooling_function(FnCall call);  // ... of the tool table and the probe (machine_tooling.cpp)
@@ -299,7 +295,9 @@ class Machine final : public BlockMachine {
 
   // Motions (machine_motion.cpp).
   void move_to(const AxisValues& machine_target);
-  Event motion_event(EventKind kind, const AxisValues& machine_target) const;
+  Event motion_event(EventKind kind, const AxisValues& machine_target) const {
+    return kernel_.motion_event(kind, machine_target, modal_.inch);
+  }
   void rapid(const AxisValues& t);
   [[nodiscard]] bool need_feed(const char* what, const AxisValues& t);
   double block_seconds();
@@ -316,7 +314,6 @@ class Machine final : public BlockMachine {
   double timer_dwell();  // the dwell time variable in seconds, reported if out of range
   std::string dwell_address() const;
   double spindle_rpm() const;
-  void advance_clock(double seconds) { clock_ += seconds; }
   double feed_time(double length_mm);  // at the block's feed
 
   // GTL (machine_gtl.cpp, NC-110 §2.11).
@@ -376,25 +373,18 @@ class Machine final : public BlockMachine {
   const Conventions& conv_;
   const MachineConfig& config_;
   TraceSink& trace_;
-  const bool events_wanted_;
   RuntimeIssues& issues_;
   bool stop_on_error_ = true;
 
+  MotionKernel kernel_;  // where the machine is, its coordinates, envelope and event output
   Modal modal_;
-  Frame frame_;
-  std::map<int, WorkOffset> offsets_;        // the work offsets (NC-110 RQO changes them)
   std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it, NC-110 RQU changes it)
   OffsetEntry offset_;                       // the entry in force: a change to the table takes effect when selected
-  AxisValues base_origin_{};                 // each axis' offsets_ value at frame_.base: origin() is hot
-  void refresh_base_origin();                // after frame_.base or offsets_ change
-  AxisValues machine_{};                     // the controlled point, machine coordinates, mm / degrees
-  AxisValues position_offset_{};             // G92
-  std::map<int, AxisValues> local_offsets_;  // ISO G52: the local shift of each work offset
   std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
   double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
 
-  // ISO ,C and ,R (§8.3): the move before a corner is held back (with every event
-  // after it) until the next block's move shows where the corner is cut.
+  // ISO ,C and ,R (§8.3): the move before a corner is held back in the kernel (with
+  // every event after it) until the next block's move shows where the corner is cut.
   struct Corner {
     bool fillet = false;
     double size = 0;      // program units
@@ -405,19 +395,13 @@ class Machine final : public BlockMachine {
     bool inch = false;    // the units of its block
   };
   std::optional<Corner> corner_;
-  std::vector<Event> held_;
-  bool holding_ = false;
   uint64_t moves_beyond_first_ = 0;
-  AxisValues hold_start_{};                                     // where the first held move starts
-  std::optional<AxisValues> chained_start_;                     // a corner's T2, when the next move has a corner too
-  void out(const Event& e, const AxisValues* start = nullptr);  // to the trace, or held back
+  std::optional<AxisValues> chained_start_;  // a corner's T2, when the next move has a corner too
   void text_event(EventKind kind, const std::string& text, uint32_t source, int n = 0, double a = 0);
-  void to_path(const Event& e, const AxisValues* start);  // through the cutter path, if there is one
-  void pass_on(size_t count);                             // the first `count` held events, on
   // The traced cutter path: the runtime offsets the path itself (ISO, NC-110), or there
   // is none and G41/G42 reach the trace as events, for the machine to compensate.
-  // Chosen once from the conventions (cutter_path); the sites ask only whether it is there.
-  std::unique_ptr<CutterPath> path_;
+  // Chosen once from the conventions, for the kernel's output (kernel_.path()); the
+  // sites ask only whether it is there.
   std::unique_ptr<CutterPath> cutter_path(TraceSink& trace);
   uint64_t path_bytes() const;  // what it holds (held_bytes)
   bool corner_requested() const;
@@ -439,7 +423,6 @@ class Machine final : public BlockMachine {
   BlockState block_;
 
   // NC-110 state.
-  Envelope envelope_;             // DLO, DSA
   AxisValues tolerance_{};        // DTL; 0 = the machine's
   bool turning_ = false;          // CTL
   uint32_t locked_ = 0;           // M10/M12: axes that must not move
@@ -471,13 +454,7 @@ class Machine final : public BlockMachine {
   // Switches and system variables.
   bool block_skip_ = false;
   bool optional_stop_ = false;
-  double clock_ = 0;  // seconds of the run so far
   RemainingPaths* remaining_paths_ = nullptr;
-  struct Move {
-    double from_t, to_t;
-    AxisValues from, to;
-  };
-  std::deque<Move> moves_;  // the last blocks that moved (with remaining_paths_)
   BlockResult run_block(const BlockRequest& block);
   double clock_base_ = 0;              // ISO #3001/#3002: where the program set them to 0
   std::map<uint16_t, double> system_;  // the stored system variables, by SysRef::packed()

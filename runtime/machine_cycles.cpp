@@ -16,7 +16,7 @@ namespace ncc {
 void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues& hole, int d, int u, bool program,
                          std::optional<double> pitch) {
   using Kind = cycle::Step::Kind;
-  auto here = [&] { return program ? to_frame(machine_) : machine_; };
+  auto here = [&] { return program ? to_frame(kernel_.position()) : kernel_.position(); };
   bool over = false;
   for (const cycle::Step& s : steps) {
     AxisValues p = over ? hole : here();
@@ -33,7 +33,7 @@ void Machine::hole_steps(const std::vector<cycle::Step>& steps, const AxisValues
         p = hole;
         p[d] = here()[d];
         if (program) p = to_machine(p);
-        if (p != machine_) rapid(p);
+        if (p != kernel_.position()) rapid(p);
         break;
       case Kind::Dwell: dwell_seconds(s.seconds); break;
       case Kind::Spindle: {
@@ -62,14 +62,14 @@ void Machine::tap_feed(const AxisValues& t, bool out, int d, std::optional<doubl
   if (pitch) {
     double rpm = spindle_rpm();
     if (rpm <= 0) report(DiagId::ThreadNoSpindle, 0);
-    if (!path_allowed({machine_, t})) return move_to(t);
+    if (!path_allowed({kernel_.position(), t})) return move_to(t);
     const double scale = out ? percent / 100 : 1;
     if (out && scale != 1) {
       Event e{EventKind::SpindleSpeed};
       e.a = speed_ * scale;
       emit(e);
     }
-    if (rpm > 0) advance_clock(60 * std::fabs(t[d] - machine_[d]) / (*pitch * rpm * scale));
+    if (rpm > 0) kernel_.advance_clock(60 * std::fabs(t[d] - kernel_.position()[d]) / (*pitch * rpm * scale));
     Event e = motion_event(EventKind::Thread, t);
     e.a = to_program(*pitch);
     emit(e);
@@ -99,7 +99,7 @@ void Machine::measure() {
   const Fn fn = block_.measure;
   const std::string name = fn == Fn::MeasurePoint ? "G72" : fn == Fn::MeasureHole ? "G73" : "G74";
   const ProbeConfig& probe = probe_;
-  const AxisValues start = machine_;
+  const AxisValues start = kernel_.position();
   // Where the values go: the block's E word (a code chosen at run time has none).
   const std::optional<uint32_t> e = has('E') ? whole_in<uint32_t>(word('E'), 0, 65535) : std::nullopt;
   if (!e) {
@@ -113,12 +113,12 @@ void Machine::measure() {
   auto setup = [&](const std::string& why) { report(DiagId::ProbeSetup, 0, name, why); };
   auto probe_move = [&](const AxisValues& to, bool touched) {
     double length = 0;
-    for (int i = 0; i < kAxisCount; ++i) length += (to[i] - machine_[i]) * (to[i] - machine_[i]);
-    advance_clock(60 * std::sqrt(length) / probe.feed);
+    for (int i = 0; i < kAxisCount; ++i) length += (to[i] - kernel_.position()[i]) * (to[i] - kernel_.position()[i]);
+    kernel_.advance_clock(60 * std::sqrt(length) / probe.feed);
     Event event = motion_event(EventKind::Probe, to);
     event.n = touched;
     emit(event);
-    machine_ = to;
+    kernel_.move_to(to);
   };
   // Where a point is, in the program's frame, on the axes that move and X Y Z.
   auto where = [&](const AxisValues& p) {
@@ -140,7 +140,7 @@ void Machine::measure() {
   if (fn == Fn::MeasureHole) {
     // G73 r: three probes from the centre at 0, 120 and 240 degrees in the plane.
     const int u = modal_.plane.u, v = modal_.plane.v;
-    const double nominal = length_units(word('r')) * (frame_.transformed() ? frame_.scale[u] : 1.0);
+    const double nominal = length_units(word('r')) * (kernel_.frame().transformed() ? kernel_.frame().scale[u] : 1.0);
     if (contact && contact->kind == ProbeContact::Kind::Point)
       return setup(contact_name + " is a point; G73 needs a circle");
     if (contact && contact->kind == ProbeContact::Kind::Circle && !((contact->axes >> u) & (contact->axes >> v) & 1))
@@ -186,7 +186,7 @@ void Machine::measure() {
     const AxisValues c = to_frame(centre);
     results_.push_back({first, program_axis(u, c[u])});
     results_.push_back({first + 1, program_axis(v, c[v])});
-    results_.push_back({first + 2, to_program(r / (frame_.transformed() ? frame_.scale[u] : 1.0))});
+    results_.push_back({first + 2, to_program(r / (kernel_.frame().transformed() ? kernel_.frame().scale[u] : 1.0))});
     return;
   }
 

@@ -25,58 +25,6 @@ constexpr double kMaxPosition = 1e10;
 
 }  // namespace
 
-double Machine::offset_value(int offset, int axis) const {
-  auto it = offsets_.find(offset);
-  if (it == offsets_.end()) return 0;
-  double v = it->second.values[axis];
-  return it->second.inch && is_linear(axis) ? v * 25.4 : v;
-}
-
-double Machine::origin(int axis) const { return base_origin_[axis] + frame_.shift[axis] + frame_.local[axis]; }
-
-void Machine::refresh_base_origin() {
-  for (int i = 0; i < kAxisCount; ++i) base_origin_[i] = offset_value(frame_.base[i], i);
-}
-
-AxisValues Machine::origins() const {
-  AxisValues o{};
-  for (int i = 0; i < kAxisCount; ++i) o[i] = origin(i);
-  return o;
-}
-
-AxisValues Machine::shown_origins() const { return config_.trace_machine_frame ? AxisValues{} : origins(); }
-
-AxisValues Machine::frame_offset(int work_offset) const {
-  AxisValues off{};
-  for (int i = 0; i < kAxisCount; ++i) off[i] = offset_value(work_offset, i) + frame_.shift[i] + frame_.local[i];
-  return off;
-}
-
-AxisValues Machine::target_frame() const {
-  if (block_.machine_frame || block_.block_offset == 0) return {};  // G79, G53: the machine's zero
-  if (block_.block_offset > 0) return frame_offset(block_.block_offset);
-  return origins();
-}
-
-// G79 and G53 blocks are not transformed (NC-110 §2.13.1.5: "not rotated").
-bool Machine::block_transformed() const {
-  return !block_.machine_frame && block_.block_offset < 0 && frame_.transformed();
-}
-
-AxisValues Machine::to_machine(const AxisValues& p) const {
-  AxisValues q = block_transformed() ? frame_.transform(p, modal_.plane) : p;
-  const AxisValues off = target_frame();
-  for (int i = 0; i < kAxisCount; ++i) q[i] += off[i];
-  return q;
-}
-
-AxisValues Machine::to_frame(const AxisValues& m) const {
-  const AxisValues off = target_frame();
-  AxisValues q{};
-  for (int i = 0; i < kAxisCount; ++i) q[i] = m[i] - off[i];
-  return block_transformed() ? frame_.untransform(q, modal_.plane) : q;
-}
-
 bool Machine::has_axis_word() const {
   for (char axis : conv_.axes)
     if (has(axis)) return true;
@@ -87,7 +35,7 @@ AxisValues Machine::program_target() {
   // The words replace (G90, G79) or add to (G91) the current position in program
   // coordinates; an axis not written stays (NC-110 decision 5). Blocks 2 of a
   // three-point parabola measure from the intermediate point (GOST Appendix 5).
-  const AxisValues base = to_frame(parabola_middle_ ? *parabola_middle_ : machine_);
+  const AxisValues base = to_frame(parabola_middle_ ? *parabola_middle_ : kernel_.position());
   AxisValues p = base;
   const bool absolute = modal_.absolute || block_.machine_frame;
   for (char letter : conv_.axes) {
@@ -129,16 +77,16 @@ double Machine::tool_radius() const { return offset_.radius; }
 bool Machine::position_in_range(int axis, double v) {
   if (std::fabs(v) <= kMaxPosition) return true;
   const char letter = kAxisLetters[axis];
-  report(DiagId::PositionRange, has(letter) ? letter : 0, letter, shortest(program_axis(axis, v - origin(axis))),
-         "10,000,000,000 mm (or degrees)");
+  report(DiagId::PositionRange, has(letter) ? letter : 0, letter,
+         shortest(program_axis(axis, v - kernel_.origin(axis))), "10,000,000,000 mm (or degrees)");
   return false;
 }
 
 AxisValues Machine::target() {
-  const AxisValues& from = parabola_middle_ ? *parabola_middle_ : machine_;
+  const AxisValues& from = parabola_middle_ ? *parabola_middle_ : kernel_.position();
   const AxisValues off = target_frame();
   AxisValues t = from;
-  if (frame_.transformed() && !block_.machine_frame && block_.block_offset < 0) {
+  if (kernel_.transforms(block_origin())) {
     t = to_machine(program_target());
     for (double& v : t) v = snap(v);
   } else {
@@ -183,16 +131,16 @@ AxisValues Machine::target() {
 
 void Machine::origin_event() {
   Event e{EventKind::Origin};
-  e.pos = in_program_units(origins());
+  e.pos = in_program_units(kernel_.origins());
   emit(e);
 }
 
 void Machine::transform_event() {
   Event e{EventKind::Transform};
-  e.a = frame_.rotation;
+  e.a = kernel_.frame().rotation;
   for (int i = 0; i < kAxisCount; ++i) {
-    e.pos[i] = frame_.scale[i];
-    if (frame_.mirror[i]) e.n |= 1 << i;
+    e.pos[i] = kernel_.frame().scale[i];
+    if (kernel_.frame().mirror[i]) e.n |= 1 << i;
   }
   emit(e);
 }
@@ -203,17 +151,17 @@ void Machine::set_position() {
   // the G52 shifts end.
   // After a motion in its block (ISO §8.19) the values are the axes' second words.
   const bool after = block_.set_position_after;
-  local_offsets_.clear();
-  frame_.local.fill(0);
+  kernel_.local_offsets().clear();
+  kernel_.frame().local.fill(0);
   for (char letter : conv_.axes) {
     const int slot = after ? second_slot(letter) : letter_slot(letter);
     if (!has_slot(slot)) continue;
     int i = axis_index(letter);
     double v = axis_units(i, slot_value(slot));
-    double work = offset_value(modal_.work_offset, i);
-    double current = machine_[i] - work - frame_.shift[i];
+    double work = kernel_.offset_value(modal_.work_offset, i);
+    double current = kernel_.position()[i] - work - kernel_.frame().shift[i];
     double wanted = modal_.absolute ? v : current + v;
-    frame_.shift[i] = machine_[i] - work - wanted;
+    kernel_.frame().shift[i] = kernel_.position()[i] - work - wanted;
   }
   position_offset_event();
 }
@@ -221,19 +169,20 @@ void Machine::set_position() {
 // The shift of the work zero beyond the work offset: G92 and G52 together, as
 // LinuxCNC's G92 offset carries both.
 void Machine::position_offset_event() {
-  for (int i = 0; i < kAxisCount; ++i) position_offset_[i] = frame_.shift[i] + frame_.local[i];
+  for (int i = 0; i < kAxisCount; ++i)
+    kernel_.position_offset()[i] = kernel_.frame().shift[i] + kernel_.frame().local[i];
   Event e{EventKind::PositionOffset};
-  e.pos = in_program_units(position_offset_);
+  e.pos = in_program_units(kernel_.position_offset());
   emit(e);
 }
 
 void Machine::set_local_offset() {
   // ISO §8.13: the axis words are the local zero in the work coordinate system (each
   // work offset keeps its own); an axis not written keeps its shift (decision 16).
-  AxisValues& local = local_offsets_[modal_.work_offset];
+  AxisValues& local = kernel_.local_offsets()[modal_.work_offset];
   for (char letter : conv_.axes)
     if (has(letter)) local[axis_index(letter)] = axis_units(axis_index(letter), word(letter));
-  frame_.local = local;
+  kernel_.frame().local = local;
   position_offset_event();
 }
 
@@ -242,7 +191,7 @@ void Machine::reference_return() {
   // G90/G91, in the work system) to the reference point; without words every axis
   // goes there directly. The length offset is zeroed on the way to the reference
   // point (G49 in the block: already on the way to the intermediate point).
-  AxisValues t = machine_;
+  AxisValues t = kernel_.position();
   const bool offset = compensation().length != AxisValues{};
   if (!has_axis_word()) {
     intermediate_.reset();
@@ -250,12 +199,12 @@ void Machine::reference_return() {
   } else {
     const AxisValues mid = target();
     intermediate_ = mid;
-    if (mid != machine_) rapid(mid);
+    if (mid != kernel_.position()) rapid(mid);
     for (char letter : conv_.axes)
       if (has(letter)) t[axis_index(letter)] = config_.reference_position[axis_index(letter)];
   }
   if (offset) length_zeroed(true);
-  if (t != machine_) rapid(t);
+  if (t != kernel_.position()) rapid(t);
   if (offset) length_zeroed(false);
 }
 
@@ -275,16 +224,16 @@ void Machine::reference_leave() {
     report_code(DiagId::ReferenceNoIntermediate, block_.code_name);
     return;
   }
-  AxisValues mid = machine_;
+  AxisValues mid = kernel_.position();
   const bool words = has_axis_word();
   // §8.9: the length offset comes back at the end point.
   const bool offset = compensation().length != AxisValues{};
   if (offset) length_zeroed(true);
   for (char letter : conv_.axes)
     if (!words || has(letter)) mid[axis_index(letter)] = (*intermediate_)[axis_index(letter)];
-  if (mid != machine_) rapid(mid);
-  const AxisValues t = words ? target() : machine_;
-  if (t != machine_) rapid(t);
+  if (mid != kernel_.position()) rapid(mid);
+  const AxisValues t = words ? target() : kernel_.position();
+  if (t != kernel_.position()) rapid(t);
   if (offset) length_zeroed(false);
 }
 
@@ -293,18 +242,19 @@ void Machine::load_offset() {
   // the tool stands (shift = position - value, the value through the G35-G37
   // transformations); the values are positions, G91 or not.
   const int n = block_.load_entry >= 0 ? block_.load_entry : modal_.work_offset;
-  WorkOffset& entry = offsets_[n];
+  WorkOffset& entry = kernel_.offsets()[n];
   Event e{EventKind::OffsetLoad};
   e.n = n;
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
-    double v = machine_[i] - frame_.shift[i] - frame_.factor(i) * axis_units(i, word(letter));
+    double v =
+        kernel_.position()[i] - kernel_.frame().shift[i] - kernel_.frame().factor(i) * axis_units(i, word(letter));
     entry.values[i] = entry.inch && is_linear(i) ? v / 25.4 : v;
     entry.axes |= 1u << i;
   }
-  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(n, i));
-  refresh_base_origin();
+  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(n, i));
+  kernel_.refresh_origins();
   emit(e);
   // The shift in force changed: the trace says so as a selection would.
   if (n == modal_.work_offset && n != 0) {
@@ -336,19 +286,20 @@ void Machine::load_compensation() {
 
 void Machine::reference_approach() {
   // pp G30: the named axes go at rapid to the reference point; the others stay.
-  AxisValues t = machine_;
+  AxisValues t = kernel_.position();
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
     if (double v = word(letter); v != 0) report(DiagId::ReferenceValue, letter, std::string(1, letter), shortest(v));
     t[i] = config_.reference_position[i];
   }
-  if (t != machine_) rapid(t);
+  if (t != kernel_.position()) rapid(t);
 }
 
 // ---- The three-letter functions (NC-110 §2.13) ---------------------------------------
 
 bool Machine::frame_function(FnCall call) {
+  Frame& frame = kernel_.frame();
   // The operands: #1, #2... at the operand slots; axes at their letters' slots.
   auto operand = [&](int i) { return slot_if(operand_slot(i)); };
   auto whole = [&](int i, int lo, int hi, const char* what) { return whole_operand(i, lo, hi, what); };
@@ -367,8 +318,8 @@ bool Machine::frame_function(FnCall call) {
     case Fn::OriginRequalify: {
       auto n = whole(0, 0, 99, "the origin");
       if (!n) break;
-      auto record = offsets_.find(*n);
-      if (*n != 0 && record == offsets_.end()) {
+      auto record = kernel_.offsets().find(*n);
+      if (*n != 0 && record == kernel_.offsets().end()) {
         report_slot(DiagId::WorkOffsetUnknown, operand_slot(0), code, fmt::format("origin {}", *n));
         break;
       }
@@ -376,11 +327,11 @@ bool Machine::frame_function(FnCall call) {
       if (listed.empty())
         for (int i = 0; i < kAxisCount; ++i)
           if (conv_.axes.find(kAxisLetters[i]) != std::string::npos &&
-              (record == offsets_.end() || (record->second.axes & (1u << i))))
+              (record == kernel_.offsets().end() || (record->second.axes & (1u << i))))
             listed.push_back(i);
       bool ok = true;
       for (int a : listed)
-        if (record != offsets_.end() && !(record->second.axes & (1u << a))) {
+        if (record != kernel_.offsets().end() && !(record->second.axes & (1u << a))) {
           std::string declared;
           for (int i = 0; i < kAxisCount; ++i)
             if (record->second.axes & (1u << i)) declared += kAxisLetters[i];
@@ -394,29 +345,29 @@ bool Machine::frame_function(FnCall call) {
         if (call.fn == Fn::OriginRequalify) {
           // §2.13.1.7: the correction goes into the origins table, in its unit.
           double v = value(a);
-          offsets_[*n].values[a] += offsets_[*n].inch && is_linear(a) ? v / 25.4 : v;
-          offsets_[*n].axes |= 1u << a;
-          moved = moved || frame_.base[a] == *n;
+          kernel_.offsets()[*n].values[a] += kernel_.offsets()[*n].inch && is_linear(a) ? v / 25.4 : v;
+          kernel_.offsets()[*n].axes |= 1u << a;
+          moved = moved || frame.base[a] == *n;
           continue;
         }
-        frame_.base[a] = *n;
-        frame_.shift[a] = call.fn == Fn::OriginTemporary ? value(a) : 0;
+        frame.base[a] = *n;
+        frame.shift[a] = call.fn == Fn::OriginTemporary ? value(a) : 0;
         moved = true;
       }
-      refresh_base_origin();
+      kernel_.refresh_origins();
       if (moved) origin_event();
       break;
     }
     case Fn::OriginIncremental:
       // Cumulative: the current origin moves by the values (decision 1).
-      for (int a : listed) frame_.shift[a] += value(a);
+      for (int a : listed) frame.shift[a] += value(a);
       origin_event();
       break;
     case Fn::Mirror:
-      if (listed.empty()) frame_.mirror.fill(false);
+      if (listed.empty()) frame.mirror.fill(false);
       for (int a : listed) {
         word(kAxisLetters[a]);
-        frame_.mirror[a] = conv_.mirror_toggles ? !frame_.mirror[a] : true;
+        frame.mirror[a] = conv_.mirror_toggles ? !frame.mirror[a] : true;
       }
       transform_event();
       break;
@@ -435,7 +386,7 @@ bool Machine::frame_function(FnCall call) {
         }
         values[a] = scale ? v : axis_units(a, v);
       }
-      (scale ? frame_.scale : frame_.shift) = values;
+      (scale ? frame.scale : frame.shift) = values;
       if (scale)
         transform_event();
       else
@@ -443,7 +394,7 @@ bool Machine::frame_function(FnCall call) {
       break;
     }
     case Fn::Rotation:
-      if (auto v = operand(0)) frame_.rotation = *v;
+      if (auto v = operand(0)) frame.rotation = *v;
       transform_event();
       break;
     case Fn::Scale: {
@@ -455,13 +406,13 @@ bool Machine::frame_function(FnCall call) {
       }
       // (SCF,n,axes): n on those, 1 on the others; (SCF,n): n on every linear axis of
       // the machine (an angle is not scaled); (SCF): 1.
-      frame_.scale.fill(1);
+      frame.scale.fill(1);
       if (factor && listed.empty())
         for (char c : conv_.axes)
-          if (is_linear(axis_index(c))) frame_.scale[axis_index(c)] = *factor;
+          if (is_linear(axis_index(c))) frame.scale[axis_index(c)] = *factor;
       for (int a : listed) {
         word(kAxisLetters[a]);
-        frame_.scale[a] = factor.value_or(1);
+        frame.scale[a] = factor.value_or(1);
       }
       transform_event();
       break;
@@ -522,15 +473,15 @@ bool Machine::frame_function(FnCall call) {
       // machine's travel is the machine's (§2.13.5.3).
       Event e{EventKind::Limits};
       for (int a : listed) {
-        double x = value(a) + origin(a);
-        double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + origin(a);
+        double x = value(a) + kernel_.origin(a);
+        double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + kernel_.origin(a);
         const AxisConfig& cfg = config_.axes[static_cast<size_t>(a)];
-        envelope_.limits[0][a] = std::max(std::min(x, y), cfg.lower);
-        envelope_.limits[1][a] = std::min(std::max(x, y), cfg.upper);
-        envelope_.limited[a] = true;
+        kernel_.envelope().limits[0][a] = std::max(std::min(x, y), cfg.lower);
+        kernel_.envelope().limits[1][a] = std::min(std::max(x, y), cfg.upper);
+        kernel_.envelope().limited[a] = true;
         e.n |= 1 << a;
-        e.pos[a] = program_axis(a, envelope_.limits[0][a] - origin(a));
-        e.control[a] = program_axis(a, envelope_.limits[1][a] - origin(a));
+        e.pos[a] = program_axis(a, kernel_.envelope().limits[0][a] - kernel_.origin(a));
+        e.control[a] = program_axis(a, kernel_.envelope().limits[1][a] - kernel_.origin(a));
       }
       emit(e);
       break;
@@ -538,7 +489,7 @@ bool Machine::frame_function(FnCall call) {
     case Fn::ZoneDefine: {
       auto n = whole(0, 1, 3, "the zone");
       if (!n || listed.size() != 2) break;
-      Envelope::Zone& z = envelope_.zones[static_cast<size_t>(*n - 1)];
+      Envelope::Zone& z = kernel_.envelope().zones[static_cast<size_t>(*n - 1)];
       z.defined = true;
       Event e{EventKind::Zone};
       e.rotation = *n;
@@ -546,13 +497,13 @@ bool Machine::frame_function(FnCall call) {
       e.plane = Plane{listed[0], listed[1], -1};
       for (int k = 0; k < 2; ++k) {
         int a = listed[k];
-        double x = value(a) + origin(a);
-        double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + origin(a);
+        double x = value(a) + kernel_.origin(a);
+        double y = axis_units(a, slot_value(second_slot(kAxisLetters[a]))) + kernel_.origin(a);
         z.axis[k] = a;
         z.lo[k] = std::min(x, y);
         z.hi[k] = std::max(x, y);
-        e.pos[a] = program_axis(a, z.lo[k] - origin(a));
-        e.control[a] = program_axis(a, z.hi[k] - origin(a));
+        e.pos[a] = program_axis(a, z.lo[k] - kernel_.origin(a));
+        e.control[a] = program_axis(a, z.hi[k] - kernel_.origin(a));
       }
       emit(e);
       break;
@@ -561,7 +512,7 @@ bool Machine::frame_function(FnCall call) {
     case Fn::ZoneOff: {
       auto n = whole(0, 1, 3, "the zone");
       if (!n) break;
-      Envelope::Zone& z = envelope_.zones[static_cast<size_t>(*n - 1)];
+      Envelope::Zone& z = kernel_.envelope().zones[static_cast<size_t>(*n - 1)];
       if (call.fn == Fn::ZoneOn && !z.defined) {
         report_slot(DiagId::ZoneUndefined, operand_slot(0), *n);
         break;
@@ -676,23 +627,23 @@ bool Machine::path_allowed(const std::vector<AxisValues>& path) {
   for (const AxisValues& p : path)
     for (int a = 0; a < kAxisCount; ++a)
       if (!position_in_range(a, p[a])) return false;
-  if (!envelope_.any_limit() && !envelope_.any_zone()) return true;
-  if (const std::optional<Envelope::Breach> breach = envelope_.limit_left(path)) {
+  if (!kernel_.envelope().any_limit() && !kernel_.envelope().any_zone()) return true;
+  if (const std::optional<Envelope::Breach> breach = kernel_.envelope().limit_left(path)) {
     const int a = breach->axis;
     report(DiagId::LimitExceeded, 0, std::string(1, kAxisLetters[a]),
-           four_decimals(program_axis(a, envelope_.limits[0][a] - origin(a))),
-           four_decimals(program_axis(a, envelope_.limits[1][a] - origin(a))),
-           four_decimals(program_axis(a, breach->farthest - origin(a))));
+           four_decimals(program_axis(a, kernel_.envelope().limits[0][a] - kernel_.origin(a))),
+           four_decimals(program_axis(a, kernel_.envelope().limits[1][a] - kernel_.origin(a))),
+           four_decimals(program_axis(a, breach->farthest - kernel_.origin(a))));
     return false;
   }
-  if (const std::optional<size_t> z = envelope_.zone_entered(path)) {
-    const Envelope::Zone& zone = envelope_.zones[*z];
+  if (const std::optional<size_t> z = kernel_.envelope().zone_entered(path)) {
+    const Envelope::Zone& zone = kernel_.envelope().zones[*z];
     std::string box;
     for (int k = 0; k < 2; ++k) {
       int a = zone.axis[k];
       box += fmt::format("{}{}{}..{}", k ? " " : "", kAxisLetters[a],
-                         four_decimals(program_axis(a, zone.lo[k] - origin(a))),
-                         four_decimals(program_axis(a, zone.hi[k] - origin(a))));
+                         four_decimals(program_axis(a, zone.lo[k] - kernel_.origin(a))),
+                         four_decimals(program_axis(a, zone.hi[k] - kernel_.origin(a))));
     }
     report(DiagId::ZoneEntered, 0, *z + 1, box);
     return false;
@@ -714,7 +665,7 @@ void Machine::scaling_on() {
     return;
   }
   // The centre: the axis words (G91: from the position), the position on the others.
-  const AxisValues here = to_frame(machine_);
+  const AxisValues here = to_frame(kernel_.position());
   AxisValues centre = here;
   for (char letter : conv_.axes)
     if (has(letter)) {
@@ -747,10 +698,10 @@ void Machine::scaling_on() {
       return;
     }
   for (int i = 0; i < kAxisCount; ++i) {
-    frame_.scale[i] = std::fabs(factor[i]);
-    frame_.mirror[i] = factor[i] < 0;
+    kernel_.frame().scale[i] = std::fabs(factor[i]);
+    kernel_.frame().mirror[i] = factor[i] < 0;
   }
-  frame_.scale_centre = centre;
+  kernel_.frame().scale_centre = centre;
   modal_.scaling = true;
   transform_event();
 }
@@ -761,7 +712,7 @@ void Machine::rotation_on() {
     return;
   }
   const int u = modal_.plane.u, v = modal_.plane.v;
-  const AxisValues here = to_frame(machine_);
+  const AxisValues here = to_frame(kernel_.position());
   // The centre in the plane: the words (G91: from the position), else the position.
   AxisValues centre = here;
   for (int axis : {u, v})
@@ -779,10 +730,11 @@ void Machine::rotation_on() {
   // (decision 24).
   const double angle = modal_.absolute ? word('R') : last_rotation_ + word('R');
   // The centre is a programmed point: under scaling it is scaled as the path is.
+  Frame& frame = kernel_.frame();
   for (int i = 0; i < kAxisCount; ++i)
-    centre[i] = frame_.scale_centre[i] + (centre[i] - frame_.scale_centre[i]) * frame_.factor(i);
-  frame_.rotation = angle;
-  frame_.rotation_centre = centre;
+    centre[i] = frame.scale_centre[i] + (centre[i] - frame.scale_centre[i]) * frame.factor(i);
+  frame.rotation = angle;
+  frame.rotation_centre = centre;
   last_rotation_ = angle;
   modal_.rotation = true;
   transform_event();

@@ -137,7 +137,7 @@ void Machine::gtl_block() {
       g.profile = gtl::Profile{};
       g.refused = false;
       flush_compensation();
-      if (path_) path_->resume();
+      if (kernel_.path()) kernel_.path()->resume();
     }
     return;
   }
@@ -171,7 +171,7 @@ void Machine::gtl_block() {
     const double radius = c.side ? to_program(c.radius) + system_value(SysVar::Allowance) : 0;
     const int side = c.side == 1 ? 1 : c.side == 2 ? -1 : 0;
     g.opened_at = block.source;
-    if (path_) path_->suspend();  // the profile offsets its elements itself
+    if (kernel_.path()) kernel_.path()->suspend();  // the profile offsets its elements itself
     if (named->kind == gtl::Kind::Point)
       g.profile.open_at(named->at, tag, side, radius, gtl::Tolerance{gtl_tolerance()});
     else
@@ -187,7 +187,7 @@ void Machine::gtl_block() {
       g.profile.close_with(id, tag);
     gtl_moves();
     flush_compensation();
-    if (path_) path_->resume();
+    if (kernel_.path()) kernel_.path()->resume();
     return;
   } else if (named) {
     if (named->kind == gtl::Kind::Point)
@@ -210,7 +210,7 @@ void Machine::gtl_moves() {
   const std::optional<double> feed = feed_;
   for (const gtl::Piece& p : g.profile.take()) {
     const GtlState::Block& b = g.blocks[p.tag - g.first_tag];
-    AxisValues at = to_frame(machine_);
+    AxisValues at = to_frame(kernel_.position());
     for (int i = 0; i < kAxisCount; ++i)
       if (b.axes & (1u << i)) at[i] = b.others[i];
     if (p.in_plane) {
@@ -226,7 +226,8 @@ void Machine::gtl_moves() {
       centre[v] = axis_units(v, p.centre.y());
       const AxisValues c = to_machine(centre);
       // A mirror on one axis of the plane turns the arc the other way (decision 2).
-      const bool clockwise = !p.ccw != (frame_.transformed() && frame_.mirror[u] != frame_.mirror[v]);
+      const bool clockwise =
+          !p.ccw != (kernel_.frame().transformed() && kernel_.frame().mirror[u] != kernel_.frame().mirror[v]);
       arc_move(t, c[u], c[v], clockwise, 'I', 0);
     } else if (!p.arc) {
       linear(t);

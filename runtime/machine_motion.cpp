@@ -33,8 +33,8 @@ double wrap(double a) {
 }  // namespace
 
 void Machine::move_to(const AxisValues& t) {
-  if (t != machine_) (modal_.motion == Fn::MotionRapid ? block_.rapid_moved : block_.moved) = true;
-  machine_ = t;
+  if (t != kernel_.position()) (modal_.motion == Fn::MotionRapid ? block_.rapid_moved : block_.moved) = true;
+  kernel_.move_to(t);
   // A block's work is bounded, whatever its holes and pecks: a repeat stops at the error.
   constexpr uint32_t kMaxMovesPerBlock = 1'000'000;
   if (block_.moves++ == 0) return;
@@ -42,28 +42,10 @@ void Machine::move_to(const AxisValues& t) {
   if (block_.moves == kMaxMovesPerBlock + 1) report(DiagId::BlockMoves, 0, kMaxMovesPerBlock);
 }
 
-Event Machine::motion_event(EventKind kind, const AxisValues& t) const {
-  // The trace shows positions from the active origin (docs/trace.md).
-  Event e{kind};
-  AxisValues off = shown_origins();
-  for (int i = 0; i < kAxisCount; ++i) e.pos[i] = t[i] - off[i];
-  for (int i = 0; i < kAxisCount; ++i)
-    if (t[i] != machine_[i]) e.moved |= static_cast<uint16_t>(1u << i);
-  e.pos = in_program_units(e.pos);
-  // An endless rotary axis shows 0..359.9999 however far it has turned (NC-110 §2.8.4).
-  for (int i = 0; i < kAxisCount; ++i)
-    if (config_.axes[static_cast<size_t>(i)].endless && config_.axes[static_cast<size_t>(i)].kind == AxisKind::Rotary) {
-      e.pos[i] = std::fmod(e.pos[i], 360.0);
-      if (e.pos[i] < 0) e.pos[i] += 360;
-      if (e.pos[i] >= 359.99995) e.pos[i] = 0;  // shows as 0, not 360.0000
-    }
-  return e;
-}
-
 MachineState Machine::state() const {
   MachineState s;
-  s.position = motion_event(EventKind::Rapid, machine_).pos;
-  s.machine = machine_;
+  s.position = motion_event(EventKind::Rapid, kernel_.position()).pos;
+  s.machine = kernel_.position();
   s.inch = modal_.inch;
   s.absolute = modal_.absolute;
   s.plane = modal_.plane;
@@ -80,7 +62,7 @@ MachineState Machine::state() const {
   s.motion = motion_name_;
   s.mist = modal_.mist;
   s.flood = modal_.flood;
-  s.clock = clock_;
+  s.clock = kernel_.clock();
   return s;
 }
 
@@ -92,7 +74,7 @@ double Machine::spindle_rpm() const {
   // Constant cutting speed (G96): S in m/min (ft/min) at the diameter of the cross
   // axis, measured from the active origin (the spindle's axis): a diametral axis as
   // written, else twice X (NC-110 decision 49).
-  const AxisValues at = to_frame(machine_);
+  const AxisValues at = to_frame(kernel_.position());
   double diameter = 2 * std::fabs(at[0]);
   for (int i = 0; i < kAxisCount; ++i)
     if (config_.axes[static_cast<size_t>(i)].diameter) diameter = std::fabs(at[i]);
@@ -149,42 +131,44 @@ bool Machine::need_feed(const char* what, const AxisValues& t) {
 }
 
 void Machine::rapid(const AxisValues& t) {
-  if (!path_allowed({machine_, t})) return move_to(t);
+  if (!path_allowed({kernel_.position(), t})) return move_to(t);
   // An indexing table turns first, then the other axes move (NC-110 §2.8.3).
   for (int i = 0; i < kAxisCount; ++i)
-    if (config_.axes[static_cast<size_t>(i)].kind == AxisKind::Indexing && t[i] != machine_[i]) {
-      AxisValues first = machine_;
+    if (config_.axes[static_cast<size_t>(i)].kind == AxisKind::Indexing && t[i] != kernel_.position()[i]) {
+      AxisValues first = kernel_.position();
       first[i] = t[i];
       if (first == t) break;
       emit(motion_event(EventKind::Rapid, first));
-      advance_clock(60 * std::fabs(t[i] - machine_[i]) / config_.axes[static_cast<size_t>(i)].rapid);
-      machine_ = first;
+      kernel_.advance_clock(60 * std::fabs(t[i] - kernel_.position()[i]) / config_.axes[static_cast<size_t>(i)].rapid);
+      kernel_.move_to(first);
     }
   double seconds = 0;
   for (int i = 0; i < kAxisCount; ++i)
-    seconds = std::max(seconds, 60 * std::fabs(t[i] - machine_[i]) / config_.axes[static_cast<size_t>(i)].rapid);
-  if (system_value(SysVar::AxesDisconnected) != 1) advance_clock(seconds);
-  if (wanted(EventKind::Rapid)) emit(motion_event(EventKind::Rapid, t));
+    seconds =
+        std::max(seconds, 60 * std::fabs(t[i] - kernel_.position()[i]) / config_.axes[static_cast<size_t>(i)].rapid);
+  if (system_value(SysVar::AxesDisconnected) != 1) kernel_.advance_clock(seconds);
+  if (kernel_.wanted(EventKind::Rapid)) emit(motion_event(EventKind::Rapid, t));
   move_to(t);
 }
 
 void Machine::linear(const AxisValues& t) {
   if (!need_feed("linear interpolation", t)) return;
-  if (!path_allowed({machine_, t})) return move_to(t);
+  if (!path_allowed({kernel_.position(), t})) return move_to(t);
   double length = 0;
-  for (int i = 0; i < kAxisCount; ++i) length += (t[i] - machine_[i]) * (t[i] - machine_[i]);
+  for (int i = 0; i < kAxisCount; ++i) length += (t[i] - kernel_.position()[i]) * (t[i] - kernel_.position()[i]);
   length = std::sqrt(length);
   if (const double own = block_seconds()) {
-    advance_clock(own);
+    kernel_.advance_clock(own);
   } else if (system_value(SysVar::RapidRun) == 1) {
     double seconds = 0;
     for (int i = 0; i < kAxisCount; ++i)
-      seconds = std::max(seconds, 60 * std::fabs(t[i] - machine_[i]) / config_.axes[static_cast<size_t>(i)].rapid);
-    advance_clock(seconds);
+      seconds =
+          std::max(seconds, 60 * std::fabs(t[i] - kernel_.position()[i]) / config_.axes[static_cast<size_t>(i)].rapid);
+    kernel_.advance_clock(seconds);
   } else {
-    advance_clock(feed_time(length));
+    kernel_.advance_clock(feed_time(length));
   }
-  if (wanted(EventKind::Linear)) emit(motion_event(EventKind::Linear, t));
+  if (kernel_.wanted(EventKind::Linear)) emit(motion_event(EventKind::Linear, t));
   move_to(t);
 }
 
@@ -215,23 +199,24 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
     move_to(t);
     return;
   }
+  const Frame& frame = kernel_.frame();
   // NC-110 §2.13.1: the arc is computed where it is programmed, then the frame maps it;
   // a mirror on one axis of the plane turns it the other way (decision 2).
   // ISO §8.12: an arc by R under different factors keeps its shape, R scaled by the
   // larger one (decision 26); by I J K its end point leaves the circle (E-01).
-  const bool unequal = frame_.transformed() && !block_.machine_frame && frame_.scale[u] != frame_.scale[v];
-  if (frame_.transformed() && !block_.machine_frame) {
+  const bool unequal = frame.transformed() && !block_.machine_frame && frame.scale[u] != frame.scale[v];
+  if (frame.transformed() && !block_.machine_frame) {
     if (unequal && !rules_->scales_arcs_unequally()) {
-      report(DiagId::TransformArc, 0, four_decimals(frame_.scale[u]), std::string(1, kAxisLetters[u]),
-             four_decimals(frame_.scale[v]), std::string(1, kAxisLetters[v]));
+      report(DiagId::TransformArc, 0, four_decimals(frame.scale[u]), std::string(1, kAxisLetters[u]),
+             four_decimals(frame.scale[v]), std::string(1, kAxisLetters[v]));
       move_to(t);
       return;
     }
-    if (frame_.mirror[u] != frame_.mirror[v]) clockwise = !clockwise;
+    if (frame.mirror[u] != frame.mirror[v]) clockwise = !clockwise;
   }
   const bool programmed_clockwise =
-      clockwise != (frame_.transformed() && !block_.machine_frame && frame_.mirror[u] != frame_.mirror[v]);
-  const AxisValues start_p = to_frame(machine_);
+      clockwise != (frame.transformed() && !block_.machine_frame && frame.mirror[u] != frame.mirror[v]);
+  const AxisValues start_p = to_frame(kernel_.position());
   const AxisValues end_p = to_frame(t);
   const Eigen::Vector2d q0(start_p[u], start_p[v]), q1(end_p[u], end_p[v]);
   Eigen::Vector2d qc;
@@ -259,11 +244,11 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
   centre_p[u] = qc.x();
   centre_p[v] = qc.y();
   const AxisValues centre_m = to_machine(centre_p);
-  const Eigen::Vector2d p0(machine_[u], machine_[v]);
+  const Eigen::Vector2d p0(kernel_.position()[u], kernel_.position()[v]);
   const Eigen::Vector2d p1(t[u], t[v]);
   Eigen::Vector2d centre(centre_m[u], centre_m[v]);
   if (radius_form && unequal) {
-    const double r = length_units(word(conv_.radius_word)) * std::max(frame_.scale[u], frame_.scale[v]);
+    const double r = length_units(word(conv_.radius_word)) * std::max(frame.scale[u], frame.scale[v]);
     const double chord = (p1 - p0).norm();
     if (chord > 2 * std::fabs(r) + conv_.arc_tolerance)
       return fail(fmt::format("the scaled end point is {} away, more than the diameter {} of the scaled R",
@@ -280,7 +265,7 @@ void Machine::arc(const AxisValues& t, bool clockwise) {
 void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bool clockwise, char pu, char pw) {
   const int u = modal_.plane.u, v = modal_.plane.v, w = modal_.plane.w;
   const bool plane_words = conv_.centre_words == CentreWords::Plane;
-  const Eigen::Vector2d p0(machine_[u], machine_[v]);
+  const Eigen::Vector2d p0(kernel_.position()[u], kernel_.position()[v]);
   const Eigen::Vector2d p1(t[u], t[v]);
   const Eigen::Vector2d centre(centre_u, centre_v);
   const double r0 = (p0 - centre).norm();
@@ -305,7 +290,7 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
   // Linear-circular interpolation (§4.3.4, Appendix 4; NC-110 §2.8.1.6): the
   // perpendicular axis moves and its parameter is the travel per radian (or per
   // revolution: the pitch).
-  const double dw = w >= 0 ? t[w] - machine_[w] : 0;
+  const double dw = w >= 0 ? t[w] - kernel_.position()[w] : 0;
   if (std::fabs(dw) > kSamePoint && !modal_.helix) {
     report(DiagId::ArcForm, kAxisLetters[w],
            fmt::format("{} is not in the {} plane of the arc, and the helix mode is off", kAxisLetters[w],
@@ -374,7 +359,7 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
     return;
   }
   // The path for the limit checks: chords no farther than kChord from the arc.
-  if (virtual_axes_.mode == 1 || envelope_.any_limit() || envelope_.any_zone()) {
+  if (virtual_axes_.mode == 1 || kernel_.envelope().any_limit() || kernel_.envelope().any_zone()) {
     double step = 2 * std::acos(std::max(0.0, 1 - kChord / r0));
     const int chords =
         whole_in(std::clamp(std::ceil(sweep / std::max(step, 1e-6)), 1.0, 100000.0), 1, 100000).value_or(1);
@@ -392,8 +377,8 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
     std::vector<AxisValues> path;
     for (double f : fractions) {
       double a = a0 + (clockwise ? -1 : 1) * sweep * f;
-      AxisValues p = machine_;
-      for (int i = 0; i < kAxisCount; ++i) p[i] += (t[i] - machine_[i]) * f;
+      AxisValues p = kernel_.position();
+      for (int i = 0; i < kAxisCount; ++i) p[i] += (t[i] - kernel_.position()[i]) * f;
       double r = r0 + (r1 - r0) * f;
       p[u] = centre.x() + r * std::cos(a);
       p[v] = centre.y() + r * std::sin(a);
@@ -404,11 +389,11 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
   }
   double length = std::hypot((r0 + r1) / 2 * sweep, dw);
   const double own = block_seconds();
-  advance_clock(own ? own : system_value(SysVar::RapidRun) == 1 ? 0 : feed_time(length));
-  if (wanted(EventKind::Arc)) {
+  kernel_.advance_clock(own ? own : system_value(SysVar::RapidRun) == 1 ? 0 : feed_time(length));
+  if (kernel_.wanted(EventKind::Arc)) {
     Event e = motion_event(EventKind::Arc, t);
     e.plane = modal_.plane;
-    AxisValues off = shown_origins();
+    AxisValues off = kernel_.shown_origins();
     e.centre[0] = program_axis(u, centre.x() - off[u]);
     e.centre[1] = program_axis(v, centre.y() - off[v]);
     e.a = to_program(r0);
@@ -424,7 +409,7 @@ void Machine::arc_move(const AxisValues& t, double centre_u, double centre_v, bo
 void Machine::parabola(const AxisValues& t) {
   if (!need_feed("parabolic interpolation", t)) return;
   AxisValues off = target_frame();
-  Eigen::Vector3d p0(machine_[0], machine_[1], machine_[2]);
+  Eigen::Vector3d p0(kernel_.position()[0], kernel_.position()[1], kernel_.position()[2]);
   Eigen::Vector3d p2(t[0], t[1], t[2]);
   Eigen::Vector3d control;
   if (has('I') || has('J') || has('K')) {
@@ -457,7 +442,7 @@ void Machine::parabola(const AxisValues& t) {
     parabola_middle_.reset();
   }
   Event e = motion_event(EventKind::Parabola, t);
-  AxisValues shown = shown_origins();
+  AxisValues shown = kernel_.shown_origins();
   for (int i = 0; i < 3; ++i) e.control[i] = to_program(control[i] - shown[i]);
   emit(e);
   move_to(t);
@@ -497,7 +482,7 @@ void Machine::thread(const AxisValues& t) {
     report(DiagId::ThreadPitchSign, pitch_word, fmt::format("{}{}", pitch_word, four_decimals(word(pitch_word))));
     ok = false;
   }
-  const double length = std::fabs(t[pitch_axis] - machine_[pitch_axis]);
+  const double length = std::fabs(t[pitch_axis] - kernel_.position()[pitch_axis]);
   if (ok && length < kSamePoint) {
     report(DiagId::ThreadPitchAxis, pitch_word, std::string(1, pitch_word), std::string(1, kAxisLetters[pitch_axis]));
     ok = false;
@@ -562,8 +547,8 @@ void Machine::thread_variable(const AxisValues& t) {
   double length = 0;
   for (int i = 0; i < kAxisCount; ++i)
     if (is_linear(i))
-      length =
-          std::max(length, std::fabs(t[i] - machine_[i]) / (config_.axes[static_cast<size_t>(i)].diameter ? 2 : 1));
+      length = std::max(
+          length, std::fabs(t[i] - kernel_.position()[i]) / (config_.axes[static_cast<size_t>(i)].diameter ? 2 : 1));
   if (ok && length < kSamePoint) {
     report(DiagId::ThreadNoTravel, 0, motion_name_);
     ok = false;
@@ -582,9 +567,9 @@ void Machine::thread_variable(const AxisValues& t) {
     report(DiagId::ThreadNoSpindle, 0);
     ok = false;
   }
-  if (!ok || !path_allowed({machine_, t})) return move_to(t);
+  if (!ok || !path_allowed({kernel_.position(), t})) return move_to(t);
   double turns = change == 0 ? length / pitch : pitch / change * std::log1p(change * length / (pitch * pitch));
-  advance_clock(60 * turns / rpm);
+  kernel_.advance_clock(60 * turns / rpm);
   Event e = motion_event(EventKind::Thread, t);
   e.a = to_program(pitch);
   e.b = to_program(change);
@@ -613,7 +598,7 @@ void Machine::spline_point(const AxisValues& t) {
   }
   spline_.points.push_back(t);
   spline_.sources.push_back(block_.request->source);
-  machine_ = t;  // the spline is cut at its lead-out; the program goes on from here
+  kernel_.move_to(t);  // the spline is cut at its lead-out; the program goes on from here
 }
 
 void Machine::spline_finish(const AxisValues& lead_out_end) {
@@ -640,7 +625,7 @@ void Machine::spline_finish(const AxisValues& lead_out_end) {
     end.clamped = false;
   }
   const std::vector<BezierSpan> spans = cubic_spline(points, start, end);
-  const AxisValues off = shown_origins();
+  const AxisValues off = kernel_.shown_origins();
   const BlockRequest* lead_out = block_.request;
   for (size_t i = 0; i < spans.size(); ++i) {
     const AxisValues& from = spline_.points[i];
@@ -676,7 +661,7 @@ void Machine::spline_finish(const AxisValues& lead_out_end) {
         e.control[a] = program_axis(a, c1[a] - off[a]);
         e.control2[a] = program_axis(a, c2[a] - off[a]);
       }
-      advance_clock(feed_time(std::hypot(spans[i].length, std::sqrt(other))));
+      kernel_.advance_clock(feed_time(std::hypot(spans[i].length, std::sqrt(other))));
       emit(e);
     }
   }
@@ -704,7 +689,7 @@ void Machine::dwell_seconds(double seconds) {
   Event e{EventKind::Dwell};
   e.a = seconds;
   emit(e);
-  advance_clock(seconds);
+  kernel_.advance_clock(seconds);
 }
 
 double Machine::timer_dwell() {
@@ -750,24 +735,10 @@ bool Machine::corner_requested() const {
   return conv_.corners && (has_slot(second_slot('C')) || has_slot(second_slot('R')));
 }
 
-void Machine::pass_on(size_t count) {
-  // Each held move starts where the one before it ends.
-  AxisValues at = hold_start_;
-  for (size_t i = 0; i < count; ++i) {
-    const Event& e = held_[i];
-    const bool move = e.kind == EventKind::Rapid || e.kind == EventKind::Linear || e.kind == EventKind::Arc;
-    to_path(e, move ? &at : nullptr);
-    if (move) at = e.pos;
-  }
-  hold_start_ = at;
-  held_.erase(held_.begin(), held_.begin() + static_cast<std::ptrdiff_t>(count));
-}
-
 void Machine::release() {
-  holding_ = false;
   corner_.reset();
   chained_start_.reset();
-  pass_on(held_.size());
+  kernel_.release();
 }
 
 void Machine::corner_codes() {
@@ -796,16 +767,17 @@ void Machine::corner_begin(const AxisValues& start) {
   const bool feed =
       modal_.motion == Fn::MotionLinear || modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw;
   if (block_.error) return release();  // its block failed: reported already
-  size_t incoming = held_.size(), moves = 0;
-  for (size_t i = 0; i < held_.size(); ++i)
-    if (is_move(held_[i]) || held_[i].kind == EventKind::Rapid) {
+  const std::vector<Event>& held = kernel_.held();
+  size_t incoming = held.size(), moves = 0;
+  for (size_t i = 0; i < held.size(); ++i)
+    if (is_move(held[i]) || held[i].kind == EventKind::Rapid) {
       incoming = i;
       ++moves;
     }
   std::string why = !feed || modal_.cycle >= 0     ? "it follows a feed move G01, G02 or G03 only (E-03)"
                     : moves > 1 && !chained_start_ ? "its block makes more than the one feed move it follows (E-03)"
                     : modal_.polar                 ? "it is not made in polar coordinates, G16 (E-07)"
-                    : incoming == held_.size()     ? "its block makes no feed move (E-03)"
+                    : incoming == held.size()      ? "its block makes no feed move (E-03)"
                                                    : "";
   if (!why.empty()) {
     report_slot(DiagId::CornerForm, slot, why);
@@ -818,21 +790,22 @@ void Machine::corner_begin(const AxisValues& start) {
 
 void Machine::corner_finish(bool another, size_t block_from) {
   Corner c = *corner_;
+  std::vector<Event>& held = kernel_.held();
   size_t outgoing = c.incoming + 1;
-  while (outgoing < held_.size() && !is_move(held_[outgoing]) && held_[outgoing].kind != EventKind::Rapid) ++outgoing;
+  while (outgoing < held.size() && !is_move(held[outgoing]) && held[outgoing].kind != EventKind::Rapid) ++outgoing;
   auto fail = [&](const std::string& why) {
     issue({DiagId::CornerForm, diag_message(DiagId::CornerForm, why), c.source, c.slot, -1});
     if (!another) return release();
     // This block's own corner still waits: only what came before it goes out.
-    pass_on(block_from);
+    kernel_.pass_on(block_from);
     corner_.reset();
   };
   if (block_.error) return release();  // reported already (E-06)
   const int pu = modal_.plane.u, pv = modal_.plane.v;
-  if (outgoing == held_.size() || !is_move(held_[outgoing]) ||
-      (held_[outgoing].kind == EventKind::Linear &&
-       std::hypot(held_[outgoing].pos[pu] - held_[c.incoming].pos[pu],
-                  held_[outgoing].pos[pv] - held_[c.incoming].pos[pv]) < 1e-9))
+  if (outgoing == held.size() || !is_move(held[outgoing]) ||
+      (held[outgoing].kind == EventKind::Linear &&
+       std::hypot(held[outgoing].pos[pu] - held[c.incoming].pos[pu],
+                  held[outgoing].pos[pv] - held[c.incoming].pos[pv]) < 1e-9))
     return fail("the next block must make a feed move in the plane (E-04)");
   const int u = modal_.plane.u, v = modal_.plane.v;
   auto in_plane = [&](const AxisValues& p) { return corner::Vec(p[u], p[v]); };
@@ -846,8 +819,8 @@ void Machine::corner_finish(bool another, size_t block_from) {
     }
     return el;
   };
-  Event& in = held_[c.incoming];
-  Event& next = held_[outgoing];
+  Event& in = held[c.incoming];
+  Event& next = held[outgoing];
   const AxisValues corner_point = in.pos;
   std::string why;
   auto cut = corner::cut(element(c.start, in), element(corner_point, next), c.fillet, c.size, why);
@@ -879,7 +852,7 @@ void Machine::corner_finish(bool another, size_t block_from) {
     joint.a = c.size;
     joint.b = cut->fillet_sweep * 180 / kPi;
   }
-  held_.insert(held_.begin() + static_cast<std::ptrdiff_t>(c.incoming) + 1, joint);
+  held.insert(held.begin() + static_cast<std::ptrdiff_t>(c.incoming) + 1, joint);
   if (!another) {
     release();
     return;

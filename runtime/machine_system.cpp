@@ -20,8 +20,8 @@ double Machine::system(SysRef ref) const {
   switch (ref.var) {
     case SysVar::BlockEnable: return block_skip_ ? 0 : 1;
     case SysVar::InchMode: return modal_.inch ? 1 : 0;
-    case SysVar::ClockMs: return std::round(clock_ * 1000 - clock_base_ * 1000);
-    case SysVar::ClockHours: return (clock_ - clock_base_) / 3600;
+    case SysVar::ClockMs: return std::round(kernel_.clock() * 1000 - clock_base_ * 1000);
+    case SysVar::ClockHours: return (kernel_.clock() - clock_base_) / 3600;
     case SysVar::ModalCode: {
       // The number of the program's code that sets the group's state now.
       const FnCall now = current(static_cast<FnGroup>(ref.index));
@@ -44,17 +44,17 @@ double Machine::system(SysRef ref) const {
     case SysVar::Position: {
       const int axis = ref.index % 16, kind = ref.index / 16;
       if (axis >= kAxisCount) return 0;
-      const AxisValues p = kind == 1 ? machine_ : motion_event(EventKind::Linear, machine_).pos;
+      const AxisValues p = kind == 1 ? kernel_.position() : motion_event(EventKind::Linear, kernel_.position()).pos;
       return kind == 1 ? program_axis(axis, p[axis]) : p[axis];
     }
     case SysVar::WorkOffsetValue: {
       const int axis = ref.index % 16, n = ref.index / 16;
-      return axis < kAxisCount ? program_axis(axis, offset_value(n, axis)) : 0;
+      return axis < kAxisCount ? program_axis(axis, kernel_.offset_value(n, axis)) : 0;
     }
     case SysVar::OptionalStop: return optional_stop_ ? 1 : 0;
     case SysVar::FeedOverride: return modal_.override_enabled ? 1 : 0;
     case SysVar::Timer:
-      if (ref.index == 0) return static_cast<float>(clock_);
+      if (ref.index == 0) return static_cast<float>(kernel_.clock());
       break;
     // RMNpq: process p, axis q (1: X); a run of one process moves nothing while a
     // block is evaluated.
@@ -86,23 +86,23 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
       return false;
     case SysVar::ClockMs:
     case SysVar::ClockHours:
-      clock_base_ = clock_ - (ref.var == SysVar::ClockMs ? value / 1000 : value * 3600);
+      clock_base_ = kernel_.clock() - (ref.var == SysVar::ClockMs ? value / 1000 : value * 3600);
       return true;
     case SysVar::WorkOffsetValue: {
       // #5221...: the offset of G54-G59 on one axis, in the program's unit.
       const int axis = ref.index % 16, n = ref.index / 16;
       if (axis >= kAxisCount || n < 1 || n > 6) return fail("it names no work offset");
-      WorkOffset& w = offsets_[n];
+      WorkOffset& w = kernel_.offsets()[n];
       w.values[axis] = w.inch && is_linear(axis) ? axis_units(axis, value) / 25.4 : axis_units(axis, value);
       w.axes |= 1u << axis;
-      refresh_base_origin();
+      kernel_.refresh_origins();
       if (n == modal_.work_offset) {
         // The active one: positions are measured from the new zero.
         Event e{EventKind::WorkOffset};
         e.n = n;
-        for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, offset_value(n, i));
+        for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(n, i));
         e.source = source;
-        out(e);
+        kernel_.out(e);
       }
       return true;
     }
@@ -111,7 +111,7 @@ bool Machine::set_system(SysRef ref, double value, uint32_t source) {
       Event e{EventKind::Override};
       e.n = modal_.override_enabled;
       e.source = source;
-      out(e);
+      kernel_.out(e);
       return true;
     }
     default: break;

@@ -76,7 +76,7 @@ bool Machine::virtual_function(FnCall call) {
     report_code(DiagId::VirtualAxes, why);
     return true;
   };
-  auto program = [&](int a) { return machine_[a] - origin(a); };
+  auto program = [&](int a) { return kernel_.position()[a] - kernel_.origin(a); };
   // The lists' lengths the mode takes (the compiler checked them).
   const auto m = static_cast<size_t>(*mode);
   const VirtualForm& form = kVirtualForms[m];
@@ -90,21 +90,21 @@ bool Machine::virtual_function(FnCall call) {
   // plain coordinates.
   for (const std::vector<int>* list : {&real, &virt})
     for (int a : *list)
-      if (frame_.mirror[a] || frame_.scale[a] != 1 ||
-          (frame_.rotation != 0 && (a == modal_.plane.u || a == modal_.plane.v)))
+      if (kernel_.frame().mirror[a] || kernel_.frame().scale[a] != 1 ||
+          (kernel_.frame().rotation != 0 && (a == modal_.plane.u || a == modal_.plane.v)))
         return fail(
             fmt::format("{} is mirrored, scaled or rotated (MIR, SCF, URT): cancel that before UAV", kAxisLetters[a]));
   for (int a : virt)
     if (kind(a) != AxisKind::Linear || config_.axes[static_cast<size_t>(a)].diameter)
       return fail(fmt::format("the virtual axis {} is a linear axis, not a rotary or diametral one", kAxisLetters[a]));
 
-  if (path_) path_->leave();
+  if (kernel_.path()) kernel_.path()->leave();
   VirtualAxes next;
   next.mode = *mode;
   next.real = real;
   next.virt = virt;
-  next.saved = machine_;
-  next.zero = origins();
+  next.saved = kernel_.position();
+  next.zero = kernel_.origins();
   std::string text;
   switch (*mode) {
     case 1:
@@ -122,23 +122,23 @@ bool Machine::virtual_function(FnCall call) {
         return fail(fmt::format("the cylinder's radius {} must be greater than 0", shortest(value(0))));
       // "The rotary axis is positioned at zero" when they are activated.
       if (std::fabs(program(rotary)) > 1e-9) {
-        AxisValues t = machine_;
-        t[rotary] = origin(rotary);
+        AxisValues t = kernel_.position();
+        t[rotary] = kernel_.origin(rotary);
         rapid(t);
       }
-      next.saved = machine_;
+      next.saved = kernel_.position();
       if (*mode == 1) {
         // C is the polar angle of U V, counter-clockwise; a tool on X's negative side
         // starts half a turn round.
         const double x = program(real[0]);
         next.sign[0] = x < 0 ? -1 : 1;
         next.angle = x < 0 ? kPi : 0;
-        machine_[virt[0]] = next.zero[virt[0]] + x;
-        machine_[virt[1]] = next.zero[virt[1]];
+        kernel_.place(virt[0], next.zero[virt[0]] + x);
+        kernel_.place(virt[1], next.zero[virt[1]]);
         text = fmt::format("polar {} as {} min radius {}", letters(real), letters(virt),
                            four_decimals(to_program(next.value)));
       } else {
-        machine_[virt[0]] = next.zero[virt[0]];
+        kernel_.place(virt[0], next.zero[virt[0]]);
         text = fmt::format("cylinder {} as {} radius {}", kAxisLetters[rotary], kAxisLetters[virt[0]],
                            four_decimals(to_program(next.value)));
       }
@@ -186,7 +186,7 @@ bool Machine::virtual_function(FnCall call) {
       for (int i = 0; i < 3; ++i) {  // virtual = R^T real
         double v = 0;
         for (int k = 0; k < 3; ++k) v += r[k][i] * program(real[static_cast<size_t>(k)]);
-        machine_[virt[static_cast<size_t>(i)]] = next.zero[virt[static_cast<size_t>(i)]] + v;
+        kernel_.place(virt[static_cast<size_t>(i)], next.zero[virt[static_cast<size_t>(i)]] + v);
       }
       text = fmt::format("rotation {} as {} angles {} {} {}", letters(real), letters(virt), shortest(value(0)),
                          shortest(value(1)), shortest(value(2)));
@@ -205,39 +205,42 @@ void Machine::virtual_event(const std::string& what) {
   const VirtualAxes& va = virtual_axes_;
   for (const std::vector<int>* list : {&va.virt, &va.real})
     for (int a : *list)
-      text += fmt::format(" {}{}", kAxisLetters[a], four_decimals(program_axis(a, machine_[a] - origin(a))));
+      text += fmt::format(" {}{}", kAxisLetters[a],
+                          four_decimals(program_axis(a, kernel_.position()[a] - kernel_.origin(a))));
   text_event(EventKind::Virtual, text, source());
 }
 
 void Machine::virtual_off() {
   VirtualAxes& va = virtual_axes_;
   if (va.mode == 0) return;
-  if (path_) path_->leave();  // NC-110's G40 leaves with the next move: this is it
-  const AxisValues now = machine_;
+  if (kernel_.path()) kernel_.path()->leave();  // NC-110's G40 leaves with the next move: this is it
+  const AxisValues now = kernel_.position();
+  AxisValues to = now;
   auto virtual_at = [&](size_t k) { return now[va.virt[k]] - va.zero[va.virt[k]]; };
   switch (va.mode) {
     case 1: {
-      machine_[va.real[0]] = va.zero[va.real[0]] + va.sign[0] * std::hypot(virtual_at(0), virtual_at(1));
-      machine_[va.real[1]] = va.zero[va.real[1]] + (va.angle - (va.sign[0] < 0 ? kPi : 0)) * 180 / kPi;
+      to[va.real[0]] = va.zero[va.real[0]] + va.sign[0] * std::hypot(virtual_at(0), virtual_at(1));
+      to[va.real[1]] = va.zero[va.real[1]] + (va.angle - (va.sign[0] < 0 ? kPi : 0)) * 180 / kPi;
       break;
     }
-    case 2: machine_[va.real[0]] = va.zero[va.real[0]] + virtual_at(0) / va.value * 180 / kPi; break;
+    case 2: to[va.real[0]] = va.zero[va.real[0]] + virtual_at(0) / va.value * 180 / kPi; break;
     case 3:
       for (size_t k = 0; k < va.real.size(); ++k)
-        machine_[va.real[k]] = va.saved[va.real[k]] + va.sign[k] * (now[va.master[k]] - va.saved[va.master[k]]);
+        to[va.real[k]] = va.saved[va.real[k]] + va.sign[k] * (now[va.master[k]] - va.saved[va.master[k]]);
       break;
     case 4:
       for (size_t i = 0; i < 3; ++i) {
         double v = 0;
         for (size_t k = 0; k < 3; ++k) v += va.rotation[i * 3 + k] * virtual_at(k);
-        machine_[va.real[i]] = va.zero[va.real[i]] + v;
+        to[va.real[i]] = va.zero[va.real[i]] + v;
       }
       break;
     default: return;
   }
   // The virtual axes' letters are the real axes' again, where those were (modes 1, 2, 4).
   if (va.mode != 3)
-    for (int a : va.virt) machine_[a] = va.saved[a];
+    for (int a : va.virt) to[a] = va.saved[a];
+  kernel_.move_to(to);
   virtual_event("off");
   va = VirtualAxes{};
 }

@@ -62,9 +62,9 @@ void Machine::IsoToolChange::before(Scope scope, bool emit_events) {
   m_.modal_.comp = 0;
   m_.modal_.length = 0;
   m_.flush_compensation();
-  AxisValues up = m_.machine_;
+  AxisValues up = m_.kernel_.position();
   if (m_.modal_.plane.w >= 0) up[m_.modal_.plane.w] = m_.config_.reference_position[m_.modal_.plane.w];
-  if (retract_ && up != m_.machine_) m_.rapid(up);
+  if (retract_ && up != m_.kernel_.position()) m_.rapid(up);
 }
 
 // NC-110 §2.7.7: M06 brings the corrector T selected into force.
