@@ -1,6 +1,7 @@
 // ISO/Fanuc's block rules (§8.4, §8.8-§8.31; E-08..E-27): what scaling, rotation,
 // incremental positioning and cutter compensation forbid a block, and the dwell after
-// a move. The plain rules (GOST 20999, pp, NC-110) are the base's.
+// a move; NC-110's (§2.8.7): what a compensated path may hold. The plain rules (GOST
+// 20999, pp) are the base's.
 #include "block_rules.h"
 
 namespace ncc {
@@ -22,9 +23,30 @@ class Machine::IsoBlockRules final : public BlockRules {
   void refuse(const char* because);  // the code being applied, under what forbids it
 };
 
+class Machine::Nc110BlockRules final : public BlockRules {
+ public:
+  using BlockRules::BlockRules;
+  bool may_stand_in_compensated_path() override;
+  bool joins_path_corners() const override { return true; }  // §2.8.7: r, b in a block of their own
+};
+
 std::unique_ptr<Machine::BlockRules> Machine::BlockRules::make(Machine& m, const Conventions& conv) {
   if (conv.fanuc_rules) return std::make_unique<IsoBlockRules>(m);
+  if (conv.cutter == CutterStyle::Nc110) return std::make_unique<Nc110BlockRules>(m);
   return std::make_unique<BlockRules>(m);
+}
+
+// §2.8.7 rule 2: no M, H, S or T inside a compensated profile.
+bool Machine::Nc110BlockRules::may_stand_in_compensated_path() {
+  for (char l : {'M', 'H', 'S', 'T'})
+    if (m_.has(l)) {
+      m_.report(DiagId::CompPath, l,
+                fmt::format("{} stands outside the compensated profile: between G41/G42 and G40 no "
+                            "block has M, H, S or T (§2.8.7)",
+                            l));
+      return false;
+    }
+  return true;
 }
 
 void Machine::IsoBlockRules::refuse(const char* because) {

@@ -15,7 +15,8 @@ namespace ncc {
 class Machine::BlockRules : public Strategy {
  public:
   using Strategy::Strategy;
-  // The rules of the program's conventions: the only place that reads fanuc_rules.
+  // The rules of the program's conventions: the only place that reads fanuc_rules
+  // (and cutter, for NC-110's).
   static std::unique_ptr<BlockRules> make(Machine& m, const Conventions& conv);
 
   // What a code of the block asks before it acts: false, reported at the code, where
@@ -29,6 +30,10 @@ class Machine::BlockRules : public Strategy {
   [[nodiscard]] virtual bool may_change_plane(const Plane& /*plane*/) { return true; }
   // May the block's words be machine coordinates (G53)?
   [[nodiscard]] virtual bool may_use_machine_coordinates() { return true; }
+  // May the block, between G41/G42 and G40, hold what it holds (reported at the word)?
+  [[nodiscard]] virtual bool may_stand_in_compensated_path() { return true; }
+  // Does a corner word (r, b) join two moves of the compensated path?
+  virtual bool joins_path_corners() const { return false; }
 
   // A block with axis words under G02/G03, about to move: what it changed that an arc
   // may not (reported).

@@ -851,14 +851,7 @@ void Machine::apply_codes(Timing timing) {
 void Machine::action() {
   if (block_.operands) return;
   if (block_.gtl_define >= 0) return gtl_define(static_cast<uint16_t>(block_.gtl_define));
-  // NC-110 §2.8.7 rule 2: no M, H, S or T inside a compensated profile.
-  if (conv_.cutter == CutterStyle::Nc110 && block_.comp_before != 0 && modal_.comp != 0 && !block_.error)
-    for (char l : {'M', 'H', 'S', 'T'})
-      if (has(l))
-        return report(DiagId::CompPath, l,
-                      fmt::format("{} stands outside the compensated profile: between G41/G42 and G40 no "
-                                  "block has M, H, S or T (§2.8.7)",
-                                  l));
+  if (block_.comp_before != 0 && modal_.comp != 0 && !block_.error && !rules_->may_stand_in_compensated_path()) return;
   if (modal_.gtl || gtl_open() || block_has(Fn::GtlOpen) || block_has(Fn::GtlClose)) return gtl_block();
   // NC-110's lower-case words (most blocks have none): u v w, and a profile's outside one.
   static const std::bitset<kWordSlots> kLowerCase = [] {
@@ -893,7 +886,7 @@ void Machine::action() {
       if (l == 'r' || l == 'b') {
         // §2.8.7: a corner of a compensated path, in a block of its own.
         const std::string shown = std::string(1, l) + shortest(word(l));
-        if (conv_.cutter != CutterStyle::Nc110 || modal_.comp == 0)
+        if (!rules_->joins_path_corners() || modal_.comp == 0)
           return report(DiagId::CompPath, l,
                         fmt::format("{} joins two moves under G41/G42 or two elements of a GTL profile: "
                                     "neither is in force (§2.8.7)",

@@ -361,6 +361,7 @@ class Machine final : public BlockMachine {
   // What the dialect forbids a block (block_rules.h): plain, or ISO's; chosen once.
   class BlockRules;
   class IsoBlockRules;
+  class Nc110BlockRules;
   std::unique_ptr<BlockRules> rules_;
   void cancel_cycle();  // the active cycle ends
   // `pitch`: a tap's (NC-110 G84 K), synchronised with the spindle.
