@@ -530,6 +530,9 @@ bool write_module(const Module& m, std::FILE* out) {
          std::fseek(out, 0, SEEK_END) == 0;
 }
 
+// verify(), finding on its walk the devices whose services the code calls.
+static std::string verify(const Module& m, uint8_t& devices);
+
 namespace {
 
 // The bytes of a bytecode file as read_module takes them, in order: all in memory, or
@@ -681,7 +684,7 @@ std::optional<Module> read_module(ModuleInput& in, const std::string& name, Diag
   if (!problem.empty()) return invalid(problem);
   for (uint32_t t : kSections)
     if (!seen[t]) return invalid(fmt::format("section '{}' is missing", tag_name(t)));
-  if (std::string why = verify(m); !why.empty()) return invalid(why);
+  if (std::string why = verify(m, m.devices); !why.empty()) return invalid(why);
   return m;
 }
 
@@ -698,6 +701,11 @@ std::optional<Module> read_module(int fd, uint64_t size, const std::string& name
 }
 
 std::string verify(const Module& m) {
+  uint8_t devices = 0;
+  return verify(m, devices);
+}
+
+static std::string verify(const Module& m, uint8_t& devices) {
   const ProgramSemantics& s = m.semantics;
   const Conventions& c = s.conventions;
   if (std::string why = convention_problem(c); !why.empty()) return why;
@@ -765,6 +773,7 @@ std::string verify(const Module& m) {
   const std::vector<uint8_t>& code = m.code;
   std::vector<std::pair<uint32_t, uint32_t>> jumps;  // (pc, target)
   std::vector<uint32_t> range_ends;                  // second targets of CallRange
+  uint8_t called = 0;  // devices (a local: a write through `devices` could alias anything)
   for (size_t pc = 0; pc < code.size();) {
     if (code[pc] >= static_cast<uint8_t>(Op::Count)) return fmt::format("unknown opcode {} at {}", code[pc], pc);
     Op op = static_cast<Op>(code[pc]);
@@ -780,6 +789,7 @@ std::string verify(const Module& m) {
       info = &service_op_info(service);
       size += static_cast<size_t>(service_operand_size(service));
       ranges.serve(service);
+      called |= device_bit(service_info(service).device);
     }
     if (pc + size > code.size()) return fmt::format("{} at {} is cut off by the end of the code", info->name, pc);
     size_t at = pc + 1;
@@ -906,6 +916,7 @@ std::string verify(const Module& m) {
       pc = next;
     }
   }
+  devices = called;
   return {};
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "contract/program_semantics.h"
+#include "contract/services.h"
 #include "contract/source_map.h"
 #include "contract/variables.h"
 #include "support/diagnostics.h"
@@ -38,6 +39,9 @@ struct LineEntry {
   uint32_t source = 0;
 };
 
+// A device's bit in Module::devices.
+constexpr uint8_t device_bit(Device d) { return static_cast<uint8_t>(1u << static_cast<unsigned>(d)); }
+
 struct Module {
   std::string dialect;
   std::string profile_name;
@@ -50,8 +54,12 @@ struct Module {
   std::vector<Entry> entries;
   std::vector<VarSpace> spaces;
   SourceMap source_map;
+  // The devices whose services its code calls, a bit each: not in the file, found by
+  // lower() and by read_module()'s verifier.
+  uint8_t devices = 0;
 
   uint32_t source_of(uint32_t pc) const;
+  bool calls(Device d) const { return devices & device_bit(d); }
 };
 
 std::string write_module(const Module& m);

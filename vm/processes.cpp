@@ -9,13 +9,10 @@
 
 namespace ncc::vm {
 
+// A process: its program's run, and what the scheduler keeps of it.
 struct Processes::Slot {
-  std::unique_ptr<BlockMachine> machine;
-  std::unique_ptr<ServiceHost> devices;
-  std::unique_ptr<Vm> vm;
-  bool running = false;    // a program is loaded (it may wait: vm->waiting(), at vm->pc())
+  ProgramRun run;
   bool delivered = false;  // a partner met its WAI or SND: it completes when it runs again
-  size_t entry = 0;        // the entry running (process 1: its place on the medium)
   double free_at = 0;      // when its last program ended
 };
 
@@ -27,50 +24,40 @@ Processes::Processes(ProcessSetup setup) : setup_(std::move(setup)) {
 
 Processes::~Processes() = default;
 
+bool Processes::needed(const Module& module) {
+  return module.calls(Device::Process) || std::any_of(module.entries.begin(), module.entries.end(), [](const Entry& e) {
+           return e.kind == EntryKind::Process || e.processes;
+         });
+}
+
 Processes::Slot& Processes::slot(uint8_t n) {
   std::unique_ptr<Slot>& s = slots_[n - 1];
   if (s) return *s;
-  s = std::make_unique<Slot>();
-  s->machine = setup_.make_machine(n, several_ ? this : nullptr);
-  if (setup_.make_devices) s->devices = setup_.make_devices(n);
   VmOptions options = setup_.options;
-  options.services.fill(s->devices.get());
   options.services[static_cast<size_t>(Device::Process)] = this;
   options.shared = &shared_;
   options.slice = several_;
   options.by_block = setup_.by_block;
   if (!several_) options.look_ahead = 0;
-  s->vm = std::make_unique<Vm>(setup_.module, *s->machine, setup_.issues, options);
+  s = std::make_unique<Slot>(
+      Slot{ProgramRun(setup_.module, setup_.make_machine(n, several_ ? this : nullptr),
+                      setup_.make_devices ? setup_.make_devices(n) : nullptr, setup_.issues, options, n == 1)});
   return *s;
-}
-
-bool Processes::run(size_t first) {
-  if (!begin(first)) return false;
-  Turn turn = Turn::Continue;
-  while (turn == Turn::Continue) turn = step();
-  finish(turn == Turn::Ended);
-  return turn == Turn::Ended;
 }
 
 bool Processes::begin(size_t first) {
   const auto& entries = setup_.module.entries;
   Slot& one = slot(1);
-  one.entry = first;
-  one.running = first < entries.size();  // a file without a program runs nothing
-  if (one.running) one.vm->start(static_cast<uint32_t>(first));
   for (size_t i = 0; i < entries.size(); ++i)
     for (uint8_t n = 2; n <= kMaxProcesses; ++n) {
       if (!(entries[i].processes >> (n - 1) & 1)) continue;
       if (n > slots_.size()) {  // selected for a process this machine lacks: number() reports it
         (void)number(n, setup_.module.source_of(entries[i].pc), "--process");
-        one.running = false;
         return false;
       }
-      Slot& s = slot(n);
-      s.entry = i;
-      s.vm->start(static_cast<uint32_t>(i));
-      s.running = true;
+      slot(n).run.start(i);
     }
+  one.run.start(first);
   return true;
 }
 
@@ -81,7 +68,7 @@ Processes::Turn Processes::step() {
   std::pair<double, size_t> by_time[kMaxProcesses];
   size_t count = 0;
   for (size_t i = 0; i < slots_.size(); ++i)
-    if (slots_[i] && slots_[i]->running) by_time[count++] = {slots_[i]->vm->eval_time(), i};
+    if (slots_[i] && slots_[i]->run.running()) by_time[count++] = {slots_[i]->run.vm().eval_time(), i};
   if (count == 0) return Turn::Ended;
   for (size_t a = 1; a < count; ++a)
     for (size_t b = a; b > 0 && by_time[b] < by_time[b - 1]; --b) std::swap(by_time[b], by_time[b - 1]);
@@ -89,20 +76,13 @@ Processes::Turn Processes::step() {
   for (auto [time, i] : order) {
     Slot& s = *slots_[i];
     current_ = static_cast<uint8_t>(i + 1);
-    const bool was_waiting = s.vm->waiting();
-    const uint32_t was_at = s.vm->pc();
-    const RunStatus status = s.vm->resume();
-    const bool progress = status != RunStatus::Blocked || !was_waiting || s.vm->pc() != was_at;
-    switch (status) {
-      case RunStatus::Yield:
-      case RunStatus::Blocked: break;
-      case RunStatus::Error: return Turn::Error;
-      case RunStatus::UnitEnded: s.machine->end_of_unit(setup_.module.source_of(s.vm->pc())); [[fallthrough]];
-      case RunStatus::ProgramEnd: s.running = i == 0 && next_program(s); break;
-      case RunStatus::EndOfInformation:
-      case RunStatus::Released: s.running = false; break;
-    }
-    if (!s.running) s.free_at = s.machine->clock();
+    Vm& vm = s.run.vm();
+    const bool was_waiting = vm.waiting();
+    const uint32_t was_at = vm.pc();
+    const RunStatus status = s.run.step();
+    if (status == RunStatus::Error) return Turn::Error;
+    const bool progress = status != RunStatus::Blocked || !was_waiting || vm.pc() != was_at;
+    if (!s.run.running()) s.free_at = s.run.machine().clock();
     if (progress) {
       assume_ = false;
       return Turn::Continue;
@@ -118,8 +98,8 @@ Processes::Turn Processes::step() {
     setup_.plc.pop_front();
     // It comes once every process stopped, and shows at the first that waits for a condition.
     for (auto [time, i] : order) shared_.written_at = std::max(shared_.written_at, time);
-    waiter->machine->sync_event("PLC " + w.text, setup_.module.source_of(waiter->vm->pc()));
-    waiter->vm->write_memory(w.space, w.format, w.index, w.value);
+    waiter->run.machine().sync_event("PLC " + w.text, setup_.module.source_of(waiter->run.vm().pc()));
+    waiter->run.vm().write_memory(w.space, w.format, w.index, w.value);
   } else if (waiter && setup_.dry && !assume_) {
     assume_ = true;
   } else {
@@ -131,40 +111,25 @@ Processes::Turn Processes::step() {
 
 void Processes::finish(bool ok) {
   for (const auto& s : slots_)
-    if (s) s->machine->end_run(!ok);
+    if (s) s->run.finish(ok);
 }
 
 bool Processes::running() const {
-  return std::any_of(slots_.begin(), slots_.end(), [](const auto& s) { return s && s->running; });
+  return std::any_of(slots_.begin(), slots_.end(), [](const auto& s) { return s && s->run.running(); });
 }
 
 const BlockMachine* Processes::machine(uint8_t n) const {
-  return n >= 1 && n <= slots_.size() && slots_[n - 1] ? slots_[n - 1]->machine.get() : nullptr;
+  return n >= 1 && n <= slots_.size() && slots_[n - 1] ? &slots_[n - 1]->run.machine() : nullptr;
 }
 
 std::optional<uint32_t> Processes::next_source() const {
-  const Slot* one = slots_.empty() ? nullptr : slots_[0].get();
-  if (!one || !one->running) return std::nullopt;
-  return setup_.module.source_of(one->vm->pc());
-}
-
-// Programs run in the order of the medium, each after the previous one ended (M02);
-// M30 ends the information.
-bool Processes::next_program(Slot& s) {
-  const auto& entries = setup_.module.entries;
-  for (size_t i = s.entry + 1; i < entries.size(); ++i)
-    if (entries[i].kind == EntryKind::Program) {
-      s.entry = i;
-      s.vm->start(static_cast<uint32_t>(i));
-      return true;
-    }
-  return false;
+  return slots_.empty() || !slots_[0] ? std::nullopt : slots_[0]->run.next_source();
 }
 
 uint64_t Processes::steps() const {
   uint64_t n = 0;
   for (const auto& s : slots_)
-    if (s) n += s->vm->steps();
+    if (s) n += s->run.steps();
   return n;
 }
 
@@ -182,13 +147,14 @@ uint8_t Processes::number(double process, uint32_t source, const char* what) {
 }
 
 Service Processes::waits_in(const Slot& s) const {
-  const uint8_t* at = setup_.module.code.data() + s.vm->pc();
+  const uint8_t* at = setup_.module.code.data() + s.run.vm().pc();
   return static_cast<Op>(at[0]) == Op::Service ? static_cast<Service>(at[1]) : Service::Count;
 }
 
 // (A process a partner met already waits only to run again.)
 bool Processes::waits_at(const Slot& s, Service service, uint8_t partner) const {
-  return s.running && s.vm->waiting() && !s.delivered && waits_in(s) == service && s.vm->blocked_operand() == partner;
+  return s.run.running() && s.run.vm().waiting() && !s.delivered && waits_in(s) == service &&
+         s.run.vm().blocked_operand() == partner;
 }
 
 ServiceResult Processes::call(Service service, ServiceCall& call) {
@@ -242,7 +208,7 @@ ServiceResult Processes::wait_until(ServiceCall& call) {
                       : relation == 3 ? now > value
                                       : now != value) ||
                      (call.waited() && assume_);
-  if (holds && call.waited()) slot(current_).vm->wait_until(shared_.written_at);
+  if (holds && call.waited()) slot(current_).run.vm().wait_until(shared_.written_at);
   const std::string& condition = call.string(call.operand(3));
   return answer(call, holds ? ServiceResult::Done : ServiceResult::Wait, condition + " holds",
                 "wait until " + condition);
@@ -254,20 +220,18 @@ ServiceResult Processes::start(double process, uint32_t entry, uint32_t source) 
   const uint8_t n = number(process, source, "(EXE)");
   if (!n) return ServiceResult::Error;
   Slot& target = slot(n);
-  if (target.running) return ServiceResult::Wait;
-  Vm& starter = *slot(current_).vm;
+  if (target.run.running()) return ServiceResult::Wait;
+  Vm& starter = slot(current_).run.vm();
   starter.wait_until(target.free_at);
-  target.vm->wait_until(starter.eval_time());
-  target.entry = entry;
-  target.vm->start(entry);
-  target.running = true;
+  target.run.vm().wait_until(starter.eval_time());
+  target.run.start(entry);
   return ServiceResult::Done;
 }
 
 // RMNpq: at the time the reading block is evaluated, of the block process p moves then.
 double Processes::remaining(int process, int axis) {
   if (process < 1 || process > static_cast<int>(slots_.size()) || !slots_[process - 1] || axis >= kAxisCount) return 0;
-  return slots_[process - 1]->machine->remaining_at(axis, slot(current_).vm->eval_time());
+  return slots_[process - 1]->run.machine().remaining_at(axis, slot(current_).run.vm().eval_time());
 }
 
 // WAI n and SND n meet (a rendezvous, decision 63): whichever comes first waits for
@@ -285,9 +249,9 @@ ServiceResult Processes::meet(double process, uint32_t source, const char* what,
   Slot* other = slots_[n - 1].get();
   if (!other || !waits_at(*other, partner, current_)) return ServiceResult::Wait;
   other->delivered = true;
-  const double t = std::max(me.vm->eval_time(), other->vm->eval_time());
-  me.vm->wait_until(t);
-  other->vm->wait_until(t);
+  const double t = std::max(me.run.vm().eval_time(), other->run.vm().eval_time());
+  me.run.vm().wait_until(t);
+  other->run.vm().wait_until(t);
   return ServiceResult::Done;
 }
 
@@ -297,20 +261,21 @@ void Processes::deadlock() {
   RuntimeIssue issue{DiagId::Deadlock, "", 0};
   bool condition = false, first = true;
   for (size_t i = 0; i < slots_.size(); ++i) {
-    if (!slots_[i] || !slots_[i]->running) continue;
+    if (!slots_[i] || !slots_[i]->run.running()) continue;
     const Slot& s = *slots_[i];
-    const uint32_t source = setup_.module.source_of(s.vm->pc());
+    const uint32_t source = setup_.module.source_of(s.run.vm().pc());
     if (first) issue.source = source;
     first = false;
     const Service service = waits_in(s);
     condition = condition || service == Service::ProcessWaitUntil;
     // The process it waits for may run nothing, and never will.
-    const double partner = s.vm->blocked_operand();
-    const bool idle = (service == Service::ProcessWait || service == Service::ProcessSignal) && partner >= 1 &&
-                      partner <= static_cast<double>(slots_.size()) &&
-                      !(slots_[static_cast<size_t>(partner) - 1] && slots_[static_cast<size_t>(partner) - 1]->running);
+    const double partner = s.run.vm().blocked_operand();
+    const bool idle =
+        (service == Service::ProcessWait || service == Service::ProcessSignal) && partner >= 1 &&
+        partner <= static_cast<double>(slots_.size()) &&
+        !(slots_[static_cast<size_t>(partner) - 1] && slots_[static_cast<size_t>(partner) - 1]->run.running());
     issue.notes.push_back(
-        {source, fmt::format("process {} waits here: {}{}", i + 1, s.vm->waits(),
+        {source, fmt::format("process {} waits here: {}{}", i + 1, s.run.vm().waits(),
                              idle ? fmt::format(" (process {} runs no program)", shortest(partner)) : "")});
   }
   issue.message = diag_message(DiagId::Deadlock,

@@ -1,9 +1,10 @@
 // The processes of a run (NC-110 chapter 4): up to five programs side by side, each
-// with its own machine, E parameters, devices (its ASSET channels) and VM, sharing
-// SYVAR, SA, SK (and the devices what their maker shares: the user screen). A
-// deterministic scheduler runs them a block at a time, the one whose next block is
-// evaluated first (decision 63), and answers the process services (EXE, REL, WAI,
-// SND); a run with no Process entry is process 1 alone, run to the end in one go.
+// a ProgramRun (program_run.h) with its own machine, E parameters and devices (its
+// ASSET channels), sharing SYVAR, SA, SK (and the devices what their maker shares:
+// the user screen). A deterministic scheduler runs them a block at a time, the one
+// whose next block is evaluated first (decision 63), and answers the process services
+// (EXE, REL, WAI, SND, wait-until) and deadlocks. Only a module that needs it runs
+// here (needed()); any other runs on a ProgramRun alone.
 #pragma once
 
 #include <deque>
@@ -12,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "program_run.h"
 #include "vm.h"
 
 namespace ncc::vm {
@@ -53,10 +55,11 @@ class Processes final : public ServiceHost, public RemainingPaths {
   explicit Processes(ProcessSetup setup);
   ~Processes() override;
 
+  // A module needs the scheduler when it has processes or calls a process service.
+  static bool needed(const Module& module);
+
   // Runs entry `first` and the programs after it on the medium in process 1, and the
-  // programs selected for other processes; false if an error stopped the run.
-  [[nodiscard]] bool run(size_t first);
-  // The same in steps, as a host drives a run: begin (false: it cannot start,
+  // programs selected for other processes, in steps: begin (false: it cannot start,
   // reported), then step until it returns Ended or Error, then finish. With
   // ProcessSetup::by_block a step runs one block.
   // [[nodiscard]] on a declaration first: clang-format 14 mangles it on the definition.
@@ -80,7 +83,6 @@ class Processes final : public ServiceHost, public RemainingPaths {
   [[nodiscard]] uint8_t number(double process, uint32_t source, const char* what);  // 0: not a process (reported)
   Service waits_in(const Slot& s) const;                                 // the service s is blocked at (Count: none)
   bool waits_at(const Slot& s, Service service, uint8_t partner) const;  // s is blocked at `service` naming `partner`
-  bool next_program(Slot& s);                                            // process 1: the next program on the medium
   void deadlock();
   // Done (a sync event shows it), Wait (the first time, an event shows what it waits
   // for) or Error (reported).

@@ -20,6 +20,7 @@
 #include "runtime/machine.h"
 #include "support/text.h"
 #include "vm/processes.h"
+#include "vm/program_run.h"
 
 namespace ncc {
 
@@ -219,7 +220,7 @@ bool read_answers(Session& s, const vm::Module& m, const std::string& path, std:
 
 }  // namespace
 
-// What a run holds besides its processes: the machine configuration, the reporter
+// What a run holds besides its program or processes: the machine configuration, the reporter
 // of what it finds, the ASSET sandbox, the operator's answers and the devices'
 // state the processes share.
 struct ModuleRun::Parts {
@@ -228,8 +229,9 @@ struct ModuleRun::Parts {
   std::unique_ptr<asset::Store> store;
   std::vector<devices::Answer> answers;
   devices::Nc110Run devices;
-  std::deque<ProcessSink> process_sinks;  // a run of several processes: each event marked with its process
-  std::unique_ptr<vm::Processes> processes;
+  std::deque<ProcessSink> process_sinks;     // a run of several processes: each event marked with its process
+  std::unique_ptr<vm::ProgramRun> program;   // a run without process features (vm::Processes::needed)
+  std::unique_ptr<vm::Processes> processes;  // else
 };
 
 ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& settings, TraceSink& trace, bool dry,
@@ -255,7 +257,6 @@ ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& setting
                        : fmt::format("the program's {} blocks and {} more, the default; --max-steps N sets another",
                                      blocks, kDryRunExtraSteps)));
   options.trace_blocks = settings.trace_blocks;
-  options.look_ahead = config.look_ahead;
   // Each process runs on the motion runtime's Machine.
   auto make_machine = [this, &m, &trace, dry](uint8_t process, RemainingPaths* others) {
     TraceSink& sink = others ? parts_->process_sinks.emplace_back(trace, process) : trace;
@@ -304,8 +305,18 @@ ModuleRun::ModuleRun(Session& s, const vm::Module& m, const RunSettings& setting
       return;
     }
   }
-  parts_->processes = std::make_unique<vm::Processes>(std::move(setup));
-  if (parts_->processes->begin(first)) {
+  bool started = true;
+  if (vm::Processes::needed(m)) {
+    setup.options.look_ahead = config.look_ahead;  // only processes show it (NC-110 §2.16)
+    parts_->processes = std::make_unique<vm::Processes>(std::move(setup));
+    started = parts_->processes->begin(first);
+  } else {
+    setup.options.by_block = by_block;
+    parts_->program = std::make_unique<vm::ProgramRun>(m, make_machine(1, nullptr), make_devices(1), *parts_->reporter,
+                                                       setup.options, true);
+    parts_->program->start(first);
+  }
+  if (started) {
     state_ = State::Running;
   } else {
     state_ = State::Error;
@@ -317,6 +328,10 @@ ModuleRun::~ModuleRun() = default;
 
 ModuleRun::State ModuleRun::step() {
   if (state_ != State::Running) return state_;
+  if (vm::ProgramRun* program = parts_->program.get()) {
+    if (program->running() && program->step() == vm::RunStatus::Error) return end(State::Error);
+    return program->running() ? state_ : end(State::Ended);
+  }
   switch (parts_->processes->step()) {
     case vm::Processes::Turn::Continue: return parts_->processes->running() ? state_ : end(State::Ended);
     case vm::Processes::Turn::Ended: return end(State::Ended);
@@ -328,21 +343,29 @@ ModuleRun::State ModuleRun::step() {
 ModuleRun::State ModuleRun::stop() { return state_ == State::Running ? end(State::Stopped) : state_; }
 
 ModuleRun::State ModuleRun::end(State how) {
-  parts_->processes->finish(how == State::Ended);
+  if (parts_->program)
+    parts_->program->finish(how == State::Ended);
+  else
+    parts_->processes->finish(how == State::Ended);
   trace_.flush();
   return state_ = how;
 }
 
-uint64_t ModuleRun::steps() const { return parts_->processes ? parts_->processes->steps() : 0; }
+uint64_t ModuleRun::steps() const {
+  return parts_->program ? parts_->program->steps() : parts_->processes ? parts_->processes->steps() : 0;
+}
 
-const BlockMachine* ModuleRun::machine() const { return parts_->processes ? parts_->processes->machine(1) : nullptr; }
+const BlockMachine* ModuleRun::machine() const {
+  return parts_->program ? &parts_->program->machine() : parts_->processes ? parts_->processes->machine(1) : nullptr;
+}
 
 std::optional<uint32_t> ModuleRun::next_block() const {
-  return state_ == State::Running ? parts_->processes->next_source() : std::nullopt;
+  if (state_ != State::Running) return std::nullopt;
+  return parts_->program ? parts_->program->next_source() : parts_->processes->next_source();
 }
 
 const screen::UserScreen* ModuleRun::user_screen() const {
-  return parts_->processes ? &parts_->devices.screen : nullptr;
+  return parts_->program || parts_->processes ? &parts_->devices.screen : nullptr;
 }
 
 void ModuleRun::report(uint32_t source, DiagId id, std::string message) {

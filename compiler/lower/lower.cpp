@@ -111,6 +111,7 @@ class Lowering {
   void op(Op o) { m_.code.push_back(static_cast<uint8_t>(o)); }
   // A SERVICE instruction; its service's operands follow (contract/services.def).
   void service(Service s) {
+    m_.devices |= vm::device_bit(service_info(s).device);
     op(Op::Service);
     u8(static_cast<uint32_t>(s));
   }

@@ -7,6 +7,7 @@
 #include "collect_issues.h"
 #include "lower/lower.h"
 #include "runtime/machine.h"
+#include "vm/processes.h"
 #include "vm/vm.h"
 
 namespace ncc {
@@ -658,6 +659,19 @@ TEST(Vm, ComputedJumpWithoutItsBlockIsAnError) {
   auto r = t.run();
   ASSERT_EQ(r.issues.size(), 1u);
   EXPECT_EQ(r.issues[0].id, DiagId::JumpTargetMissing);
+}
+
+// A module runs on the scheduler only when it has a process or calls a process
+// service (WAI for the PLC in a one-process program); any other on one ProgramRun.
+TEST(Vm, OnlyProcessFeaturesNeedTheScheduler) {
+  vm::Module m;
+  m.devices = vm::device_bit(Device::Screen);
+  EXPECT_FALSE(vm::Processes::needed(m));
+  m.devices |= vm::device_bit(Device::Process);
+  EXPECT_TRUE(vm::Processes::needed(m));
+  m.devices = 0;
+  m.entries.push_back({"%2", vm::EntryKind::Process, 0});
+  EXPECT_TRUE(vm::Processes::needed(m));
 }
 
 }  // namespace
