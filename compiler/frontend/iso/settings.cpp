@@ -1,5 +1,6 @@
 #include "settings.h"
 
+#include "frontend/frontend.h"
 #include "support/text.h"
 
 namespace ncc::iso {
@@ -63,6 +64,8 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
   s.power_on.push_back(units == "mm" ? "G21" : "G20");
   if (auto v = p.string("iso.program_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
+  // Decision 33: the machine's own codes (a row replaces the seed's code of its number).
+  ok &= read_machine_codes(p, "iso", "GM", s.tables, diags);
 
   Conventions& c = s.conventions;
   c.arc_centre = ArcCentre::Incremental;  // §8.2: I J K from the arc's start point
