@@ -130,6 +130,9 @@ void Reader::run() {
   if (in_unit_) end_unit();
 }
 
+// Blocks of comments alone (a title line before the O number) are no program yet.
+bool Reader::holds_program(const ir::Block& b) { return !b.words.empty() || !b.stmts.empty(); }
+
 void Reader::take(const Piece& p) {
   if (diags_.limit_reached()) return;
   switch (p.kind) {
@@ -138,9 +141,11 @@ void Reader::take(const Piece& p) {
     case Piece::Close: close_brace(p); break;
   }
   // The blocks read so far go to the sink when nothing refers back to them: no loop
-  // or IF open, no chamfer waiting for its move, the main program's end not yet read.
+  // or IF open, no chamfer waiting for its move, the main program's end not yet read;
+  // and not while they are comments alone, which an O number may still name.
   if (sink_ && in_unit_ && unit_.kind == ir::UnitKind::Program && loops_.empty() && branches_.empty() &&
-      !expect_brace_ && !corner_ && !end_block_)
+      !expect_brace_ && !corner_ && !end_block_ &&
+      (unit_.streamed || std::any_of(unit_.blocks.begin(), unit_.blocks.end(), holds_program)))
     sink_->take(program_, unit_);
 }
 
@@ -539,16 +544,14 @@ void Reader::read(const Piece& piece) {
       return;
     }
     const std::string name = program_name(n);
+    const bool blocks_before = std::any_of(unit_.blocks.begin(), unit_.blocks.end(), holds_program);
     if (called_) {
-      const bool blocks_before = std::any_of(unit_.blocks.begin(), unit_.blocks.end(),
-                                             [](const ir::Block& b) { return !b.words.empty() || !b.stmts.empty(); });
       if (name != *called_ || blocks_before)
         diags_.report(DiagId::ProgramStructure, r,
                       fmt::format("{} stands in the file of {}: a program file holds its own program", name, *called_));
       return;
     }
-    if (unit_.kind == ir::UnitKind::Program && unit_.blocks.empty() && !unit_.streamed && in_unit_ &&
-        unit_.name == "%") {
+    if (unit_.kind == ir::UnitKind::Program && !blocks_before && !unit_.streamed && in_unit_ && unit_.name == "%") {
       unit_.name = name;  // the main program's own number
       unit_.range = r;
       unit_.title = std::move(title);

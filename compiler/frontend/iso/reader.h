@@ -51,6 +51,7 @@ class Reader {
 
   void cut();
   void take(const Piece& piece);
+  static bool holds_program(const ir::Block& b);
   void read(const Piece& piece);
   void load(const Piece& piece);     // the block's text, as the lexer reads it, into sanitized_
   IsoParser::BlockContext* parse();  // sanitized_ by the parser
