@@ -21,6 +21,14 @@ constexpr int kMaxLoopDepth = 3;     // DO1..DO3 (§8.34.3)
 // (decision 3); #0 is always vacant.
 bool variable_exists(uint32_t n) { return n <= 33 || (n >= 100 && n <= 199) || (n >= 500 && n <= 999); }
 
+// A code's value as written agrees with its key (code_key): a number written with a
+// point has one digit after it and is a decimal code (G54.1, not G1. or G01.0).
+bool decimal_form(std::string_view text, int key) {
+  const size_t point = text.find('.');
+  if (point == std::string_view::npos || text.find('[') != std::string_view::npos) return true;
+  return key >= kDecimalCode && point + 2 == text.size();
+}
+
 // G65 argument specification I (§8.16): the letter's local variable; 0 = not an argument.
 uint32_t argument_of(char letter) {
   switch (letter) {
@@ -838,12 +846,20 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       w.kind = ir::WordKind::Code;
       if (!program_.is_constant(e)) {
         w.code = ir::kDynamicCode;  // G#4 (§8.34.1): the code comes at run time
-      } else if (const std::optional<int> n = whole_in(program_.exprs[e].number, 0, 999); !n) {
+      } else if (const std::optional<int> n = code_key(program_.exprs[e].number); !n) {
         diags_.report(DiagId::ValueForm, w.range, w.address, "a code number", w.address + w.text);
         w.kind = ir::WordKind::Ignored;
         block_.has_errors = true;
+      } else if (!decimal_form(raw.text, *n)) {
+        // Decision 52: a point written names a decimal code (G54.1); G1. and G01.0 name none.
+        if (letter == 'G')
+          diags_.report(DiagId::GCodeUndefined, w.range, w.address + w.text);
+        else
+          diags_.report(DiagId::MCodeUndefined, w.range, w.address + w.text);
+        w.kind = ir::WordKind::Ignored;
+        block_.has_errors = true;
       } else {
-        (letter == 'G' ? g : m).set(static_cast<size_t>(*n));
+        if (*n < kDecimalCode) (letter == 'G' ? g : m).set(static_cast<size_t>(*n));
         const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
         auto it = table.find(*n);
         if (it == table.end())
