@@ -1192,11 +1192,32 @@ ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
   const std::string name = c->FUNCTION()->getText();
   auto args = c->expr();
   ir::ExprId a = operand(expr(args[0]));
-  static const std::map<std::string, Builtin> kFunctions = {
-      {"SIN", Builtin::Sin},     {"COS", Builtin::Cos},   {"TAN", Builtin::Tan},   {"ASIN", Builtin::Asin},
-      {"ACOS", Builtin::Acos},   {"ATAN", Builtin::Atan}, {"SQRT", Builtin::Sqrt}, {"ABS", Builtin::Abs},
-      {"ROUND", Builtin::Round}, {"EXP", Builtin::Exp},   {"LN", Builtin::Ln},     {"FIX", Builtin::Trunc},
-      {"FUP", Builtin::Away}};
+  static const std::map<std::string, Builtin> kFunctions = {{"SIN", Builtin::Sin},
+                                                            {"COS", Builtin::Cos},
+                                                            {"TAN", Builtin::Tan},
+                                                            {"ASIN", Builtin::Asin},
+                                                            {"ACOS", Builtin::Acos},
+                                                            {"ATAN", Builtin::Atan},
+                                                            {"SQRT", Builtin::Sqrt},
+                                                            {"ABS", Builtin::Abs},
+                                                            {"ROUND", Builtin::Round},
+                                                            {"EXP", Builtin::Exp},
+                                                            {"LN", Builtin::Ln},
+                                                            {"FIX", Builtin::Trunc},
+                                                            {"FUP", Builtin::Away},
+                                                            // Fanuc's two-letter abbreviations (decision 70).
+                                                            {"SI", Builtin::Sin},
+                                                            {"CO", Builtin::Cos},
+                                                            {"TA", Builtin::Tan},
+                                                            {"AS", Builtin::Asin},
+                                                            {"AC", Builtin::Acos},
+                                                            {"AT", Builtin::Atan},
+                                                            {"SQ", Builtin::Sqrt},
+                                                            {"AB", Builtin::Abs},
+                                                            {"RO", Builtin::Round},
+                                                            {"EX", Builtin::Exp},
+                                                            {"FI", Builtin::Trunc},
+                                                            {"FU", Builtin::Away}};
   Builtin b = kFunctions.at(name);
   ir::ExprId second = ir::kNoExpr;
   if (args.size() == 2) {
