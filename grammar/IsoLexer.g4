@@ -7,18 +7,20 @@
 lexer grammar IsoLexer;
 
 // Keywords are whole words: `GOTO` is not G = OTO, `DO1` is DO and 1 (a word address
-// always has a value right after it, so a keyword never hides one).
+// always has a value right after it, so a keyword never hides one). Fanuc lets a macro
+// statement shorten its words to their first two letters (`WH`, `GO`, `SQ`: decision
+// 70): two letters in a row are never words either.
 IF     : 'IF' ;
-THEN   : 'THEN' ;
-GOTO   : 'GOTO' ;
+THEN   : 'THEN' | 'TH' ;
+GOTO   : 'GOTO' | 'GO' ;
 ELIF   : 'ELIF' ;
 ELSE   : 'ELSE' ;
-WHILE  : 'WHILE' ;
+WHILE  : 'WHILE' | 'WH' ;
 DO     : 'DO' ;
 END    : 'END' ;
-AND    : 'AND' | '&' ;
+AND    : 'AND' | 'AN' | '&' ;
 OR     : 'OR' | '|' ;
-XOR    : 'XOR' ;
+XOR    : 'XOR' | 'XO' ;
 MOD    : 'MOD' ;
 EQ     : 'EQ' | '==' ;
 NE     : 'NE' | '<>' ;
@@ -27,7 +29,8 @@ GE     : 'GE' | '>=' ;
 LT     : 'LT' | '<' ;
 LE     : 'LE' | '<=' ;
 FUNCTION : 'ASIN' | 'SIN' | 'ACOS' | 'COS' | 'ATAN' | 'TAN' | 'SQRT' | 'ABS' | 'ROUND'
-         | 'EXP' | 'LN' | 'FIX' | 'FUP' ;
+         | 'EXP' | 'LN' | 'FIX' | 'FUP'
+         | 'AS' | 'SI' | 'AC' | 'CO' | 'AT' | 'TA' | 'SQ' | 'AB' | 'RO' | 'EX' | 'FI' | 'FU' ;
 
 // N and O with their digits: a block number and a program number (§8.33: OXXXX);
 // ':' is ISO code's other program-number address (decision 53).

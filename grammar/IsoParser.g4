@@ -31,7 +31,8 @@ braceHead   : ( IF | ELIF ) LBRACKET expr RBRACKET | ELSE ;
 whileStmt   : ( WHILE LBRACKET expr RBRACKET )? DO NUMBER ;
 endStmt     : END NUMBER ;
 
-words       : word+ ( COMMA LETTER value )? ;
+// Words may follow the ,C or ,R of a corner (`G01 X10 ,R2 F100`: decision 75).
+words       : word+ ( COMMA LETTER value word* )? ;
 word        : LETTER value ;
 // A value: a number, a variable or a bracketed expression, with an optional sign
 // (`X-#1`, `B-14.2`); a function call stands for itself (`X SIN[30]` is not ISO,

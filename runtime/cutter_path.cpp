@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "corner.h"
@@ -87,8 +88,9 @@ struct CutterPath::State {
   corner::Element element_;  // its programmed element
   int waiting_side_ = 0;
   double waiting_radius_ = 0;
-  bool startup_ = false;  // the start-up line: it ends beside the next move's start
-  Vec from_{0, 0};        // where its offset path starts
+  bool startup_ = false;    // the start-up line: it ends beside the next move's start
+  bool abandoned_ = false;  // the path was given up at an error: the next move restarts it, no start-up
+  Vec from_{0, 0};          // where its offset path starts
 };
 
 CutterPath::CutterPath(TraceSink& out, Report report, void* context, CompRules rules)
@@ -144,6 +146,7 @@ void CutterPath::State::event(const Event& e, const AxisValues* start) {
       side_ = e.n;
       radius_ = e.a;
       switched_at_ = e.source;
+      abandoned_ = false;
     }
     send(e);
     return;
@@ -199,7 +202,10 @@ void CutterPath::State::begin(const Event& move, const corner::Element& el, cons
   // ends beside the next move's start; in a block of its own the tool first goes at a
   // right angle to the offset of this move's start.
   if (move.source == switched_at_) right_angle_ = false;
-  if (move.kind == EventKind::Arc && move.source != switched_at_)  // in G41/G42's own block: the runtime's check
+  // In G41/G42's own block the runtime checks it; after an error (E-12) the arc is no
+  // start-up of the program's, and one cause gets one message (iso decision 74).
+  const bool restart = std::exchange(abandoned_, false);
+  if (move.kind == EventKind::Arc && move.source != switched_at_ && !restart)
     report_(context_, move.source,
             rules_.alarm_codes ? "cutter radius compensation cannot start on an arc (E-11): use a G00 or G01 move"
                                : "cutter radius compensation starts with a G00 or G01 move, not an arc (§2.8.7)");
@@ -426,6 +432,7 @@ void CutterPath::State::join(const Event& move, const corner::Element& programme
 
 // A path that would cut into the part (reported): nothing of it goes on.
 void CutterPath::State::abandon() {
+  abandoned_ = true;
   drop_held();
   waiting_.reset();
   startup_ = false;

@@ -32,13 +32,21 @@ void Machine::OneLevelCycles::no_drilling_axis() {
             fmt::format("plane {}, which has no axis along its normal to drill along,", plane_name(m_.modal_.plane)));
 }
 
+void Machine::OneLevelCycles::cancelled() {
+  registers_ = {};
+  m_.release(DiagId::CycleNoRLevel);
+}
+
 void Machine::OneLevelCycles::registers() {
   Machine& m = m_;
   // The cycle registers stay in force while the cycle is active (S-7.5); any block
   // may change them, the cycle runs only in blocks with a dimension word.
   const char depth_letter = kAxisLetters[m.modal_.plane.w];
   if (m.has(depth_letter)) registers_.depth = m.word(depth_letter);
-  if (auto v = m.word_if(m.conv_.cycle_level_word)) registers_.level = v;
+  if (auto v = m.word_if(m.conv_.cycle_level_word)) {
+    registers_.level = v;
+    m.release(DiagId::CycleNoRLevel);
+  }
   if (auto v = m.word_if(m.conv_.dwell_word)) registers_.dwell = v;
   if (auto v = m.word_if(m.conv_.peck_word)) registers_.peck = v;
 }

@@ -38,7 +38,7 @@ class Machine::CycleEngine : public Strategy {
 class Machine::OneLevelCycles : public CycleEngine {
  public:
   using CycleEngine::CycleEngine;
-  void cancelled() override { registers_ = {}; }
+  void cancelled() override;  // the registers forgotten: a missing R is said again
   void block(bool drills) final;
 
  protected:

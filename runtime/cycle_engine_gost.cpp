@@ -23,7 +23,7 @@ void Machine::GostCycles::drill() {
     ok = false;
   }
   if (!registers_.level) {
-    m.report(DiagId::CycleNoRLevel, 0, pattern.name);
+    m.report_repeated(DiagId::CycleNoRLevel, pattern.name);
     ok = false;
   }
   if (ok && pattern.in == CyclePattern::In::Peck) {

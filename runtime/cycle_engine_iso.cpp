@@ -38,7 +38,7 @@ void Machine::IsoCycles::drill_one() {
   hole[d] = m.kernel_.position()[d];
   bool ok = true;
   if (!registers_.depth) ok = (m.report(DiagId::CycleNoDepth, 0, pattern.name, std::string(1, kAxisLetters[d])), false);
-  if (!registers_.level) ok = (m.report(DiagId::CycleNoRLevel, 0, pattern.name), false);
+  if (!registers_.level) ok = (m.report_repeated(DiagId::CycleNoRLevel, pattern.name), false);
   const bool pecks = pattern.in == In::Peck || pattern.in == In::ChipBreak;
   const bool shifts = pattern.bottom == CyclePattern::Bottom::OrientShift;
   if (ok && pecks && !registers_.peck) ok = (m.report(DiagId::CycleNoPeck, 0, pattern.name, "Q"), false);

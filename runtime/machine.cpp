@@ -55,7 +55,22 @@ std::unique_ptr<CutterPath> Machine::cutter_path(TraceSink& trace) {
   return nullptr;
 }
 
+void Machine::release(DiagId id) {
+  auto it = repeated_.find(id);
+  if (it == repeated_.end()) return;
+  RuntimeIssue i = std::move(it->second.issue);
+  if (const uint32_t more = it->second.more)
+    i.message += fmt::format(" (and {} more block{})", more, more == 1 ? "" : "s");
+  repeated_.erase(it);
+  issues_.issue(i);  // not the block's error: it belongs to the block it names
+}
+
+void Machine::release_repeated() {
+  while (!repeated_.empty()) release(repeated_.begin()->first);
+}
+
 void Machine::end_run(bool stopped_by_error) {
+  release_repeated();
   if (kernel_.holding()) release();
   if (kernel_.path()) kernel_.path()->finish(!stopped_by_error);
 }
@@ -111,7 +126,7 @@ void Machine::reset_state() {
   kernel_.reset_coordinates();
   intermediate_.reset();
   feed_.reset();
-  no_feed_reported_ = false;
+  release_repeated();
   if (conv_.initial_feed > 0) feed_ = conv_.initial_feed;
   last_rotation_ = 0;
   helix_pitch_.reset();
@@ -350,7 +365,7 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       // F means something else in the new mode: it must be programmed again.
       if (mode != modal_.feed_mode) {
         feed_.reset();
-        no_feed_reported_ = false;
+        release(DiagId::NoFeed);
       }
       modal_.feed_mode = mode;
       event(EventKind::FeedMode, modal_.feed_mode);
@@ -608,7 +623,7 @@ void Machine::registers() {
       report(DiagId::FeedRange, 'F', shortest(word('F')), kFeedModes[modal_.feed_mode], shortest(range[0]),
              shortest(range[1]));
     feed_ = word('F');
-    no_feed_reported_ = false;
+    release(DiagId::NoFeed);
     Event e{EventKind::FeedRate};
     e.a = *feed_;
     emit(e);

@@ -216,6 +216,19 @@ class Machine final : public BlockMachine {
     issues_.issue(i);
     if (diag_info(i.id).severity == Severity::Error) block_.error = true;
   }
+  // A problem every block has until something changes (no F: NC4001, no R: NC4018) is
+  // said once, at its first block, with how many more blocks had it: held until the
+  // change (release) or the end of the run.
+  template <typename... Args>
+  void report_repeated(DiagIdFor<Args...> id, const Args&... args) {
+    if (auto it = repeated_.find(id.id()); it != repeated_.end())
+      ++it->second.more;
+    else
+      repeated_.emplace(id.id(), Repeated{{id.id(), diag_message(id, args...), source(), -1, -1}});
+    block_.error = true;
+  }
+  void release(DiagId id);
+  void release_repeated();  // all of them
 
   // The block cycle (machine.cpp).
   void reset_state();
@@ -410,9 +423,13 @@ class Machine final : public BlockMachine {
   void corner_finish(bool another, size_t block_from);
   void corner_codes();  // E-06: what the block after a corner may hold
   void release();
-  std::optional<double> feed_;         // mm/min, mm/rev, or 1/min (inverse time) as programmed
-  bool no_feed_reported_ = false;      // NC4001 said for the blocks since the last F or feed mode
-  std::optional<double> helix_pitch_;  // pp G10 K: the pitch of the helices after it
+  std::optional<double> feed_;  // mm/min, mm/rev, or 1/min (inverse time) as programmed
+  struct Repeated {
+    RuntimeIssue issue;
+    uint32_t more = 0;  // blocks after the first that had it
+  };
+  std::map<DiagId, Repeated> repeated_;  // report_repeated's, not yet said
+  std::optional<double> helix_pitch_;    // pp G10 K: the pitch of the helices after it
   double speed_ = 0;
   int tool_selected_ = 0;
   int corrector_selected_ = 0;

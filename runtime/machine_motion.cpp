@@ -117,10 +117,7 @@ bool Machine::need_feed(const char* what, const AxisValues& t) {
     report(DiagId::InverseTimeNoFeed, 0);
   } else if (!feed_) {
     // Once until an F or another feed mode: the blocks after it lack the same F.
-    if (!std::exchange(no_feed_reported_, true))
-      report(DiagId::NoFeed, 0, what);
-    else
-      block_.error = true;  // said already: the block's words stay unused quietly
+    report_repeated(DiagId::NoFeed, what);
   } else if (modal_.feed_mode == 2 && spindle_rpm() <= 0) {
     report(DiagId::FeedNoSpindle, 0, what);
   } else {

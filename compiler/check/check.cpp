@@ -37,6 +37,12 @@ struct BlockScratch {
     if (c == 0) letters += letter;
     return c;
   }
+  // `key`'s word is `w` from now on.
+  template <typename Key>
+  static void replace(std::vector<std::pair<Key, const ir::Word*>>& seen, Key key, const ir::Word* w) {
+    for (auto& [k, word] : seen)
+      if (k == key) word = w;
+  }
   // The word of `key` seen first, after making `w` it if there was none.
   template <typename Key>
   static const ir::Word* first_of(std::vector<std::pair<Key, const ir::Word*>>& seen, Key key, const ir::Word* w) {
@@ -78,8 +84,9 @@ void report_with_note(const ir::Program& p, Diagnostics& diags, DiagIdFor<Args..
     d->notes.push_back({first.range, fmt::format("{} is here", word_text(p, first))});
 }
 
-void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block& block, BlockScratch& seen,
+void check_block(const ir::Program& p, const CheckRules& rules, ir::Block& block, BlockScratch& seen,
                  Diagnostics& diags) {
+  std::vector<size_t> superseded;  // codes a later one of their group replaces (group_last_wins)
   seen.clear();
   const ir::Word* feed = nullptr;
   const ir::Word* previous = nullptr;  // for the word order
@@ -156,9 +163,17 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
         } else if (addr->second.repeat == stdlib::Repeat::Group) {
           // Block-only codes without a group letter count as their own group (§2.5).
           std::string_view group = entry->group == "-" ? entry->desc.name : entry->group;
-          if (const ir::Word* other = BlockScratch::first_of(seen.groups, group, &w); other != &w)
-            report_with_note(p, diags, DiagId::GroupConflict, w, *other, word_text(p, *other), word_text(p, w),
-                             std::string(group));
+          if (const ir::Word* other = BlockScratch::first_of(seen.groups, group, &w); other != &w) {
+            if (rules.group_last_wins && group != "00") {
+              report_with_note(p, diags, DiagId::GroupLastWins, w, *other, word_text(p, *other), word_text(p, w),
+                               std::string(group));
+              superseded.push_back(static_cast<size_t>(other - block.words.data()));
+              BlockScratch::replace(seen.groups, group, &w);
+            } else {
+              report_with_note(p, diags, DiagId::GroupConflict, w, *other, word_text(p, *other), word_text(p, w),
+                               std::string(group));
+            }
+          }
         } else {
           count_several(w);
           // The same code twice is a word too many; two codes of one set contradict.
@@ -177,6 +192,7 @@ void check_block(const ir::Program& p, const CheckRules& rules, const ir::Block&
       }
     }
   }
+  for (size_t i : superseded) block.words[i].kind = ir::WordKind::Ignored;
 }
 
 const ir::Word& number_word(const ir::Block& b) {
@@ -206,7 +222,7 @@ namespace {
 // Jumps stay within their unit; calls name a unit or main block of the medium (the
 // names lowering gives entry points). A call the front end could not resolve it has
 // reported already.
-void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules& rules, const StreamChecks* streamed,
+void check_targets(ir::Program& program, ir::Unit& unit, const CheckRules& rules, const StreamChecks* streamed,
                    Diagnostics& diags) {
   std::set<std::string> labels, entries;
   if (streamed) entries = streamed->entries();
@@ -236,7 +252,14 @@ void check_targets(const ir::Program& program, ir::Unit& unit, const CheckRules&
   auto undefined = [&](const std::string& label) { return !unread && !labels.count(label); };
   for (ir::Block& b : unit.blocks) {
     uint32_t errors = diags.error_count();
-    for (const ir::Stmt& s : b.stmts) {
+    for (ir::Stmt& s : b.stmts) {
+      if (s.kind == ir::StmtKind::Jump && !s.label.empty() && undefined(s.label) && rules.absent_jump_runs &&
+          s.label.starts_with("N")) {
+        diags.report(DiagId::JumpTargetAbsent, s.range, s.label);
+        s.value = program.number(std::stod(s.label.substr(1)), s.range);  // NC4081 if it is taken
+        s.label.clear();
+        continue;
+      }
       if (s.kind == ir::StmtKind::Jump && !s.label.empty() && undefined(s.label))
         diags.report(DiagId::LabelUndefined, s.range, "jump to", s.label);
       if (s.kind == ir::StmtKind::CallRange) {

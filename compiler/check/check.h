@@ -24,6 +24,13 @@ struct CheckRules {
   bool recursion = false;          // a unit may call itself (Macro B: a condition ends it)
   bool block_ranges = false;       // a label may end a block range (NC-110 EPP): code follows its block
   uint8_t processes = 1;           // processes that run programs side by side (NC-110 chapter 4: 5)
+  // A jump to a block number no block has is an alarm only when it is taken (Fanuc,
+  // iso decision 73): a warning here, and the jump looks for its number at run time.
+  bool absent_jump_runs = false;
+  // Two codes of one modal group in a block: the last is in force and the others are
+  // dropped with a warning (Fanuc, iso decision 75); one-shot codes (group "00") still
+  // may not share a block. Else NC3002.
+  bool group_last_wins = false;
 };
 
 // The block numbers of a unit in order: a number used again, or lower than the one

@@ -608,6 +608,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   ir::Program program =
       frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(program, frontend->rules(), s.diags, &stream.checks);
+  s.library_input = program.library;
   return verified(s, file, stream.lowering.finish(program, *s.profile));
 }
 
@@ -619,6 +620,7 @@ std::optional<vm::Module> compile_source(Session& s, uint32_t file, const std::s
   stream.lowering.expect(s.sources.file(file).text().size());
   rest = frontend->read(s.sources, file, s.diags, {s.library, s.fast_path, s.stream ? &stream : nullptr, s.processes});
   if (!s.diags.limit_reached()) check(rest, frontend->rules(), s.diags, &stream.checks);
+  s.library_input = rest.library;
   return verified(s, file, stream.lowering.finish(rest, *s.profile));
 }
 
@@ -648,6 +650,7 @@ std::vector<FnCall> power_on_functions(Session& s, const std::string& dialect, c
 vm::Module lower_program(Session& s, const ir::Program& program) { return lower(program, s.sources, *s.profile); }
 
 void dry_run(Session& s, const vm::Module& module, const RunSettings& settings) {
+  if (s.library_input) return;  // its programs run when a caller calls them (decision 71 of iso)
   NullSink none;
   (void)execute(s, module, settings, none, true);  // its problems are the session's diagnostics
 }

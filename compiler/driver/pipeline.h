@@ -2,6 +2,7 @@
 //   source --front end--> IR --checks--> IR --lowering--> module --VM + runtime--> trace
 // `ncc check` adds a dry run: the program runs on the runtime with no trace and
 // every run-time problem it meets becomes a diagnostic (recovering, not stopping).
+// A library of callable programs gets none: only a caller gives them their arguments.
 #pragma once
 
 #include <optional>
@@ -25,8 +26,9 @@ struct Session {
   std::optional<stdlib::Profile> profile;
   std::string library;                                     // --lib: where called programs are found
   std::vector<std::pair<uint8_t, std::string>> processes;  // --process N=NAME (NC-110 SPG)
-  bool fast_path = true;  // --no-fast-path: every block through the ANTLR parser (to compare)
-  bool stream = true;     // --no-stream: hold the whole IR before checking and lowering (to compare)
+  bool fast_path = true;       // --no-fast-path: every block through the ANTLR parser (to compare)
+  bool stream = true;          // --no-stream: hold the whole IR before checking and lowering (to compare)
+  bool library_input = false;  // the program read is a library of callable programs (ir::Program::library)
 
   explicit Session(uint32_t error_limit = 100) : diags(error_limit) {}
 };

@@ -240,6 +240,9 @@ struct Program {
   std::vector<Expr> exprs;
   std::vector<std::string> texts;  // string constants
   std::vector<Unit> units;
+  // The file holds callable programs only (iso: O programs ending in M99, decision 71):
+  // `ncc check` checks them without running one with no caller's arguments.
+  bool library = false;
 
   ExprId add(Expr e) {
     exprs.push_back(e);

@@ -283,6 +283,7 @@ void Reader::start_unit(ir::UnitKind kind, std::string name, SourceRange r) {
 }
 
 void Reader::end_unit() {
+  if (unit_.kind == ir::UnitKind::Program) end_main();
   for (const Loop& l : loops_) {
     diags_.report(DiagId::RepeatUnbalanced, l.range, fmt::format("DO{} has no END{} in its program", l.index, l.index));
     unit_.blocks[l.do_block].has_errors = true;  // its jump out has nowhere to go
@@ -571,7 +572,7 @@ void Reader::read(const Piece& piece) {
       unit_.title = std::move(title);
       return;
     }
-    if (unit_.kind == ir::UnitKind::Program && !main_done_)
+    if (unit_.kind == ir::UnitKind::Program && !main_done_ && !main_is_macro())
       diags_.report(DiagId::ProgramStructure, r,
                     fmt::format("{} starts before the main program ends: subprograms and macros follow M02/M30", name));
     for (const ir::Unit& u : program_.units)
@@ -674,6 +675,26 @@ void Reader::finish_read(size_t index) {
   block_.has_errors = block_.has_errors || target.has_errors;
   target = std::move(block_);
   block_ = ir::Block{};
+  if (unit_.kind == ir::UnitKind::Program && !main_done_ && !target.stmts.empty())
+    main_returns_last_ = std::any_of(target.stmts.begin(), target.stmts.end(), [](const ir::Stmt& st) {
+      return st.kind == ir::StmtKind::Return && st.cond == ir::kNoExpr;
+    });
+}
+
+// Decision 71: a file whose first program is an O program ending in M99 (no M02/M30)
+// is a library of macros, as Fanuc keeps O9xxx: its programs are called, not run.
+bool Reader::main_is_macro() const {
+  return !called_ && unit_.kind == ir::UnitKind::Program && unit_.name != "%" && !main_done_ && main_returns_last_;
+}
+
+// The main program ends (another O or the end of the file): a macro's M99 returns, a
+// main program's ends the run (NC3044).
+void Reader::end_main() {
+  if (main_is_macro())
+    program_.library = true;
+  else
+    for (const SourceRange& r : main_returns_) diags_.report(DiagId::ReturnInMain, r);
+  main_returns_.clear();
 }
 
 void Reader::number_block(const std::string& digits, SourceRange r, size_t index) {
@@ -957,7 +978,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     block_.stmts.push_back(std::move(s));
   }
   if (m.test(99)) {
-    if (unit_.kind == ir::UnitKind::Program && !main_done_) diags_.report(DiagId::ReturnInMain, block_.range);
+    if (unit_.kind == ir::UnitKind::Program && !main_done_) main_returns_.push_back(block_.range);
     ir::Stmt s{ir::StmtKind::Return, block_.range};
     s.cond = cond;
     block_.stmts.push_back(std::move(s));
@@ -1225,11 +1246,32 @@ ir::ExprId Reader::primary(IsoParser::PrimaryContext* ctx) {
   const std::string name = c->FUNCTION()->getText();
   auto args = c->expr();
   ir::ExprId a = operand(expr(args[0]));
-  static const std::map<std::string, Builtin> kFunctions = {
-      {"SIN", Builtin::Sin},     {"COS", Builtin::Cos},   {"TAN", Builtin::Tan},   {"ASIN", Builtin::Asin},
-      {"ACOS", Builtin::Acos},   {"ATAN", Builtin::Atan}, {"SQRT", Builtin::Sqrt}, {"ABS", Builtin::Abs},
-      {"ROUND", Builtin::Round}, {"EXP", Builtin::Exp},   {"LN", Builtin::Ln},     {"FIX", Builtin::Trunc},
-      {"FUP", Builtin::Away}};
+  static const std::map<std::string, Builtin> kFunctions = {{"SIN", Builtin::Sin},
+                                                            {"COS", Builtin::Cos},
+                                                            {"TAN", Builtin::Tan},
+                                                            {"ASIN", Builtin::Asin},
+                                                            {"ACOS", Builtin::Acos},
+                                                            {"ATAN", Builtin::Atan},
+                                                            {"SQRT", Builtin::Sqrt},
+                                                            {"ABS", Builtin::Abs},
+                                                            {"ROUND", Builtin::Round},
+                                                            {"EXP", Builtin::Exp},
+                                                            {"LN", Builtin::Ln},
+                                                            {"FIX", Builtin::Trunc},
+                                                            {"FUP", Builtin::Away},
+                                                            // Fanuc's two-letter abbreviations (decision 70).
+                                                            {"SI", Builtin::Sin},
+                                                            {"CO", Builtin::Cos},
+                                                            {"TA", Builtin::Tan},
+                                                            {"AS", Builtin::Asin},
+                                                            {"AC", Builtin::Acos},
+                                                            {"AT", Builtin::Atan},
+                                                            {"SQ", Builtin::Sqrt},
+                                                            {"AB", Builtin::Abs},
+                                                            {"RO", Builtin::Round},
+                                                            {"EX", Builtin::Exp},
+                                                            {"FI", Builtin::Trunc},
+                                                            {"FU", Builtin::Away}};
   Builtin b = kFunctions.at(name);
   ir::ExprId second = ir::kNoExpr;
   if (args.size() == 2) {

@@ -139,6 +139,12 @@ class Reader {
   bool main_done_ = false;           // the main program has ended (M02/M30): O units may follow
   int digits_told_ = 0;              // the note on iso.program_number_digits was given
   std::optional<size_t> end_block_;  // the main program's M02/M30 block
+  // The main program's M99s, reported (NC3044) unless it is a macro of a library
+  // (decision 71): an O program whose last acting block is M99, with no M02/M30.
+  std::vector<SourceRange> main_returns_;
+  bool main_returns_last_ = false;  // the main program's last acting block so far is M99
+  bool main_is_macro() const;
+  void end_main();
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;
   bool expect_brace_ = false;  // a multi-line IF head waits for its '{'
