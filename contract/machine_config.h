@@ -126,8 +126,9 @@ struct MachineConfig {
   std::map<int, OffsetEntry> offsets;  // D/H offset numbers, NC-110 correctors
   std::array<AxisConfig, kAxisCount> axes = default_axes();
   AxisValues initial_position{};
-  AxisValues reference_position{};  // the machine's reference point (pp G30)
-  bool block_skip = false;          // run-time switches
+  AxisValues reference_position{};               // the machine's reference point (pp G30)
+  std::array<AxisValues, 3> other_references{};  // the 2nd to 4th reference points (ISO G30 P2..P4)
+  bool block_skip = false;                       // run-time switches
   bool optional_stop = false;
   bool spindle_encoder = true;         // threading and rigid tapping need one
   double max_rpm = 0;                  // constant cutting speed stays below (0: no limit)

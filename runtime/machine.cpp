@@ -512,6 +512,13 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
     case Fn::MeasureDeviation:
       if (!cycle_active()) block_.measure = call.fn;
       break;
+    case Fn::MotionSkip:
+      // Fanuc G31 (decision 66): alarm PS0035 under cutter compensation.
+      if (modal_.comp != 0)
+        report_code(DiagId::PlaneState, block_.code_name, "cutter radius compensation (G41/G42)");
+      else if (!cycle_active())
+        block_.measure = call.fn;
+      break;
     case Fn::SpindleRangeForce:
     case Fn::SpindleRangeCancel:
     case Fn::SpindleRangeAuto:
@@ -525,6 +532,18 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
       block_.reference_trip = call.fn == Fn::ReferenceReturn ? 1 : 2;
       break;
+    case Fn::ReferenceReturnNth: {
+      // Fanuc G30 (decision 65): P2, P3 or P4 (P2 without P) names the reference point.
+      if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
+      const int n = has('P') ? whole_in(word('P'), 2, 4).value_or(0) : 2;
+      block_.used.set(letter_slot('P'));
+      if (n == 0)
+        report(DiagId::OperandValue, 'P', fmt::format("P of {}", block_.code_name), shortest(word('P')),
+               "2, 3 or 4: the second, third or fourth reference point");
+      else
+        block_.reference_trip = n + 1;
+      break;
+    }
     case Fn::OffsetLocal:
       if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
       block_.local_offset = true;
@@ -922,7 +941,7 @@ void Machine::action() {
   const bool axes = has_axis_word();
   if (axes && (modal_.motion == Fn::MotionArcCw || modal_.motion == Fn::MotionArcCcw)) rules_->check_arc();
   if (block_.measure != Fn::Count) {
-    measure();
+    block_.measure == Fn::MotionSkip ? skip() : measure();
     return;
   }
   // A dwell that shares its block with a move: after it (ISO §8.4), or instead of it.
@@ -955,7 +974,12 @@ void Machine::action() {
     return;
   }
   if (block_.reference_trip) {
-    block_.reference_trip == 1 ? reference_return() : reference_leave();
+    if (block_.reference_trip == 2)
+      reference_leave();
+    else
+      reference_return(block_.reference_trip == 1
+                           ? config_.reference_position
+                           : config_.other_references[static_cast<size_t>(block_.reference_trip - 3)]);
     return;
   }
   if (block_.local_offset) {

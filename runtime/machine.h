@@ -149,19 +149,20 @@ class Machine final : public BlockMachine {
     int stop = 0;               // 1 program stop, 2 optional stop taken, 3 skipped
     int code = -1;              // the code being applied, for messages about it
     std::string code_name;
-    int block_offset = -1;            // a block-only preset offset (G53): the frame of this block's targets
-    std::vector<FnCall> restore;      // modal functions to restore after a block-only code
-    bool moved = false;               // the block made a feed move
-    bool rapid_moved = false;         // ... a rapid move
-    uint32_t moves = 0;               // the moves it made
-    bool operands = false;            // a three-letter function took the block's words
-    bool reference = false;           // pp G30: the named axes go to the reference point
-    bool offset_load = false;         // pp G92: the axis words load a work offset
-    bool comp_load = false;           // pp G93: D names the compensation entry to load
-    int load_entry = -1;              // ... the one the block names (-1: the active one)
-    int reference_trip = 0;           // 1 to the reference point by the intermediate one (ISO G28), 2 back (G29)
-    bool local_offset = false;        // ISO G52: the axis words shift the work zero
-    bool set_position_after = false;  // ISO G92 after a motion: its values are the second words
+    int block_offset = -1;        // a block-only preset offset (G53): the frame of this block's targets
+    std::vector<FnCall> restore;  // modal functions to restore after a block-only code
+    bool moved = false;           // the block made a feed move
+    bool rapid_moved = false;     // ... a rapid move
+    uint32_t moves = 0;           // the moves it made
+    bool operands = false;        // a three-letter function took the block's words
+    bool reference = false;       // pp G30: the named axes go to the reference point
+    bool offset_load = false;     // pp G92: the axis words load a work offset
+    bool comp_load = false;       // pp G93: D names the compensation entry to load
+    int load_entry = -1;          // ... the one the block names (-1: the active one)
+    int reference_trip =
+        0;  // 1 to the reference point by the intermediate one (ISO G28), 2 back (G29), n + 1 to the n-th (G30 P2..P4)
+    bool local_offset = false;                     // ISO G52: the axis words shift the work zero
+    bool set_position_after = false;               // ISO G92 after a motion: its values are the second words
     bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
     bool cycle_set = false;                        // a cycle code stands in the block
     int comp_before = 0;                           // the cutter compensation when the block started
@@ -294,16 +295,16 @@ class Machine final : public BlockMachine {
   [[nodiscard]] bool path_allowed(const std::vector<AxisValues>& path);
   [[nodiscard]] bool position_in_range(int axis, double v);  // false (reported) beyond any machine's reach
   void set_position();
-  void load_offset();             // pp G92
-  void load_compensation();       // pp G93
-  void reference_approach();      // pp G30
-  void reference_return();        // ISO G28
-  void reference_leave();         // ISO G29
-  void set_local_offset();        // ISO G52
-  void length_zeroed(bool zero);  // ISO G28/G29: the length offset's event, zero or back
-  void scaling_on();              // ISO G51
-  void rotation_on();             // ISO G68
-  bool block_has(Fn fn) const;    // a code of the block calls fn
+  void load_offset();                              // pp G92
+  void load_compensation();                        // pp G93
+  void reference_approach();                       // pp G30
+  void reference_return(const AxisValues& point);  // ISO G28, G30
+  void reference_leave();                          // ISO G29
+  void set_local_offset();                         // ISO G52
+  void length_zeroed(bool zero);                   // ISO G28/G29: the length offset's event, zero or back
+  void scaling_on();                               // ISO G51
+  void rotation_on();                              // ISO G68
+  bool block_has(Fn fn) const;                     // a code of the block calls fn
   void position_offset_event();
 
   // Motions (machine_motion.cpp).
@@ -382,6 +383,7 @@ class Machine final : public BlockMachine {
                   std::optional<double> pitch = std::nullopt);
   void tap_feed(const AxisValues& t, bool out, int d, std::optional<double> pitch);
   void measure();
+  void skip();  // Fanuc G31
 
   const ProgramSemantics& sem_;
   const Conventions& conv_;
@@ -447,9 +449,10 @@ class Machine final : public BlockMachine {
   bool profile_running_ = false;  // a G27/G28 profile is running: no M, S or T
   bool graphic_cleared_ = false;  // CLG since the last UCG (DCG comes after it)
   Spline spline_;
-  uint64_t spline_bytes() const;  // of its points (held_bytes)
-  size_t next_contact_ = 0;       // the simulated probe's next contact
-  ProbeConfig probe_;             // the probe's distances and speed (DPT changes them)
+  uint64_t spline_bytes() const;             // of its points (held_bytes)
+  size_t next_contact_ = 0;                  // the simulated probe's next contact
+  std::optional<AxisValues> skip_position_;  // where G31's skip signal came, work coordinates
+  ProbeConfig probe_;                        // the probe's distances and speed (DPT changes them)
   struct Unusable {
     std::string why;        // "TOF", "RQU: ..."
     bool reported = false;  // selected with no sister left: said once

@@ -235,4 +235,51 @@ void Machine::measure() {
   }
 }
 
+// Fanuc G31 (decision 66): a feed move at F towards the words' point, which the
+// simulated probe's next contact (docs/profile.md [probe]) ends where the controlled
+// point reaches it (at the end point when the list has run out); the skip position,
+// in work coordinates, is #5061-#5066. A contact off the move (or "none") lets it run
+// to its point, which is then the skip position, as on Fanuc (no alarm: the program
+// tests the position).
+void Machine::skip() {
+  if (!has_axis_word())
+    return report_code(DiagId::ProbeSetup, block_.code_name,
+                       "the axis words of the point it moves towards are missing");
+  const AxisValues start = kernel_.position(), end = target();
+  if (!need_feed("the skip move (G31)", end)) return;
+  const size_t index = next_contact_++;
+  const ProbeContact* contact = index < probe_.contacts.size() ? &probe_.contacts[index] : nullptr;
+  if (contact && contact->kind == ProbeContact::Kind::Circle)
+    return report_code(
+        DiagId::ProbeSetup, block_.code_name,
+        fmt::format("the next probe contact (probe.contacts[{}]) is a circle; G31 needs a point", index));
+  double length = 0;
+  for (int i = 0; i < kAxisCount; ++i) length += (end[i] - start[i]) * (end[i] - start[i]);
+  length = std::sqrt(length);
+  // The contact: the point of the move nearest the contact's axes (the others at the
+  // end point), when it lies on the move.
+  AxisValues at = end;
+  bool touched = !contact;  // the list has run out: contact at the end point
+  if (contact && contact->kind == ProbeContact::Kind::Point && length > 0) {
+    AxisValues surface = end;
+    for (int i = 0; i < kAxisCount; ++i)
+      if (contact->axes & (1u << i)) surface[i] = contact->point[i];
+    double s = 0;
+    for (int i = 0; i < kAxisCount; ++i) s += (surface[i] - start[i]) * (end[i] - start[i]) / length;
+    if (s >= 0 && s <= length) {
+      touched = true;
+      for (int i = 0; i < kAxisCount; ++i) at[i] = start[i] + (end[i] - start[i]) * s / length;
+    }
+  }
+  if (!path_allowed({start, at})) return move_to(at);
+  double travel = 0;
+  for (int i = 0; i < kAxisCount; ++i) travel += (at[i] - start[i]) * (at[i] - start[i]);
+  kernel_.advance_clock(feed_time(std::sqrt(travel)));
+  Event event = motion_event(EventKind::Probe, at);
+  event.n = touched;
+  emit(event);
+  move_to(at);
+  skip_position_ = motion_event(EventKind::Linear, at).pos;
+}
+
 }  // namespace ncc

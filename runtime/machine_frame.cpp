@@ -186,22 +186,23 @@ void Machine::set_local_offset() {
   position_offset_event();
 }
 
-void Machine::reference_return() {
+void Machine::reference_return(const AxisValues& point) {
   // ISO §8.8: the named axes go at rapid through the point the words give (read in
   // G90/G91, in the work system) to the reference point; without words every axis
   // goes there directly. The length offset is zeroed on the way to the reference
-  // point (G49 in the block: already on the way to the intermediate point).
+  // point (G49 in the block: already on the way to the intermediate point). G30
+  // goes so to its P-th point (decision 65).
   AxisValues t = kernel_.position();
   const bool offset = compensation().length != AxisValues{};
   if (!has_axis_word()) {
     intermediate_.reset();
-    t = config_.reference_position;
+    t = point;
   } else {
     const AxisValues mid = target();
     intermediate_ = mid;
     if (mid != kernel_.position()) rapid(mid);
     for (char letter : conv_.axes)
-      if (has(letter)) t[axis_index(letter)] = config_.reference_position[axis_index(letter)];
+      if (has(letter)) t[axis_index(letter)] = point[axis_index(letter)];
   }
   if (offset) length_zeroed(true);
   if (t != kernel_.position()) rapid(t);

@@ -44,6 +44,7 @@ double Machine::system(SysRef ref) const {
     case SysVar::Position: {
       const int axis = ref.index % 16, kind = ref.index / 16;
       if (axis >= kAxisCount) return 0;
+      if (kind == 3) return skip_position_ ? (*skip_position_)[axis] : std::numeric_limits<double>::quiet_NaN();
       const AxisValues p = kind == 1 ? kernel_.position() : motion_event(EventKind::Linear, kernel_.position()).pos;
       return kind == 1 ? program_axis(axis, p[axis]) : p[axis];
     }

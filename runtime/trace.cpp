@@ -660,6 +660,10 @@ class CanonWriter final : public TraceWriter {
     return write(b, fmt::format("DWELL({})", canon_number(seconds)));
   }
   Reply path_mode(const api::Block& b, api::PathMode m) override {
+    // LinuxCNC's motion control modes: exact stop (its G61.1) and blending (G64).
+    if (m == api::PathMode::PointToPoint) return write(b, "SET_MOTION_CONTROL_MODE(CANON_EXACT_STOP)");
+    if (m == api::PathMode::Continuous || m == api::PathMode::Smooth)
+      return write(b, "SET_MOTION_CONTROL_MODE(CANON_CONTINUOUS, 0.000000)");
     return write(b, fmt::format("COMMENT(\"ncc: path {}\")", kPathModes[ordinal(m)]));
   }
   Reply tool_select(const api::Block& b, int tool) override { return write(b, fmt::format("SELECT_TOOL({})", tool)); }

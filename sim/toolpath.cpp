@@ -86,7 +86,12 @@ void ToolpathSink::event(const Event& e) {
       if (e.kind == EventKind::End || e.n != 2)
         path_.pauses.push_back({Pause::Kind::Stop, e.process, count(), e.source, run_});
       break;
-    case EventKind::PathMode: exact_stop_ = e.n == 6; break;
+    case EventKind::PathMode:
+      // Modes 4-7 are modal (point-to-point: exact stop, G61); a decelerate (G09)
+      // stops at the end of its own block's moves only.
+      if (e.n >= 4) exact_stop_ = e.n == 6;
+      if (e.n == 1) decelerate_run_ = run_;
+      break;
     case EventKind::WorkOffset:
     case EventKind::Origin: {
       OffsetChange change{count(), e.kind == EventKind::Origin ? -1 : e.n, e.pos};
@@ -142,7 +147,7 @@ void ToolpathSink::add_move(const Event& e, bool programmed) {
   m.run = run_;
   m.start = at;
   m.end = scaled(e.pos);
-  m.exact_stop = exact_stop_;
+  m.exact_stop = exact_stop_ || decelerate_run_ == run_;
   switch (e.kind) {
     case EventKind::Rapid: m.kind = MoveKind::Rapid; break;
     case EventKind::Linear:

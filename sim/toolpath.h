@@ -123,8 +123,9 @@ class ToolpathSink final : public TraceSink {
   double feed_rate_ = 0, rpm_ = 0;
   bool feed_reduced_ = false, exact_stop_ = false, spindle_on_ = false, flushed_ = false;
   int tool_ = 0;
-  uint32_t run_ = 0;    // the block events so far
-  AxisValues at_[8]{};  // where each process's tool stands; NC-110 has 5
+  uint32_t run_ = 0;               // the block events so far
+  uint32_t decelerate_run_ = ~0u;  // the block run that decelerates to a stop (G09)
+  AxisValues at_[8]{};             // where each process's tool stands; NC-110 has 5
   AxisValues programmed_at_[8]{};
   std::vector<bool> errors_;
 };

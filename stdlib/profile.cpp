@@ -482,6 +482,9 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   }
   axis_values(p, "machine.initial_position", m.initial_position, diags);
   axis_values(p, "machine.reference_position", m.reference_position, diags);
+  for (int n = 2; n <= 4; ++n)
+    axis_values(p, fmt::format("machine.reference_position_{}", n), m.other_references[static_cast<size_t>(n - 2)],
+                diags);
   for (const std::string& key : p.keys("work_offsets")) {
     auto n = table_number(p, "work_offsets", key, diags);
     std::string base = "work_offsets." + key;

@@ -48,6 +48,11 @@ Flattener::Flattener(Writer& writer, const ProgramSemantics& source, const Machi
   if (source.conventions.initial_feed > 0) feed_programmed_ = source.conventions.initial_feed;  // ISO iso.initial_feed
 }
 
+void Flattener::set_target_power_on(const std::vector<FnCall>& calls) {
+  for (const FnCall& c : calls)
+    if (fn_group(c.fn) == FnGroup::Dynamics) told_.dynamics = c.fn;
+}
+
 std::optional<Flattener::Code> Flattener::code_for(FnCall call, const std::function<bool(FnCall)>& fits) const {
   std::optional<Code> best;
   size_t best_rank = SIZE_MAX;
@@ -258,12 +263,16 @@ void Flattener::sync_state(uint32_t source) {
       if (target_offset_ < 0) target_offset_ = 0;
     }
   }
-  if (want_.dynamics && told_.dynamics != want_.dynamics) {
-    if (code_for({*want_.dynamics}, any_fits))
+  if (want_.dynamics && told_.dynamics != want_.dynamics && dropped_dynamics_ != want_.dynamics) {
+    // A mode the target cannot say leaves it in the one it was told (and a later
+    // return to that one needs no code).
+    if (code_for({*want_.dynamics}, any_fits)) {
       write_alone(source, {*want_.dynamics}, "the path mode");
-    else
+      told_.dynamics = want_.dynamics;
+    } else {
       drop(source, fmt::format("the path mode {}", fn_name(*want_.dynamics)));
-    told_.dynamics = want_.dynamics;
+      dropped_dynamics_ = want_.dynamics;
+    }
   }
   if (want_.tool >= 0 && told_.tool != want_.tool) {  // a tool selected ahead of its change
     emit_block({{'T', static_cast<double>(want_.tool), Value::Count}});

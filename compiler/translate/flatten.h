@@ -36,6 +36,8 @@ class Flattener final : public TraceSink {
   Flattener(Writer& writer, const ProgramSemantics& source, const MachineConfig& target_machine,
             std::function<void(const Refusal&)> report);
   void event(const Event& e) override;
+  // The target's power-on functions: the path mode it starts in needs no code.
+  void set_target_power_on(const std::vector<FnCall>& calls);
   // After the run: the start if no block was written, and the writer's end (a
   // target that must end with M02 adds it when the run made no end).
   void finish();
@@ -110,9 +112,10 @@ class Flattener final : public TraceSink {
     std::optional<AxisValues> position;  // as written
   };
   Told told_;
-  std::vector<OutWord> block_codes_;  // codes of one block only, for the next move
-  AxisValues start_{};                // where the target machine starts, in its frame at the first move
-  int target_offset_ = -1;            // the work offset the target has selected (-1: none yet)
+  std::optional<Fn> dropped_dynamics_;  // a path mode the target has no code for, said once
+  std::vector<OutWord> block_codes_;    // codes of one block only, for the next move
+  AxisValues start_{};                  // where the target machine starts, in its frame at the first move
+  int target_offset_ = -1;              // the work offset the target has selected (-1: none yet)
 };
 
 }  // namespace ncc::translate

@@ -48,6 +48,8 @@ bool flatten(Session& s, const vm::Module& module, const Request& request, std::
     else if (it->second.source != r.source)
       ++it->second.more;
   });
+  if (request.to != "linuxcnc")
+    flattener.set_target_power_on(power_on_functions(s, request.to, *request.target_profile));
   writer->begin(request.header);
   Streaming sink(flattener, *writer, out);
   RunSettings run = request.run;

@@ -1,5 +1,6 @@
 #include "reader.h"
 
+#include <algorithm>
 #include <bitset>
 #include <charconv>
 #include <cmath>
@@ -951,13 +952,19 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     if (literal_integer[i - first]) w.value = program_.number(program_.exprs[w.value].number / 1000, w.range);
   };
   const bool dwell_block = g.test(4);
+  // A machine's G30 (decision 65): P numbers the reference point.
+  const bool p_number = std::any_of(s_.tables.g_codes.begin(), s_.tables.g_codes.end(), [&](const auto& entry) {
+    const auto& calls = entry.second.desc.calls;
+    return g.test(static_cast<size_t>(entry.first)) &&
+           std::any_of(calls.begin(), calls.end(), [](FnCall c) { return c.fn == Fn::ReferenceReturnNth; });
+  });
   bool has_p = false;
   for (size_t i = first; i < block_.words.size(); ++i) {
     const char a = block_.words[i].address[0];
     if (block_.words[i].kind != ir::WordKind::Parameter) continue;
     if (a == 'P') {
       has_p = true;
-      thousandths(i);
+      if (!p_number) thousandths(i);
     }
     if ((g.test(51) && (a == 'I' || a == 'J' || a == 'K')) || (g.test(68) && a == 'R')) thousandths(i);
   }

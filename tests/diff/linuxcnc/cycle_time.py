@@ -36,6 +36,7 @@ Python 3 standard library only.
 import argparse
 import json
 import math
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -237,6 +238,7 @@ def main():
     with tempfile.TemporaryDirectory(prefix="cycle-time-") as tmp:
         profile = Path(tmp) / "machine.toml"
         profile.write_text((SUITE / "machine.toml").read_text() + TIMING_PROFILE)
+        shutil.copy(SUITE / "codes.tsv", tmp)   # the machine's G codes (iso.tables)
         for program in progs:
             ok, axis, got, rel, msg = check(program, opts, profile)
             if rel is not None and rel > worst[0]:
