@@ -93,13 +93,21 @@ void Reader::line(uint32_t n) {
   std::string_view text = source_.line(n);
   std::string_view trimmed = trim(text);
   // '%' alone: the first line starts the program, the next one ends it.
+  // '%' alone: on the first line that is not blank it starts the program, and the
+  // next one ends it; anywhere else rs274 refuses it (decision 3).
   if (!trimmed.empty() && trimmed.front() == '%' && trim(trimmed.substr(1)).empty()) {
-    if (percent_ || ended_ || !main_.blocks.empty() || in_sub_ || !program_.units.empty())
+    if (percent_ || ended_) {
       closed_ = true;
-    else
+    } else if (!read_any_) {
       percent_ = true;
+    } else {
+      const auto col = static_cast<uint32_t>(text.find('%') + 1);
+      diags_.report(DiagId::CharInvalid, {file_, n, col, n, col + 1}, "'%'");
+      closed_ = true;
+    }
     return;
   }
+  read_any_ = read_any_ || !trimmed.empty();
   std::vector<std::pair<size_t, size_t>> comments;  // byte ranges in the line, ( ) included
   std::vector<std::string> texts;
   for (size_t i = 0; i < text.size(); ++i) {
@@ -308,6 +316,16 @@ void Reader::items(LinuxcncParser::BlockContext* ctx, ir::Block& b) {
   for (ir::Word& w : b.words)
     if (w.kind == ir::WordKind::Parameter && ignored_words.find(w.address[0]) != std::string::npos)
       w.kind = ir::WordKind::Ignored;
+  // G80 beside another motion code: the other one acts (decision 12).
+  auto motion = [&](const ir::Word& w) -> int {
+    if (w.kind != ir::WordKind::Code || w.address != "G" || !program_.is_constant(w.value)) return -1;
+    const int n = ir::code_number(program_, w.value);
+    auto it = s_.tables.g_codes.find(n);
+    return it != s_.tables.g_codes.end() && it->second.group == "01" ? n : -1;
+  };
+  if (std::count_if(b.words.begin(), b.words.end(), [&](const ir::Word& w) { return motion(w) >= 0; }) > 1)
+    for (ir::Word& w : b.words)
+      if (motion(w) == 80) w.kind = ir::WordKind::Ignored;
   if (call) {
     call_words(b, *call);
   } else {

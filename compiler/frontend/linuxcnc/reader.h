@@ -112,6 +112,7 @@ class Reader {
   bool in_sub_ = false, fanuc_sub_ = false;
   bool ended_ = false;  // the main program's M2/M30 has been read
   bool percent_ = false, closed_ = false;
+  bool read_any_ = false;  // a line that is not blank
   std::vector<Open> open_;
   size_t next_label_ = 0;
   std::vector<SubCall> calls_;

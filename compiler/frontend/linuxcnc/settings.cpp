@@ -43,7 +43,13 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   c.tool_offset_axes = "Z";
   c.axes = "XYZ";
   c.max_call_depth = 0;
-  c.arc_tolerance = 0.0127;  // LinuxCNC: the radii may differ by 0.0005 inch
+  c.arc_tolerance = 0.0721;  // decision 11: rs274 lets the radii differ by 0.0028 inch
+  if (auto v = p.number("linuxcnc.arc_tolerance", diags)) {
+    if (*v > 0 && *v <= 1)
+      c.arc_tolerance = *v;
+    else
+      ok = (p.report_value(diags, "linuxcnc.arc_tolerance", "must be a length in mm above 0 and at most 1"), false);
+  }
   if (!ok) return std::nullopt;
   return s;
 }
