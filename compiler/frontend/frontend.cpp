@@ -8,6 +8,7 @@
 
 #include "gost/gost_frontend.h"
 #include "iso/iso_frontend.h"
+#include "linuxcnc/linuxcnc_frontend.h"
 #include "nc110/nc110_frontend.h"
 #include "pp/pp_frontend.h"
 
@@ -19,10 +20,8 @@ struct DialectEntry {
   std::unique_ptr<Frontend> (*make)(const stdlib::Profile&, Diagnostics&);
 };
 constexpr DialectEntry kDialects[] = {
-    {"gost", gost::make_gost_frontend},
-    {"nc110", nc110::make_nc110_frontend},
-    {"pp", pp::make_pp_frontend},
-    {"iso", iso::make_iso_frontend},
+    {"gost", gost::make_gost_frontend}, {"nc110", nc110::make_nc110_frontend},          {"pp", pp::make_pp_frontend},
+    {"iso", iso::make_iso_frontend},    {"linuxcnc", linuxcnc::make_linuxcnc_frontend},
 };
 
 // What a character nobody sees on screen is, so that a message names it rather than

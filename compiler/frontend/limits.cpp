@@ -165,4 +165,14 @@ bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens
   return false;
 }
 
+bool lex_block(const std::string& text, antlr4::ANTLRInputStream& input, antlr4::Lexer& lexer,
+               antlr4::CommonTokenStream& tokens, const ExpressionTokens& kinds, const TokenRange& range,
+               Diagnostics& diags) {
+  input.load(text);
+  lexer.setInputStream(&input);
+  tokens.setTokenSource(&lexer);
+  tokens.fill();
+  return expression_fits(tokens, kinds, range, diags);
+}
+
 }  // namespace ncc

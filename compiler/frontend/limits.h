@@ -9,12 +9,16 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "support/diagnostics.h"
 
 namespace antlr4 {
+class ANTLRInputStream;
 class BufferedTokenStream;
+class CommonTokenStream;
+class Lexer;
 class Token;
 }  // namespace antlr4
 
@@ -50,5 +54,12 @@ struct ExpressionTokens {
 using TokenRange = std::function<SourceRange(antlr4::Token* first, antlr4::Token* last)>;
 [[nodiscard]] bool expression_fits(antlr4::BufferedTokenStream& tokens, const ExpressionTokens& kinds,
                                    const TokenRange& range, Diagnostics& diags);
+
+// Lexes a block's `text` into `tokens` (which read `lexer`, which reads `input`: a
+// reader keeps the three from block to block) and checks them as expression_fits
+// does; false (reported) when the block is beyond the limits: it is not parsed.
+[[nodiscard]] bool lex_block(const std::string& text, antlr4::ANTLRInputStream& input, antlr4::Lexer& lexer,
+                             antlr4::CommonTokenStream& tokens, const ExpressionTokens& kinds, const TokenRange& range,
+                             Diagnostics& diags);
 
 }  // namespace ncc

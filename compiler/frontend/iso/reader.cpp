@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "frontend/block_errors.h"
 #include "frontend/frontend.h"
 #include "frontend/limits.h"
 #include "support/numbers.h"
@@ -89,42 +90,13 @@ struct Reader::Branch {
   SourceRange head;                   // of its last IF, ELIF or ELSE
 };
 
-// Maps ANTLR syntax errors to diagnostics at the right column.
-class Reader::Errors final : public antlr4::BaseErrorListener {
- public:
-  explicit Errors(Reader& r) : r_(r) {}
-  bool any = false;
-  void syntaxError(antlr4::Recognizer*, antlr4::Token* token, size_t, size_t position, const std::string&,
-                   std::exception_ptr) override {
-    if (any) return;  // one message a block: the rest follows from it
-    any = true;
-    size_t at = token ? token->getStartIndex() : position;
-    const bool eof = !token || token->getType() == antlr4::Token::EOF;
-    if (eof) at = r_.sanitized_.size();
-    uint32_t col = r_.base_ + static_cast<uint32_t>(at) + 1;
-    if (!eof && token->getType() == IsoLexer::INVALID) {
-      size_t length = 1;
-      std::string_view original = r_.source_.text().substr(r_.source_.line_offset(r_.line_) + r_.base_);
-      std::string what = describe_char(original, at, length);
-      r_.diags_.report(DiagId::CharInvalid, {r_.file_, r_.line_, col, r_.line_, col + static_cast<uint32_t>(length)},
-                       what);
-      return;
-    }
-    std::string what = eof ? std::string("end of text") : fmt::format("'{}'", token->getText());
-    uint32_t len = eof ? 1 : static_cast<uint32_t>(token->getStopIndex() - token->getStartIndex() + 1);
-    r_.diags_.report(DiagId::SyntaxError, {r_.file_, r_.line_, col, r_.line_, col + len}, what);
-  }
-
- private:
-  Reader& r_;
-};
-
 std::string Reader::program_name(uint32_t number) { return fmt::format("O{:04}", number); }
 
 Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile& source, uint32_t file,
                Diagnostics& diags, uint16_t space, std::optional<std::string> called, bool fast_path, BlockSink* sink)
     : s_(settings), program_(program), source_(source), file_(file), diags_(diags), space_(space),
-      called_(std::move(called)), fast_path_(fast_path), sink_(sink), errors_(std::make_unique<Errors>(*this)) {
+      called_(std::move(called)), fast_path_(fast_path), sink_(sink),
+      errors_(std::make_unique<BlockErrors>(IsoLexer::INVALID, diags)) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.addErrorListener(errors_.get());
@@ -242,7 +214,8 @@ void Reader::load(const Piece& piece) {
   }
   line_ = piece.line;
   base_ = piece.col - 1;
-  errors_->any = false;
+  errors_->start(file_, line_, source_.line(line_), sanitized_.size(),
+                 [this](size_t i) { return base_ + static_cast<uint32_t>(i) + 1; });
 }
 
 IsoParser::BlockContext* Reader::parse() {
@@ -254,12 +227,9 @@ IsoParser::BlockContext* Reader::parse() {
       {IsoLexer::STAR, IsoLexer::SLASH, IsoLexer::MOD, IsoLexer::AND, IsoLexer::OR, IsoLexer::XOR, IsoLexer::EQ,
        IsoLexer::NE, IsoLexer::GT, IsoLexer::GE, IsoLexer::LT, IsoLexer::LE},
       {IsoLexer::NUMBER, IsoLexer::RBRACKET}};
-  input_.load(sanitized_);
-  lexer_.setInputStream(&input_);
-  tokens_.setTokenSource(&lexer_);
-  tokens_.fill();
-  if (!expression_fits(
-          tokens_, kTokens, [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_))
+  if (!lex_block(
+          sanitized_, input_, lexer_, tokens_, kTokens,
+          [this](antlr4::Token* a, antlr4::Token* b) { return range(a, b); }, diags_))
     return nullptr;
   parser_.setTokenStream(&tokens_);
   return parser_.block();
@@ -482,7 +452,7 @@ void Reader::read(const Piece& piece) {
   } else if (!fast) {
     ctx = parse();
   }
-  const bool bad = !fast && (!ctx || errors_->any);
+  const bool bad = !fast && (!ctx || errors_->any());
   IsoParser::BodyContext* body = bad || fast ? nullptr : ctx->body();
   auto* head = body ? body->braceHead() : nullptr;
 

@@ -11,6 +11,7 @@
 
 #include "IsoLexer.h"
 #include "IsoParser.h"
+#include "frontend/block_errors.h"
 #include "frontend/frontend.h"
 #include "frontend/plain_words.h"
 #include "ir/ir.h"
@@ -48,7 +49,6 @@ class Reader {
   struct Piece;
   struct Loop;
   struct Branch;
-  class Errors;
 
   void cut();
   void take(const Piece& piece);
@@ -130,7 +130,7 @@ class Reader {
   IsoLexer lexer_{&input_};
   antlr4::CommonTokenStream tokens_{&lexer_};
   IsoParser parser_{&tokens_};
-  std::unique_ptr<Errors> errors_;
+  std::unique_ptr<BlockErrors> errors_;
   std::string sanitized_;
   uint32_t line_ = 0, base_ = 0;  // of the piece being parsed
 
