@@ -222,6 +222,7 @@ class Machine final : public BlockMachine {
   // change (release) or the end of the run.
   template <typename... Args>
   void report_repeated(DiagIdFor<Args...> id, const Args&... args) {
+    if (stop_on_error_) return report(id, 0, args...);  // a run stops at the first: nothing to count
     if (auto it = repeated_.find(id.id()); it != repeated_.end())
       ++it->second.more;
     else
