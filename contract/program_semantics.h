@@ -5,7 +5,9 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -89,10 +91,26 @@ struct Conventions {
 };
 
 // A code a program selects at run time by its number (NC-110 `GE1`).
+// The number a code table keys a code by: a whole code (G01) is its number 0..999; a
+// code with one decimal (G54.1, Fanuc's and the machine tables' decimal codes) is
+// kDecimalCode + ten times it (10541), above every whole code. Nothing for any other
+// value.
+constexpr int kDecimalCode = 10000;
+inline std::optional<int> code_key(double v) {
+  if (!(v >= 0 && v < 1000)) return std::nullopt;
+  if (v == std::trunc(v)) return static_cast<int>(v);
+  const double tenths = std::round(v * 10);
+  if (std::fabs(tenths - v * 10) > 1e-6) return std::nullopt;
+  return kDecimalCode + static_cast<int>(tenths);
+}
+
+// The code's value as written: 54.1 for the key 10541.
+inline double code_value(int key) { return key >= kDecimalCode ? (key - kDecimalCode) / 10.0 : key; }
+
 struct NumberedCode {
-  uint8_t slot = 0;  // the letter's word slot
-  uint16_t number = 0;
-  uint16_t code = 0;  // index into codes
+  uint8_t slot = 0;     // the letter's word slot
+  uint16_t number = 0;  // code_key
+  uint16_t code = 0;    // index into codes
   bool operator==(const NumberedCode&) const = default;
 };
 

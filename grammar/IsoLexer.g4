@@ -29,9 +29,10 @@ LE     : 'LE' | '<=' ;
 FUNCTION : 'ASIN' | 'SIN' | 'ACOS' | 'COS' | 'ATAN' | 'TAN' | 'SQRT' | 'ABS' | 'ROUND'
          | 'EXP' | 'LN' | 'FIX' | 'FUP' ;
 
-// N and O with their digits: a block number and a program number (§8.33: OXXXX).
+// N and O with their digits: a block number and a program number (§8.33: OXXXX);
+// ':' is ISO code's other program-number address (decision 53).
 SEQUENCE : 'N' [ \t]* DIGITS ;
-PROGRAM  : 'O' [ \t]* DIGITS ;
+PROGRAM  : [O:] [ \t]* DIGITS ;
 LETTER   : [A-Z] ;
 NUMBER   : DIGITS ( '.' DIGITS? )? | '.' DIGITS ;
 HASH     : '#' ;

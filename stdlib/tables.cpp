@@ -215,13 +215,17 @@ void read_code_table(const Table& table, char letter, const std::vector<CyclePat
     const auto& c = row.cells;
     CodeEntry e;
     e.letter = letter;
-    auto number =
-        c[0].size() > 1 && c[0][0] == letter ? parse_number<int>(std::string_view(c[0]).substr(1)) : std::nullopt;
-    if (!number || *number < 0 || *number > 999) {
+    // G01, or a decimal code with one digit after the point (G54.1): code_key.
+    const std::string_view digits = c[0].size() > 1 && c[0][0] == letter ? std::string_view(c[0]).substr(1) : "";
+    const size_t point = digits.find('.');
+    const bool form = point == std::string_view::npos || point + 2 == digits.size();
+    auto number = form ? parse_number<double>(digits) : std::nullopt;
+    auto key = number ? code_key(*number) : std::nullopt;
+    if (!key || (point != std::string_view::npos && *key < kDecimalCode)) {
       report(diags, table, row.line, fmt::format("'{}' is not a {} code", c[0], letter));
       continue;
     }
-    e.number = *number;
+    e.number = *key;
     e.desc.name = c[0];
     size_t col = 1;
     if (m) {

@@ -475,8 +475,9 @@ RunStatus Vm::resume() {
         double v = pop();
         if (vacancy_ && std::isnan(v)) break;  // G#1 with #1 vacant: no code
         const auto& numbered = m_.semantics.numbered;
+        const int key = code_key(v).value_or(-1);  // G#1 with #1 = 54.1 is G54.1
         auto it = std::find_if(numbered.begin(), numbered.end(),
-                               [&](const NumberedCode& c) { return c.slot == operands[0] && c.number == v; });
+                               [&](const NumberedCode& c) { return c.slot == operands[0] && c.number == key; });
         // The word is found by its slot and its place among this block's (GE1 GE2).
         const int nth = static_cast<int>(std::count(dynamic_slots_.begin(), dynamic_slots_.end(), operands[0]));
         if (it == numbered.end()) {

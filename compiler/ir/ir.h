@@ -251,10 +251,10 @@ struct Program {
   bool is_constant(ExprId id) const { return id != kNoExpr && exprs[id].op == ExprOp::Number; }
 };
 
-// The number of a code whose value is written (G01): the front ends write whole
-// numbers; -1, which no code table holds, for any other value.
+// The table key (code_key) of a code whose value is written (G01, G54.1); -1, which no
+// code table holds, for any other value.
 inline int code_number(const Program& program, ExprId value) {
-  return whole_in(program.exprs[value].number, 0, INT32_MAX).value_or(-1);
+  return code_key(program.exprs[value].number).value_or(-1);
 }
 
 std::string print(const Program& program, const SourceManager& sources);

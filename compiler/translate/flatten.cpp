@@ -105,7 +105,7 @@ bool Flattener::write_code(FnCall call, std::vector<OutWord>& words, uint32_t so
     refuse(source, fmt::format("{} ({}): {} has no code for it", what, fn_name(call.fn), w_.dialect()));
     return false;
   }
-  words.push_back({code->letter, static_cast<double>(code->number), Value::Code});
+  words.push_back({code->letter, code_value(code->number), Value::Code});
   applied(*code);
   return true;
 }
@@ -332,7 +332,7 @@ void Flattener::corrector(uint32_t source) {
   }
   OutWord t{'T', static_cast<double>(loaded_), Value::Count};
   if (want_.length_entry) t.offset = want_.length_entry;  // T2 M06: corrector 0
-  emit_block({t, {m06->letter, static_cast<double>(m06->number), Value::Code}});
+  emit_block({t, {m06->letter, code_value(m06->number), Value::Code}});
   told_.length_entry = want_.length_entry;
   told_.tool = loaded_;
   // The tool selected since, for the next change, selected again.

@@ -47,7 +47,17 @@ bool path_manner(Fn fn) {
 
 }  // namespace
 
-std::string Structured::Code::text() const { return fmt::format("{}{:02}", letter, number); }
+namespace {
+
+// A code table's key as the code is written: G01, G54.1 (code_key).
+std::string code_digits(int key) {
+  return key >= kDecimalCode ? fmt::format("{:02}.{}", (key - kDecimalCode) / 10, (key - kDecimalCode) % 10)
+                             : fmt::format("{:02}", key);
+}
+
+}  // namespace
+
+std::string Structured::Code::text() const { return letter + code_digits(number); }
 
 // A target code for a source code: when it acts, and when the source's acts.
 struct Structured::Mapped {
@@ -2157,7 +2167,7 @@ std::string Structured::doing_more(const FnCall& f, Scope scope) const {
       for (const FnCall& c : has)
         if (c != f) more += (more.empty() ? "" : "+") + std::string(fn_name(c.fn));
       return fmt::format(" alone: its {}{} also does {}, which would change the state in force here", entry.letter,
-                         fmt::format("{:02}", number), more);
+                         code_digits(number), more);
     }
   return {};
 }

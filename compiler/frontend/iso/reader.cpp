@@ -22,6 +22,14 @@ constexpr int kMaxLoopDepth = 3;     // DO1..DO3 (§8.34.3)
 // (decision 3); #0 is always vacant.
 bool variable_exists(uint32_t n) { return n <= 33 || (n >= 100 && n <= 199) || (n >= 500 && n <= 999); }
 
+// A code's value as written agrees with its key (code_key): a number written with a
+// point has one digit after it and is a decimal code (G54.1, not G1. or G01.0).
+bool decimal_form(std::string_view text, int key) {
+  const size_t point = text.find('.');
+  if (point == std::string_view::npos || text.find('[') != std::string_view::npos) return true;
+  return key >= kDecimalCode && point + 2 == text.size();
+}
+
 // G65 argument specification I (§8.16): the letter's local variable; 0 = not an argument.
 uint32_t argument_of(char letter) {
   switch (letter) {
@@ -532,6 +540,7 @@ void Reader::read(const Piece& piece) {
 
   if (auto* prog = ctx->PROGRAM()) {
     // §8.16, §8.33: OXXXX alone in its block starts a subprogram or macro.
+    const char address = prog->getText()[0];  // O, or ISO code's ':' (decision 53)
     std::string digits(trim(prog->getText().substr(1)));
     SourceRange r = range(prog->getSymbol(), prog->getSymbol());
     uint32_t n = 0;
@@ -540,8 +549,8 @@ void Reader::read(const Piece& piece) {
     std::string title;
     for (const std::string& c : unit_.blocks.back().comments) title += (title.empty() ? "" : " ") + c;
     unit_.blocks.pop_back();
-    if (ec != std::errc() || n > 9999) {
-      diags_.report(DiagId::ValueRange, r, "O" + digits, "O", 0, 9999);
+    if (ec != std::errc() || n > s_.max_program) {
+      program_range(r, address + digits, std::string(1, address));
       return;
     }
     const std::string name = program_name(n);
@@ -839,12 +848,20 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
       w.kind = ir::WordKind::Code;
       if (!program_.is_constant(e)) {
         w.code = ir::kDynamicCode;  // G#4 (§8.34.1): the code comes at run time
-      } else if (const std::optional<int> n = whole_in(program_.exprs[e].number, 0, 999); !n) {
+      } else if (const std::optional<int> n = code_key(program_.exprs[e].number); !n) {
         diags_.report(DiagId::ValueForm, w.range, w.address, "a code number", w.address + w.text);
         w.kind = ir::WordKind::Ignored;
         block_.has_errors = true;
+      } else if (!decimal_form(raw.text, *n)) {
+        // Decision 52: a point written names a decimal code (G54.1); G1. and G01.0 name none.
+        if (letter == 'G')
+          diags_.report(DiagId::GCodeUndefined, w.range, w.address + w.text);
+        else
+          diags_.report(DiagId::MCodeUndefined, w.range, w.address + w.text);
+        w.kind = ir::WordKind::Ignored;
+        block_.has_errors = true;
       } else {
-        (letter == 'G' ? g : m).set(static_cast<size_t>(*n));
+        if (*n < kDecimalCode) (letter == 'G' ? g : m).set(static_cast<size_t>(*n));
         const auto& table = letter == 'G' ? s_.tables.g_codes : s_.tables.m_codes;
         auto it = table.find(*n);
         if (it == table.end())
@@ -1060,13 +1077,19 @@ void Reader::call_words(ir::ExprId cond) {
     block_.has_errors = true;
     return;
   }
-  std::optional<uint32_t> number = whole(*p, 0,
-                                         what == "M97"   ? kMaxBlockNumber
-                                         : what == "M98" ? 9999999
-                                                         : 9999,
-                                         what == "M97" ? "a block number" : "a program number");
+  // §8.33: with four-digit programs, M98 P31002 is O1002 three times; with longer
+  // ones P is the program number alone (decision 53), as Haas and Fanuc read it.
+  const bool packed = what == "M98" && s_.program_digits == 4;
+  std::optional<uint32_t> number;
+  if (what == "M97")
+    number = whole(*p, 0, kMaxBlockNumber, "a block number");
+  else if (program_.is_constant(p->value) && !packed && program_.exprs[p->value].number > s_.max_program &&
+           whole_in(program_.exprs[p->value].number, 0u, UINT32_MAX))
+    program_range(p->range, p->address + p->text, what + " P");
+  else
+    number = whole(*p, 0, packed ? 9999999 : s_.max_program, "a program number");
   uint32_t count = 0;
-  if (number && what == "M98" && *number > 9999) {
+  if (number && packed && *number > 9999) {
     count = *number / 10000;  // §8.33: P31002 = O1002 three times
     number = *number % 10000;
   }
@@ -1095,6 +1118,16 @@ void Reader::call_words(ir::ExprId cond) {
     calls_.push_back({call.label, p->range, program_.units.size(), unit_.blocks.size() - 1});
   }
   block_.stmts.push_back(std::move(call));
+}
+
+// A program number beyond iso.program_number_digits (decision 53).
+void Reader::program_range(SourceRange r, const std::string& written, const std::string& what) {
+  Diagnostic* d = diags_.report(DiagId::ValueRange, r, written, what, 0, s_.max_program);
+  if (d && !digits_told_++)  // once a file: the cause is the same
+    d->notes.push_back({r, fmt::format("program numbers have iso.program_number_digits = {} digits; a machine with "
+                                       "longer ones sets it (--machine haas: 5, --machine fanuc: 8)",
+                                       s_.program_digits)});
+  block_.has_errors = true;
 }
 
 // ---- Expressions ------------------------------------------------------------------------

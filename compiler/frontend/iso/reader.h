@@ -44,6 +44,7 @@ class Reader {
   static std::string program_name(uint32_t number);
 
  private:
+  void program_range(SourceRange r, const std::string& written, const std::string& what);
   struct Piece;
   struct Loop;
   struct Branch;
@@ -136,6 +137,7 @@ class Reader {
   ir::Unit unit_;
   bool in_unit_ = false;
   bool main_done_ = false;           // the main program has ended (M02/M30): O units may follow
+  int digits_told_ = 0;              // the note on iso.program_number_digits was given
   std::optional<size_t> end_block_;  // the main program's M02/M30 block
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;

@@ -1,5 +1,7 @@
 #include "settings.h"
 
+#include <cmath>
+
 #include "frontend/frontend.h"
 #include "support/text.h"
 
@@ -64,6 +66,17 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
   s.power_on.push_back(units == "mm" ? "G21" : "G20");
   if (auto v = p.string("iso.program_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
+  // Decision 53: the seed's OXXXX; Haas NGC writes five digits, Fanuc has eight.
+  if (auto v = p.number("iso.program_number_digits", diags)) {
+    if (*v >= 4 && *v <= 8 && *v == std::trunc(*v)) {
+      s.program_digits = static_cast<uint32_t>(*v);
+      s.max_program = 1;
+      for (uint32_t i = 0; i < s.program_digits; ++i) s.max_program *= 10;
+      --s.max_program;
+    } else {
+      ok = (p.report_value(diags, "iso.program_number_digits", "must be a whole number from 4 to 8"), false);
+    }
+  }
   // Decision 33: the machine's own codes (a row replaces the seed's code of its number).
   ok &= read_machine_codes(p, "iso", "GM", s.tables, diags);
 
