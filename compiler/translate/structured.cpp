@@ -203,6 +203,7 @@ bool Structured::at_power_on(const FnCall& c) const {
   switch (c.fn) {
     case Fn::SpindleStop:
     case Fn::CoolantOff:
+    case Fn::CoolantOff34:
     case Fn::OverrideEnable:
     case Fn::SpindleRangeCancel:
     case Fn::SpindleRangeAuto: return true;

@@ -925,7 +925,8 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
   // A machine's G30 (decision 65): P numbers the reference point.
   const bool p_number = std::any_of(s_.tables.g_codes.begin(), s_.tables.g_codes.end(), [&](const auto& entry) {
     const auto& calls = entry.second.desc.calls;
-    return g.test(static_cast<size_t>(entry.first)) &&
+    // g holds the whole-numbered codes; a decimal one's key (10000 + 10 n) is beyond it.
+    return static_cast<size_t>(entry.first) < g.size() && g.test(static_cast<size_t>(entry.first)) &&
            std::any_of(calls.begin(), calls.end(), [](FnCall c) { return c.fn == Fn::ReferenceReturnNth; });
   });
   bool has_p = false;
