@@ -51,6 +51,8 @@ class Reader {
   class Errors;
 
   void cut();
+  bool semicolon_comment(std::string_view line, size_t at, uint32_t line_no);
+  bool is_block(std::string_view text);  // quietly: the text parses as a block
   void take(const Piece& piece);
   static bool holds_program(const ir::Block& b);
   void read(const Piece& piece);
@@ -136,9 +138,13 @@ class Reader {
 
   ir::Unit unit_;
   bool in_unit_ = false;
-  bool main_done_ = false;           // the main program has ended (M02/M30): O units may follow
-  int digits_told_ = 0;              // the note on iso.program_number_digits was given
-  std::optional<size_t> end_block_;  // the main program's M02/M30 block
+  bool main_done_ = false;                // the main program has ended (M02/M30): O units may follow
+  std::optional<SourceRange> nested_at_;  // the first nested comment (decision 55)
+  uint32_t nested_lines_ = 0, nested_line_ = 0;
+  std::optional<SourceRange> semicolon_at_;  // the first ';' that starts a comment (decision 54)
+  uint32_t semicolon_lines_ = 0;             // the lines after it that do so too
+  int digits_told_ = 0;                      // the note on iso.program_number_digits was given
+  std::optional<size_t> end_block_;          // the main program's M02/M30 block
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;
   bool expect_brace_ = false;  // a multi-line IF head waits for its '{'
