@@ -6,6 +6,7 @@
 #include <cmath>
 #include <set>
 
+#include "foreign.h"
 #include "frontend/block_errors.h"
 #include "frontend/frontend.h"
 #include "frontend/limits.h"
@@ -18,6 +19,8 @@ namespace {
 
 constexpr uint32_t kMaxCount = 999;  // L of M97, M98, G65 (§8.16, §8.33)
 constexpr int kMaxLoopDepth = 3;     // DO1..DO3 (§8.34.3)
+// The words the fast path reads (scan_plain): every address but O.
+constexpr PlainRules kPlainRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true};
 
 // #0..#33 are local to a macro call (§8.16), #100..#199 and #500..#999 common
 // (decision 3); #0 is always vacant.
@@ -96,7 +99,11 @@ Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile&
                Diagnostics& diags, uint16_t space, std::optional<std::string> called, bool fast_path, BlockSink* sink)
     : s_(settings), program_(program), source_(source), file_(file), diags_(diags), space_(space),
       called_(std::move(called)), fast_path_(fast_path), sink_(sink),
-      errors_(std::make_unique<BlockErrors>(IsoLexer::INVALID, diags)) {
+      errors_(std::make_unique<BlockErrors>(
+          BlockTokens{IsoLexer::INVALID,
+                      IsoLexer::LETTER,
+                      {IsoLexer::PLUS, IsoLexer::MINUS, IsoLexer::NUMBER, IsoLexer::HASH, IsoLexer::LBRACKET}},
+          diags)) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.addErrorListener(errors_.get());
@@ -106,8 +113,22 @@ Reader::Reader(const Settings& settings, ir::Program& program, const SourceFile&
 Reader::~Reader() = default;
 
 void Reader::run() {
+  // Decision 56: another control's language is told once, and the file is not read.
+  if (auto f = foreign_language(source_)) {
+    diags_.report(DiagId::ForeignLanguage, SourceRange::point(file_, f->line, 1), f->language, f->evidence);
+    return;
+  }
   if (called_) start_unit(ir::UnitKind::Subprogram, *called_, SourceRange::point(file_, 1, 1));
   cut();
+  if (nested_at_)
+    diags_.report(DiagId::CommentNested, *nested_at_,
+                  nested_lines_ ? fmt::format(" (and on {} more line{})", nested_lines_, nested_lines_ > 1 ? "s" : "")
+                                : std::string());
+  if (semicolon_at_)
+    diags_.report(DiagId::SemicolonComment, *semicolon_at_,
+                  semicolon_lines_
+                      ? fmt::format(" (and {} more line{})", semicolon_lines_, semicolon_lines_ > 1 ? "s" : "")
+                      : std::string());
   if (in_unit_) end_unit();
 }
 
@@ -168,11 +189,27 @@ void Reader::cut() {
       take(piece);
       start(static_cast<uint32_t>(at - base + 2), at + 1);
     };
+    bool rest_is_comment = false;
     for (size_t i = 0; i < line.size(); ++i) {
       const char c = line[i];
       if (c == '(') {
-        // A comment runs to its ')' on the same line (comments do not nest).
-        size_t end = line.find(')', i + 1);
+        // A comment runs to its ')' on the same line. Comments do not nest: one that
+        // does is reported once a file (decision 55) and read to its matching ')'.
+        size_t end = std::string_view::npos;
+        bool nested = false;
+        for (size_t j = i, depth = 0; j < line.size() && end == std::string_view::npos; ++j) {
+          if (line[j] == '(' && depth++ > 0) nested = true;
+          if (line[j] == ')' && --depth == 0) end = j;
+        }
+        if (end == std::string_view::npos) end = line.find(')', i + 1);
+        if (nested && end != std::string_view::npos) {
+          const auto col = static_cast<uint32_t>(i + 1);
+          if (!nested_at_)
+            nested_at_ = SourceRange{file_, line_no, col, line_no, static_cast<uint32_t>(end + 2)};
+          else if (nested_line_ != line_no)
+            ++nested_lines_;
+          nested_line_ = line_no;
+        }
         if (end == std::string_view::npos) {
           diags_.report(DiagId::CommentUnterminated, {file_, line_no, static_cast<uint32_t>(i + 1), line_no,
                                                       static_cast<uint32_t>(line.size() + 1)});
@@ -182,14 +219,67 @@ void Reader::cut() {
         i = end;
       } else if (c == ';') {
         close(base + i);
+        if (semicolon_comment(line, i, line_no)) {
+          rest_is_comment = true;
+          break;
+        }
+      } else if (c == '%') {
+        // Decision 55: '%' after a block (`N890 %`) ends it; it belongs on a line of its own.
+        diags_.report(DiagId::PercentInBlock, SourceRange::point(file_, line_no, static_cast<uint32_t>(i + 1)));
+        close(base + i);
       } else if (c == '{' || c == '}') {
         close(base + i);
         take(
             {c == '{' ? Piece::Open : Piece::Close, line_no, static_cast<uint32_t>(i + 1), base + i, base + i + 1, {}});
       }
     }
-    close(base + line.size());
+    if (!rest_is_comment) close(base + line.size());
   }
+}
+
+// Decision 54: `; text` as Mach3 and LinuxCNC comment. With iso.semicolon_comments the
+// ';' at `at` starts a comment to the end of the line; otherwise it does when the text
+// after it (to the next ';' or brace) is no block, which is reported once a file.
+bool Reader::semicolon_comment(std::string_view line, size_t at, uint32_t line_no) {
+  if (s_.semicolon_comments) return true;
+  size_t end = at + 1;
+  for (bool comment = false; end < line.size(); ++end) {
+    const char c = line[end];
+    if (!comment && (c == ';' || c == '{' || c == '}')) break;
+    comment = c == '(' || (comment && c != ')');
+  }
+  if (is_block(line.substr(at + 1, end - at - 1))) return false;
+  const auto col = static_cast<uint32_t>(at + 1);
+  if (!semicolon_at_)
+    semicolon_at_ = SourceRange{file_, line_no, col, line_no, col + 1};
+  else
+    ++semicolon_lines_;
+  return true;
+}
+
+bool Reader::is_block(std::string_view text) {
+  std::string& t = sanitized_;
+  t.assign(text);
+  for (size_t i = 0; i < t.size(); ++i) {
+    if (t[i] == '(') {
+      const size_t shut = t.find(')', i);
+      if (shut == std::string::npos) return false;
+      std::fill(t.begin() + static_cast<std::ptrdiff_t>(i), t.begin() + static_cast<std::ptrdiff_t>(shut) + 1, ' ');
+    } else if (t[i] >= 'a' && t[i] <= 'z') {
+      t[i] = static_cast<char>(t[i] - 'a' + 'A');
+    } else if (static_cast<unsigned char>(t[i]) >= 0x80) {
+      return false;
+    }
+  }
+  if (trim(t).empty() || scan_plain_words(t, kPlainRules, plain_words_)) return true;
+  input_.load(t);
+  lexer_.setInputStream(&input_);
+  tokens_.setTokenSource(&lexer_);
+  tokens_.fill();
+  parser_.setTokenStream(&tokens_);
+  errors_->start_quiet();
+  parser_.block();
+  return !errors_->any();
 }
 
 void Reader::load(const Piece& piece) {
@@ -693,12 +783,11 @@ void Reader::number_block(const std::string& digits, SourceRange r, size_t index
 // as the grammar reads them; anything else (a variable, a bracket, a keyword, O, a
 // comma) is for the parser. Columns are those the parser would give.
 bool Reader::scan_plain(FastBlock& out) {
-  static constexpr PlainRules kRules{"ABCDEFGHIJKLMNPQRSTUVWXYZ", true, true, true};
   PlainBlock& block = plain_words_;
   out.words.clear();
   out.sequence.reset();
   out.has_errors = false;
-  if (!scan_plain_words(sanitized_, kRules, block)) return false;
+  if (!scan_plain_words(sanitized_, kPlainRules, block)) return false;
   auto at = [&](size_t from, size_t to) {
     return SourceRange{file_, line_, base_ + static_cast<uint32_t>(from) + 1, line_,
                        base_ + static_cast<uint32_t>(to) + 1};

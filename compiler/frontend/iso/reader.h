@@ -51,6 +51,8 @@ class Reader {
   struct Branch;
 
   void cut();
+  bool semicolon_comment(std::string_view line, size_t at, uint32_t line_no);
+  bool is_block(std::string_view text);  // quietly: the text parses as a block
   void take(const Piece& piece);
   static bool holds_program(const ir::Block& b);
   void read(const Piece& piece);
@@ -145,6 +147,10 @@ class Reader {
   bool main_returns_last_ = false;  // the main program's last acting block so far is M99
   bool main_is_macro() const;
   void end_main();
+  std::optional<SourceRange> nested_at_;  // the first nested comment (decision 55)
+  uint32_t nested_lines_ = 0, nested_line_ = 0;
+  std::optional<SourceRange> semicolon_at_;  // the first ';' that starts a comment (decision 54)
+  uint32_t semicolon_lines_ = 0;             // the lines after it that do so too
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;
   bool expect_brace_ = false;  // a multi-line IF head waits for its '{'

@@ -66,6 +66,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   }
   s.power_on.push_back(units == "mm" ? "G21" : "G20");
   if (auto v = p.string("iso.program_library", diags)) s.library = v->empty() ? "" : p.resolve_path(*v);
+  if (auto v = p.boolean("iso.semicolon_comments", diags)) s.semicolon_comments = *v;
   // Decision 53: the seed's OXXXX; Haas NGC writes five digits, Fanuc has eight.
   if (auto v = p.number("iso.program_number_digits", diags)) {
     if (*v >= 4 && *v <= 8 && *v == std::trunc(*v)) {

@@ -22,6 +22,7 @@ struct Settings {
   std::string library;                // where called O programs are ("" = beside the program)
   uint32_t program_digits = 4;        // of an O number (decision 53: iso.program_number_digits)
   uint32_t max_program = 9999;        // the largest O number
+  bool semicolon_comments = false;    // ';' starts a comment to the line end (decision 54)
   std::map<uint32_t, SysRef> system;  // #3000...: the system variables (system_variables.tsv)
   Conventions conventions;
 };

@@ -51,7 +51,7 @@ struct Reader::Open {
 Reader::Reader(const Settings& settings, ir::Program& program, Parameters& params, const SourceFile& source,
                uint32_t file, Diagnostics& diags, bool called)
     : s_(settings), program_(program), params_(params), source_(source), file_(file), diags_(diags), called_(called),
-      errors_(std::make_unique<BlockErrors>(LinuxcncLexer::INVALID, diags)) {
+      errors_(std::make_unique<BlockErrors>(BlockTokens{LinuxcncLexer::INVALID, 0, {}}, diags)) {
   lexer_.removeErrorListeners();
   parser_.removeErrorListeners();
   parser_.addErrorListener(errors_.get());
