@@ -820,6 +820,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
   for (const RawWord& r : list) macro_call = macro_call || (r.letter == 'G' && r.literal && r.text == "65");
   std::vector<bool>& literal_integer = literal_integer_;  // of each word from `first` on
   literal_integer.clear();
+  bool p_numbers_offset = false;  // G10, G54.1, G154: P is an offset's number, not thousandths
   for (const RawWord& raw : list) {
     const char letter = raw.letter;
     const bool literal = raw.literal;
@@ -852,7 +853,22 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
           w.kind = ir::WordKind::Control;  // G65 M97 M98 M99
         else
           w.code = program_code(program_, it->second.desc);
+        if (it != table.end())
+          for (const FnCall& call : it->second.desc.calls)
+            p_numbers_offset |= call.fn == Fn::DataSet || call.fn == Fn::WorkOffsetExtended;
       }
+    } else if (!macro_call && kAxisLetters.substr(3, 3).find(letter) != std::string_view::npos &&
+               s_.conventions.axes.find(letter) == std::string::npos) {
+      // A rotary axis the machine lacks: the program is for another machine (said once).
+      // U (G04's dwell word) and V W stay words that have no effect.
+      if (absent_axes_.find(letter) == std::string::npos) {
+        absent_axes_ += letter;
+        diags_.report(DiagId::AxisAbsent, w.range, w.address,
+                      fmt::format("{} (--machine {}; --machine haas has XYZA, a profile's iso.axes others)",
+                                  s_.conventions.axes, s_.machine));
+      }
+      w.kind = ir::WordKind::Ignored;
+      block_.has_errors = true;
     } else {
       w.kind = ir::WordKind::Parameter;
     }
@@ -919,7 +935,7 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     if (block_.words[i].kind != ir::WordKind::Parameter) continue;
     if (a == 'P') {
       has_p = true;
-      thousandths(i);
+      if (!p_numbers_offset) thousandths(i);
     }
     if ((g.test(51) && (a == 'I' || a == 'J' || a == 'K')) || (g.test(68) && a == 'R')) thousandths(i);
   }

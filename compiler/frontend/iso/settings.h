@@ -22,6 +22,7 @@ struct Settings {
   std::string library;                // where called O programs are ("" = beside the program)
   std::map<uint32_t, SysRef> system;  // #3000...: the system variables (system_variables.tsv)
   Conventions conventions;
+  std::string machine;  // how --machine named the profile, for messages
 };
 
 // Reads the tables and the profile's [iso] settings; problems are reported at their
