@@ -50,7 +50,10 @@ struct OffsetEntry {
 };
 
 // A work offset (GOST G54..G59) or an NC-110 origin (0..99): values of the axes it
-// declares, in mm, or in inches when `inch`.
+// declares, in mm, or in inches when `inch`. ISO's extended work offsets (Fanuc G54.1
+// P1-P300, Haas G154 P1-P99) are numbers kExtendedWorkOffset + P.
+constexpr int kExtendedWorkOffset = 100;
+constexpr int kExtendedWorkOffsets = 300;
 struct WorkOffset {
   AxisValues values{};
   uint32_t axes = 0;  // bit i: axis i is declared
@@ -121,6 +124,7 @@ struct StockConfig {
 
 struct MachineConfig {
   std::string name = "default";
+  std::string profile = "default";         // how --machine named it ("haas", "mill.toml"), for messages
   std::map<int, WorkOffset> work_offsets;  // GOST G54..G59 = 1..6; NC-110 origins 0..99
   std::map<int, ToolEntry> tools;
   std::map<int, OffsetEntry> offsets;  // D/H offset numbers, NC-110 correctors
@@ -155,5 +159,16 @@ struct MachineConfig {
     return a;
   }
 };
+
+// The numbers of a table, as ranges: "1-3, 7, 10-200"; "none" for an empty one. Work
+// offsets: from 1 (0 is the machine's zero), the extended ones as "P1-P48".
+std::string number_ranges(const std::vector<int>& sorted, bool work_offsets = false);
+template <typename T>
+std::string number_ranges(const std::map<int, T>& table, bool work_offsets = false) {
+  std::vector<int> keys;
+  for (const auto& entry : table)
+    if (!work_offsets || entry.first != 0) keys.push_back(entry.first);
+  return number_ranges(keys, work_offsets);
+}
 
 }  // namespace ncc

@@ -272,7 +272,7 @@ FnCall Machine::current(FnGroup group) const {
 
 void Machine::tool_length_event() {
   Event e{EventKind::ToolLengthOffset};
-  e.n = offset_number_;  // the entry it comes from (translation writes it again)
+  e.n = length_number_;  // the entry it comes from (translation writes it again)
   e.pos = in_program_units(compensation().length);
   emit(e);
 }
@@ -389,7 +389,10 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
         break;
       }
       if (call.arg != 0 && !kernel_.offsets().count(call.arg)) {
-        report_code(DiagId::WorkOffsetUnknown, block_.code_name, fmt::format("work offset {}", call.arg));
+        report_code(DiagId::WorkOffsetUnknown, block_.code_name,
+                    call.arg > kExtendedWorkOffset ? fmt::format("work offset P{}", call.arg - kExtendedWorkOffset)
+                                                   : fmt::format("work offset {}", call.arg),
+                    config_.profile, number_ranges(kernel_.offsets(), true));
         break;
       }
       if (emit_events && !rules_->may_run_scaled_or_rotated()) break;
@@ -548,6 +551,23 @@ void Machine::apply(FnCall call, Scope scope, bool emit_events) {
       if (emit_events && (!rules_->may_run_scaled_or_rotated() || !rules_->may_change_coordinates())) break;
       block_.local_offset = true;
       break;
+    case Fn::DataSet: block_.data_set = true; break;
+    case Fn::WorkOffsetExtended: {
+      // G54.1 P / G154 P: the extended work offset P, kept as kExtendedWorkOffset + P.
+      if (!has('P')) {
+        report_code(DiagId::OperandValue, block_.code_name, "without P",
+                    fmt::format("written with the extended work offset's number P1..P{}", kExtendedWorkOffsets));
+        break;
+      }
+      const std::optional<int> p = whole_in(word('P'), 1, kExtendedWorkOffsets);
+      if (!p) {
+        report(DiagId::OperandValue, 'P', fmt::format("{} P", block_.code_name), shortest(word('P')),
+               fmt::format("an extended work offset P1..P{}", kExtendedWorkOffsets));
+        break;
+      }
+      apply({Fn::WorkOffset, static_cast<uint16_t>(kExtendedWorkOffset + *p)}, scope, emit_events);
+      break;
+    }
     case Fn::CycleReturnInitial:
     case Fn::CycleReturnLevel: modal_.cycle_return_level = call.fn == Fn::CycleReturnLevel; break;
     case Fn::PolarOff:
@@ -655,7 +675,8 @@ void Machine::registers() {
   }
   if (auto tool = whole_number('T', "tool numbers")) {
     tool_selected_ = usable_tool(*tool);
-    if (tool_selected_ != 0 && !config_.tools.count(tool_selected_)) report(DiagId::ToolUnknown, 'T', tool_selected_);
+    if (tool_selected_ != 0 && !config_.tools.count(tool_selected_))
+      report(DiagId::ToolUnknown, 'T', tool_selected_, config_.profile, number_ranges(config_.tools));
     Event e{EventKind::SelectTool};
     e.n = tool_selected_;
     emit(e);
@@ -675,10 +696,13 @@ void Machine::registers() {
     auto number = whole_number(letter, "offset numbers");
     if (!number) continue;
     if (*number != 0 && !tool_offsets_.count(*number)) {
-      report(DiagId::OffsetUnknown, letter, "offset number", *number);
+      report(DiagId::OffsetUnknown, letter, "offset number", *number, config_.profile, number_ranges(tool_offsets_));
       continue;
     }
-    select_offset(*number);  // takes effect at once on an active compensation
+    // Takes effect at once on an active compensation. ISO: H the length, D the radius.
+    select_offset(*number, !conv_.length_word            ? OffsetUse::Both
+                           : letter == conv_.length_word ? OffsetUse::Length
+                                                         : OffsetUse::Radius);
   }
 }
 
@@ -691,11 +715,11 @@ std::optional<int> Machine::whole_number(char letter, const char* what) {
 }
 
 Machine::Compensation Machine::compensation() const {
-  const double length = offset_.length;
+  const double length = length_offset_.length;
   Compensation c{modal_.comp, modal_.comp ? offset_.radius : 0, {}};
   if (length == 0) return c;  // every block asks: keep the usual case short
   if (modal_.length != 0)
-    for (char axis : offset_.axis ? std::string(1, offset_.axis) : conv_.tool_offset_axes)
+    for (char axis : length_offset_.axis ? std::string(1, length_offset_.axis) : conv_.tool_offset_axes)
       c.length[axis_index(axis)] = modal_.length * length;
   // pp '&': per axis, 1 adds the length, 2 subtracts it.
   for (size_t i = 0; i < conv_.link_axes.size() && i < modal_.link.size(); ++i)
@@ -984,6 +1008,10 @@ void Machine::action() {
   }
   if (block_.local_offset) {
     set_local_offset();
+    return;
+  }
+  if (block_.data_set) {
+    data_set();
     return;
   }
   if (block_.scaling_on || block_.rotation_on) {

@@ -162,6 +162,7 @@ class Machine final : public BlockMachine {
     int reference_trip =
         0;  // 1 to the reference point by the intermediate one (ISO G28), 2 back (G29), n + 1 to the n-th (G30 P2..P4)
     bool local_offset = false;                     // ISO G52: the axis words shift the work zero
+    bool data_set = false;                         // ISO G10: the words load a work or tool offset
     bool set_position_after = false;               // ISO G92 after a motion: its values are the second words
     bool scaling_on = false, rotation_on = false;  // ISO G51, G68: the block's words define them
     bool cycle_set = false;                        // a cycle code stands in the block
@@ -280,7 +281,10 @@ class Machine final : public BlockMachine {
   bool tooling_function(FnCall call);  // ... of the tool table and the probe (machine_tooling.cpp)
   // Operand i, reported unless whole in lo..hi.
   [[nodiscard]] std::optional<int> whole_operand(int i, int lo, int hi, const char* what);
-  void select_offset(int n);  // the corrector or offset entry n in force
+  // The corrector or offset entry n in force: for the length, the radius or both (a
+  // dialect with a length word: ISO H gives the length, D the radius).
+  enum class OffsetUse : uint8_t { Both, Length, Radius };
+  void select_offset(int n, OffsetUse use = OffsetUse::Both);
   int usable_tool(int tool);  // tool, or the sister that replaces it once unusable
   // NC-110 UAV (machine_virtual.cpp).
   bool virtual_function(FnCall call);
@@ -302,6 +306,8 @@ class Machine final : public BlockMachine {
   void reference_return(const AxisValues& point);  // ISO G28, G30
   void reference_leave();                          // ISO G29
   void set_local_offset();                         // ISO G52
+  void data_set();                                 // ISO G10
+  void offset_loaded(int n);                       // work offset n changed: its events
   void length_zeroed(bool zero);                   // ISO G28/G29: the length offset's event, zero or back
   void scaling_on();                               // ISO G51
   void rotation_on();                              // ISO G68
@@ -396,9 +402,10 @@ class Machine final : public BlockMachine {
   MotionKernel kernel_;  // where the machine is, its coordinates, envelope and event output
   Modal modal_;
   std::map<int, OffsetEntry> tool_offsets_;  // the compensation table (pp G93 loads it, NC-110 RQU changes it)
-  OffsetEntry offset_;                       // the entry in force: a change to the table takes effect when selected
-  std::optional<AxisValues> intermediate_;   // ISO G28's intermediate point (machine coordinates), for G29
-  double last_rotation_ = 0;                 // ISO G68: the angle G91 adds to (it outlives G69)
+  OffsetEntry offset_;         // the entry in force (its radius): a change to the table takes effect when selected
+  OffsetEntry length_offset_;  // ... and the one whose length is in force (the same but under ISO's H)
+  std::optional<AxisValues> intermediate_;  // ISO G28's intermediate point (machine coordinates), for G29
+  double last_rotation_ = 0;                // ISO G68: the angle G91 adds to (it outlives G69)
 
   // ISO ,C and ,R (§8.3): the move before a corner is held back in the kernel (with
   // every event after it) until the next block's move shows where the corner is cut.
@@ -437,7 +444,8 @@ class Machine final : public BlockMachine {
   int tool_selected_ = 0;
   int corrector_selected_ = 0;
   int tool_loaded_ = 0;
-  int offset_number_ = 0;
+  int offset_number_ = 0;                      // of offset_ (ISO D)
+  int length_number_ = 0;                      // of length_offset_ (ISO H)
   int spindle_direction_ = 0;                  // the last direction set (canned cycles restart the spindle in it)
   std::string motion_name_;                    // the code that set the motion group, for messages
   std::optional<AxisValues> parabola_middle_;  // first block of a three-point parabola

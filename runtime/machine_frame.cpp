@@ -186,6 +186,88 @@ void Machine::set_local_offset() {
   position_offset_event();
 }
 
+void Machine::data_set() {
+  // ISO G10 (Fanuc, Haas; decision 61): L2 P1..P6 (G54..G59; ncc has no external
+  // offset P0) and L20 P1.. load a work offset with the axis words; L10/L11
+  // set the length, L12/L13 the radius of offset P, geometry or wear (an offset's
+  // value is their sum). G90 gives the value, G91 adds it.
+  const std::optional<int> l = has('L') ? whole_in(word('L'), 0, 99) : std::nullopt;
+  if (!l || (*l != 2 && *l != 20 && (*l < 10 || *l > 13))) {
+    report_code(DiagId::OperandValue, "G10 L", has('L') ? shortest(word('L')) : std::string("missing"),
+                "L2 (work offsets G54-G59), L20 (extended work offsets), L10-L13 (tool offsets)");
+    return;
+  }
+  if (!has('P')) {
+    report_code(DiagId::OperandValue, fmt::format("G10 L{} P", *l), "missing", "the number of the offset to set");
+    return;
+  }
+  const double written = word('P');
+  if (*l == 2 || *l == 20) {
+    const std::optional<int> p = whole_in(written, 1, *l == 2 ? 6 : kExtendedWorkOffsets);
+    if (!p) {
+      report(DiagId::OperandValue, 'P', fmt::format("G10 L{} P", *l), shortest(written),
+             *l == 2 ? "1..6 (G54..G59; P0, the external work offset, is not modelled)"
+                     : fmt::format("an extended work offset 1..{}", kExtendedWorkOffsets));
+      return;
+    }
+    const int n = *l == 2 ? *p : kExtendedWorkOffset + *p;
+    auto entry = kernel_.offsets().find(n);
+    if (entry == kernel_.offsets().end()) {
+      report(DiagId::WorkOffsetUnknown, 'P', fmt::format("G10 L{}", *l),
+             fmt::format("work offset {}{}", *l == 2 ? "" : "P", *p), config_.profile,
+             number_ranges(kernel_.offsets(), true));
+      return;
+    }
+    for (char letter : conv_.axes) {
+      if (!has(letter)) continue;
+      const int i = axis_index(letter);
+      const double value = axis_units(i, word(letter));
+      double& stored = entry->second.values[i];
+      const double mm = (modal_.absolute ? 0 : kernel_.offset_value(n, i)) + value;
+      stored = entry->second.inch && is_linear(i) ? mm / 25.4 : mm;
+      entry->second.axes |= 1u << i;
+    }
+    offset_loaded(n);
+    return;
+  }
+  const std::optional<int> p = whole_in(written, 1, 9999);
+  if (!p || !tool_offsets_.count(*p)) {
+    report(DiagId::OffsetUnknown, 'P', fmt::format("G10 L{} offset", *l), shortest(written), config_.profile,
+           number_ranges(tool_offsets_));
+    return;
+  }
+  if (!has('R')) {
+    report_code(DiagId::OperandValue, fmt::format("G10 L{} R", *l), "missing", "the value to set");
+    return;
+  }
+  OffsetEntry& e = tool_offsets_[*p];
+  const double value = length_units(word('R'));
+  // The geometry is the value less the wear; wear_diameter keeps the radius's wear doubled.
+  double& total = *l <= 11 ? e.length : e.radius;
+  double& wear = *l <= 11 ? e.wear_length : e.wear_diameter;
+  const double scale = *l <= 11 ? 1 : 0.5;
+  const double old_wear = wear * scale;
+  if (*l == 10 || *l == 12)
+    total = (modal_.absolute ? value : total - old_wear + value) + old_wear;
+  else {
+    const double new_wear = modal_.absolute ? value : old_wear + value;
+    total += new_wear - old_wear;
+    wear = new_wear / scale;
+  }
+  if (e.radius < 0) {
+    report(DiagId::OperandValue, 'R', fmt::format("G10 L{} R", *l), shortest(word('R')),
+           fmt::format("a value that leaves offset {}'s radius not negative", *p));
+    e.radius = 0;
+  }
+  if (*p == offset_number_) offset_ = e;  // the entries in force: at once
+  if (*p == length_number_) length_offset_ = e;
+  Event ev{EventKind::CompLoad};
+  ev.n = *p;
+  ev.a = to_program(e.length);
+  ev.b = to_program(e.radius);
+  emit(ev);
+}
+
 void Machine::reference_return(const AxisValues& point) {
   // ISO §8.8: the named axes go at rapid through the point the words give (read in
   // G90/G91, in the work system) to the reference point; without words every axis
@@ -212,7 +294,7 @@ void Machine::reference_return(const AxisValues& point) {
 void Machine::length_zeroed(bool zero) {
   Event e{EventKind::ToolLengthOffset};
   if (!zero) {
-    e.n = offset_number_;  // the entry it comes from again (translation writes it)
+    e.n = length_number_;  // the entry it comes from again (translation writes it)
     e.pos = in_program_units(compensation().length);
   }
   emit(e);
@@ -244,8 +326,6 @@ void Machine::load_offset() {
   // transformations); the values are positions, G91 or not.
   const int n = block_.load_entry >= 0 ? block_.load_entry : modal_.work_offset;
   WorkOffset& entry = kernel_.offsets()[n];
-  Event e{EventKind::OffsetLoad};
-  e.n = n;
   for (char letter : conv_.axes) {
     if (!has(letter)) continue;
     int i = axis_index(letter);
@@ -254,6 +334,12 @@ void Machine::load_offset() {
     entry.values[i] = entry.inch && is_linear(i) ? v / 25.4 : v;
     entry.axes |= 1u << i;
   }
+  offset_loaded(n);
+}
+
+void Machine::offset_loaded(int n) {
+  Event e{EventKind::OffsetLoad};
+  e.n = n;
   for (int i = 0; i < kAxisCount; ++i) e.pos[i] = program_axis(i, kernel_.offset_value(n, i));
   kernel_.refresh_origins();
   emit(e);
@@ -277,7 +363,8 @@ void Machine::load_compensation() {
   OffsetEntry& e = tool_offsets_[*entry];
   if (auto v = word_if(conv_.comp_length_word)) e.length = length_units(*v);
   if (auto v = word_if(conv_.comp_radius_word)) e.radius = length_units(*v);
-  if (*entry == offset_number_) offset_ = e;  // the entry in force: at once
+  if (*entry == offset_number_) offset_ = e;  // the entries in force: at once
+  if (*entry == length_number_) length_offset_ = e;
   Event ev{EventKind::CompLoad};
   ev.n = *entry;
   ev.a = to_program(e.length);
@@ -321,7 +408,8 @@ bool Machine::frame_function(FnCall call) {
       if (!n) break;
       auto record = kernel_.offsets().find(*n);
       if (*n != 0 && record == kernel_.offsets().end()) {
-        report_slot(DiagId::WorkOffsetUnknown, operand_slot(0), code, fmt::format("origin {}", *n));
+        report_slot(DiagId::WorkOffsetUnknown, operand_slot(0), code, fmt::format("origin {}", *n), config_.profile,
+                    number_ranges(kernel_.offsets(), true));
         break;
       }
       // (UAO,n) without axes: every axis origin n declares (§2.13.1.1).

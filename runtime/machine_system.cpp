@@ -34,8 +34,8 @@ double Machine::system(SysRef ref) const {
     }
     case SysVar::ModalWord:
       switch ('A' + ref.index) {
-        case 'D':
-        case 'H': return offset_number_;
+        case 'D': return offset_number_;
+        case 'H': return length_number_;
         case 'F': return feed_ ? *feed_ : std::numeric_limits<double>::quiet_NaN();
         case 'S': return speed_;
         case 'T': return tool_selected_;

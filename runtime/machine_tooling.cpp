@@ -26,10 +26,17 @@ std::optional<int> Machine::whole_operand(int i, int lo, int hi, const char* wha
   return n;
 }
 
-void Machine::select_offset(int n) {
-  offset_number_ = n;
+void Machine::select_offset(int n, OffsetUse use) {
   auto it = tool_offsets_.find(n);
-  offset_ = it == tool_offsets_.end() ? OffsetEntry{} : it->second;
+  const OffsetEntry entry = it == tool_offsets_.end() ? OffsetEntry{} : it->second;
+  if (use != OffsetUse::Length) {
+    offset_number_ = n;
+    offset_ = entry;
+  }
+  if (use != OffsetUse::Radius) {
+    length_number_ = n;
+    length_offset_ = entry;
+  }
 }
 
 int Machine::usable_tool(int tool) {
@@ -56,10 +63,12 @@ bool Machine::tooling_function(FnCall call) {
       if (!tool || !n) break;
       auto it = tool_offsets_.find(*n);
       if (it == tool_offsets_.end()) {
-        report_slot(DiagId::OffsetUnknown, operand_slot(1), "corrector", *n);
+        report_slot(DiagId::OffsetUnknown, operand_slot(1), "corrector", *n, config_.profile,
+                    number_ranges(tool_offsets_));
         break;
       }
-      if (!config_.tools.count(*tool)) report_slot(DiagId::ToolUnknown, operand_slot(0), *tool);
+      if (!config_.tools.count(*tool))
+        report_slot(DiagId::ToolUnknown, operand_slot(0), *tool, config_.profile, number_ranges(config_.tools));
       const std::string code = block_.code_name;
       OffsetEntry e = it->second;
       // The length's increment, on the axis the corrector's length applies to; a
@@ -121,7 +130,8 @@ bool Machine::tooling_function(FnCall call) {
     case Fn::ToolUnusable: {
       auto tool = whole_operand(0, 1, 9999, "the tool");
       if (!tool) break;
-      if (!config_.tools.count(*tool)) report_slot(DiagId::ToolUnknown, operand_slot(0), *tool);
+      if (!config_.tools.count(*tool))
+        report_slot(DiagId::ToolUnknown, operand_slot(0), *tool, config_.profile, number_ranges(config_.tools));
       unusable_.emplace(*tool, Unusable{"TOF"});
       text_event(EventKind::Tooling, fmt::format("tool {} unusable (TOF)", *tool), source(), kToolingUnusable);
       break;

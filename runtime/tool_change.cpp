@@ -76,7 +76,8 @@ void Machine::Nc110ToolChange::tool_word(int programmed) {
   const double corrector = m_.slot_if(slot).value_or(0);
   const std::optional<int> n = whole_in(corrector, 0, 999999999);
   if (!n || (*n != 0 && !m_.tool_offsets_.count(*n)))
-    m_.report_slot(DiagId::OffsetUnknown, slot, "corrector", shortest(corrector));
+    m_.report_slot(DiagId::OffsetUnknown, slot, "corrector", shortest(corrector), m_.config_.profile,
+                   number_ranges(m_.tool_offsets_));
   else
     m_.corrector_selected_ = *n;
   // A sister in the programmed tool's place brings its own corrector, if it has one.

@@ -9,12 +9,14 @@
 
 #include "embedded.h"
 #include "support/numbers.h"
+#include "support/text.h"
 
 namespace ncc::stdlib {
 
 struct Profile::Impl {
   toml::table table;
-  uint32_t file = 0;  // SourceManager index
+  uint32_t file = 0;     // SourceManager index
+  bool builtin = false;  // the files it names are built in too (stdlib/profiles/)
 };
 
 struct Profile::Lookup {
@@ -29,12 +31,13 @@ SourceRange region_range(const toml::source_region& r, uint32_t file) {
 }
 
 std::shared_ptr<const Profile::Impl> parse_toml(SourceManager& sources, const std::string& name,
-                                                const std::string& text, Diagnostics& diags) {
+                                                const std::string& text, Diagnostics& diags, bool builtin = false) {
   uint32_t file = sources.add(name, text);
   try {
     auto impl = std::make_shared<Profile::Impl>();
     impl->table = toml::parse(text, name);
     impl->file = file;
+    impl->builtin = builtin;
     return impl;
   } catch (const toml::parse_error& e) {
     diags.report(DiagId::ProfileSyntax, region_range(e.source(), file), std::string(e.description()));
@@ -52,6 +55,38 @@ void collect_leaves(const toml::table& t, const std::string& prefix, std::vector
   }
 }
 
+constexpr std::string_view kBuiltinDir = "profiles/";
+
+// A built-in machine's profile text ("haas": profiles/haas.toml).
+std::optional<std::string_view> builtin_profile_text(std::string_view name) {
+  if (name.empty() || name.find('/') != std::string_view::npos) return std::nullopt;
+  return embedded_file(std::string(kBuiltinDir) + std::string(name) + ".toml");
+}
+
+// --machine haas: a name without a path separator or .toml.
+bool names_builtin(std::string_view path) {
+  return !path.empty() && path.find('/') == std::string_view::npos && !path.ends_with(".toml");
+}
+
+}  // namespace
+
+std::vector<std::string> builtin_machines() {
+  std::vector<std::string> names;
+  for (const EmbeddedFile& f : embedded_files())
+    if (f.path.starts_with(kBuiltinDir) && f.path.ends_with(".toml") &&
+        f.path.find('/', kBuiltinDir.size()) == std::string_view::npos)
+      names.emplace_back(f.path.substr(kBuiltinDir.size(), f.path.size() - kBuiltinDir.size() - 5));
+  return names;
+}
+
+namespace {
+
+std::string machine_list() {
+  std::string list;
+  for (const std::string& name : builtin_machines()) list += (list.empty() ? "" : ", ") + name;
+  return list;
+}
+
 }  // namespace
 
 std::optional<Profile> Profile::parse(SourceManager& sources, std::string name, std::string text, Diagnostics& diags) {
@@ -65,12 +100,27 @@ std::optional<Profile> Profile::parse(SourceManager& sources, std::string name, 
     if (!p.user_) return std::nullopt;
     p.text_ = std::move(text);
     p.dir_ = std::filesystem::path(name).parent_path().string();
+    // machine.base: a built-in machine this profile changes (the default's settings
+    // still fill in what neither gives).
+    if (auto base = p.string("machine.base", diags); base && *base != "default") {
+      auto base_text = builtin_profile_text(*base);
+      if (!base_text) {
+        p.report_value(diags, "machine.base", fmt::format("names no built-in machine (built in: {})", machine_list()));
+        return std::nullopt;
+      }
+      p.base_ = parse_toml(sources, fmt::format("<builtin>/{}.toml", *base), std::string(*base_text), diags, true);
+      if (!p.base_) return std::nullopt;
+    }
   }
   return p;
 }
 
 std::optional<Profile> Profile::load(SourceManager& sources, const std::string& path, Diagnostics& diags) {
-  if (path.empty()) return parse(sources, "", "", diags);
+  if (path.empty() || path == "default") return parse(sources, "", "", diags);
+  // A built-in machine is the profile that only names it as its base: what a bytecode
+  // file stores of it. A name that is none is a file's.
+  if (names_builtin(path) && builtin_profile_text(path))
+    return parse(sources, path, fmt::format("[machine]\nbase = \"{}\"\n", path), diags);
   auto read = read_file(path, kProfileFile, diags);
   if (!read) return std::nullopt;
   std::string text = std::move(*read);
@@ -86,6 +136,12 @@ std::string Profile::resolve_path(std::string_view relative) const {
 
 std::optional<std::string> Profile::file_text(std::string_view key, const std::string& file, std::string& path,
                                               Diagnostics& diags) const {
+  if (const Lookup l = find(key); l.owner && l.owner->builtin) {  // a built-in machine's own file
+    path = "<builtin>/" + file;
+    auto text = embedded_file(std::string(kBuiltinDir) + file);
+    if (!text) report_value(diags, key, "names a file that is not built in");
+    return text ? std::optional<std::string>(*text) : std::nullopt;
+  }
   path = resolve_path(file);
   int error = 0;
   auto text = read_file(path, kProfileFile, error);
@@ -96,10 +152,11 @@ std::optional<std::string> Profile::file_text(std::string_view key, const std::s
 Profile::Lookup Profile::find(std::string_view key) const {
   used_.emplace(key);
   toml::path path{key};
-  if (user_) {
-    toml::node_view<const toml::node> v = user_->table.at_path(path);
-    if (v) return {v.node(), user_.get()};
-  }
+  for (const auto* layer : {&user_, &base_})
+    if (*layer) {
+      toml::node_view<const toml::node> v = (*layer)->table.at_path(path);
+      if (v) return {v.node(), layer->get()};
+    }
   toml::node_view<const toml::node> v = builtin_->table.at_path(path);
   return {v.node(), builtin_.get()};
 }
@@ -275,15 +332,41 @@ bool axis_values(const Profile& p, const std::string& key, AxisValues& out, Diag
   return ok;
 }
 
-std::optional<int> table_number(const Profile& p, const std::string& table, const std::string& key,
-                                Diagnostics& diags) {
-  char* end = nullptr;
-  long n = std::strtol(key.c_str(), &end, 10);
-  if (key.empty() || *end != '\0' || n < 0 || n > 9999) {
-    p.report_value(diags, table + "." + key, "must be numbered 0..9999");
-    return std::nullopt;
-  }
-  return static_cast<int>(n);
+// The numbers of a collection's key: "7", or a range "1-200" that gives each number
+// the entry (a real control's table of untouched entries). In [work_offsets] "P1" or
+// "P1-P48" are the extended work offsets of G54.1 P and G154 P (kExtendedWorkOffset + P).
+std::optional<std::pair<int, int>> table_numbers(const Profile& p, const std::string& table, const std::string& key,
+                                                 Diagnostics& diags) {
+  const bool extended = table == "work_offsets" && key.starts_with('P');
+  auto number = [&](std::string_view text) -> std::optional<int> {
+    if (extended && text.starts_with('P')) text.remove_prefix(1);
+    auto n = parse_number<int>(text);
+    if (!n || *n < (extended ? 1 : 0) || *n > (extended ? kExtendedWorkOffsets : 9999)) return std::nullopt;
+    return extended ? kExtendedWorkOffset + *n : *n;
+  };
+  const size_t dash = key.find('-');
+  auto lo = number(std::string_view(key).substr(0, dash));
+  auto hi = dash == std::string::npos ? lo : number(std::string_view(key).substr(dash + 1));
+  if (lo && hi && *lo <= *hi) return std::pair{*lo, *hi};
+  p.report_value(diags, table + "." + key,
+                 extended
+                     ? fmt::format("must be an extended work offset P1..P{} or a range P1-P48", kExtendedWorkOffsets)
+                     : "must be numbered 0..9999, or a range of them such as 1-200");
+  return std::nullopt;
+}
+
+// Reads each entry of a collection once (read(key, first number): the entry or
+// nothing) into out[n] for each of its numbers: the ranges first, so that an entry of
+// its own replaces the range's.
+template <typename Entry, typename Read>
+void read_entries(const Profile& p, const std::string& table, std::map<int, Entry>& out, Diagnostics& diags,
+                  Read read) {
+  std::vector<std::string> keys = p.keys(table);
+  std::stable_partition(keys.begin(), keys.end(), [](const std::string& k) { return k.find('-') != k.npos; });
+  for (const std::string& key : keys)
+    if (auto range = table_numbers(p, table, key, diags))
+      if (std::optional<Entry> entry = read(key, range->first))
+        for (int n = range->first; n <= range->second; ++n) out[n] = *entry;
 }
 
 // A number that must be greater than zero (a rate, a time, a distance).
@@ -436,6 +519,7 @@ void read_probe(const Profile& p, MachineConfig& m, Diagnostics& diags) {
 
 MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   MachineConfig m;
+  m.profile = p.name();
   if (auto v = p.string("machine.name", diags)) m.name = *v;
   if (auto v = p.boolean("machine.block_skip", diags)) m.block_skip = *v;
   if (auto v = p.boolean("machine.optional_stop", diags)) m.optional_stop = *v;
@@ -485,28 +569,25 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
   for (int n = 2; n <= 4; ++n)
     axis_values(p, fmt::format("machine.reference_position_{}", n), m.other_references[static_cast<size_t>(n - 2)],
                 diags);
-  for (const std::string& key : p.keys("work_offsets")) {
-    auto n = table_number(p, "work_offsets", key, diags);
+  read_entries(p, "work_offsets", m.work_offsets, diags, [&](const std::string& key, int) -> std::optional<WorkOffset> {
     std::string base = "work_offsets." + key;
     WorkOffset w;
-    if (!n || !axis_values(p, base, w.values, diags, &w.axes, {"unit"})) continue;
+    if (!axis_values(p, base, w.values, diags, &w.axes, {"unit"})) return std::nullopt;
     if (auto unit = p.string(base + ".unit", diags)) {
       if (*unit == "inch" || *unit == "mm")
         w.inch = *unit == "inch";
       else
         p.report_value(diags, base + ".unit", "must be mm or inch");
     }
-    m.work_offsets[*n] = w;
-  }
-  for (const std::string& key : p.keys("tools")) {
-    auto n = table_number(p, "tools", key, diags);
-    if (!n) continue;
+    return w;
+  });
+  read_entries(p, "tools", m.tools, diags, [&](const std::string& key, int n) -> std::optional<ToolEntry> {
     ToolEntry t;
     if (auto v = p.string("tools." + key + ".description", diags)) t.description = *v;
     if (auto v = p.numbers("tools." + key + ".sisters", diags)) {
       for (double d : *v) {
         auto sister = whole_in(d, 1, 9999);
-        if (!sister || *sister == *n) {
+        if (!sister || *sister == n) {
           p.report_value(diags, "tools." + key + ".sisters", "must list other tools, 1..9999");
           t.sisters.clear();
           break;
@@ -520,11 +601,9 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
       else
         p.report_value(diags, "tools." + key + ".corrector", "must be a corrector 1..9999");
     }
-    m.tools[*n] = t;
-  }
-  for (const std::string& key : p.keys("offsets")) {
-    auto n = table_number(p, "offsets", key, diags);
-    if (!n) continue;
+    return t;
+  });
+  read_entries(p, "offsets", m.offsets, diags, [&](const std::string& key, int) -> std::optional<OffsetEntry> {
     OffsetEntry o;
     std::string base = "offsets." + key;
     if (auto v = p.number(base + ".length", diags)) o.length = *v;
@@ -550,8 +629,8 @@ MachineConfig load_machine_config(const Profile& p, Diagnostics& diags) {
         else
           p.report_value(diags, base + key_name, "must not be negative");
       }
-    m.offsets[*n] = o;
-  }
+    return o;
+  });
   for (const auto& [n, t] : m.tools)
     if (t.corrector && !m.offsets.count(t.corrector))
       p.report_value(diags, fmt::format("tools.{}.corrector", n), "must be a corrector of [offsets]");

@@ -1,7 +1,8 @@
 // Machine profiles: TOML files (docs/profile.md) read with toml++. A profile names
-// only what differs from the built-in default (stdlib/profiles/default.toml): a scalar
-// setting falls back to the default one by one; a collection table ([tools],
-// [offsets], [work_offsets]) given in the profile replaces the default's.
+// only what differs from the built-in default (stdlib/profiles/default.toml), or from
+// the built-in machine its `machine.base` names (stdlib/profiles/fanuc.toml...): a
+// scalar setting falls back to the base and then the default one by one; a collection
+// table ([tools], [offsets], [work_offsets]) given in the profile replaces the base's.
 #pragma once
 
 #include <map>
@@ -22,8 +23,9 @@ inline constexpr FileLimit kProfileFile{16 << 20, "a machine profile or a file i
 
 class Profile {
  public:
-  // Parses a profile file (path "" = the default alone). Syntax errors are reported
-  // with their location; the result is empty on error.
+  // Parses a profile file (path "" = the default alone; a name without a path
+  // separator or .toml, "haas", is the built-in machine of that name). Syntax errors
+  // are reported with their location; the result is empty on error.
   [[nodiscard]] static std::optional<Profile> load(SourceManager& sources, const std::string& path, Diagnostics& diags);
   // Parses profile text already in memory (e.g. stored in a bytecode file).
   [[nodiscard]] static std::optional<Profile> parse(SourceManager& sources, std::string name, std::string text,
@@ -75,9 +77,13 @@ class Profile {
   std::string text_;
   std::string dir_;
   std::shared_ptr<const Impl> user_;
+  std::shared_ptr<const Impl> base_;  // the built-in machine user_ extends (machine.base), if any
   std::shared_ptr<const Impl> builtin_;
   mutable std::set<std::string, std::less<>> used_;
 };
+
+// The built-in machines `--machine NAME` and `machine.base` name: "default", "fanuc"...
+std::vector<std::string> builtin_machines();
 
 // The machine data of a profile: offsets, tools, initial position, switches.
 MachineConfig load_machine_config(const Profile& profile, Diagnostics& diags);

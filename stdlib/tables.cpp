@@ -1,5 +1,7 @@
 #include "tables.h"
 
+#include "contract/machine_config.h"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -191,9 +193,11 @@ bool parse_functions(std::string_view text, const std::vector<CyclePattern>& cyc
       }
       call.arg = static_cast<uint16_t>(i);
     } else if (*fn == Fn::WorkOffset || *fn == Fn::SpindleRangeForce) {
+      // Work offsets beyond 99: ISO's extended ones (kExtendedWorkOffset + P).
+      const int hi = *fn == Fn::WorkOffset ? kExtendedWorkOffset + kExtendedWorkOffsets : 99;
       auto n = parse_number<int>(arg);
-      if (!n || *n < 0 || *n > 99) {
-        error = fmt::format("'{}' needs a number 0..99, not '{}'", name, arg);
+      if (!n || *n < 0 || *n > hi) {
+        error = fmt::format("'{}' needs a number 0..{}, not '{}'", name, hi, arg);
         return false;
       }
       call.arg = static_cast<uint16_t>(*n);

@@ -732,7 +732,7 @@ static std::string verify(const Module& m, uint8_t& devices) {
       if (call.fn >= Fn::Count) return fmt::format("code {} calls unknown function {}", code.name, int(call.fn));
       if (call.fn == Fn::Cycle && call.arg >= s.cycles.size())
         return fmt::format("code {} names cycle {} of {}", code.name, call.arg, s.cycles.size());
-      if (call.fn == Fn::WorkOffset && call.arg > 99)
+      if (call.fn == Fn::WorkOffset && call.arg > kExtendedWorkOffset + kExtendedWorkOffsets)
         return fmt::format("code {} names offset {}", code.name, call.arg);
     }
   for (uint16_t i : s.power_on)

@@ -18,7 +18,7 @@
 
 namespace ncc::vm {
 
-constexpr uint16_t kFormatVersion = 13;
+constexpr uint16_t kFormatVersion = 14;
 constexpr uint32_t kMaxStack = 256;
 constexpr uint64_t kMaxVariables = 1u << 24;  // all spaces together
 constexpr uint8_t kMaxProcesses = 5;          // NC-110 chapter 4

@@ -25,8 +25,7 @@ void BlockErrors::syntaxError(antlr4::Recognizer* recognizer, antlr4::Token* tok
   // A letter with no value after it (`P F15.04`): the letter's error, not the next's.
   auto* parser = dynamic_cast<antlr4::Parser*>(recognizer);
   const auto& starts = tokens_.value_starts;
-  if (tokens_.letter && token && parser &&
-      std::find(starts.begin(), starts.end(), token->getType()) == starts.end()) {
+  if (tokens_.letter && token && parser && std::find(starts.begin(), starts.end(), token->getType()) == starts.end()) {
     for (size_t k = token->getTokenIndex(); k-- > 0;) {
       antlr4::Token* before = parser->getTokenStream()->get(k);
       if (before->getChannel() != antlr4::Token::DEFAULT_CHANNEL) continue;

@@ -910,6 +910,9 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
   for (const RawWord& r : list) macro_call = macro_call || (r.letter == 'G' && r.literal && r.text == "65");
   std::vector<bool>& literal_integer = literal_integer_;  // of each word from `first` on
   literal_integer.clear();
+  // G10, G54.1, G154: P is an offset's number; a machine's G30 (decision 65): the
+  // reference point's. Not thousandths.
+  bool p_is_number = false;
   for (const RawWord& raw : list) {
     const char letter = raw.letter;
     const bool literal = raw.literal;
@@ -950,7 +953,23 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
           w.kind = ir::WordKind::Control;  // G65 M97 M98 M99
         else
           w.code = program_code(program_, it->second.desc);
+        if (it != table.end())
+          for (const FnCall& call : it->second.desc.calls)
+            p_is_number |=
+                call.fn == Fn::DataSet || call.fn == Fn::WorkOffsetExtended || call.fn == Fn::ReferenceReturnNth;
       }
+    } else if (!macro_call && kAxisLetters.substr(3, 3).find(letter) != std::string_view::npos &&
+               s_.conventions.axes.find(letter) == std::string::npos) {
+      // A rotary axis the machine lacks: the program is for another machine (said once).
+      // U (G04's dwell word) and V W stay words that have no effect.
+      if (absent_axes_.find(letter) == std::string::npos) {
+        absent_axes_ += letter;
+        diags_.report(DiagId::AxisAbsent, w.range, w.address,
+                      fmt::format("{} (--machine {}; --machine haas has XYZA, a profile's iso.axes others)",
+                                  s_.conventions.axes, s_.machine));
+      }
+      w.kind = ir::WordKind::Ignored;
+      block_.has_errors = true;
     } else {
       w.kind = ir::WordKind::Parameter;
     }
@@ -1011,20 +1030,13 @@ void Reader::words(const std::vector<RawWord>& list, const RawWord* corner, ir::
     if (literal_integer[i - first]) w.value = program_.number(program_.exprs[w.value].number / 1000, w.range);
   };
   const bool dwell_block = g.test(4);
-  // A machine's G30 (decision 65): P numbers the reference point.
-  const bool p_number = std::any_of(s_.tables.g_codes.begin(), s_.tables.g_codes.end(), [&](const auto& entry) {
-    const auto& calls = entry.second.desc.calls;
-    // g holds the whole-numbered codes; a decimal one's key (10000 + 10 n) is beyond it.
-    return static_cast<size_t>(entry.first) < g.size() && g.test(static_cast<size_t>(entry.first)) &&
-           std::any_of(calls.begin(), calls.end(), [](FnCall c) { return c.fn == Fn::ReferenceReturnNth; });
-  });
   bool has_p = false;
   for (size_t i = first; i < block_.words.size(); ++i) {
     const char a = block_.words[i].address[0];
     if (block_.words[i].kind != ir::WordKind::Parameter) continue;
     if (a == 'P') {
       has_p = true;
-      if (!p_number) thousandths(i);
+      if (!p_is_number) thousandths(i);
     }
     if ((g.test(51) && (a == 'I' || a == 'J' || a == 'K')) || (g.test(68) && a == 'R')) thousandths(i);
   }

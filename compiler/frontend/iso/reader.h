@@ -103,6 +103,7 @@ class Reader {
   FastBlock fast_;
   PlainBlock plain_words_;
   std::vector<bool> literal_integer_;
+  std::string absent_axes_;  // axis letters the machine lacks, said once each
   RawWord raw_word(antlr4::tree::TerminalNode* letter, IsoParser::ValueContext* v, SourceRange r, bool address);
   void number_block(const std::string& digits, SourceRange r, size_t index);
   void finish_read(size_t index);

@@ -81,6 +81,7 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
   // Decision 33: the machine's own codes (a row replaces the seed's code of its number).
   ok &= read_machine_codes(p, "iso", "GM", s.tables, diags);
 
+  s.machine = p.name();
   Conventions& c = s.conventions;
   c.arc_centre = ArcCentre::Incremental;  // §8.2: I J K from the arc's start point
   c.centre_words = CentreWords::PerAxis;
@@ -126,8 +127,18 @@ std::optional<Settings> load_settings(const stdlib::Profile& p, Diagnostics& dia
            false);
   }
   c.tool_offset_axes = "Z";  // §8.11: the length acts along Z only
-  c.axes = "XYZ";            // a three-axis vertical machining centre
-  c.max_call_depth = 20;     // §8.16: 20 nested macros; subprograms share it (decision 13)
+  c.length_word = 'H';       // §8.10, §8.11: H selects the length offset, D the radius (decision 58)
+  c.axes = "XYZ";            // a three-axis vertical machining centre, unless the machine has more
+  if (auto v = p.string("iso.axes", diags)) {
+    std::string axes;
+    for (char letter : kAxisLetters.substr(0, 9))  // canonical order
+      if (v->find(letter) != std::string::npos) axes += letter;
+    if (axes.size() == v->size() && axes.find("XYZ") == 0)
+      c.axes = axes;
+    else
+      ok = (p.report_value(diags, "iso.axes", "must be X Y Z and any of A B C U V W, each once, e.g. \"XYZA\""), false);
+  }
+  c.max_call_depth = 20;  // §8.16: 20 nested macros; subprograms share it (decision 13)
   c.arc_tolerance = 0.01;
   if (auto v = p.number("iso.arc_tolerance", diags)) {
     if (*v > 0 && *v <= 1)

@@ -25,6 +25,7 @@ struct Settings {
   bool semicolon_comments = false;    // ';' starts a comment to the line end (decision 54)
   std::map<uint32_t, SysRef> system;  // #3000...: the system variables (system_variables.tsv)
   Conventions conventions;
+  std::string machine;  // how --machine named the profile, for messages
 };
 
 // Reads the tables and the profile's [iso] settings; problems are reported at their

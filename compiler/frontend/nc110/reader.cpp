@@ -746,7 +746,7 @@ void Reader::check_iso_block() {
       ++axes;
     else if (w.address.size() == 1 && kAxisLetters.find(w.address[0]) != std::string_view::npos &&
              s_.conventions.axes.find(w.address[0]) == std::string::npos)
-      diags_.report(DiagId::AxisAbsent, w.range, w.address, s_.conventions.axes);
+      diags_.report(DiagId::AxisAbsent, w.range, w.address, s_.conventions.axes + " (machine profile)");
   }
   auto fail = [&](SourceRange r, const std::string& message) {
     diags_.report(DiagId::ResultWord, r, message);

@@ -487,7 +487,7 @@ void Reader::word(std::string_view written, SourceRange r) {
     diags_.report(DiagId::AddressUnknown, r, std::string(1, letter));
   } else if (!numbered && std::string_view("ABCUVW").find(letter) != std::string_view::npos &&
              s_.axis_letters.find(letter) == std::string::npos) {
-    diags_.report(DiagId::AxisAbsent, r, std::string(1, letter), s_.conventions.axes);
+    diags_.report(DiagId::AxisAbsent, r, std::string(1, letter), s_.conventions.axes + " (machine profile)");
   } else if (auto v = value(rest, letter, entry->second, r, text)) {
     w.value = *v;
     if (letter == 'G' || letter == 'M') {
