@@ -308,6 +308,7 @@ class Machine final : public BlockMachine {
   void set_local_offset();                         // ISO G52
   void data_set();                                 // ISO G10
   void offset_loaded(int n);                       // work offset n changed: its events
+  void comp_entry_loaded(int n);                   // offset entry n changed: in force at once, its event
   void length_zeroed(bool zero);                   // ISO G28/G29: the length offset's event, zero or back
   void scaling_on();                               // ISO G51
   void rotation_on();                              // ISO G68

@@ -259,13 +259,7 @@ void Machine::data_set() {
            fmt::format("a value that leaves offset {}'s radius not negative", *p));
     e.radius = 0;
   }
-  if (*p == offset_number_) offset_ = e;  // the entries in force: at once
-  if (*p == length_number_) length_offset_ = e;
-  Event ev{EventKind::CompLoad};
-  ev.n = *p;
-  ev.a = to_program(e.length);
-  ev.b = to_program(e.radius);
-  emit(ev);
+  comp_entry_loaded(*p);
 }
 
 void Machine::reference_return(const AxisValues& point) {
@@ -363,13 +357,7 @@ void Machine::load_compensation() {
   OffsetEntry& e = tool_offsets_[*entry];
   if (auto v = word_if(conv_.comp_length_word)) e.length = length_units(*v);
   if (auto v = word_if(conv_.comp_radius_word)) e.radius = length_units(*v);
-  if (*entry == offset_number_) offset_ = e;  // the entries in force: at once
-  if (*entry == length_number_) length_offset_ = e;
-  Event ev{EventKind::CompLoad};
-  ev.n = *entry;
-  ev.a = to_program(e.length);
-  ev.b = to_program(e.radius);
-  emit(ev);
+  comp_entry_loaded(*entry);
 }
 
 void Machine::reference_approach() {
@@ -827,6 +815,19 @@ void Machine::rotation_on() {
   last_rotation_ = angle;
   modal_.rotation = true;
   transform_event();
+}
+
+// Offset entry n changed (G10 L10-L13, pp G93): the entries in force take it at once,
+// and the trace shows it.
+void Machine::comp_entry_loaded(int n) {
+  const OffsetEntry& e = tool_offsets_.at(n);
+  if (n == offset_number_) offset_ = e;
+  if (n == length_number_) length_offset_ = e;
+  Event ev{EventKind::CompLoad};
+  ev.n = n;
+  ev.a = to_program(e.length);
+  ev.b = to_program(e.radius);
+  emit(ev);
 }
 
 }  // namespace ncc
